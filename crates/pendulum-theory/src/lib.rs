@@ -1,0 +1,38 @@
+//! # pendulum-theory
+//!
+//! The theory of the clock pendulum, computed exactly where theory allows.
+//!
+//! * [`elliptic`]: complete elliptic integrals `K`, `E` and the Jacobi
+//!   functions sn, cn, dn, each to a few ulp (DLMF chapters 19 and 22).
+//! * [`period`]: the exact period at any amplitude, `T = 4 sqrt(l/g) K(sin²(A0/2))`
+//!   (seed section 1-6), the circular error a clockmaker quotes in s/day,
+//!   the seed's power series, and the inverses (length for a period,
+//!   amplitude from a measured period).
+//! * [`gravity`]: WGS 84 normal gravity with the free-air correction.
+//! * [`pendulum`]: the types that say what a number is: a [`Pendulum`]
+//!   (length and g) and an [`Amplitude`].
+//!
+//! The crate does no I/O and depends on no command-line or plotting code:
+//! the `pendulum` binary (crate `pendulum-cli`) parses, calls and renders.
+//! Bad inputs come back as a typed [`InputError`] naming the quantity.
+//!
+//! ```
+//! use pendulum_theory::{period::PeriodAnalysis, Amplitude, Pendulum};
+//!
+//! // A seconds pendulum swinging 2 degrees either side loses 6.58 s a day
+//! // against the same pendulum at vanishing amplitude.
+//! let p = Pendulum::with_standard_gravity(0.99362).unwrap();
+//! let a = Amplitude::from_degrees(2.0).unwrap();
+//! let analysis = PeriodAnalysis::new(p, a, 3).unwrap();
+//! assert!((analysis.circular_error_s_per_day() - 6.58).abs() < 0.005);
+//! ```
+#![deny(missing_docs)]
+
+pub mod elliptic;
+pub mod error;
+pub mod gravity;
+pub mod pendulum;
+pub mod period;
+
+pub use error::{InputError, Problem, Quantity};
+pub use pendulum::{Amplitude, Pendulum, STANDARD_GRAVITY};

@@ -37,16 +37,15 @@ pub fn normal_gravity(latitude_deg: f64, height_m: f64) -> Result<f64, InputErro
     }
     let h = require_finite(Quantity::Height, height_m)?;
     let s2 = lat.to_radians().sin().powi(2);
-    let surface = EQUATORIAL_GRAVITY * (1.0 + SOMIGLIANA_K * s2) / (1.0 - ECCENTRICITY_SQUARED * s2).sqrt();
+    let surface =
+        EQUATORIAL_GRAVITY * (1.0 + SOMIGLIANA_K * s2) / (1.0 - ECCENTRICITY_SQUARED * s2).sqrt();
     let g = surface + FREE_AIR_GRADIENT * h;
     if g <= 0.0 {
         // Only at heights beyond 3000 km, where the linear term means nothing.
         return Err(InputError::new(
             Quantity::Height,
             h,
-            Problem::AboveMaximum {
-                maximum: 1.0e6,
-            },
+            Problem::AboveMaximum { maximum: 1.0e6 },
         ));
     }
     Ok(g)

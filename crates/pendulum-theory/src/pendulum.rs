@@ -75,7 +75,11 @@ impl Amplitude {
             return Err(InputError::new(q, radians, Problem::Negative));
         }
         if radians >= PI {
-            return Err(InputError::new(q, radians, Problem::AmplitudeAtLeastHalfTurn));
+            return Err(InputError::new(
+                q,
+                radians,
+                Problem::AmplitudeAtLeastHalfTurn,
+            ));
         }
         Ok(Self { radians })
     }

@@ -135,7 +135,11 @@ pub fn period_ratio_series(amplitude: Amplitude, terms: u32) -> Result<SeriesEst
                 maximum: f64::from(MAX_SERIES_TERMS),
             }
         };
-        return Err(InputError::new(Quantity::SeriesTerms, f64::from(terms), problem));
+        return Err(InputError::new(
+            Quantity::SeriesTerms,
+            f64::from(terms),
+            problem,
+        ));
     }
     let q = amplitude.modulus();
     let m = q.m();
@@ -422,7 +426,10 @@ mod tests {
             let est = amplitude_for_period(&p, p.period(a)).unwrap();
             let err = (est.amplitude.radians() - a.radians()).abs() / a.radians();
             let allowed = 8.0 * f64::EPSILON * est.condition_number.max(1.0);
-            assert!(err <= allowed, "{d} deg: rel err {err:e}, allowed {allowed:e}");
+            assert!(
+                err <= allowed,
+                "{d} deg: rel err {err:e}, allowed {allowed:e}"
+            );
         }
     }
 

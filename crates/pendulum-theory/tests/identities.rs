@@ -115,7 +115,10 @@ fn tiny_amplitude_circular_error_keeps_its_digits() {
     let a = 1e-6;
     let c = circular_error(Amplitude::from_radians(a).unwrap());
     let series = a * a / 16.0 - a.powi(4) / 3072.0;
-    assert!((c - series).abs() <= 4.0 * f64::EPSILON * series, "{c:e} vs {series:e}");
+    assert!(
+        (c - series).abs() <= 4.0 * f64::EPSILON * series,
+        "{c:e} vs {series:e}"
+    );
 }
 
 #[test]

@@ -187,4 +187,3 @@ fn jacobi_functions() {
     let results: Vec<(&Worst, f64)> = worst.iter().map(|w| (w, ALLOWED_ULP::JACOBI)).collect();
     check_all(&results);
 }
-

@@ -133,7 +133,13 @@ mod tests {
     #[test]
     fn agm_of_equal_arguments_is_the_argument() {
         assert_eq!(agm(1.0), 1.0);
-        assert_eq!(agm_with_sum(1.0), AgmWithSum { mean: 1.0, sum: 0.0 });
+        assert_eq!(
+            agm_with_sum(1.0),
+            AgmWithSum {
+                mean: 1.0,
+                sum: 0.0
+            }
+        );
         assert_eq!(agm_deficit(0.0, 1.0), 0.0);
     }
 

@@ -21,7 +21,14 @@ use std::f64::consts::FRAC_PI_2;
 /// `K(m)`, the complete elliptic integral of the first kind (DLMF 19.2.8),
 /// in the parameter convention. See [`ellipk_modulus`] for accuracy.
 pub fn ellipk(m: f64) -> f64 {
-    Modulus::from_parameter(m).map_or(f64::NAN, |q| ellipk_modulus(&q))
+    // Only k' is needed; skip the sqrt for k that Modulus would take.
+    if !(0.0..=1.0).contains(&m) {
+        return f64::NAN;
+    }
+    if m == 1.0 {
+        return f64::INFINITY;
+    }
+    FRAC_PI_2 / agm((1.0 - m).sqrt())
 }
 
 /// `K` from the modulus pair `(k, k')`: `π / (2 AGM(1, k'))`, DLMF 19.8.5.

@@ -67,7 +67,11 @@ pub fn jacobi_modulus(u: f64, modulus: &Modulus) -> JacobiValues {
     }
     if k == 0.0 {
         let (s, c) = u.sin_cos();
-        return JacobiValues { sn: s, cn: c, dn: 1.0 };
+        return JacobiValues {
+            sn: s,
+            cn: c,
+            dn: 1.0,
+        };
     }
     if k_prime == 0.0 {
         let sech = 1.0 / u.cosh();
@@ -127,7 +131,11 @@ fn gauss_descending(u: f64, k: f64, k_prime: f64) -> JacobiValues {
             sc = next;
         }
         let cn = 1.0_f64.copysign(c) / 1.0_f64.hypot(sc);
-        JacobiValues { sn: sc * cn, cn, dn }
+        JacobiValues {
+            sn: sc * cn,
+            cn,
+            dn,
+        }
     } else {
         // Carry cs = cn/sn, which shrinks going up.
         let mut cs = c / s;
@@ -138,7 +146,11 @@ fn gauss_descending(u: f64, k: f64, k_prime: f64) -> JacobiValues {
             cs = next;
         }
         let sn = 1.0_f64.copysign(s) / 1.0_f64.hypot(cs);
-        JacobiValues { sn, cn: cs * sn, dn }
+        JacobiValues {
+            sn,
+            cn: cs * sn,
+            dn,
+        }
     }
 }
 

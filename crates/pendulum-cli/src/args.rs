@@ -1,0 +1,156 @@
+//! The command line, declared with clap: every flag, its value name, its
+//! help. Values with units arrive as text and are read by [`crate::units`]
+//! in each command, so every refusal names its flag in our own words.
+
+use clap::{Args, Parser, Subcommand};
+
+/// The theory of the clock pendulum: exact period, circular error, gravity.
+///
+/// Quantities take units: lengths 994mm, 99.4cm, 0.994m, 39.1in; angles 3deg,
+/// 3°, 0.05rad, 30arcmin; times 2s, 1.5ms, 3h, 1day. A bare number is SI,
+/// except angles, which are degrees.
+#[derive(Debug, Parser)]
+#[command(name = "pendulum", version)]
+pub struct Cli {
+    /// What to compute.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// The exact period at any amplitude, the circular error in s/day, and the seed's series.
+    Period(PeriodArgs),
+    /// The length that gives a period (or a beat rate) at an amplitude.
+    Length(LengthArgs),
+    /// The amplitude a measured period implies for a pendulum of known length.
+    Amplitude(AmplitudeArgs),
+    /// Local gravity from latitude and height (WGS 84 normal gravity).
+    Gravity(GravityCommandArgs),
+}
+
+/// Where g comes from: given, from latitude and height, or standard gravity.
+#[derive(Debug, Args)]
+pub struct GravityArgs {
+    /// Gravitational acceleration [default: 9.80665 m/s^2].
+    #[arg(
+        long = "g",
+        value_name = "G",
+        allow_hyphen_values = true,
+        conflicts_with = "latitude"
+    )]
+    pub g: Option<String>,
+    /// Latitude in degrees (north positive), to compute g (WGS 84).
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    pub latitude: Option<String>,
+    /// Height above the ellipsoid, with --latitude [default: 0 m].
+    #[arg(
+        long,
+        value_name = "H",
+        allow_hyphen_values = true,
+        requires = "latitude"
+    )]
+    pub height: Option<String>,
+}
+
+/// Output format flags shared by the commands.
+#[derive(Debug, Args)]
+pub struct FormatArgs {
+    /// Print one JSON object (SI units, angles in radians).
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// Print CSV with a header (same names as the JSON keys).
+    #[arg(long)]
+    pub csv: bool,
+}
+
+/// `pendulum period`.
+#[derive(Debug, Args)]
+pub struct PeriodArgs {
+    /// Pendulum length (e.g. 0.99362m, 994mm, 39.1in).
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length: String,
+    /// Amplitude (e.g. 3deg, 0.05rad), or a range 1deg..10deg for a table.
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub amplitude: String,
+    /// Rows in the table when --amplitude is a range.
+    #[arg(long, value_name = "N", default_value_t = 10)]
+    pub steps: u32,
+    /// Terms of the seed's power series in sin²(A0/2) to compare with.
+    #[arg(long, value_name = "N", default_value_t = 3)]
+    pub series_terms: u32,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
+    #[command(flatten)]
+    pub format: FormatArgs,
+}
+
+/// `pendulum length`.
+#[derive(Debug, Args)]
+pub struct LengthArgs {
+    /// The period wanted (e.g. 2s).
+    #[arg(
+        long,
+        value_name = "T",
+        allow_hyphen_values = true,
+        required_unless_present = "bph",
+        conflicts_with = "bph"
+    )]
+    pub period: Option<String>,
+    /// The beat rate wanted, beats per hour (a beat is half a period).
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
+    pub bph: Option<String>,
+    /// The amplitude it will swing at [default: 0, the small-angle limit].
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub amplitude: Option<String>,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum amplitude`.
+#[derive(Debug, Args)]
+pub struct AmplitudeArgs {
+    /// The measured period (e.g. 2.0002s).
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub period: String,
+    /// Pendulum length.
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length: String,
+    /// Uncertainty of the measured period, to report the amplitude's.
+    #[arg(long, value_name = "DT", allow_hyphen_values = true)]
+    pub period_uncertainty: Option<String>,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum gravity`.
+#[derive(Debug, Args)]
+pub struct GravityCommandArgs {
+    /// Latitude in degrees (north positive).
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    pub latitude: String,
+    /// Height above the ellipsoid [default: 0 m].
+    #[arg(long, value_name = "H", allow_hyphen_values = true)]
+    pub height: Option<String>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn command_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

@@ -1,0 +1,65 @@
+//! `pendulum length`: the length for a period or a beat rate.
+
+use super::common;
+use crate::args::LengthArgs;
+use crate::error::CliError;
+use crate::output::{self, num, Summary};
+use crate::units::Dimension;
+use pendulum_theory::period::{length_for_period, period_for_beat_rate};
+use pendulum_theory::Amplitude;
+use serde::Serialize;
+
+#[derive(Serialize)]
+struct LengthJson {
+    length_m: f64,
+    period_s: f64,
+    beats_per_hour: f64,
+    amplitude_rad: f64,
+    g_m_s2: f64,
+    g_source: &'static str,
+}
+
+pub fn run(args: &LengthArgs) -> Result<String, CliError> {
+    let gravity = common::gravity(&args.gravity)?;
+    let period = match (&args.period, &args.bph) {
+        // A bad period is refused by the library below, named --period.
+        (Some(text), _) => common::quantity("--period", text, Dimension::Time)?,
+        (None, Some(text)) => {
+            let bph: f64 = text.trim().parse().map_err(|_| {
+                CliError::flag(
+                    "--bph",
+                    format!("'{text}' is not a number of beats per hour"),
+                )
+            })?;
+            period_for_beat_rate(bph).map_err(|e| CliError::input("--bph", &e))?
+        }
+        (None, None) => return Err(CliError::other("give --period or --bph")),
+    };
+    let amplitude = match &args.amplitude {
+        Some(text) => common::amplitude("--amplitude", text)?,
+        None => Amplitude::from_radians(0.0).expect("zero is a valid amplitude"),
+    };
+    let length = length_for_period(period, amplitude, gravity.g_m_s2)
+        .map_err(|e| CliError::input("--period", &e))?;
+    let result = LengthJson {
+        length_m: length,
+        period_s: period,
+        beats_per_hour: 7200.0 / period,
+        amplitude_rad: amplitude.radians(),
+        g_m_s2: gravity.g_m_s2,
+        g_source: gravity.g_source,
+    };
+    if args.json {
+        return output::json(&result);
+    }
+    let mut s = Summary::default();
+    s.row(
+        "Length",
+        format!("{} m  ({} mm)", num(length, 10), num(length * 1000.0, 8)),
+    )
+    .row("Period", format!("{} s", num(period, 12)))
+    .row("Beats per hour", num(result.beats_per_hour, 10))
+    .row("Amplitude", format!("{}°", num(amplitude.degrees(), 10)))
+    .row("Gravity", gravity.describe());
+    Ok(s.render())
+}

@@ -1,0 +1,21 @@
+//! One file per subcommand; each turns its arguments into library types,
+//! calls the library and renders the result as a `String`.
+
+mod amplitude;
+mod common;
+mod gravity;
+mod length;
+mod period;
+
+use crate::args::Command;
+use crate::error::CliError;
+
+/// Runs one subcommand and returns what it prints.
+pub fn run(command: &Command) -> Result<String, CliError> {
+    match command {
+        Command::Period(args) => period::run(args),
+        Command::Length(args) => length::run(args),
+        Command::Amplitude(args) => amplitude::run(args),
+        Command::Gravity(args) => gravity::run(args),
+    }
+}

@@ -1,0 +1,237 @@
+//! `pendulum period`: the exact period at one amplitude, or a table over a
+//! range of amplitudes (seed section 1-6).
+
+use super::common::{self, ResolvedGravity};
+use crate::args::PeriodArgs;
+use crate::error::CliError;
+use crate::output::{self, num, Summary};
+use crate::units::{parse_range, Dimension};
+use pendulum_theory::period::PeriodAnalysis;
+use pendulum_theory::{Amplitude, Pendulum};
+use serde::Serialize;
+
+/// The JSON object for one amplitude. Keys are part of the interface.
+#[derive(Serialize)]
+struct PeriodJson {
+    length_m: f64,
+    g_m_s2: f64,
+    g_source: &'static str,
+    amplitude_rad: f64,
+    amplitude_deg: f64,
+    period_s: f64,
+    small_angle_period_s: f64,
+    period_ratio: f64,
+    beats_per_hour: f64,
+    circular_error: f64,
+    circular_error_s_per_day: f64,
+    circular_error_s_per_day_per_deg: f64,
+    series: SeriesJson,
+}
+
+#[derive(Serialize)]
+struct SeriesJson {
+    terms: u32,
+    period_s: f64,
+    relative_error: f64,
+    truncation_bound: f64,
+}
+
+/// One CSV row: the JSON keys, with the series flattened.
+#[derive(Serialize)]
+struct PeriodCsv {
+    length_m: f64,
+    g_m_s2: f64,
+    amplitude_rad: f64,
+    amplitude_deg: f64,
+    period_s: f64,
+    small_angle_period_s: f64,
+    period_ratio: f64,
+    beats_per_hour: f64,
+    circular_error: f64,
+    circular_error_s_per_day: f64,
+    circular_error_s_per_day_per_deg: f64,
+    series_terms: u32,
+    series_period_s: f64,
+    series_relative_error: f64,
+}
+
+/// The most rows a table may have.
+const MAX_STEPS: u32 = 1_000_000;
+
+pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
+    let gravity = common::gravity(&args.gravity)?;
+    let pendulum = common::pendulum(&args.length, &gravity)?;
+    let amplitudes = amplitudes(args)?;
+    let analyses = amplitudes
+        .iter()
+        .map(|&a| PeriodAnalysis::new(pendulum, a, args.series_terms))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| CliError::input("--series-terms", &e))?;
+    let is_table = parse_range(&args.amplitude, Dimension::Angle).is_some();
+    if args.format.csv {
+        let rows: Vec<PeriodCsv> = analyses.iter().map(csv_row).collect();
+        return output::csv(&rows);
+    }
+    if args.format.json {
+        let rows: Vec<PeriodJson> = analyses.iter().map(|a| json_row(a, &gravity)).collect();
+        return if is_table {
+            output::json(&rows)
+        } else {
+            output::json(&rows[0])
+        };
+    }
+    Ok(if is_table {
+        text_table(&pendulum, &gravity, &analyses)
+    } else {
+        text_summary(&analyses[0], &gravity)
+    })
+}
+
+/// One amplitude, or `steps` evenly spaced over `from..to` (both included).
+fn amplitudes(args: &PeriodArgs) -> Result<Vec<Amplitude>, CliError> {
+    let flag = "--amplitude";
+    let Some(range) = parse_range(&args.amplitude, Dimension::Angle) else {
+        return Ok(vec![common::amplitude(flag, &args.amplitude)?]);
+    };
+    let (from, to) = range.map_err(|e| CliError::flag(flag, e))?;
+    if args.steps == 0 || args.steps > MAX_STEPS {
+        return Err(CliError::flag(
+            "--steps",
+            format!("must be between 1 and {MAX_STEPS}, got {}", args.steps),
+        ));
+    }
+    let first = common::amplitude_from_radians(flag, from)?;
+    common::amplitude_from_radians(flag, to)?;
+    if args.steps == 1 {
+        return Ok(vec![first]);
+    }
+    // Spaced in degrees, the unit people type, so 1deg..10deg gives 1, 2, … 10
+    // exactly rather than 2.0000000000000004.
+    let (from_deg, to_deg) = (from.to_degrees(), to.to_degrees());
+    let last = f64::from(args.steps - 1);
+    (0..args.steps)
+        .map(|i| {
+            let t = f64::from(i) / last;
+            let degrees = from_deg + (to_deg - from_deg) * t;
+            common::amplitude_from_radians(flag, degrees.to_radians())
+        })
+        .collect()
+}
+
+fn json_row(a: &PeriodAnalysis, gravity: &ResolvedGravity) -> PeriodJson {
+    PeriodJson {
+        length_m: a.pendulum.length_m(),
+        g_m_s2: a.pendulum.g_m_s2(),
+        g_source: gravity.g_source,
+        amplitude_rad: a.amplitude.radians(),
+        amplitude_deg: a.amplitude.degrees(),
+        period_s: a.period_s,
+        small_angle_period_s: a.small_angle_period_s,
+        period_ratio: a.period_ratio,
+        beats_per_hour: a.beats_per_hour,
+        circular_error: a.circular_error,
+        circular_error_s_per_day: a.circular_error_s_per_day(),
+        circular_error_s_per_day_per_deg: a.circular_error_s_per_day_per_deg(),
+        series: SeriesJson {
+            terms: a.series.terms,
+            period_s: a.series_period_s(),
+            relative_error: a.series.relative_error,
+            truncation_bound: a.series.truncation_bound,
+        },
+    }
+}
+
+fn csv_row(a: &PeriodAnalysis) -> PeriodCsv {
+    PeriodCsv {
+        length_m: a.pendulum.length_m(),
+        g_m_s2: a.pendulum.g_m_s2(),
+        amplitude_rad: a.amplitude.radians(),
+        amplitude_deg: a.amplitude.degrees(),
+        period_s: a.period_s,
+        small_angle_period_s: a.small_angle_period_s,
+        period_ratio: a.period_ratio,
+        beats_per_hour: a.beats_per_hour,
+        circular_error: a.circular_error,
+        circular_error_s_per_day: a.circular_error_s_per_day(),
+        circular_error_s_per_day_per_deg: a.circular_error_s_per_day_per_deg(),
+        series_terms: a.series.terms,
+        series_period_s: a.series_period_s(),
+        series_relative_error: a.series.relative_error,
+    }
+}
+
+fn text_summary(a: &PeriodAnalysis, gravity: &ResolvedGravity) -> String {
+    let mut s = Summary::default();
+    s.row("Length", format!("{} m", num(a.pendulum.length_m(), 10)))
+        .row("Gravity", gravity.describe())
+        .row(
+            "Amplitude",
+            format!(
+                "{}° ({} rad)",
+                num(a.amplitude.degrees(), 10),
+                num(a.amplitude.radians(), 6)
+            ),
+        )
+        .row("Period", format!("{} s", num(a.period_s, 12)))
+        .row(
+            "Small-angle period",
+            format!(
+                "{} s  (T/T0 = {})",
+                num(a.small_angle_period_s, 12),
+                num(a.period_ratio, 12)
+            ),
+        )
+        .row("Beats per hour", num(a.beats_per_hour, 10))
+        .row(
+            "Circular error",
+            format!(
+                "{} s/day lost against a vanishing swing; {} s/day more per degree",
+                num(a.circular_error_s_per_day(), 6),
+                num(a.circular_error_s_per_day_per_deg(), 6)
+            ),
+        )
+        .row(
+            &format!("Series, {} terms", a.series.terms),
+            format!(
+                "{} s  (relative error {})",
+                num(a.series_period_s(), 12),
+                num(a.series.relative_error, 3)
+            ),
+        );
+    s.render()
+}
+
+fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodAnalysis]) -> String {
+    let mut out = format!(
+        "Pendulum of {} m under {}\n",
+        num(pendulum.length_m(), 10),
+        gravity.describe()
+    );
+    let terms = rows.first().map_or(0, |a| a.series.terms);
+    let series_header = format!("series({terms}) rel. err");
+    let header = [
+        "amplitude °",
+        "period s",
+        "T/T0",
+        "beats/h",
+        "circular error s/day",
+        "s/day per °",
+        series_header.as_str(),
+    ];
+    let cells: Vec<Vec<String>> = rows
+        .iter()
+        .map(|a| {
+            vec![
+                num(a.amplitude.degrees(), 6),
+                num(a.period_s, 10),
+                num(a.period_ratio, 10),
+                num(a.beats_per_hour, 8),
+                num(a.circular_error_s_per_day(), 6),
+                num(a.circular_error_s_per_day_per_deg(), 6),
+                num(a.series.relative_error, 3),
+            ]
+        })
+        .collect();
+    out.push_str(&output::table(&header, &cells));
+    out
+}

@@ -1,0 +1,62 @@
+//! The one error type of the binary: a message that names the argument and
+//! the fix, printed once by `main` as `error: …` with exit status 2.
+
+use pendulum_theory::InputError;
+use std::fmt;
+
+/// Exit status for any error: bad arguments, bad input, failed writes.
+pub const EXIT_ERROR: i32 = 2;
+
+/// An error with the name of the flag it concerns, when there is one.
+#[derive(Debug)]
+pub struct CliError {
+    message: String,
+}
+
+impl CliError {
+    /// An error about the value of `flag` (`--length`).
+    pub fn flag(flag: &str, detail: impl fmt::Display) -> Self {
+        Self {
+            message: format!("{flag}: {detail}"),
+        }
+    }
+
+    /// An error not tied to one flag.
+    pub fn other(message: impl Into<String>) -> Self {
+        Self {
+            message: message.into(),
+        }
+    }
+
+    /// A library refusal, attributed to `flag`.
+    pub fn input(flag: &str, error: &InputError) -> Self {
+        Self::flag(flag, error.detail())
+    }
+}
+
+impl fmt::Display for CliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for CliError {}
+
+/// Collapses clap's multi-line error into one line: its message and tips,
+/// without the usage block (`--help` shows that).
+pub fn one_line_clap_error(error: &clap::Error) -> String {
+    let rendered = error.render().to_string();
+    let mut parts: Vec<&str> = Vec::new();
+    for line in rendered.lines() {
+        let line = line.trim();
+        if line.starts_with("Usage:") || line.starts_with("For more information") {
+            break;
+        }
+        if !line.is_empty() {
+            parts.push(line);
+        }
+    }
+    let joined = parts.join(" ");
+    let text = joined.strip_prefix("error: ").unwrap_or(&joined);
+    format!("{text} (see --help)")
+}

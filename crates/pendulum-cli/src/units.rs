@@ -1,0 +1,466 @@
+//! Quantities with units on the command line: `994mm`, `3deg`, `1.5ms`.
+//!
+//! A value is a decimal number, optionally followed (with or without a
+//! space) by a unit. A bare number is SI, except angles, which people type
+//! in degrees. The result is always SI (radians for angles). The parser is
+//! hand-written so that every refusal can say exactly what was wrong.
+
+use std::fmt;
+
+/// What kind of quantity an argument wants.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dimension {
+    /// Metres.
+    Length,
+    /// Radians (bare numbers are degrees).
+    Angle,
+    /// Seconds.
+    Time,
+    /// Kilograms.
+    Mass,
+    /// Metres per second squared.
+    Acceleration,
+}
+
+/// A unit's spellings and its size in SI.
+struct Unit {
+    names: &'static [&'static str],
+    si: f64,
+}
+
+const LENGTH: &[Unit] = &[
+    Unit {
+        names: &["m"],
+        si: 1.0,
+    },
+    Unit {
+        names: &["cm"],
+        si: 0.01,
+    },
+    Unit {
+        names: &["mm"],
+        si: 0.001,
+    },
+    Unit {
+        names: &["um", "µm"],
+        si: 1e-6,
+    },
+    Unit {
+        names: &["km"],
+        si: 1000.0,
+    },
+    Unit {
+        names: &["in", "inch", "\""],
+        si: 0.0254,
+    },
+    Unit {
+        names: &["ft", "foot", "feet"],
+        si: 0.3048,
+    },
+];
+
+const ANGLE: &[Unit] = &[
+    Unit {
+        names: &["deg", "°", "degree", "degrees"],
+        si: std::f64::consts::PI / 180.0,
+    },
+    Unit {
+        names: &["rad"],
+        si: 1.0,
+    },
+    Unit {
+        names: &["mrad"],
+        si: 0.001,
+    },
+    Unit {
+        names: &["arcmin", "′"],
+        si: std::f64::consts::PI / 10_800.0,
+    },
+    Unit {
+        names: &["arcsec", "″"],
+        si: std::f64::consts::PI / 648_000.0,
+    },
+];
+
+const TIME: &[Unit] = &[
+    Unit {
+        names: &["s", "sec"],
+        si: 1.0,
+    },
+    Unit {
+        names: &["ms"],
+        si: 0.001,
+    },
+    Unit {
+        names: &["us", "µs"],
+        si: 1e-6,
+    },
+    Unit {
+        names: &["ns"],
+        si: 1e-9,
+    },
+    Unit {
+        names: &["min"],
+        si: 60.0,
+    },
+    Unit {
+        names: &["h", "hour", "hours"],
+        si: 3600.0,
+    },
+    Unit {
+        names: &["day", "days", "d"],
+        si: 86_400.0,
+    },
+];
+
+const MASS: &[Unit] = &[
+    Unit {
+        names: &["kg"],
+        si: 1.0,
+    },
+    Unit {
+        names: &["g"],
+        si: 0.001,
+    },
+    Unit {
+        names: &["mg"],
+        si: 1e-6,
+    },
+    Unit {
+        names: &["lb"],
+        si: 0.453_592_37,
+    },
+];
+
+const ACCELERATION: &[Unit] = &[
+    Unit {
+        names: &["m/s^2", "m/s2", "m/s²"],
+        si: 1.0,
+    },
+    Unit {
+        names: &["cm/s^2", "cm/s2", "gal", "Gal"],
+        si: 0.01,
+    },
+];
+
+impl Dimension {
+    fn units(self) -> &'static [Unit] {
+        match self {
+            Dimension::Length => LENGTH,
+            Dimension::Angle => ANGLE,
+            Dimension::Time => TIME,
+            Dimension::Mass => MASS,
+            Dimension::Acceleration => ACCELERATION,
+        }
+    }
+
+    /// The factor applied to a bare number.
+    fn bare_factor(self) -> f64 {
+        match self {
+            Dimension::Angle => std::f64::consts::PI / 180.0,
+            _ => 1.0,
+        }
+    }
+
+    fn noun(self) -> &'static str {
+        match self {
+            Dimension::Length => "a length",
+            Dimension::Angle => "an angle",
+            Dimension::Time => "a time",
+            Dimension::Mass => "a mass",
+            Dimension::Acceleration => "an acceleration",
+        }
+    }
+
+    fn unit_list(self) -> String {
+        let names: Vec<&str> = self.units().iter().map(|u| u.names[0]).collect();
+        names.join(", ")
+    }
+
+    const ALL: [Dimension; 5] = [
+        Dimension::Length,
+        Dimension::Angle,
+        Dimension::Time,
+        Dimension::Mass,
+        Dimension::Acceleration,
+    ];
+}
+
+/// Why a value could not be read.
+#[derive(Clone, Debug, PartialEq)]
+pub enum UnitError {
+    /// Nothing was given.
+    Empty,
+    /// No number at the start.
+    NotANumber(String),
+    /// A number too large for a double.
+    NotFinite(String),
+    /// A unit nobody knows.
+    UnknownUnit {
+        /// The whole text.
+        text: String,
+        /// The unit part.
+        unit: String,
+        /// What was wanted.
+        wanted: Dimension,
+    },
+    /// A unit of another kind of quantity.
+    WrongDimension {
+        /// The whole text.
+        text: String,
+        /// What the unit measures.
+        found: Dimension,
+        /// What was wanted.
+        wanted: Dimension,
+    },
+}
+
+impl fmt::Display for UnitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            UnitError::Empty => write!(f, "is empty; give a number with a unit, like 0.994m"),
+            UnitError::NotANumber(text) => write!(
+                f,
+                "'{text}' is not a number; give a finite number with a unit, like 0.994m or 3deg"
+            ),
+            UnitError::NotFinite(text) => write!(f, "must be a finite number, got '{text}'"),
+            UnitError::UnknownUnit { text, unit, wanted } => write!(
+                f,
+                "unknown unit '{unit}' in '{text}'; {} takes {}",
+                wanted.noun(),
+                wanted.unit_list()
+            ),
+            UnitError::WrongDimension {
+                text,
+                found,
+                wanted,
+            } => write!(
+                f,
+                "'{text}' is {}, but {} is wanted ({})",
+                found.noun(),
+                wanted.noun(),
+                wanted.unit_list()
+            ),
+        }
+    }
+}
+
+/// Reads `text` as a quantity of `dimension`, in SI.
+pub fn parse_quantity(text: &str, dimension: Dimension) -> Result<f64, UnitError> {
+    let trimmed = text.trim();
+    if trimmed.is_empty() {
+        return Err(UnitError::Empty);
+    }
+    let split = number_prefix_len(trimmed);
+    if split == 0 {
+        return Err(UnitError::NotANumber(trimmed.to_string()));
+    }
+    let number: f64 = trimmed[..split]
+        .parse()
+        .map_err(|_| UnitError::NotANumber(trimmed.to_string()))?;
+    let unit = trimmed[split..].trim();
+    let factor = unit_factor(trimmed, unit, dimension)?;
+    let value = number * factor;
+    if !value.is_finite() {
+        return Err(UnitError::NotFinite(trimmed.to_string()));
+    }
+    Ok(value)
+}
+
+/// Reads `from..to` (both with units) as a pair of SI values.
+pub fn parse_range(text: &str, dimension: Dimension) -> Option<Result<(f64, f64), UnitError>> {
+    let (from, to) = text.split_once("..")?;
+    Some(parse_quantity(from, dimension).and_then(|a| Ok((a, parse_quantity(to, dimension)?))))
+}
+
+fn unit_factor(text: &str, unit: &str, dimension: Dimension) -> Result<f64, UnitError> {
+    if unit.is_empty() {
+        return Ok(dimension.bare_factor());
+    }
+    if let Some(u) = lookup(dimension, unit) {
+        return Ok(u.si);
+    }
+    match Dimension::ALL.iter().find(|d| lookup(**d, unit).is_some()) {
+        Some(&found) => Err(UnitError::WrongDimension {
+            text: text.to_string(),
+            found,
+            wanted: dimension,
+        }),
+        None => Err(UnitError::UnknownUnit {
+            text: text.to_string(),
+            unit: unit.to_string(),
+            wanted: dimension,
+        }),
+    }
+}
+
+fn lookup(dimension: Dimension, unit: &str) -> Option<&'static Unit> {
+    dimension.units().iter().find(|u| u.names.contains(&unit))
+}
+
+/// Length of the longest prefix of the form `[+-]?(d+[.d*]|.d+)([eE][+-]?d+)?`.
+fn number_prefix_len(text: &str) -> usize {
+    let bytes = text.as_bytes();
+    let mut i = 0;
+    if matches!(bytes.first(), Some(b'+' | b'-')) {
+        i += 1;
+    }
+    let digits_from = |mut j: usize| {
+        while j < bytes.len() && bytes[j].is_ascii_digit() {
+            j += 1;
+        }
+        j
+    };
+    let int_end = digits_from(i);
+    let mut end = int_end;
+    let mut has_digits = int_end > i;
+    if end < bytes.len() && bytes[end] == b'.' {
+        let frac_end = digits_from(end + 1);
+        has_digits |= frac_end > end + 1;
+        end = frac_end;
+    }
+    if !has_digits {
+        return 0;
+    }
+    if end < bytes.len() && matches!(bytes[end], b'e' | b'E') {
+        let mut j = end + 1;
+        if j < bytes.len() && matches!(bytes[j], b'+' | b'-') {
+            j += 1;
+        }
+        let exp_end = digits_from(j);
+        if exp_end > j {
+            end = exp_end;
+        }
+    }
+    end
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    #[test]
+    fn examples_from_the_issue() {
+        let l = |t| parse_quantity(t, Dimension::Length).unwrap();
+        assert_eq!(l("994mm"), 0.994);
+        assert!((l("99.4cm") - 0.994).abs() < 1e-15);
+        assert_eq!(l("0.994m"), 0.994);
+        assert!((l("39.1in") - 0.99314).abs() < 1e-12);
+        let a = |t| parse_quantity(t, Dimension::Angle).unwrap();
+        assert_eq!(a("3deg"), 3.0_f64.to_radians());
+        assert_eq!(a("3°"), a("3"));
+        assert_eq!(a("0.05rad"), 0.05);
+        assert!((a("30arcmin") - 0.5_f64.to_radians()).abs() < 1e-16);
+        let t = |s| parse_quantity(s, Dimension::Time).unwrap();
+        assert_eq!(t("2s"), 2.0);
+        assert_eq!(t("1.5ms"), 0.0015);
+        assert_eq!(t("3h"), 10_800.0);
+        assert_eq!(t("1day"), 86_400.0);
+        let m = |s| parse_quantity(s, Dimension::Mass).unwrap();
+        assert_eq!(m("1kg"), 1.0);
+        assert_eq!(m("500g"), 0.5);
+        assert_eq!(
+            parse_quantity("-33.87", Dimension::Angle).unwrap(),
+            (-33.87_f64).to_radians()
+        );
+        assert_eq!(parse_quantity("-1", Dimension::Length).unwrap(), -1.0);
+        assert_eq!(
+            parse_quantity("3 deg", Dimension::Angle).unwrap(),
+            a("3deg")
+        );
+        assert_eq!(parse_quantity("1e-3m", Dimension::Length).unwrap(), 1e-3);
+    }
+
+    #[test]
+    fn refusals_say_why() {
+        let err = parse_quantity("3parsecs", Dimension::Length).unwrap_err();
+        assert!(matches!(err, UnitError::UnknownUnit { .. }));
+        assert!(err.to_string().contains("'parsecs'"));
+        let err = parse_quantity("3m", Dimension::Angle).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "'3m' is a length, but an angle is wanted (deg, rad, mrad, arcmin, arcsec)"
+        );
+        assert!(matches!(
+            parse_quantity("nan", Dimension::Length),
+            Err(UnitError::NotANumber(_))
+        ));
+        assert!(matches!(
+            parse_quantity("inf", Dimension::Length),
+            Err(UnitError::NotANumber(_))
+        ));
+        assert!(matches!(
+            parse_quantity("1e999", Dimension::Length),
+            Err(UnitError::NotFinite(_))
+        ));
+        assert_eq!(parse_quantity("", Dimension::Length), Err(UnitError::Empty));
+        assert!(parse_quantity("-", Dimension::Length).is_err());
+        assert!(parse_quantity(".", Dimension::Length).is_err());
+    }
+
+    #[test]
+    fn ranges() {
+        let (a, b) = parse_range("1deg..10deg", Dimension::Angle)
+            .unwrap()
+            .unwrap();
+        assert_eq!((a, b), (1.0_f64.to_radians(), 10.0_f64.to_radians()));
+        assert!(parse_range("3deg", Dimension::Angle).is_none());
+        assert!(parse_range("1deg..x", Dimension::Angle).unwrap().is_err());
+    }
+
+    fn any_unit() -> impl Strategy<Value = (Dimension, &'static str, f64)> {
+        let all: Vec<(Dimension, &'static str, f64)> = Dimension::ALL
+            .iter()
+            .flat_map(|&d| {
+                d.units()
+                    .iter()
+                    .flat_map(move |u| u.names.iter().map(move |&n| (d, n, u.si)))
+            })
+            .collect();
+        proptest::sample::select(all)
+    }
+
+    proptest! {
+        /// Any text: a value or a refusal, never a panic.
+        #[test]
+        fn never_panics(text in ".{0,24}") {
+            for d in Dimension::ALL {
+                let _ = parse_quantity(&text, d);
+                let _ = parse_range(&text, d);
+            }
+        }
+
+        /// A value written with a unit reads back as value × unit, with or
+        /// without a space, in any of the unit's spellings.
+        #[test]
+        fn round_trip((dimension, name, si) in any_unit(), value in -1e6_f64..1e6) {
+            let tight = parse_quantity(&format!("{value}{name}"), dimension).unwrap();
+            let spaced = parse_quantity(&format!("{value} {name}"), dimension).unwrap();
+            prop_assert_eq!(tight, spaced);
+            prop_assert_eq!(tight, value * si);
+        }
+
+        /// Exponents: `1.5e-3m` equals `1.5mm`.
+        #[test]
+        fn exponent_notation(mantissa in 1_u32..10_000) {
+            let m = f64::from(mantissa);
+            let a = parse_quantity(&format!("{m}e-3m"), Dimension::Length).unwrap();
+            let b = parse_quantity(&format!("{m}mm"), Dimension::Length).unwrap();
+            prop_assert!((a - b).abs() <= 2.0 * f64::EPSILON * a.abs());
+        }
+
+        /// A unit of the wrong kind is named as such.
+        #[test]
+        fn wrong_dimension_is_named((dimension, name, _si) in any_unit(), value in 0.0_f64..100.0) {
+            for wanted in Dimension::ALL {
+                if wanted == dimension || lookup(wanted, name).is_some() {
+                    continue;
+                }
+                let err = parse_quantity(&format!("{value}{name}"), wanted).unwrap_err();
+                let is_wrong_dimension = matches!(err, UnitError::WrongDimension { .. });
+                prop_assert!(is_wrong_dimension);
+            }
+        }
+    }
+}

@@ -1,0 +1,305 @@
+//! The real `pendulum` binary, run as a user would run it.
+
+use assert_cmd::Command;
+use predicates::prelude::*;
+use serde_json::Value;
+
+fn pendulum() -> Command {
+    Command::cargo_bin("pendulum").expect("the pendulum binary is built")
+}
+
+/// Runs with `args`, expects success, parses standard output as JSON.
+fn json(args: &[&str]) -> Value {
+    let out = pendulum()
+        .args(args)
+        .arg("--json")
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    serde_json::from_slice(&out).expect("standard output is JSON")
+}
+
+/// Runs with `args` and expects the one-line error contract: status 2,
+/// nothing on standard output, one line on standard error naming `flag`.
+fn refuses(args: &[&str], flag: &str) -> String {
+    let out = pendulum()
+        .args(args)
+        .assert()
+        .code(2)
+        .stdout("")
+        .get_output()
+        .stderr
+        .clone();
+    let text = String::from_utf8(out).unwrap();
+    assert_eq!(text.lines().count(), 1, "one line expected, got: {text}");
+    assert!(text.starts_with("error: "), "{text}");
+    assert!(text.contains(flag), "{text} should name {flag}");
+    text
+}
+
+fn f(v: &Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{key} missing in {v}"))
+}
+
+#[test]
+fn period_json_has_the_documented_keys() {
+    let v = json(&["period", "--length", "0.99362m", "--amplitude", "2deg"]);
+    for key in [
+        "length_m",
+        "g_m_s2",
+        "amplitude_rad",
+        "period_s",
+        "small_angle_period_s",
+        "period_ratio",
+        "beats_per_hour",
+        "circular_error_s_per_day",
+        "circular_error_s_per_day_per_deg",
+    ] {
+        assert!(v[key].is_number(), "{key} in {v}");
+    }
+    assert_eq!(v["series"]["terms"], 3);
+    assert!(v["series"]["period_s"].is_number());
+    assert!(v["series"]["relative_error"].as_f64().unwrap() < 0.0);
+    // The seconds pendulum at 2 degrees loses 6.58 s/day.
+    assert!((f(&v, "circular_error_s_per_day") - 6.58).abs() < 0.005);
+    assert_eq!(f(&v, "amplitude_rad"), 2.0_f64.to_radians());
+    assert!((f(&v, "beats_per_hour") - 7200.0 / f(&v, "period_s")).abs() < 1e-9);
+}
+
+#[test]
+fn period_ratio_at_ten_and_ninety_degrees() {
+    let r10 = f(
+        &json(&["period", "--length", "1", "--amplitude", "10"]),
+        "period_ratio",
+    );
+    let r90 = f(
+        &json(&["period", "--length", "1", "--amplitude", "90deg"]),
+        "period_ratio",
+    );
+    assert!((r10 - 1.001_907_188_143_216_6).abs() < 1e-15);
+    assert!((r90 - 1.180_340_599_016_096_2).abs() < 1e-15);
+}
+
+#[test]
+fn units_agree() {
+    let a = json(&["period", "--length", "994mm", "--amplitude", "30arcmin"]);
+    let b = json(&["period", "--length", "0.994m", "--amplitude", "0.5deg"]);
+    assert_eq!(f(&a, "length_m"), f(&b, "length_m"));
+    assert!((f(&a, "period_s") - f(&b, "period_s")).abs() < 1e-15);
+}
+
+#[test]
+fn series_terms_are_honoured() {
+    let v = json(&[
+        "period",
+        "--length",
+        "1",
+        "--amplitude",
+        "30deg",
+        "--series-terms",
+        "8",
+    ]);
+    assert_eq!(v["series"]["terms"], 8);
+    let v3 = json(&["period", "--length", "1", "--amplitude", "30deg"]);
+    let e8 = v["series"]["relative_error"].as_f64().unwrap().abs();
+    let e3 = v3["series"]["relative_error"].as_f64().unwrap().abs();
+    assert!(e8 < e3 / 100.0, "{e8} vs {e3}");
+}
+
+#[test]
+fn latitude_changes_g() {
+    let v = json(&[
+        "period",
+        "--length",
+        "1",
+        "--amplitude",
+        "3",
+        "--latitude",
+        "-33.87",
+        "--height",
+        "50m",
+    ]);
+    let g = json(&["gravity", "--latitude", "-33.87", "--height", "50"]);
+    assert_eq!(f(&v, "g_m_s2"), f(&g, "g_m_s2"));
+    assert!((f(&g, "g_m_s2") - 9.7962).abs() < 1e-3);
+}
+
+#[test]
+fn period_table_has_one_row_per_amplitude() {
+    let args = [
+        "period",
+        "--length",
+        "1",
+        "--amplitude",
+        "1deg..10deg",
+        "--steps",
+        "10",
+    ];
+    let out = pendulum()
+        .args(args)
+        .arg("--csv")
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let mut reader = csv::Reader::from_reader(out.as_slice());
+    let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
+    for key in [
+        "amplitude_rad",
+        "period_s",
+        "circular_error_s_per_day",
+        "series_relative_error",
+    ] {
+        assert!(header.iter().any(|h| h == key), "{key} in {header:?}");
+    }
+    let rows: Vec<csv::StringRecord> = reader.records().map(|r| r.unwrap()).collect();
+    assert_eq!(rows.len(), 10);
+    let deg = header.iter().position(|h| h == "amplitude_deg").unwrap();
+    assert_eq!(rows[0][deg].parse::<f64>().unwrap(), 1.0);
+    assert_eq!(rows[9][deg].parse::<f64>().unwrap(), 10.0);
+    // The text table: a title, a header and ten rows.
+    pendulum()
+        .args(args)
+        .assert()
+        .success()
+        .stdout(predicate::function(|s: &str| s.lines().count() == 12));
+}
+
+#[test]
+fn length_of_the_seconds_pendulum() {
+    let v = json(&["length", "--period", "2s"]);
+    assert!((f(&v, "length_m") - 0.99362).abs() < 5e-6);
+    let b = json(&["length", "--bph", "3600"]);
+    assert_eq!(f(&b, "length_m"), f(&v, "length_m"));
+    // At 3 degrees the same period needs a slightly shorter rod.
+    let a = json(&["length", "--period", "2s", "--amplitude", "3deg"]);
+    assert!(f(&a, "length_m") < f(&v, "length_m"));
+}
+
+#[test]
+fn amplitude_inverts_period() {
+    let p = json(&["period", "--length", "0.99362", "--amplitude", "4.5deg"]);
+    let period = format!("{}s", f(&p, "period_s"));
+    let a = json(&["amplitude", "--period", &period, "--length", "0.99362"]);
+    assert!((f(&a, "amplitude_rad") - 4.5_f64.to_radians()).abs() < 1e-10);
+    let kappa = f(&a, "condition_number");
+    // About 8/A0² at small amplitudes.
+    let expected = 8.0 / 4.5_f64.to_radians().powi(2);
+    assert!(
+        (kappa / expected - 1.0).abs() < 0.01,
+        "{kappa} vs {expected}"
+    );
+}
+
+/// `period --length 1 --amplitude 3` followed by `extra`.
+fn p<'a>(extra: &[&'a str]) -> Vec<&'a str> {
+    let mut v = vec!["period", "--length", "1", "--amplitude", "3"];
+    v.extend_from_slice(extra);
+    v
+}
+
+#[test]
+fn help_and_version_succeed() {
+    pendulum()
+        .arg("--help")
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("period"));
+    pendulum().arg("--version").assert().success();
+    pendulum()
+        .args(["period", "--help"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("--amplitude"));
+}
+
+#[test]
+fn bad_input_is_one_line_with_status_two() {
+    let m = refuses(
+        &["period", "--length", "-1", "--amplitude", "3"],
+        "--length",
+    );
+    assert_eq!(m.trim_end(), "error: --length: must be positive, got -1 m");
+    refuses(&["period", "--length", "0", "--amplitude", "3"], "--length");
+    refuses(
+        &["period", "--length", "3parsecs", "--amplitude", "3"],
+        "parsecs",
+    );
+    refuses(
+        &["period", "--length", "1", "--amplitude", "3m"],
+        "--amplitude",
+    );
+    refuses(
+        &["period", "--length", "nan", "--amplitude", "3"],
+        "--length",
+    );
+    refuses(
+        &["period", "--length", "inf", "--amplitude", "3"],
+        "--length",
+    );
+    refuses(
+        &["period", "--length", "1", "--amplitude", "NaN"],
+        "--amplitude",
+    );
+    refuses(
+        &["period", "--length", "1e999", "--amplitude", "3"],
+        "--length",
+    );
+    let m = refuses(
+        &["period", "--length", "1", "--amplitude", "180deg"],
+        "--amplitude",
+    );
+    assert!(m.contains("inverted"), "{m}");
+    refuses(
+        &["period", "--length", "1", "--amplitude", "200"],
+        "--amplitude",
+    );
+    refuses(
+        &["period", "--length", "1", "--amplitude", "-3deg"],
+        "--amplitude",
+    );
+    refuses(&p(&["--g", "-9.8"]), "--g");
+    refuses(&p(&["--g", "0"]), "--g");
+    refuses(&p(&["--latitude", "91"]), "--latitude");
+    refuses(&p(&["--latitude", "-90.5"]), "--latitude");
+    refuses(&p(&["--series-terms", "0"]), "--series-terms");
+    refuses(&p(&["--bogus"]), "--bogus");
+    refuses(
+        &["period", "--length", "1", "--amplitude", "1..190"],
+        "--amplitude",
+    );
+    refuses(
+        &[
+            "period",
+            "--length",
+            "1",
+            "--amplitude",
+            "1..10",
+            "--steps",
+            "0",
+        ],
+        "--steps",
+    );
+    refuses(&["period", "--amplitude", "3"], "--length");
+    refuses(
+        &["amplitude", "--period", "1.9s", "--length", "0.99362"],
+        "--period",
+    );
+    refuses(
+        &["amplitude", "--period", "-2s", "--length", "0.99362"],
+        "--period",
+    );
+    refuses(&["length", "--period", "0s"], "--period");
+    refuses(&["length", "--bph", "-3600"], "--bph");
+    refuses(&["length", "--bph", "fast"], "--bph");
+    refuses(&["gravity", "--latitude", "100"], "--latitude");
+    refuses(
+        &["gravity", "--latitude", "10", "--height", "3kg"],
+        "--height",
+    );
+}

@@ -14,14 +14,19 @@ pub const STANDARD_GRAVITY: f64 = 9.806_65;
 pub struct Pendulum {
     length: f64,
     gravity: f64,
+    /// `2π sqrt(l/g)`, kept because every period evaluation needs it.
+    small_angle_period: f64,
 }
 
 impl Pendulum {
     /// A pendulum of `length_m` metres under `g_m_s2` m/s².
     pub fn new(length_m: f64, g_m_s2: f64) -> Result<Self, InputError> {
+        let length = require_positive(Quantity::Length, length_m)?;
+        let gravity = require_positive(Quantity::Gravity, g_m_s2)?;
         Ok(Self {
-            length: require_positive(Quantity::Length, length_m)?,
-            gravity: require_positive(Quantity::Gravity, g_m_s2)?,
+            length,
+            gravity,
+            small_angle_period: TAU * (length / gravity).sqrt(),
         })
     }
 
@@ -47,11 +52,12 @@ impl Pendulum {
 
     /// The small-angle period `T0 = 2π sqrt(l/g)`, s (seed section 1-1).
     pub fn small_angle_period(&self) -> f64 {
-        TAU * (self.length / self.gravity).sqrt()
+        self.small_angle_period
     }
 
     /// The exact period at `amplitude`, `T = 4 sqrt(l/g) K(sin²(A0/2))`
     /// (seed section 1-6); see [`crate::period::period_ratio`].
+    #[inline]
     pub fn period(&self, amplitude: Amplitude) -> f64 {
         self.small_angle_period() * crate::period::period_ratio(amplitude)
     }
@@ -101,6 +107,7 @@ impl Amplitude {
 
     /// The elliptic modulus of the swing: `k = sin(A0/2)`, `k' = cos(A0/2)`
     /// (seed section 1-6, the substitution `sin(θ/2) = k sin φ`).
+    #[inline]
     pub fn modulus(&self) -> Modulus {
         // A0/2 is exact and below π/2, so the constructor cannot refuse it.
         Modulus::from_modular_angle(0.5 * self.radians).expect("0 <= A0/2 < π/2")

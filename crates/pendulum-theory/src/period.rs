@@ -30,6 +30,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 ///
 /// 1 at zero amplitude, 1.0019 at 10°, 1.18 at 90°, and unbounded (like
 /// `(2/π) ln(8/(π - A0))`) towards 180°. Measured error at most 4 ulp.
+#[inline]
 pub fn period_ratio(amplitude: Amplitude) -> f64 {
     ellipk_modulus(&amplitude.modulus()) / FRAC_PI_2
 }

@@ -54,6 +54,7 @@ pub(crate) fn agm_with_sum(b: f64) -> AgmWithSum {
 }
 
 /// `AGM(1, b)` alone.
+#[inline]
 pub(crate) fn agm(b: f64) -> f64 {
     debug_assert!(b > 0.0 && b <= 1.0, "agm: b = {b}");
     let (mut a, mut b) = (1.0_f64, b);

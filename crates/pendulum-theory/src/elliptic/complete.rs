@@ -20,6 +20,7 @@ use std::f64::consts::FRAC_PI_2;
 
 /// `K(m)`, the complete elliptic integral of the first kind (DLMF 19.2.8),
 /// in the parameter convention. See [`ellipk_modulus`] for accuracy.
+#[inline]
 pub fn ellipk(m: f64) -> f64 {
     // Only k' is needed; skip the sqrt for k that Modulus would take.
     if !(0.0..=1.0).contains(&m) {
@@ -34,6 +35,7 @@ pub fn ellipk(m: f64) -> f64 {
 /// `K` from the modulus pair `(k, k')`: `π / (2 AGM(1, k'))`, DLMF 19.8.5.
 ///
 /// Measured error at most 2 ulp (see the module documentation).
+#[inline]
 pub fn ellipk_modulus(modulus: &Modulus) -> f64 {
     let k_prime = modulus.k_prime();
     if k_prime == 0.0 {

@@ -56,6 +56,7 @@ impl Modulus {
     /// From the angle `φ` with `k = sin φ`, `k' = cos φ` (DLMF 19.2.1's modular
     /// angle), `0 <= φ <= π/2`. For a pendulum of amplitude `A0`, `φ = A0/2`.
     /// Returns `None` outside that range and for NaN.
+    #[inline]
     pub fn from_modular_angle(phi: f64) -> Option<Self> {
         if !(0.0..=std::f64::consts::FRAC_PI_2).contains(&phi) {
             return None;

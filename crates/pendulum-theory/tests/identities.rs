@@ -59,7 +59,7 @@ proptest! {
 
     /// T0/T + circular error = 1, to an ulp of 1.
     #[test]
-    fn ratio_and_circular_error_agree(a in 1e-6_f64..3.14) {
+    fn ratio_and_circular_error_agree(a in 1e-6_f64..3.1) {
         let amp = Amplitude::from_radians(a).unwrap();
         let sum = 1.0 / period_ratio(amp) + circular_error(amp);
         prop_assert!((sum - 1.0).abs() <= 4.0 * f64::EPSILON);
@@ -76,7 +76,7 @@ proptest! {
 
     /// Amplitude from a period, then the period at that amplitude.
     #[test]
-    fn amplitude_round_trip(a in 1e-3_f64..3.14) {
+    fn amplitude_round_trip(a in 1e-3_f64..3.1) {
         let p = Pendulum::with_standard_gravity(1.0).unwrap();
         let amp = Amplitude::from_radians(a).unwrap();
         let est = amplitude_for_period(&p, p.period(amp)).unwrap();

@@ -25,6 +25,18 @@ pub enum Quantity {
     Height,
     /// Number of terms of a series.
     SeriesTerms,
+    /// Viscous damping ratio ζ (dimensionless).
+    DampingRatio,
+    /// Quality factor Q (dimensionless).
+    QualityFactor,
+    /// Logarithmic decrement per full period (dimensionless).
+    LogDecrement,
+    /// The seed's viscous damping coefficient c (N s).
+    DampingCoefficient,
+    /// Bob mass (kg).
+    Mass,
+    /// Amplitude decay time (s).
+    DecayTime,
 }
 
 impl Quantity {
@@ -39,6 +51,12 @@ impl Quantity {
             Quantity::Latitude => "latitude",
             Quantity::Height => "height",
             Quantity::SeriesTerms => "series terms",
+            Quantity::DampingRatio => "damping ratio",
+            Quantity::QualityFactor => "Q",
+            Quantity::LogDecrement => "logarithmic decrement",
+            Quantity::DampingCoefficient => "damping coefficient",
+            Quantity::Mass => "mass",
+            Quantity::DecayTime => "decay time",
         }
     }
 
@@ -49,7 +67,12 @@ impl Quantity {
             Quantity::Length | Quantity::Height => format!("{} m", significant(value)),
             Quantity::Gravity => format!("{} m/s^2", significant(value)),
             Quantity::Amplitude => format!("{}°", significant(value.to_degrees())),
-            Quantity::Period => format!("{} s", significant(value)),
+            Quantity::Period | Quantity::DecayTime => format!("{} s", significant(value)),
+            Quantity::DampingCoefficient => format!("{} N s", significant(value)),
+            Quantity::Mass => format!("{} kg", significant(value)),
+            Quantity::DampingRatio | Quantity::QualityFactor | Quantity::LogDecrement => {
+                significant(value)
+            }
             Quantity::BeatRate => format!("{} beats/h", significant(value)),
             Quantity::Latitude => format!("{}°", significant(value)),
             Quantity::SeriesTerms => significant(value),

@@ -8,6 +8,8 @@
 //!   (seed section 1-6), the circular error a clockmaker quotes in s/day,
 //!   the seed's power series, and the inverses (length for a period,
 //!   amplitude from a measured period).
+//! * [`damping`]: viscous damping (seed section 1-4) in every form people
+//!   use: `c`, `ζ`, `Q`, logarithmic decrement, decay time.
 //! * [`gravity`]: WGS 84 normal gravity with the free-air correction.
 //! * [`pendulum`]: the types that say what a number is: a [`Pendulum`]
 //!   (length and g) and an [`Amplitude`].
@@ -28,6 +30,7 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod damping;
 pub mod elliptic;
 pub mod error;
 pub mod gravity;

@@ -16,7 +16,7 @@
 //! as `ζ -> 1`. Round trips through every form return `ζ` within a few ulp
 //! (property-tested in this module).
 
-use crate::error::{require_positive, InputError, Problem, Quantity};
+use crate::error::{require_non_negative, require_positive, InputError, Quantity};
 use crate::pendulum::Pendulum;
 use std::f64::consts::{LN_2, TAU};
 
@@ -32,14 +32,9 @@ impl Damping {
 
     /// From the damping ratio `ζ >= 0` (`ζ = 1` is critical damping).
     pub fn from_zeta(zeta: f64) -> Result<Self, InputError> {
-        let q = Quantity::DampingRatio;
-        if !zeta.is_finite() {
-            return Err(InputError::new(q, zeta, Problem::NotFinite));
-        }
-        if zeta < 0.0 {
-            return Err(InputError::new(q, zeta, Problem::Negative));
-        }
-        Ok(Self { zeta })
+        Ok(Self {
+            zeta: require_non_negative(Quantity::DampingRatio, zeta)?,
+        })
     }
 
     /// From the quality factor `Q > 0`: `ζ = 1/(2Q)`.

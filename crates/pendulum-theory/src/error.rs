@@ -182,6 +182,17 @@ pub(crate) fn require_positive(quantity: Quantity, value: f64) -> Result<f64, In
     }
 }
 
+/// Checks that `value` is finite and not negative.
+pub(crate) fn require_non_negative(quantity: Quantity, value: f64) -> Result<f64, InputError> {
+    if !value.is_finite() {
+        Err(InputError::new(quantity, value, Problem::NotFinite))
+    } else if value < 0.0 {
+        Err(InputError::new(quantity, value, Problem::Negative))
+    } else {
+        Ok(value)
+    }
+}
+
 /// Checks that `value` is finite.
 pub(crate) fn require_finite(quantity: Quantity, value: f64) -> Result<f64, InputError> {
     if value.is_finite() {

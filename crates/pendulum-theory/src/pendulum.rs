@@ -2,7 +2,7 @@
 //! amplitude of a swing.
 
 use crate::elliptic::Modulus;
-use crate::error::{require_positive, InputError, Problem, Quantity};
+use crate::error::{require_non_negative, require_positive, InputError, Problem, Quantity};
 use std::f64::consts::{PI, TAU};
 
 /// Standard gravity, 9.80665 m/s² (CGPM 1901, exact by definition).
@@ -74,12 +74,7 @@ impl Amplitude {
     /// An amplitude of `radians`.
     pub fn from_radians(radians: f64) -> Result<Self, InputError> {
         let q = Quantity::Amplitude;
-        if !radians.is_finite() {
-            return Err(InputError::new(q, radians, Problem::NotFinite));
-        }
-        if radians < 0.0 {
-            return Err(InputError::new(q, radians, Problem::Negative));
-        }
+        let radians = require_non_negative(q, radians)?;
         if radians >= PI {
             return Err(InputError::new(
                 q,

@@ -118,6 +118,61 @@ def jacobi():
     write("jacobi.csv", ["u", "m", "sn_hi", "sn_lo", "cn_hi", "cn_lo", "dn_hi", "dn_lo"], rows)
 
 
+G0 = 9.80665
+ZETAS = [1e-7, 1e-5, 1e-3, 0.01, 0.1, 0.5, 0.9, 0.999, 1.0 - 1e-12, 1.0, 1.0 + 1e-12, 1.001, 2.0, 10.0]
+
+
+def damped_state(zeta, length, theta0, v0, t):
+    """theta(t), theta'(t) of theta'' + 2 zeta w theta' + w^2 theta = 0 from the
+    roots of the characteristic equation, in complex arithmetic: a different
+    route from the library's real sinc/sinhc form."""
+    w = mp.sqrt(mp.mpf(G0) / mp.mpf(length))
+    z, t, th0, v0 = mp.mpf(zeta), mp.mpf(t), mp.mpf(theta0), mp.mpf(v0)
+    if z == 1:
+        e = mp.exp(-w * t)
+        b = v0 + w * th0
+        return (th0 + b * t) * e, (b - w * (th0 + b * t)) * e
+    root = mp.sqrt(mp.mpc(z * z - 1))
+    r1, r2 = w * (-z + root), w * (-z - root)
+    a = (v0 - r2 * th0) / (r1 - r2)
+    b = th0 - a
+    theta = a * mp.exp(r1 * t) + b * mp.exp(r2 * t)
+    vel = a * r1 * mp.exp(r1 * t) + b * r2 * mp.exp(r2 * t)
+    return mp.re(theta), mp.re(vel)
+
+
+def damped():
+    rows = []
+    for zeta in ZETAS:
+        for theta0, v0 in ((0.05, 0.0), (0.03, 0.1), (-0.2, -0.5)):
+            length = RNG.uniform(0.1, 10.0)
+            w = math.sqrt(G0 / length)
+            period = 2 * math.pi / w
+            span = period * (300.0 if zeta < 0.01 else 10.0)
+            for t in [0.0, RNG.uniform(0, period)] + [RNG.uniform(0, span) for _ in range(4)]:
+                th, v = damped_state(zeta, length, theta0, v0, t)
+                rows.append((repr(zeta), repr(length), repr(theta0), repr(v0), repr(t)) + split(th) + split(v))
+    write("damped.csv", ["zeta", "length_m", "theta0_rad", "v0_rad_s", "t_s",
+                         "theta_hi", "theta_lo", "v_hi", "v_lo"], rows)
+
+
+def conversions():
+    """From zeta: Q, log decrement, c for a mass, decay time, half-life."""
+    rows = []
+    zetas = [10.0 ** RNG.uniform(-7, 1) for _ in range(200)] + ZETAS
+    for zeta in zetas:
+        length, mass = RNG.uniform(0.1, 10.0), RNG.uniform(0.05, 20.0)
+        z = mp.mpf(zeta)
+        w = mp.sqrt(mp.mpf(G0) / mp.mpf(length))
+        q = 1 / (2 * z)
+        delta = 2 * mp.pi * z / mp.sqrt(1 - z * z) if z < 1 else mp.mpf(0)
+        c = 2 * mp.mpf(mass) * z * mp.sqrt(mp.mpf(G0) * mp.mpf(length))
+        tau = 1 / (z * w)
+        rows.append((repr(zeta), repr(length), repr(mass)) + split(q) + split(delta) + split(c) + split(tau) + split(tau * mp.log(2)))
+    write("damping_conversions.csv", ["zeta", "length_m", "mass_kg", "q_hi", "q_lo", "log_decrement_hi", "log_decrement_lo",
+                                      "c_hi", "c_lo", "tau_hi", "tau_lo", "half_life_hi", "half_life_lo"], rows)
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
     complete(parameters())
@@ -125,6 +180,8 @@ def main():
     by_amplitude(amps)
     periods(amps)
     jacobi()
+    damped()
+    conversions()
 
 
 if __name__ == "__main__":

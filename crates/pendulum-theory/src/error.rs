@@ -37,6 +37,8 @@ pub enum Quantity {
     Mass,
     /// Amplitude decay time (s).
     DecayTime,
+    /// Coulomb friction angle (rad; shown in degrees).
+    FrictionAngle,
 }
 
 impl Quantity {
@@ -57,6 +59,7 @@ impl Quantity {
             Quantity::DampingCoefficient => "damping coefficient",
             Quantity::Mass => "mass",
             Quantity::DecayTime => "decay time",
+            Quantity::FrictionAngle => "friction angle",
         }
     }
 
@@ -66,7 +69,9 @@ impl Quantity {
         match self {
             Quantity::Length | Quantity::Height => format!("{} m", significant(value)),
             Quantity::Gravity => format!("{} m/s^2", significant(value)),
-            Quantity::Amplitude => format!("{}°", significant(value.to_degrees())),
+            Quantity::Amplitude | Quantity::FrictionAngle => {
+                format!("{}°", significant(value.to_degrees()))
+            }
             Quantity::Period | Quantity::DecayTime => format!("{} s", significant(value)),
             Quantity::DampingCoefficient => format!("{} N s", significant(value)),
             Quantity::Mass => format!("{} kg", significant(value)),

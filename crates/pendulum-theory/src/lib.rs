@@ -10,6 +10,12 @@
 //!   amplitude from a measured period).
 //! * [`damping`]: viscous damping (seed section 1-4) in every form people
 //!   use: `c`, `ζ`, `Q`, logarithmic decrement, decay time.
+//! * [`damped`]: the damped linear pendulum's free vibration in all three
+//!   regimes, its turning points and the amplitude it loses per period.
+//! * [`friction`]: dry (Coulomb) friction on top of viscous damping (book
+//!   section 2-4): linear decay and the stop.
+//! * [`energy`]: stored energy, losses, power, and the impulse per beat an
+//!   escapement must give.
 //! * [`gravity`]: WGS 84 normal gravity with the free-air correction.
 //! * [`pendulum`]: the types that say what a number is: a [`Pendulum`]
 //!   (length and g) and an [`Amplitude`].
@@ -30,9 +36,12 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod damped;
 pub mod damping;
 pub mod elliptic;
+pub mod energy;
 pub mod error;
+pub mod friction;
 pub mod gravity;
 pub mod pendulum;
 pub mod period;

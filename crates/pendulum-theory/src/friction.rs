@@ -1,0 +1,237 @@
+//! Dry (Coulomb) friction added to viscous damping, as the book's section 2-4
+//! does for the balance wheel:
+//! `θ'' + 2ζω_n θ' + ω_n² (θ + r sign θ') = 0`, with `r` the friction angle
+//! (the friction torque divided by the restoring torque per radian).
+//!
+//! During each half swing `sign θ'` is constant, so the motion is the viscous
+//! free vibration of [`crate::damped`] about the shifted centre
+//! `c_n = r sign(A_n)`. From rest at `A_n` it reaches its next turning point
+//! after `π/ω_d` at `A_{n+1} = c_n - (A_n - c_n)/λ`, `λ = e^{ζπ/sqrt(1-ζ²)}`,
+//! so `|A_{n+1}| = (|A_n| - r)/λ - r`. Without viscous damping (`λ = 1`) the
+//! amplitude falls by exactly `2r` per half swing: a straight line, not an
+//! exponential. The pendulum sticks at the first turning point where
+//! `|A| <= r` (the restoring torque no longer beats friction); that point
+//! may lie on the same side as the one before. Critically damped and
+//! overdamped pendulums creep towards `r sign(A0)` without ever turning.
+
+use crate::damped::{DampedPendulum, Extremum, State};
+use crate::error::{require_non_negative, InputError, Quantity};
+use std::f64::consts::PI;
+
+/// A damped pendulum with a friction angle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DryFriction {
+    /// The viscously damped pendulum.
+    pub damped: DampedPendulum,
+    friction_angle: f64,
+}
+
+/// Where and when the pendulum sticks.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stop {
+    /// Time, s; `None` when it creeps there without end (overdamped).
+    pub time: Option<f64>,
+    /// The signed angle it stays at, rad.
+    pub angle: f64,
+}
+
+/// The turning points of a run down, and where it stops.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunDown {
+    /// Turning points from the start; the last is the stop when it stops in time.
+    pub extrema: Vec<Extremum>,
+    /// `None` if it had not stopped by the last turning point computed.
+    pub stop: Option<Stop>,
+}
+
+/// One half swing: from rest at `start_angle` at `start_time`, about `centre`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HalfSwing {
+    /// Time of the turning point it starts from, s.
+    pub start_time: f64,
+    /// The angle it starts from, rad.
+    pub start_angle: f64,
+    /// The centre it swings about, `r sign(start_angle)`, rad.
+    pub centre: f64,
+}
+
+impl DryFriction {
+    /// `friction_angle` in radians, finite and not negative (0: viscous only).
+    pub fn new(damped: DampedPendulum, friction_angle: f64) -> Result<Self, InputError> {
+        Ok(Self {
+            damped,
+            friction_angle: require_non_negative(Quantity::FrictionAngle, friction_angle)?,
+        })
+    }
+
+    /// The friction angle `r`, rad.
+    pub fn friction_angle(&self) -> f64 {
+        self.friction_angle
+    }
+
+    /// `ζπ/sqrt(1 - ζ²)` = ln λ, the viscous decrement per half swing; `None` unless underdamped.
+    fn half_decrement(&self) -> Option<f64> {
+        let factor = self.damped.damping.damped_frequency_factor()?;
+        Some(self.damped.damping.zeta() * PI / factor)
+    }
+
+    /// The next turning point after rest at `angle`, ignoring sticking.
+    pub fn next_turning_angle(&self, angle: f64) -> Option<f64> {
+        let lambda_inv = (-self.half_decrement()?).exp();
+        let centre = self.friction_angle.copysign(angle);
+        Some(centre - (angle - centre) * lambda_inv)
+    }
+
+    /// The amplitude lost in one half swing from `amplitude`,
+    /// `(A - r)(1 - 1/λ) + 2r`, formed with `expm1` so that it keeps its
+    /// digits when the loss is tiny. `None` unless underdamped.
+    pub fn half_swing_loss(&self, amplitude: f64) -> Option<f64> {
+        let a = amplitude.abs();
+        let r = self.friction_angle;
+        Some(-(a - r) * (-self.half_decrement()?).exp_m1() + 2.0 * r)
+    }
+
+    /// Turning points `0..=count` from rest at `amplitude`, stopping early
+    /// where the pendulum sticks.
+    pub fn run_down(&self, amplitude: f64, count: u64) -> RunDown {
+        let r = self.friction_angle;
+        let mut extrema = vec![Extremum {
+            index: 0,
+            time: 0.0,
+            angle: amplitude,
+        }];
+        if amplitude.abs() <= r {
+            let stop = Stop {
+                time: Some(0.0),
+                angle: amplitude,
+            };
+            return RunDown {
+                extrema,
+                stop: Some(stop),
+            };
+        }
+        let Some(wd) = self.damped.damped_angular_frequency() else {
+            let stop = (r > 0.0).then(|| Stop {
+                time: None,
+                angle: r.copysign(amplitude),
+            });
+            return RunDown { extrema, stop };
+        };
+        let mut angle = amplitude;
+        for n in 1..=count {
+            angle = self.next_turning_angle(angle).expect("underdamped");
+            let time = n as f64 * PI / wd;
+            extrema.push(Extremum {
+                index: n,
+                time,
+                angle,
+            });
+            if angle.abs() <= r {
+                let stop = Stop {
+                    time: Some(time),
+                    angle,
+                };
+                return RunDown {
+                    extrema,
+                    stop: Some(stop),
+                };
+            }
+        }
+        RunDown {
+            extrema,
+            stop: None,
+        }
+    }
+
+    /// The half swing that begins at turning point `from` (which must not be a stop).
+    pub fn half_swing(&self, from: &Extremum) -> HalfSwing {
+        HalfSwing {
+            start_time: from.time,
+            start_angle: from.angle,
+            centre: self.friction_angle.copysign(from.angle),
+        }
+    }
+
+    /// The state at time `t` within `swing` (from its start to the next turning point).
+    pub fn state_in(&self, swing: &HalfSwing, t: f64) -> State {
+        let offset = swing.start_angle - swing.centre;
+        let s = self.damped.state_at(offset, 0.0, t - swing.start_time);
+        State {
+            angle: swing.centre + s.angle,
+            angular_velocity: s.angular_velocity,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::damping::Damping;
+    use crate::pendulum::Pendulum;
+
+    fn friction(zeta: f64, r: f64) -> DryFriction {
+        let p = Pendulum::with_standard_gravity(0.99362).unwrap();
+        DryFriction::new(DampedPendulum::new(p, Damping::from_zeta(zeta).unwrap()), r).unwrap()
+    }
+
+    #[test]
+    fn pure_coulomb_loses_two_r_per_half_swing() {
+        let r = 1e-3;
+        let run = friction(0.0, r).run_down(0.05, 100);
+        for pair in run.extrema.windows(2) {
+            let drop = pair[0].angle.abs() - pair[1].angle.abs();
+            if pair[1].angle.abs() > r && pair[0].angle.abs() > r {
+                assert!((drop - 2.0 * r).abs() < 1e-15, "{pair:?}");
+            }
+        }
+        let stop = run.stop.unwrap();
+        assert!(stop.angle.abs() <= r);
+        // 0.05 / 0.002 = 25 half swings to fall within r.
+        assert_eq!(run.extrema.len(), 26);
+        assert_eq!(stop.time, Some(run.extrema[25].time));
+    }
+
+    #[test]
+    fn stop_on_the_same_side() {
+        // From 1.5r the next turning point is r - 0.5r = 0.5r... with λ = 1:
+        // 2r - 1.5r = 0.5r > 0, the same side, inside the band: it sticks.
+        let r = 0.01;
+        let run = friction(0.0, r).run_down(0.015, 10);
+        let stop = run.stop.unwrap();
+        assert!(stop.angle > 0.0 && stop.angle <= r);
+        assert_eq!(run.extrema.len(), 2);
+    }
+
+    #[test]
+    fn overdamped_creeps_to_the_band_edge() {
+        let run = friction(2.0, 0.01).run_down(0.1, 10);
+        assert_eq!(run.extrema.len(), 1);
+        assert_eq!(
+            run.stop,
+            Some(Stop {
+                time: None,
+                angle: 0.01
+            })
+        );
+    }
+
+    #[test]
+    fn half_swing_loss_matches_the_recursion() {
+        let f = friction(0.01, 2e-3);
+        let next = f.next_turning_angle(0.1).unwrap();
+        let loss = f.half_swing_loss(0.1).unwrap();
+        assert!((0.1 - next.abs() - loss).abs() < 1e-16);
+    }
+
+    #[test]
+    fn trajectory_meets_the_turning_points() {
+        let f = friction(0.02, 1e-3);
+        let run = f.run_down(0.05, 6);
+        for pair in run.extrema.windows(2) {
+            let swing = f.half_swing(&pair[0]);
+            let s = f.state_in(&swing, pair[1].time);
+            assert!((s.angle - pair[1].angle).abs() < 1e-15);
+            assert!(s.angular_velocity.abs() < 1e-14);
+        }
+    }
+}

@@ -28,6 +28,8 @@ pub enum Command {
     Amplitude(AmplitudeArgs),
     /// Local gravity from latitude and height (WGS 84 normal gravity).
     Gravity(GravityCommandArgs),
+    /// The damped pendulum (seed section 1-4): Q, decay, turning points, dry friction, energy.
+    Damped(Box<DampedArgs>),
 }
 
 /// Where g comes from: given, from latitude and height, or standard gravity.
@@ -139,6 +141,76 @@ pub struct GravityCommandArgs {
     /// Height above the ellipsoid [default: 0 m].
     #[arg(long, value_name = "H", allow_hyphen_values = true)]
     pub height: Option<String>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// One way to give viscous damping; exactly one is required.
+#[derive(Debug, Args)]
+#[group(required = true, multiple = false)]
+pub struct DampingArgs {
+    /// Damping ratio ζ (1 = critical damping).
+    #[arg(long, value_name = "Z", allow_hyphen_values = true)]
+    pub zeta: Option<String>,
+    /// Quality factor Q = 1/(2ζ).
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub q: Option<String>,
+    /// The seed's viscous coefficient c in N s (force on the bob c dθ/dt); needs --mass.
+    #[arg(long, value_name = "C", allow_hyphen_values = true, requires = "mass")]
+    pub damping_coefficient: Option<String>,
+    /// Logarithmic decrement of the amplitude per full period.
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
+    pub log_decrement: Option<String>,
+    /// Time for the amplitude to fall by a factor e (e.g. 2h).
+    #[arg(long, value_name = "TAU", allow_hyphen_values = true)]
+    pub decay_time: Option<String>,
+}
+
+/// `pendulum damped`.
+#[derive(Debug, Args)]
+pub struct DampedArgs {
+    /// Pendulum length.
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length: String,
+    /// Amplitude it is released from, at rest.
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub amplitude: String,
+    #[command(flatten)]
+    pub damping: DampingArgs,
+    /// Coulomb friction angle r (friction torque / restoring torque per radian), e.g. 0.01deg.
+    #[arg(long, value_name = "R", allow_hyphen_values = true)]
+    pub friction_angle: Option<String>,
+    /// Bob mass, for the energy budget (and with --damping-coefficient).
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub mass: Option<String>,
+    /// How many turning points to list after the start.
+    #[arg(long, value_name = "N", default_value_t = 10)]
+    pub extrema: u64,
+    /// Write the motion to this CSV file (time_s,angle_rad,angular_velocity_rad_s).
+    #[arg(long, value_name = "FILE.csv")]
+    pub trajectory: Option<std::path::PathBuf>,
+    /// How long a trajectory to write [default: 10 small-angle periods].
+    #[arg(
+        long,
+        value_name = "D",
+        allow_hyphen_values = true,
+        requires = "trajectory"
+    )]
+    pub duration: Option<String>,
+    /// Time between trajectory samples [default: a hundredth of the small-angle period].
+    #[arg(
+        long,
+        value_name = "H",
+        allow_hyphen_values = true,
+        requires = "trajectory"
+    )]
+    pub sample_interval: Option<String>,
+    /// Allow more than 10^8 trajectory samples.
+    #[arg(long)]
+    pub force: bool,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,

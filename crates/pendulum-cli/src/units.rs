@@ -221,7 +221,7 @@ impl fmt::Display for UnitError {
             UnitError::Empty => write!(f, "is empty; give a number with a unit, like 0.994m"),
             UnitError::NotANumber(text) => write!(
                 f,
-                "'{text}' is not a number; give a finite number with a unit, like 0.994m or 3deg"
+                "'{text}' is not a number; give a finite number (with a unit where one is wanted, like 0.994m or 3deg)"
             ),
             UnitError::NotFinite(text) => write!(f, "must be a finite number, got '{text}'"),
             UnitError::UnknownUnit { text, unit, wanted } => write!(
@@ -265,6 +265,26 @@ pub fn parse_quantity(text: &str, dimension: Dimension) -> Result<f64, UnitError
         return Err(UnitError::NotFinite(trimmed.to_string()));
     }
     Ok(value)
+}
+
+/// Reads a plain number (no unit), as for `ζ` or `Q`.
+pub fn parse_number(text: &str) -> Result<f64, UnitError> {
+    let trimmed = text.trim();
+    if trimmed.is_empty() {
+        return Err(UnitError::Empty);
+    }
+    let split = number_prefix_len(trimmed);
+    if split == 0 || split != trimmed.len() {
+        return Err(UnitError::NotANumber(trimmed.to_string()));
+    }
+    let value: f64 = trimmed
+        .parse()
+        .map_err(|_| UnitError::NotANumber(trimmed.to_string()))?;
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(UnitError::NotFinite(trimmed.to_string()))
+    }
 }
 
 /// Reads `from..to` (both with units) as a pair of SI values.
@@ -397,6 +417,18 @@ mod tests {
         assert_eq!(parse_quantity("", Dimension::Length), Err(UnitError::Empty));
         assert!(parse_quantity("-", Dimension::Length).is_err());
         assert!(parse_quantity(".", Dimension::Length).is_err());
+    }
+
+    #[test]
+    fn plain_numbers() {
+        assert_eq!(parse_number("0.05"), Ok(0.05));
+        assert_eq!(parse_number(" 1e4 "), Ok(1e4));
+        assert!(parse_number("3deg").is_err());
+        assert!(parse_number("nan").is_err());
+        assert!(matches!(
+            parse_number("1e400"),
+            Err(UnitError::NotFinite(_))
+        ));
     }
 
     #[test]

@@ -12,6 +12,7 @@
 //! `Ω = 2 ω_n sin(A/2)`, an angular impulse `J` adds `Ω J` of energy
 //! (to first order in `J`), so `J = ΔE_beat / Ω`.
 
+use crate::error::{require_positive, InputError, Quantity};
 use crate::pendulum::Pendulum;
 
 /// The energy budget at one amplitude.
@@ -29,14 +30,15 @@ pub struct EnergyBudget {
 
 /// The budget of a bob of `mass_kg` on `pendulum` swinging at `amplitude`
 /// (rad) that loses `half_swing_loss` (rad) of amplitude per beat, with a
-/// full period of `period` (s).
+/// full period of `period` (s). The mass must be positive.
 pub fn energy_budget(
     pendulum: &Pendulum,
     mass_kg: f64,
     amplitude: f64,
     half_swing_loss: f64,
     period: f64,
-) -> EnergyBudget {
+) -> Result<EnergyBudget, InputError> {
+    let mass_kg = require_positive(Quantity::Mass, mass_kg)?;
     let a = amplitude.abs();
     let a1 = a - half_swing_loss;
     let weight_moment = mass_kg * pendulum.g_m_s2() * pendulum.length_m();
@@ -44,12 +46,12 @@ pub fn energy_budget(
     let loss_per_beat =
         2.0 * weight_moment * (0.5 * half_swing_loss).sin() * (0.5 * (a + a1)).sin();
     let bottom_speed = 2.0 * pendulum.natural_angular_frequency() * (0.5 * a).sin();
-    EnergyBudget {
+    Ok(EnergyBudget {
         energy,
         loss_per_period: 2.0 * loss_per_beat,
         power: 2.0 * loss_per_beat / period,
         impulse_per_beat: loss_per_beat / bottom_speed,
-    }
+    })
 }
 
 #[cfg(test)]
@@ -64,7 +66,8 @@ mod tests {
         let a = 3.0_f64.to_radians();
         let q = 1e4;
         let half_loss = a * (std::f64::consts::PI / (2.0 * q)); // δ/2 per beat, first order
-        let b = energy_budget(&p, 1.0, a, half_loss, 2.0);
+        let b = energy_budget(&p, 1.0, a, half_loss, 2.0).unwrap();
+        assert!(energy_budget(&p, 0.0, a, half_loss, 2.0).is_err());
         let e_small = 9.80665 * 0.99362 * a * a / 2.0;
         assert!((b.energy / e_small - 1.0).abs() < 1e-3);
         let expected_loss = 2.0 * std::f64::consts::PI / q * b.energy;

@@ -84,11 +84,59 @@ impl DryFriction {
 
     /// The amplitude lost in one half swing from `amplitude`,
     /// `(A - r)(1 - 1/λ) + 2r`, formed with `expm1` so that it keeps its
-    /// digits when the loss is tiny. `None` unless underdamped.
+    /// digits when the loss is tiny. `None` unless underdamped. Meaningful
+    /// while the swing carries on past the centre (`|A| - loss > r`); a
+    /// larger value says the pendulum sticks in this half swing.
     pub fn half_swing_loss(&self, amplitude: f64) -> Option<f64> {
         let a = amplitude.abs();
         let r = self.friction_angle;
         Some(-(a - r) * (-self.half_decrement()?).exp_m1() + 2.0 * r)
+    }
+
+    /// The amplitude lost over the first full period from `amplitude`
+    /// (two half swings, exact); `None` unless underdamped or if the
+    /// pendulum sticks within that period.
+    pub fn amplitude_loss_per_period(&self, amplitude: f64) -> Option<f64> {
+        let first = self.half_swing_loss(amplitude)?;
+        let middle = amplitude.abs() - first;
+        if middle <= self.friction_angle {
+            return None;
+        }
+        let second = self.half_swing_loss(middle)?;
+        (middle - second > self.friction_angle).then_some(first + second)
+    }
+
+    /// The first-order form: the seed's `2πζ/sqrt(1 - ζ²) A` plus `4r`.
+    pub fn amplitude_loss_per_period_approx(&self, amplitude: f64) -> Option<f64> {
+        Some(self.damped.amplitude_loss_per_period_approx(amplitude)? + 4.0 * self.friction_angle)
+    }
+
+    /// A sampler of the motion from rest at `amplitude`, for times that
+    /// never decrease: it walks from half swing to half swing, so a run of
+    /// any length needs constant memory.
+    pub fn sampler(&self, amplitude: f64) -> Sampler {
+        let start = Extremum {
+            index: 0,
+            time: 0.0,
+            angle: amplitude,
+        };
+        let stuck = amplitude.abs() <= self.friction_angle;
+        Sampler {
+            friction: *self,
+            swing: self.half_swing(&start),
+            next: self.following(&start),
+            stuck,
+        }
+    }
+
+    /// The turning point after `from`, if the pendulum turns at all.
+    fn following(&self, from: &Extremum) -> Option<Extremum> {
+        let wd = self.damped.damped_angular_frequency()?;
+        Some(Extremum {
+            index: from.index + 1,
+            time: (from.index + 1) as f64 * PI / wd,
+            angle: self.next_turning_angle(from.angle)?,
+        })
     }
 
     /// Turning points `0..=count` from rest at `amplitude`, stopping early
@@ -163,6 +211,43 @@ impl DryFriction {
     }
 }
 
+/// The motion from rest, sampled at non-decreasing times (see [`DryFriction::sampler`]).
+#[derive(Clone, Debug)]
+pub struct Sampler {
+    friction: DryFriction,
+    swing: HalfSwing,
+    next: Option<Extremum>,
+    stuck: bool,
+}
+
+impl Sampler {
+    /// The state at `t`, s; `t` must not be less than at the previous call.
+    pub fn state_at(&mut self, t: f64) -> State {
+        let r = self.friction.friction_angle;
+        while !self.stuck {
+            match self.next {
+                Some(turn) if t >= turn.time => {
+                    if turn.angle.abs() <= r {
+                        self.stuck = true;
+                        self.swing.start_angle = turn.angle;
+                        break;
+                    }
+                    self.swing = self.friction.half_swing(&turn);
+                    self.next = self.friction.following(&turn);
+                }
+                _ => break,
+            }
+        }
+        if self.stuck {
+            return State {
+                angle: self.swing.start_angle,
+                angular_velocity: 0.0,
+            };
+        }
+        self.friction.state_in(&self.swing, t)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -213,6 +298,33 @@ mod tests {
                 angle: 0.01
             })
         );
+    }
+
+    #[test]
+    fn sampler_follows_the_run_down_and_stays_stuck() {
+        let f = friction(0.0, 5e-3);
+        let run = f.run_down(0.05, 100);
+        let mut sampler = f.sampler(0.05);
+        for e in &run.extrema {
+            let s = sampler.state_at(e.time);
+            assert!((s.angle - e.angle).abs() < 1e-15, "{e:?} {s:?}");
+        }
+        let stop = run.stop.unwrap();
+        let later = sampler.state_at(stop.time.unwrap() + 100.0);
+        assert_eq!((later.angle, later.angular_velocity), (stop.angle, 0.0));
+    }
+
+    #[test]
+    fn no_loss_per_period_when_it_sticks_within_it() {
+        let f = friction(0.2, 0.5_f64.to_radians());
+        assert_eq!(f.amplitude_loss_per_period(3.0_f64.to_radians()), None);
+        let light = friction(0.001, 0.01_f64.to_radians());
+        let a = 3.0_f64.to_radians();
+        let loss = light.amplitude_loss_per_period(a).unwrap();
+        let a2 = light
+            .next_turning_angle(light.next_turning_angle(a).unwrap())
+            .unwrap();
+        assert!((a - a2 - loss).abs() < 1e-16);
     }
 
     #[test]

@@ -3,6 +3,7 @@
 
 mod amplitude;
 mod common;
+mod damped;
 mod gravity;
 mod length;
 mod period;
@@ -17,5 +18,6 @@ pub fn run(command: &Command) -> Result<String, CliError> {
         Command::Length(args) => length::run(args),
         Command::Amplitude(args) => amplitude::run(args),
         Command::Gravity(args) => gravity::run(args),
+        Command::Damped(args) => damped::run(args),
     }
 }

@@ -1,49 +1,7 @@
-//! The real `pendulum` binary, run as a user would run it.
+//! `pendulum period`, `length`, `amplitude`, `gravity`.
 
-use assert_cmd::Command;
+use crate::util::{f, json, p, pendulum, refuses};
 use predicates::prelude::*;
-use serde_json::Value;
-
-fn pendulum() -> Command {
-    Command::cargo_bin("pendulum").expect("the pendulum binary is built")
-}
-
-/// Runs with `args`, expects success, parses standard output as JSON.
-fn json(args: &[&str]) -> Value {
-    let out = pendulum()
-        .args(args)
-        .arg("--json")
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
-    serde_json::from_slice(&out).expect("standard output is JSON")
-}
-
-/// Runs with `args` and expects the one-line error contract: status 2,
-/// nothing on standard output, one line on standard error naming `flag`.
-fn refuses(args: &[&str], flag: &str) -> String {
-    let out = pendulum()
-        .args(args)
-        .assert()
-        .code(2)
-        .stdout("")
-        .get_output()
-        .stderr
-        .clone();
-    let text = String::from_utf8(out).unwrap();
-    assert_eq!(text.lines().count(), 1, "one line expected, got: {text}");
-    assert!(text.starts_with("error: "), "{text}");
-    assert!(text.contains(flag), "{text} should name {flag}");
-    text
-}
-
-fn f(v: &Value, key: &str) -> f64 {
-    v[key]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{key} missing in {v}"))
-}
 
 #[test]
 fn period_json_has_the_documented_keys() {
@@ -194,13 +152,6 @@ fn amplitude_inverts_period() {
         (kappa / expected - 1.0).abs() < 0.01,
         "{kappa} vs {expected}"
     );
-}
-
-/// `period --length 1 --amplitude 3` followed by `extra`.
-fn p<'a>(extra: &[&'a str]) -> Vec<&'a str> {
-    let mut v = vec!["period", "--length", "1", "--amplitude", "3"];
-    v.extend_from_slice(extra);
-    v
 }
 
 #[test]

@@ -1,0 +1,402 @@
+//! `pendulum damped`: the damped pendulum of seed section 1-4, with dry
+//! friction (book section 2-4) and the energy budget.
+
+use super::common::{self, finite};
+use crate::args::{DampedArgs, DampingArgs};
+use crate::error::CliError;
+use crate::file::AtomicFile;
+use crate::output::{self, num, Summary};
+use crate::units::{parse_number, Dimension};
+use pendulum_theory::damped::{DampedPendulum, Extremum, Regime};
+use pendulum_theory::damping::Damping;
+use pendulum_theory::energy::{energy_budget, EnergyBudget};
+use pendulum_theory::friction::{DryFriction, RunDown};
+use pendulum_theory::{Amplitude, Pendulum, Quantity};
+use serde::Serialize;
+use std::io::Write;
+
+/// More trajectory samples than this need `--force`.
+const MAX_SAMPLES: f64 = 1e8;
+
+#[derive(Serialize)]
+struct DampedJson {
+    length_m: f64,
+    g_m_s2: f64,
+    amplitude_rad: f64,
+    zeta: f64,
+    q_factor: Option<f64>,
+    log_decrement: Option<f64>,
+    natural_angular_frequency_rad_s: f64,
+    damped_angular_frequency_rad_s: Option<f64>,
+    damped_period_s: Option<f64>,
+    phase_rad: Option<f64>,
+    regime: &'static str,
+    decay_time_s: Option<f64>,
+    amplitude_half_life_s: Option<f64>,
+    amplitude_loss_per_period_rad: Option<f64>,
+    amplitude_loss_per_period_approx_rad: Option<f64>,
+    amplitude_loss_per_period_difference_rad: Option<f64>,
+    friction_angle_rad: f64,
+    extrema: Vec<ExtremumJson>,
+    stop: Option<StopJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mass_kg: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    damping_coefficient_n_s: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    energy_j: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    energy_loss_per_period_j: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    power_w: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    impulse_per_beat_kg_m2_s: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    trajectory: Option<TrajectoryJson>,
+}
+
+#[derive(Serialize)]
+struct ExtremumJson {
+    index: u64,
+    time_s: f64,
+    angle_rad: f64,
+}
+
+#[derive(Serialize)]
+struct StopJson {
+    time_s: Option<f64>,
+    angle_rad: f64,
+}
+
+#[derive(Serialize)]
+struct TrajectoryJson {
+    path: String,
+    samples: u64,
+    duration_s: f64,
+    sample_interval_s: f64,
+}
+
+/// What the library computed, gathered for the renderers.
+struct Results {
+    pendulum: Pendulum,
+    amplitude: Amplitude,
+    damped: DampedPendulum,
+    friction: DryFriction,
+    extrema: Vec<Extremum>,
+    run: RunDown,
+    mass: Option<f64>,
+    budget: Option<EnergyBudget>,
+}
+
+pub fn run(args: &DampedArgs) -> Result<String, CliError> {
+    let gravity = common::gravity(&args.gravity)?;
+    let pendulum = common::pendulum(&args.length, &gravity)?;
+    let amplitude = common::amplitude("--amplitude", &args.amplitude)?;
+    let mass = args
+        .mass
+        .as_deref()
+        .map(|t| common::quantity("--mass", t, Dimension::Mass))
+        .transpose()?;
+    let damping = damping(&args.damping, mass, &pendulum)?;
+    let damped = DampedPendulum::new(pendulum, damping);
+    let friction = friction(args.friction_angle.as_deref(), damped, amplitude)?;
+    let a0 = amplitude.radians();
+    let run = friction.run_down(a0, args.extrema);
+    // Without friction the closed form gives every turning point directly,
+    // with no rounding carried from one to the next.
+    let extrema = if friction.friction_angle() == 0.0 {
+        damped.extrema(a0, args.extrema)
+    } else {
+        run.extrema.clone()
+    };
+    let budget = match (mass, friction.half_swing_loss(a0), damped.damped_period()) {
+        (Some(m), Some(loss), Some(period)) => Some(
+            energy_budget(&pendulum, m, a0, loss, period)
+                .map_err(|e| CliError::input("--mass", &e))?,
+        ),
+        _ => None,
+    };
+    let results = Results {
+        pendulum,
+        amplitude,
+        damped,
+        friction,
+        extrema,
+        run,
+        mass,
+        budget,
+    };
+    let trajectory = match &args.trajectory {
+        Some(path) => Some(write_trajectory(args, path, &results)?),
+        None => None,
+    };
+    let json = to_json(&results, trajectory);
+    if args.json {
+        output::json(&json)
+    } else {
+        Ok(text(&results, &json))
+    }
+}
+
+/// The one damping form given, converted to ζ.
+fn damping(args: &DampingArgs, mass: Option<f64>, p: &Pendulum) -> Result<Damping, CliError> {
+    let number = |flag: &str, text: &str| parse_number(text).map_err(|e| CliError::flag(flag, e));
+    if let Some(t) = &args.zeta {
+        let z = number("--zeta", t)?;
+        return Damping::from_zeta(z).map_err(|e| CliError::input("--zeta", &e));
+    }
+    if let Some(t) = &args.q {
+        let q = number("--q", t)?;
+        return Damping::from_q(q).map_err(|e| CliError::input("--q", &e));
+    }
+    if let Some(t) = &args.log_decrement {
+        let d = number("--log-decrement", t)?;
+        return Damping::from_log_decrement(d).map_err(|e| CliError::input("--log-decrement", &e));
+    }
+    if let Some(t) = &args.decay_time {
+        let tau = common::quantity("--decay-time", t, Dimension::Time)?;
+        return Damping::from_decay_time(tau, p).map_err(|e| CliError::input("--decay-time", &e));
+    }
+    if let Some(t) = &args.damping_coefficient {
+        let c = number("--damping-coefficient", t)?;
+        let m = mass.ok_or_else(|| CliError::flag("--damping-coefficient", "needs --mass"))?;
+        return Damping::from_coefficient(c, m, p).map_err(|e| match e.quantity {
+            Quantity::Mass => CliError::input("--mass", &e),
+            _ => CliError::input("--damping-coefficient", &e),
+        });
+    }
+    Err(CliError::other(
+        "give one of --zeta, --q, --damping-coefficient, --log-decrement, --decay-time",
+    ))
+}
+
+/// The friction angle, which must be below the amplitude for any motion.
+fn friction(
+    text: Option<&str>,
+    damped: DampedPendulum,
+    amplitude: Amplitude,
+) -> Result<DryFriction, CliError> {
+    let flag = "--friction-angle";
+    let r = text
+        .map(|t| common::quantity(flag, t, Dimension::Angle))
+        .transpose()?
+        .unwrap_or(0.0);
+    let friction = DryFriction::new(damped, r).map_err(|e| CliError::input(flag, &e))?;
+    if r > 0.0 && r >= amplitude.radians() {
+        let show = |x| Quantity::FrictionAngle.format_value(x);
+        return Err(CliError::flag(
+            flag,
+            format!(
+                "must be less than the amplitude {}, got {}: friction would hold the pendulum at rest",
+                show(amplitude.radians()),
+                show(r)
+            ),
+        ));
+    }
+    Ok(friction)
+}
+
+fn to_json(r: &Results, trajectory: Option<TrajectoryJson>) -> DampedJson {
+    let d = &r.damped;
+    let damping = d.damping;
+    let a0 = r.amplitude.radians();
+    let exact = r.friction.amplitude_loss_per_period(a0);
+    let approx = r.friction.amplitude_loss_per_period_approx(a0);
+    DampedJson {
+        length_m: r.pendulum.length_m(),
+        g_m_s2: r.pendulum.g_m_s2(),
+        amplitude_rad: a0,
+        zeta: damping.zeta(),
+        q_factor: finite(damping.q_factor()),
+        log_decrement: damping.log_decrement(),
+        natural_angular_frequency_rad_s: d.natural_angular_frequency(),
+        damped_angular_frequency_rad_s: d.damped_angular_frequency(),
+        damped_period_s: d.damped_period(),
+        phase_rad: d.phase(),
+        regime: d.regime().name(),
+        decay_time_s: finite(damping.decay_time(&r.pendulum)),
+        // An envelope e^{-ζω_n t} exists only when the pendulum oscillates.
+        amplitude_half_life_s: d
+            .damped_period()
+            .and_then(|_| finite(damping.amplitude_half_life(&r.pendulum))),
+        amplitude_loss_per_period_rad: exact,
+        amplitude_loss_per_period_approx_rad: approx,
+        amplitude_loss_per_period_difference_rad: exact.zip(approx).map(|(e, a)| a - e),
+        friction_angle_rad: r.friction.friction_angle(),
+        extrema: r
+            .extrema
+            .iter()
+            .map(|e| ExtremumJson {
+                index: e.index,
+                time_s: e.time,
+                angle_rad: e.angle,
+            })
+            .collect(),
+        stop: r.run.stop.map(|s| StopJson {
+            time_s: s.time,
+            angle_rad: s.angle,
+        }),
+        mass_kg: r.mass,
+        damping_coefficient_n_s: r.mass.map(|m| damping.coefficient(m, &r.pendulum)),
+        energy_j: r.budget.map(|b| b.energy),
+        energy_loss_per_period_j: r.budget.map(|b| b.loss_per_period),
+        power_w: r.budget.map(|b| b.power),
+        impulse_per_beat_kg_m2_s: r.budget.map(|b| b.impulse_per_beat),
+        trajectory,
+    }
+}
+
+fn opt(value: Option<f64>, digits: usize, unit: &str) -> String {
+    value.map_or_else(
+        || "none".to_string(),
+        |v| format!("{} {unit}", num(v, digits)),
+    )
+}
+
+fn text(r: &Results, j: &DampedJson) -> String {
+    let deg = |x: f64| format!("{}°", num(x.to_degrees(), 6));
+    let mut s = Summary::default();
+    s.row("Length", format!("{} m", num(j.length_m, 10)))
+        .row("Amplitude", deg(j.amplitude_rad))
+        .row(
+            "Damping",
+            format!(
+                "ζ = {}, Q = {}, {}",
+                num(j.zeta, 6),
+                j.q_factor.map_or("infinite".into(), |q| num(q, 6)),
+                j.regime
+            ),
+        )
+        .row("Log decrement", opt(j.log_decrement, 6, "per period"))
+        .row(
+            "ω_n, ω_d",
+            format!(
+                "{} rad/s, {}",
+                num(j.natural_angular_frequency_rad_s, 8),
+                opt(j.damped_angular_frequency_rad_s, 8, "rad/s")
+            ),
+        )
+        .row("Damped period", opt(j.damped_period_s, 10, "s"))
+        .row("Phase φ", opt(j.phase_rad, 6, "rad"))
+        .row("Decay time", opt(j.decay_time_s, 6, "s"))
+        .row("Amplitude half-life", opt(j.amplitude_half_life_s, 6, "s"));
+    if let (Some(e), Some(a)) = (
+        j.amplitude_loss_per_period_rad,
+        j.amplitude_loss_per_period_approx_rad,
+    ) {
+        s.row(
+            "Amplitude lost per period",
+            format!("{} (first-order: {})", deg(e), deg(a)),
+        );
+    }
+    if j.friction_angle_rad > 0.0 {
+        s.row("Friction angle", deg(j.friction_angle_rad));
+    }
+    if let Some(stop) = &j.stop {
+        let when = stop.time_s.map_or("never quite (creeps)".to_string(), |t| {
+            format!("at {} s", num(t, 8))
+        });
+        s.row("Stops", format!("{when}, at {}", deg(stop.angle_rad)));
+    }
+    if let (Some(m), Some(b)) = (r.mass, r.budget) {
+        s.row("Bob mass", format!("{} kg", num(m, 6)))
+            .row("Stored energy", format!("{} J", num(b.energy, 6)))
+            .row(
+                "Lost per period",
+                format!("{} J  ({} W)", num(b.loss_per_period, 6), num(b.power, 6)),
+            )
+            .row(
+                "Impulse per beat",
+                format!("{} kg m^2/s", num(b.impulse_per_beat, 6)),
+            );
+    }
+    if let Some(t) = &j.trajectory {
+        s.row("Trajectory", format!("{} ({} samples)", t.path, t.samples));
+    }
+    let mut out = s.render();
+    out.push_str("\nTurning points\n");
+    let rows: Vec<Vec<String>> = r
+        .extrema
+        .iter()
+        .map(|e| {
+            vec![
+                e.index.to_string(),
+                num(e.time, 10),
+                num(e.angle.to_degrees(), 8),
+            ]
+        })
+        .collect();
+    out.push_str(&output::table(&["n", "time s", "angle °"], &rows));
+    if r.damped.regime() != Regime::Underdamped {
+        out.push_str("(no oscillation: the pendulum creeps back without turning)\n");
+    }
+    out
+}
+
+/// Streams the closed-form motion to `path`, sample by sample.
+fn write_trajectory(
+    args: &DampedArgs,
+    path: &std::path::Path,
+    r: &Results,
+) -> Result<TrajectoryJson, CliError> {
+    let t0 = r.pendulum.small_angle_period();
+    let duration = match &args.duration {
+        Some(t) => common::quantity("--duration", t, Dimension::Time)?,
+        None => 10.0 * t0,
+    };
+    if duration < 0.0 {
+        return Err(CliError::flag(
+            "--duration",
+            format!("must not be negative, got {} s", num(duration, 10)),
+        ));
+    }
+    let interval = match &args.sample_interval {
+        Some(t) => common::quantity("--sample-interval", t, Dimension::Time)?,
+        None => t0 / 100.0,
+    };
+    if interval <= 0.0 {
+        return Err(CliError::flag(
+            "--sample-interval",
+            format!("must be positive, got {} s", num(interval, 10)),
+        ));
+    }
+    let count = (duration / interval).floor() + 1.0;
+    if count > MAX_SAMPLES && !args.force {
+        return Err(CliError::flag(
+            "--sample-interval",
+            format!(
+                "{} samples requested; more than 10^8 needs --force (or a longer interval)",
+                num(count, 4)
+            ),
+        ));
+    }
+    let samples = count as u64;
+    let mut file = AtomicFile::create(path, "--trajectory")?;
+    let mut sampler = r.friction.sampler(r.amplitude.radians());
+    let mut line = String::with_capacity(80);
+    file.writer()
+        .write_all(b"time_s,angle_rad,angular_velocity_rad_s\n")
+        .map_err(|e| file.write_error(e))?;
+    let mut buffer = ryu::Buffer::new();
+    for i in 0..samples {
+        let t = i as f64 * interval;
+        let state = sampler.state_at(t);
+        line.clear();
+        line.push_str(buffer.format(t));
+        line.push(',');
+        line.push_str(buffer.format(state.angle));
+        line.push(',');
+        line.push_str(buffer.format(state.angular_velocity));
+        line.push('\n');
+        if let Err(e) = file.writer().write_all(line.as_bytes()) {
+            return Err(file.write_error(e));
+        }
+    }
+    file.commit()?;
+    Ok(TrajectoryJson {
+        path: path.display().to_string(),
+        samples,
+        duration_s: duration,
+        sample_interval_s: interval,
+    })
+}

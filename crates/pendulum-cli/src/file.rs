@@ -1,0 +1,74 @@
+//! Files written whole or not at all: the data go to a temporary file in
+//! the target's own folder, which is renamed over the target only when
+//! everything has been written and flushed. An error (or a refusal before
+//! any data) leaves nothing behind.
+
+use crate::error::CliError;
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+/// A file being written; [`AtomicFile::commit`] puts it in place.
+pub struct AtomicFile {
+    target: PathBuf,
+    temporary: PathBuf,
+    writer: Option<BufWriter<File>>,
+    flag: &'static str,
+}
+
+impl AtomicFile {
+    /// Starts writing `target` (named on the command line by `flag`).
+    pub fn create(target: &Path, flag: &'static str) -> Result<Self, CliError> {
+        let name = target.file_name().ok_or_else(|| {
+            CliError::flag(flag, format!("'{}' is not a file name", target.display()))
+        })?;
+        let mut temporary_name = std::ffi::OsString::from(".");
+        temporary_name.push(name);
+        temporary_name.push(format!(".{}.partial", std::process::id()));
+        let temporary = target.with_file_name(temporary_name);
+        let file = File::create(&temporary).map_err(|e| {
+            CliError::flag(
+                flag,
+                format!("cannot write in the folder of '{}': {e}", target.display()),
+            )
+        })?;
+        Ok(Self {
+            target: target.to_path_buf(),
+            temporary,
+            writer: Some(BufWriter::with_capacity(1 << 16, file)),
+            flag,
+        })
+    }
+
+    /// The buffered writer.
+    pub fn writer(&mut self) -> &mut BufWriter<File> {
+        self.writer.as_mut().expect("not yet committed")
+    }
+
+    /// Turns a write error into a message that names the file.
+    pub fn write_error(&self, e: impl std::fmt::Display) -> CliError {
+        CliError::flag(
+            self.flag,
+            format!("writing '{}' failed: {e}", self.target.display()),
+        )
+    }
+
+    /// Flushes, syncs and renames the file into place.
+    pub fn commit(mut self) -> Result<(), CliError> {
+        let writer = self.writer.take().expect("committed once");
+        let file = writer
+            .into_inner()
+            .map_err(|e| self.write_error(e.error()))?;
+        file.sync_all().map_err(|e| self.write_error(e))?;
+        std::fs::rename(&self.temporary, &self.target).map_err(|e| self.write_error(e))
+    }
+}
+
+impl Drop for AtomicFile {
+    /// An uncommitted file is removed.
+    fn drop(&mut self) {
+        if self.writer.take().is_some() {
+            let _ = std::fs::remove_file(&self.temporary);
+        }
+    }
+}

@@ -1,0 +1,52 @@
+//! Helpers: run the real binary, read its JSON, check the error contract.
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+pub fn pendulum() -> Command {
+    Command::cargo_bin("pendulum").expect("the pendulum binary is built")
+}
+
+/// Runs with `args`, expects success, parses standard output as JSON.
+pub fn json(args: &[&str]) -> Value {
+    let out = pendulum()
+        .args(args)
+        .arg("--json")
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    serde_json::from_slice(&out).expect("standard output is JSON")
+}
+
+/// Runs with `args` and expects the one-line error contract: status 2,
+/// nothing on standard output, one line on standard error naming `flag`.
+pub fn refuses(args: &[&str], flag: &str) -> String {
+    let out = pendulum()
+        .args(args)
+        .assert()
+        .code(2)
+        .stdout("")
+        .get_output()
+        .stderr
+        .clone();
+    let text = String::from_utf8(out).unwrap();
+    assert_eq!(text.lines().count(), 1, "one line expected, got: {text}");
+    assert!(text.starts_with("error: "), "{text}");
+    assert!(text.contains(flag), "{text} should name {flag}");
+    text
+}
+
+pub fn f(v: &Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{key} missing in {v}"))
+}
+
+/// `period --length 1 --amplitude 3` followed by `extra`.
+pub fn p<'a>(extra: &[&'a str]) -> Vec<&'a str> {
+    let mut v = vec!["period", "--length", "1", "--amplitude", "3"];
+    v.extend_from_slice(extra);
+    v
+}

@@ -173,6 +173,28 @@ def conversions():
                                       "c_hi", "c_lo", "tau_hi", "tau_lo", "half_life_hi", "half_life_lo"], rows)
 
 
+def exact_motion():
+    """The undamped pendulum from rest at A0: theta = 2 asin(k sn(K - w t | m)),
+    theta' = -2 k k' w sd(w t | m) (DLMF 22.19), at 40 digits."""
+    rows = []
+    amps = [math.radians(d) for d in (1e-3, 0.5, 3.0, 10.0, 45.0, 90.0, 120.0, 150.0)]
+    amps += [math.radians(RNG.uniform(0.0, 150.0)) for _ in range(12)]
+    for a in amps:
+        length = RNG.uniform(0.2, 5.0)
+        w = mp.sqrt(mp.mpf(G0) / mp.mpf(length))
+        half = mp.mpf(a) / 2
+        k, kp = mp.sin(half), mp.cos(half)
+        m = k * k
+        kk = mp.ellipk(m)
+        period = float(4 * kk / w)
+        for t in [0.0] + [RNG.uniform(0, 2 * period) for _ in range(15)]:
+            u = w * mp.mpf(t)
+            theta = 2 * mp.asin(k * mp.ellipfun("sn", kk - u, m=m))
+            vel = -2 * k * kp * w * mp.ellipfun("sn", u, m=m) / mp.ellipfun("dn", u, m=m)
+            rows.append((repr(a), repr(length), repr(t)) + split(theta) + split(vel))
+    write("exact.csv", ["amplitude_rad", "length_m", "t_s", "theta_hi", "theta_lo", "v_hi", "v_lo"], rows)
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
     complete(parameters())
@@ -182,6 +204,7 @@ def main():
     jacobi()
     damped()
     conversions()
+    exact_motion()
 
 
 if __name__ == "__main__":

@@ -39,6 +39,14 @@ pub enum Quantity {
     DecayTime,
     /// Coulomb friction angle (rad; shown in degrees).
     FrictionAngle,
+    /// Quadratic drag coefficient (per radian).
+    QuadraticDrag,
+    /// Simulated duration (s).
+    Duration,
+    /// Integration tolerance (dimensionless).
+    Tolerance,
+    /// Time between samples (s).
+    SampleInterval,
 }
 
 impl Quantity {
@@ -60,6 +68,10 @@ impl Quantity {
             Quantity::Mass => "mass",
             Quantity::DecayTime => "decay time",
             Quantity::FrictionAngle => "friction angle",
+            Quantity::QuadraticDrag => "quadratic drag",
+            Quantity::Duration => "duration",
+            Quantity::Tolerance => "tolerance",
+            Quantity::SampleInterval => "sample interval",
         }
     }
 
@@ -72,12 +84,19 @@ impl Quantity {
             Quantity::Amplitude | Quantity::FrictionAngle => {
                 format!("{}°", significant(value.to_degrees()))
             }
-            Quantity::Period | Quantity::DecayTime => format!("{} s", significant(value)),
+            Quantity::Period
+            | Quantity::DecayTime
+            | Quantity::Duration
+            | Quantity::SampleInterval => {
+                format!("{} s", significant(value))
+            }
             Quantity::DampingCoefficient => format!("{} N s", significant(value)),
             Quantity::Mass => format!("{} kg", significant(value)),
-            Quantity::DampingRatio | Quantity::QualityFactor | Quantity::LogDecrement => {
-                significant(value)
-            }
+            Quantity::DampingRatio
+            | Quantity::QualityFactor
+            | Quantity::LogDecrement
+            | Quantity::QuadraticDrag
+            | Quantity::Tolerance => significant(value),
             Quantity::BeatRate => format!("{} beats/h", significant(value)),
             Quantity::Latitude => format!("{}°", significant(value)),
             Quantity::SeriesTerms => significant(value),

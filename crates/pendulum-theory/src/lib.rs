@@ -41,10 +41,13 @@ pub mod damping;
 pub mod elliptic;
 pub mod energy;
 pub mod error;
+pub mod exact;
 pub mod friction;
 pub mod gravity;
+pub mod integrate;
 pub mod pendulum;
 pub mod period;
+pub mod simulation;
 
 pub use error::{InputError, Problem, Quantity};
 pub use pendulum::{Amplitude, Pendulum, STANDARD_GRAVITY};

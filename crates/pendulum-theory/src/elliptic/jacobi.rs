@@ -126,8 +126,14 @@ fn gauss_descending(u: f64, k: f64, k_prime: f64) -> JacobiValues {
         let mut sc = s / c;
         for level in levels.iter().rev() {
             let next = sc * (1.0 + level.k) / dn;
-            let inv = 1.0 / (sc * sc);
-            dn = (inv + level.one_minus_k) / (inv + 1.0 + level.k);
+            dn = if sc.abs() <= 1.0 {
+                let sc2 = sc * sc;
+                (1.0 + level.one_minus_k * sc2) / (1.0 + (1.0 + level.k) * sc2)
+            } else {
+                // Divided through by sc², which may be too large to square.
+                let inv = (1.0 / sc) * (1.0 / sc);
+                (inv + level.one_minus_k) / (inv + 1.0 + level.k)
+            };
             sc = next;
         }
         let cn = 1.0_f64.copysign(c) / 1.0_f64.hypot(sc);
@@ -169,6 +175,16 @@ mod tests {
         assert_eq!(w.dn, 1.0 / 0.7_f64.cosh());
         assert!(jacobi(f64::NAN, 0.3).sn.is_nan());
         assert!(jacobi(0.3, 2.0).cn.is_nan());
+    }
+
+    #[test]
+    fn at_zero() {
+        for m in [0.1, 0.5, 0.9, 1.0 - 1e-12] {
+            let v = jacobi(0.0, m);
+            assert_eq!((v.sn, v.cn, v.dn), (0.0, 1.0, 1.0), "m = {m}");
+            let w = jacobi(-0.0, m);
+            assert_eq!(w.sn, 0.0);
+        }
     }
 
     #[test]

@@ -1,0 +1,690 @@
+//! The full pendulum, nonlinear and damped, simulated over days and weeks
+//! of swings:
+//! `θ'' + 2ζω_n θ' + b θ'|θ'| + ω_n² (sin θ + r sign θ') = 0`
+//! (viscous damping ζ as in seed section 1-4, quadratic air drag `b` per
+//! radian, dry friction angle `r` as in the book's section 2-4).
+//!
+//! The driver wires the pieces of [`crate::integrate`]: DOP853 steps under
+//! the step-size controller; on each accepted step, a sign change of `θ'`
+//! in the direction of motion is a turning point, located on the dense
+//! output. With dry friction the sign of `θ'` is held fixed through each
+//! half swing (the equation is smooth there) and the integration restarts
+//! at every turning point, where the pendulum sticks if `|sin θ| <= r`.
+//! `--method exact` (no damping) uses [`crate::exact`] instead.
+//!
+//! Time is never summed: a step ends at `t + h` computed from the step's
+//! own start, and the last step lands on the duration exactly.
+
+use crate::damped::State;
+use crate::damping::Damping;
+use crate::error::{require_non_negative, require_positive, InputError, Quantity};
+use crate::exact::ExactSwing;
+use crate::integrate::control::{step_factor, Tolerance};
+use crate::integrate::dop853::{attempt, dense_output, initial_step};
+use crate::integrate::events::locate_root;
+use crate::integrate::symplectic::{self, damping_intervals, Hermite};
+use crate::integrate::State2;
+use crate::pendulum::{Amplitude, Pendulum};
+
+/// The physics: a pendulum and what slows it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Model {
+    /// Length and gravity.
+    pub pendulum: Pendulum,
+    /// Viscous damping.
+    pub damping: Damping,
+    /// Quadratic drag coefficient `b`, per radian (the term `b θ'|θ'|`).
+    pub quadratic_drag: f64,
+    /// Dry friction angle `r`, rad.
+    pub friction_angle: f64,
+}
+
+impl Model {
+    /// A model; `quadratic_drag` and `friction_angle` must not be negative.
+    pub fn new(
+        pendulum: Pendulum,
+        damping: Damping,
+        quadratic_drag: f64,
+        friction_angle: f64,
+    ) -> Result<Self, InputError> {
+        Ok(Self {
+            pendulum,
+            damping,
+            quadratic_drag: require_non_negative(Quantity::QuadraticDrag, quadratic_drag)?,
+            friction_angle: require_non_negative(Quantity::FrictionAngle, friction_angle)?,
+        })
+    }
+
+    /// Whether nothing slows the pendulum.
+    pub fn is_undamped(&self) -> bool {
+        self.damping.zeta() == 0.0 && self.quadratic_drag == 0.0 && self.friction_angle == 0.0
+    }
+
+    /// The right-hand side with the friction sign `direction` (±1).
+    #[inline(always)]
+    fn acceleration(&self, w2: f64, c1: f64, y: State2, direction: f64) -> f64 {
+        let v = y[1];
+        -c1 * v
+            - self.quadratic_drag * v * v.abs()
+            - w2 * (y[0].sin() + self.friction_angle * direction)
+    }
+}
+
+/// How to integrate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Dormand-Prince 8(5,3) with 7th-order dense output.
+    Dop853,
+    /// The closed form (undamped only).
+    Exact,
+    /// Yoshida's 6th-order symplectic composition with exact damping flows,
+    /// at a fixed step set by the tolerance.
+    Symplectic,
+}
+
+impl Method {
+    /// The name used on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Dop853 => "dop853",
+            Method::Exact => "exact",
+            Method::Symplectic => "symplectic",
+        }
+    }
+}
+
+/// What a run is asked for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options {
+    /// Simulated time, s.
+    pub duration: f64,
+    /// Relative and absolute tolerance of each step.
+    pub tolerance: f64,
+    /// The method.
+    pub method: Method,
+    /// Report the state every this many seconds, if any.
+    pub sample_interval: Option<f64>,
+}
+
+/// A turning point of the swing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TurningPoint {
+    /// 0 for the release, then one per half swing.
+    pub index: u64,
+    /// Time, s.
+    pub time: f64,
+    /// Signed angle, rad.
+    pub angle: f64,
+}
+
+/// Why a run ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stopped {
+    /// It reached the duration.
+    Duration,
+    /// Dry friction held it at a turning point.
+    Friction,
+    /// The observer asked it to stop.
+    Interrupted,
+}
+
+impl Stopped {
+    /// The name used in JSON: `"duration"`, `"friction"`, `"interrupted"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Stopped::Duration => "duration",
+            Stopped::Friction => "friction",
+            Stopped::Interrupted => "interrupted",
+        }
+    }
+}
+
+/// The result of a run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Outcome {
+    /// The method used.
+    pub method: Method,
+    /// Turning points after the release.
+    pub swings: u64,
+    /// Time reached, s.
+    pub final_time: f64,
+    /// State at that time.
+    pub final_state: State,
+    /// The amplitude the final state's energy implies (see [`energy_amplitude`]), rad.
+    pub final_amplitude: f64,
+    /// Accepted steps.
+    pub steps: u64,
+    /// Rejected steps.
+    pub rejected_steps: u64,
+    /// Evaluations of the right-hand side.
+    pub function_evaluations: u64,
+    /// Why it ended.
+    pub stopped: Stopped,
+}
+
+/// Receives what a run produces, as it produces it. Every method returns
+/// whether to go on.
+pub trait Observer {
+    /// A turning point (the release is index 0).
+    fn turning_point(&mut self, _point: &TurningPoint) -> bool {
+        true
+    }
+    /// A sample at a multiple of the sample interval.
+    fn sample(&mut self, _time: f64, _state: &State) -> bool {
+        true
+    }
+    /// Called every few thousand steps with the time reached.
+    fn progress(&mut self, _time: f64) -> bool {
+        true
+    }
+}
+
+/// An observer that wants nothing.
+pub struct Silent;
+impl Observer for Silent {}
+
+/// Why a run cannot start.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SimulationError {
+    /// An input out of range.
+    #[error(transparent)]
+    Input(#[from] InputError),
+    /// The closed form knows no damping.
+    #[error("the exact method has no damping: drop the damping options or choose dop853")]
+    ExactWithDamping,
+}
+
+/// The amplitude of the undamped swing with the energy of `state`:
+/// `sin²(A/2) = sin²(θ/2) + (θ'/(2ω_n))²`, a sum of positive terms.
+pub fn energy_amplitude(pendulum: &Pendulum, state: &State) -> f64 {
+    let s = (0.5 * state.angle).sin();
+    let v = state.angular_velocity / (2.0 * pendulum.natural_angular_frequency());
+    2.0 * (s * s + v * v).sqrt().min(1.0).asin()
+}
+
+/// Steps between calls to [`Observer::progress`].
+const PROGRESS_EVERY: u64 = 4096;
+
+/// Runs `model` released from rest at `amplitude` for `options.duration`.
+pub fn simulate(
+    model: &Model,
+    amplitude: Amplitude,
+    options: &Options,
+    observer: &mut impl Observer,
+) -> Result<Outcome, SimulationError> {
+    require_non_negative(Quantity::Duration, options.duration)?;
+    require_positive(Quantity::Tolerance, options.tolerance)?;
+    if let Some(h) = options.sample_interval {
+        require_positive(Quantity::SampleInterval, h)?;
+    }
+    match options.method {
+        Method::Exact => {
+            if !model.is_undamped() {
+                return Err(SimulationError::ExactWithDamping);
+            }
+            Ok(run_exact(model, amplitude, options, observer))
+        }
+        Method::Dop853 => Ok(run_dop853(model, amplitude, options, observer)),
+        Method::Symplectic => Ok(run_symplectic(model, amplitude, options, observer)),
+    }
+}
+
+/// Samples due in `(from, to]` (and at 0 when `from` is negative).
+struct Samples {
+    interval: Option<f64>,
+    next: u64,
+}
+
+impl Samples {
+    fn due(&self, limit: f64) -> Option<f64> {
+        let h = self.interval?;
+        let t = self.next as f64 * h;
+        (t <= limit).then_some(t)
+    }
+}
+
+fn run_exact(
+    model: &Model,
+    amplitude: Amplitude,
+    options: &Options,
+    observer: &mut impl Observer,
+) -> Outcome {
+    let swing = ExactSwing::new(&model.pendulum, amplitude);
+    let duration = options.duration;
+    let mut samples = Samples {
+        interval: options.sample_interval,
+        next: 0,
+    };
+    let mut stopped = Stopped::Duration;
+    let mut index = 0;
+    loop {
+        let (time, angle) = swing.turning_point(index);
+        if time > duration || amplitude.radians() == 0.0 && index > 0 {
+            break;
+        }
+        while let Some(t) = samples.due(time) {
+            if !observer.sample(t, &swing.state_at(t)) {
+                stopped = Stopped::Interrupted;
+            }
+            samples.next += 1;
+        }
+        if stopped == Stopped::Interrupted
+            || !observer.turning_point(&TurningPoint { index, time, angle })
+        {
+            stopped = Stopped::Interrupted;
+            break;
+        }
+        if index % PROGRESS_EVERY == 0 && !observer.progress(time) {
+            stopped = Stopped::Interrupted;
+            break;
+        }
+        index += 1;
+    }
+    if stopped == Stopped::Duration {
+        while let Some(t) = samples.due(duration) {
+            observer.sample(t, &swing.state_at(t));
+            samples.next += 1;
+        }
+    }
+    let final_time = if stopped == Stopped::Duration {
+        duration
+    } else {
+        swing.turning_point(index).0.min(duration)
+    };
+    let final_state = swing.state_at(final_time);
+    Outcome {
+        method: Method::Exact,
+        swings: index.saturating_sub(1),
+        final_time,
+        final_state,
+        final_amplitude: amplitude.radians(),
+        steps: 0,
+        rejected_steps: 0,
+        function_evaluations: 0,
+        stopped,
+    }
+}
+
+fn run_dop853(
+    model: &Model,
+    amplitude: Amplitude,
+    options: &Options,
+    observer: &mut impl Observer,
+) -> Outcome {
+    let w = model.pendulum.natural_angular_frequency();
+    let (w2, c1) = (w * w, 2.0 * model.damping.zeta() * w);
+    let tolerance = Tolerance::both(options.tolerance);
+    let duration = options.duration;
+    let a0 = amplitude.radians();
+    // The direction of motion: released at +A0 it swings towards negative.
+    let mut direction = if a0 > 0.0 { -1.0 } else { 1.0 };
+    let mut evaluations = 0_u64;
+    let rhs = |_t: f64, y: State2, direction: f64| -> State2 {
+        [y[1], model.acceleration(w2, c1, y, direction)]
+    };
+    let mut samples = Samples {
+        interval: options.sample_interval,
+        next: 0,
+    };
+    let (mut t, mut y) = (0.0_f64, [a0, 0.0]);
+    let mut outcome = Outcome {
+        method: Method::Dop853,
+        swings: 0,
+        final_time: 0.0,
+        final_state: State {
+            angle: a0,
+            angular_velocity: 0.0,
+        },
+        final_amplitude: a0,
+        steps: 0,
+        rejected_steps: 0,
+        function_evaluations: 0,
+        stopped: Stopped::Duration,
+    };
+    let mut index = 0_u64;
+    let mut go_on = observer.turning_point(&TurningPoint {
+        index: 0,
+        time: 0.0,
+        angle: a0,
+    });
+    let sticks =
+        |angle: f64| model.friction_angle > 0.0 && angle.sin().abs() <= model.friction_angle;
+    if sticks(a0) || a0 == 0.0 {
+        outcome.stopped = if a0 == 0.0 {
+            Stopped::Duration
+        } else {
+            Stopped::Friction
+        };
+        return finish_at_rest(model, outcome, a0, duration, &mut samples, observer);
+    }
+    let mut f0 = rhs(t, y, direction);
+    evaluations += 1;
+    let mut h = {
+        let mut f = |t, y| rhs(t, y, direction);
+        evaluations += 1;
+        initial_step(&mut f, t, y, f0, &tolerance)
+    };
+    let mut after_rejection = false;
+    while go_on && t < duration {
+        let last = t + h >= duration;
+        let h_step = if last { duration - t } else { h };
+        let mut f = |t, y| rhs(t, y, direction);
+        let step = attempt(&mut f, t, y, f0, h_step, &tolerance);
+        evaluations += 11;
+        if step.error > 1.0 {
+            outcome.rejected_steps += 1;
+            h = h_step * step_factor(step.error, true);
+            after_rejection = true;
+            continue;
+        }
+        outcome.steps += 1;
+        let t_new = if last { duration } else { t + h_step };
+        let f1 = f(t_new, step.y1);
+        evaluations += 1;
+        let turned = step.y1[1] * direction < 0.0;
+        let wants_samples = samples.due(t_new).is_some();
+        if turned || wants_samples {
+            let dense = dense_output(&mut f, &step, f1);
+            evaluations += 3;
+            let event =
+                turned.then(|| locate_root(|x| dense.component(x, 1), t, t_new, y[1], step.y1[1]));
+            let sample_limit = event
+                .filter(|_| model.friction_angle > 0.0)
+                .unwrap_or(t_new);
+            while let Some(ts) = samples.due(sample_limit) {
+                let s = dense.eval(ts);
+                go_on &= observer.sample(
+                    ts,
+                    &State {
+                        angle: s[0],
+                        angular_velocity: s[1],
+                    },
+                );
+                samples.next += 1;
+            }
+            if let Some(t_event) = event {
+                let angle = dense.component(t_event, 0);
+                index += 1;
+                go_on &= observer.turning_point(&TurningPoint {
+                    index,
+                    time: t_event,
+                    angle,
+                });
+                direction = -direction;
+                if model.friction_angle > 0.0 {
+                    // Restart from rest at the turning point with the new sign.
+                    t = t_event;
+                    y = [angle, 0.0];
+                    if sticks(angle) {
+                        outcome.swings = index;
+                        outcome.stopped = Stopped::Friction;
+                        outcome.function_evaluations = evaluations;
+                        outcome.final_time = t;
+                        return finish_at_rest(
+                            model,
+                            outcome,
+                            angle,
+                            duration,
+                            &mut samples,
+                            observer,
+                        );
+                    }
+                    f0 = rhs(t, y, direction);
+                    evaluations += 1;
+                    after_rejection = false;
+                    continue;
+                }
+            }
+        }
+        t = t_new;
+        y = step.y1;
+        f0 = f1;
+        h = h_step * step_factor(step.error, after_rejection);
+        after_rejection = false;
+        if outcome.steps % PROGRESS_EVERY == 0 {
+            go_on &= observer.progress(t);
+        }
+    }
+    outcome.swings = index;
+    outcome.final_time = t;
+    outcome.final_state = State {
+        angle: y[0],
+        angular_velocity: y[1],
+    };
+    outcome.final_amplitude = energy_amplitude(&model.pendulum, &outcome.final_state);
+    outcome.function_evaluations = evaluations;
+    if !go_on {
+        outcome.stopped = Stopped::Interrupted;
+    }
+    outcome
+}
+
+/// Ends a run held at rest at `angle`: samples up to the duration are that angle.
+fn finish_at_rest(
+    model: &Model,
+    mut outcome: Outcome,
+    angle: f64,
+    duration: f64,
+    samples: &mut Samples,
+    observer: &mut impl Observer,
+) -> Outcome {
+    let state = State {
+        angle,
+        angular_velocity: 0.0,
+    };
+    while let Some(t) = samples.due(duration) {
+        if !observer.sample(t, &state) {
+            break;
+        }
+        samples.next += 1;
+    }
+    outcome.final_state = state;
+    outcome.final_amplitude = energy_amplitude(&model.pendulum, &state);
+    outcome
+}
+
+/// Steps per small-angle period for the symplectic method at `tolerance`.
+/// The method's error per unit time is about `(ω_n h)^6 / 5000` of the
+/// amplitude (measured on the seconds pendulum at 3°: the final amplitude
+/// after a week against a run with twice the steps), so
+/// `ω_n h = (5000 tol)^(1/6)`, at least 12 steps a period.
+pub fn symplectic_steps_per_period(tolerance: f64) -> f64 {
+    let wh = (5000.0 * tolerance)
+        .powf(1.0 / 6.0)
+        .min(std::f64::consts::TAU / 12.0);
+    (std::f64::consts::TAU / wh).ceil()
+}
+
+/// The exact flow of `v' = -c v - b v|v|` over each of a step's damping
+/// intervals: `v e / (1 + b|v| (1 - e)/c)` with `e = e^{-cτ}` (a Bernoulli
+/// equation), `v / (1 + b|v| τ)` when `c = 0`.
+///
+/// The decay is stored as `e - 1` (from `expm1`) and applied as
+/// `v + v (e - 1)`: `e` itself, a number like `1 - 1e-8`, would round to a
+/// fixed nearby double and bias the damping rate by up to 1e-8 of itself at
+/// every one of 10^8 steps; `e - 1` keeps the rate to an ulp.
+struct DampingFlow {
+    decay_minus_one: [f64; 8],
+    gain: [f64; 8],
+    quadratic: f64,
+}
+
+impl DampingFlow {
+    fn new(c: f64, quadratic: f64, h: f64) -> Self {
+        let taus = damping_intervals(h);
+        let decay_minus_one = taus.map(|tau| (-c * tau).exp_m1());
+        let gain = taus.map(|tau| {
+            if c > 0.0 {
+                -(-c * tau).exp_m1() / c
+            } else {
+                tau
+            }
+        });
+        Self {
+            decay_minus_one,
+            gain,
+            quadratic,
+        }
+    }
+
+    #[inline(always)]
+    fn apply(&self, v: f64, i: usize) -> f64 {
+        let decayed = v + v * self.decay_minus_one[i];
+        if self.quadratic == 0.0 {
+            decayed
+        } else {
+            decayed / (1.0 + self.quadratic * v.abs() * self.gain[i])
+        }
+    }
+}
+
+fn run_symplectic(
+    model: &Model,
+    amplitude: Amplitude,
+    options: &Options,
+    observer: &mut impl Observer,
+) -> Outcome {
+    let w = model.pendulum.natural_angular_frequency();
+    let (w2, c1) = (w * w, 2.0 * model.damping.zeta() * w);
+    let b = model.quadratic_drag;
+    let r = model.friction_angle;
+    let duration = options.duration;
+    let h = model.pendulum.small_angle_period() / symplectic_steps_per_period(options.tolerance);
+    let flow = DampingFlow::new(c1, b, h);
+    let a0 = amplitude.radians();
+    let mut direction = if a0 > 0.0 { -1.0 } else { 1.0 };
+    let velocity_part = |v: f64| -c1 * v - b * v * v.abs();
+    let mut samples = Samples {
+        interval: options.sample_interval,
+        next: 0,
+    };
+    let mut outcome = Outcome {
+        method: Method::Symplectic,
+        swings: 0,
+        final_time: 0.0,
+        final_state: State {
+            angle: a0,
+            angular_velocity: 0.0,
+        },
+        final_amplitude: a0,
+        steps: 0,
+        rejected_steps: 0,
+        function_evaluations: 0,
+        stopped: Stopped::Duration,
+    };
+    let mut go_on = observer.turning_point(&TurningPoint {
+        index: 0,
+        time: 0.0,
+        angle: a0,
+    });
+    let sticks = |angle: f64| r > 0.0 && angle.sin().abs() <= r;
+    if sticks(a0) || a0 == 0.0 {
+        outcome.stopped = if a0 == 0.0 {
+            Stopped::Duration
+        } else {
+            Stopped::Friction
+        };
+        return finish_at_rest(model, outcome, a0, duration, &mut samples, observer);
+    }
+    let mut evaluations = 0_u64;
+    let mut index = 0_u64;
+    // Time is the restart time plus a whole number of steps, never a running sum.
+    let (mut origin, mut n) = (0.0_f64, 0_u64);
+    let mut y = [a0, 0.0];
+    let force_of = |theta: f64, direction: f64| -w2 * (theta.sin() + r * direction);
+    let mut f = force_of(y[0], direction);
+    evaluations += 1;
+    let mut t = 0.0;
+    while go_on && t < duration {
+        let t_next = origin + (n + 1) as f64 * h;
+        let last = t_next >= duration;
+        let (t_new, step_h) = if last {
+            (duration, duration - t)
+        } else {
+            (t_next, h)
+        };
+        let short_flow;
+        let flow_now = if last {
+            short_flow = DampingFlow::new(c1, b, step_h);
+            &short_flow
+        } else {
+            &flow
+        };
+        let mut force = |theta: f64| force_of(theta, direction);
+        let mut damp = |v: f64, i: usize| flow_now.apply(v, i);
+        let (y1, f1) = symplectic::step(&mut force, &mut damp, y, f, step_h);
+        evaluations += 7;
+        outcome.steps += 1;
+        let turned = y1[1] * direction < 0.0;
+        if turned || samples.due(t_new).is_some() {
+            let hermite = Hermite::new(
+                t,
+                step_h,
+                [y[0], y[1], f + velocity_part(y[1])],
+                [y1[0], y1[1], f1 + velocity_part(y1[1])],
+            );
+            let event = turned.then(|| locate_root(|x| hermite.velocity(x), t, t_new, y[1], y1[1]));
+            let sample_limit = event.filter(|_| r > 0.0).unwrap_or(t_new);
+            while let Some(ts) = samples.due(sample_limit) {
+                let state = State {
+                    angle: hermite.angle(ts),
+                    angular_velocity: hermite.velocity(ts),
+                };
+                go_on &= observer.sample(ts, &state);
+                samples.next += 1;
+            }
+            if let Some(t_event) = event {
+                let angle = hermite.angle(t_event);
+                index += 1;
+                go_on &= observer.turning_point(&TurningPoint {
+                    index,
+                    time: t_event,
+                    angle,
+                });
+                direction = -direction;
+                if r > 0.0 {
+                    if sticks(angle) {
+                        outcome.swings = index;
+                        outcome.stopped = Stopped::Friction;
+                        outcome.function_evaluations = evaluations;
+                        outcome.final_time = t_event;
+                        return finish_at_rest(
+                            model,
+                            outcome,
+                            angle,
+                            duration,
+                            &mut samples,
+                            observer,
+                        );
+                    }
+                    origin = t_event;
+                    n = 0;
+                    t = t_event;
+                    y = [angle, 0.0];
+                    f = force_of(angle, direction);
+                    evaluations += 1;
+                    continue;
+                }
+            }
+        }
+        n += 1;
+        t = t_new;
+        y = y1;
+        f = f1;
+        if outcome.steps % PROGRESS_EVERY == 0 {
+            go_on &= observer.progress(t);
+        }
+    }
+    outcome.swings = index;
+    outcome.final_time = t;
+    outcome.final_state = State {
+        angle: y[0],
+        angular_velocity: y[1],
+    };
+    outcome.final_amplitude = energy_amplitude(&model.pendulum, &outcome.final_state);
+    outcome.function_evaluations = evaluations;
+    if !go_on {
+        outcome.stopped = Stopped::Interrupted;
+    }
+    outcome
+}

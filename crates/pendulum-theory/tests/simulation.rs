@@ -1,0 +1,218 @@
+//! The exact undamped motion against mpmath, and the integrators against
+//! the exact motion and the closed forms of the linear theory.
+
+mod common;
+use common::{check_all, Reference, Worst};
+use pendulum_theory::damping::Damping;
+use pendulum_theory::exact::ExactSwing;
+use pendulum_theory::simulation::{
+    simulate, Method, Model, Observer, Options, Silent, TurningPoint,
+};
+use pendulum_theory::{Amplitude, Pendulum};
+
+/// The exact solution, both evaluators, in units of ε A0 (the issue's
+/// bound: 16). Times within two periods.
+#[test]
+fn exact_motion_matches_mpmath() {
+    let mut fourier = Worst::new("exact theta, Fourier (eps A0)");
+    let mut jacobi = Worst::new("exact theta, Jacobi (eps A0)");
+    let mut fourier_v = Worst::new("exact theta', Fourier (eps A0 w)");
+    let mut jacobi_v = Worst::new("exact theta', Jacobi (eps A0 w)");
+    for r in Reference::load("exact.csv", 7).rows {
+        let (a, length, t) = (r[0], r[1], r[2]);
+        let pendulum = Pendulum::with_standard_gravity(length).unwrap();
+        let swing = ExactSwing::new(&pendulum, Amplitude::from_radians(a).unwrap());
+        let w = pendulum.natural_angular_frequency();
+        let unit = f64::EPSILON * a;
+        let (f, j) = (swing.state_at(t), swing.state_at_jacobi(t));
+        fourier.see(((f.angle - r[3]) - r[4]).abs() / unit, a);
+        jacobi.see(((j.angle - r[3]) - r[4]).abs() / unit, a);
+        fourier_v.see(((f.angular_velocity - r[5]) - r[6]).abs() / (unit * w), a);
+        jacobi_v.see(((j.angular_velocity - r[5]) - r[6]).abs() / (unit * w), a);
+    }
+    check_all(&[
+        (&fourier, 16.0),
+        (&jacobi, 16.0),
+        (&fourier_v, 16.0),
+        (&jacobi_v, 16.0),
+    ]);
+}
+
+#[test]
+fn exact_motion_is_periodic_and_conserves_energy() {
+    let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
+    for deg in [1.0, 30.0, 90.0, 150.0] {
+        let a = Amplitude::from_degrees(deg).unwrap();
+        let swing = ExactSwing::new(&pendulum, a);
+        let w2 = pendulum.natural_angular_frequency().powi(2);
+        let energy = |t: f64| {
+            let s = swing.state_at(t);
+            // 1 - cos θ = 2 sin²(θ/2), without cancellation at 1°.
+            0.5 * s.angular_velocity.powi(2) + 2.0 * w2 * (0.5 * s.angle).sin().powi(2)
+        };
+        let e0 = 2.0 * w2 * (0.5 * a.radians()).sin().powi(2);
+        for i in 0..40 {
+            let t = swing.period() * f64::from(i) / 13.0;
+            let (s, later) = (swing.state_at(t), swing.state_at(t + swing.period()));
+            assert!(
+                (s.angle - later.angle).abs() < 1e-13 * a.radians().max(1.0),
+                "{deg}°"
+            );
+            assert!(
+                (energy(t) - e0).abs() < 1e-14 * e0.max(1e-3),
+                "{deg}°: {} vs {e0}",
+                energy(t)
+            );
+        }
+    }
+}
+
+/// Final error against the exact solution after 1000.125 periods at
+/// A0 = 0.5 rad, in the solver's own norm (RMS of the error scaled by
+/// A0 and A0 ω).
+fn final_error(method: Method, tolerance: f64) -> (f64, u64) {
+    let pendulum = Pendulum::with_standard_gravity(1.0).unwrap();
+    let a = Amplitude::from_radians(0.5).unwrap();
+    let model = Model::new(pendulum, Damping::NONE, 0.0, 0.0).unwrap();
+    let exact = ExactSwing::new(&pendulum, a);
+    let duration = 1000.125 * exact.period();
+    let options = Options {
+        duration,
+        tolerance,
+        method,
+        sample_interval: None,
+    };
+    let outcome = simulate(&model, a, &options, &mut Silent).unwrap();
+    let e = exact.state_at(duration);
+    let w = pendulum.natural_angular_frequency();
+    let d0 = (outcome.final_state.angle - e.angle) / 0.5;
+    let d1 = (outcome.final_state.angular_velocity - e.angular_velocity) / (0.5 * w);
+    (((d0 * d0 + d1 * d1) / 2.0).sqrt(), outcome.steps)
+}
+
+/// Observed order from two runs: log(error ratio) / log(step ratio).
+fn observed_order(method: Method, loose: f64, tight: f64) -> f64 {
+    let (e1, n1) = final_error(method, loose);
+    let (e2, n2) = final_error(method, tight);
+    eprintln!(
+        "{}: {n1} steps {e1:.3e}, {n2} steps {e2:.3e}",
+        method.name()
+    );
+    (e1 / e2).ln() / (n2 as f64 / n1 as f64).ln()
+}
+
+#[test]
+fn work_precision_orders() {
+    let dop = observed_order(Method::Dop853, 1e-10, 1e-12);
+    let symplectic = observed_order(Method::Symplectic, 1e-8, 1e-10);
+    eprintln!("observed orders: dop853 {dop:.2}, symplectic {symplectic:.2}");
+    assert!((7.0..=10.0).contains(&dop), "dop853 order {dop}");
+    assert!(
+        (5.5..=7.0).contains(&symplectic),
+        "symplectic order {symplectic}"
+    );
+    // And each is accurate at a tight tolerance.
+    assert!(final_error(Method::Dop853, 1e-12).0 < 1e-8);
+    assert!(final_error(Method::Exact, 1e-12).0 < 1e-11);
+}
+
+struct Turns(Vec<TurningPoint>);
+impl Observer for Turns {
+    fn turning_point(&mut self, p: &TurningPoint) -> bool {
+        self.0.push(*p);
+        true
+    }
+}
+
+fn turning_points(
+    model: &Model,
+    amplitude: f64,
+    duration: f64,
+    method: Method,
+    tol: f64,
+) -> Vec<TurningPoint> {
+    let options = Options {
+        duration,
+        tolerance: tol,
+        method,
+        sample_interval: None,
+    };
+    let mut turns = Turns(Vec::new());
+    simulate(
+        model,
+        Amplitude::from_radians(amplitude).unwrap(),
+        &options,
+        &mut turns,
+    )
+    .unwrap();
+    turns.0
+}
+
+#[test]
+fn turning_point_times_at_tolerance_1e12() {
+    let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
+    let model = Model::new(pendulum, Damping::NONE, 0.0, 0.0).unwrap();
+    let a = Amplitude::from_radians(0.5).unwrap();
+    let exact = ExactSwing::new(&pendulum, a);
+    let turns = turning_points(&model, 0.5, 100.25 * exact.period(), Method::Dop853, 1e-12);
+    assert_eq!(turns.len(), 201);
+    let mut worst = 0.0_f64;
+    for tp in &turns {
+        let (t, angle) = exact.turning_point(tp.index);
+        worst = worst.max((tp.time - t).abs());
+        assert!((tp.angle - angle).abs() < 1e-10, "{tp:?}");
+    }
+    eprintln!("worst turning-point time error over 100 periods: {worst:.2e} s");
+    assert!(worst < 1e-10, "{worst:e}");
+}
+
+#[test]
+fn small_amplitude_viscous_matches_section_1_4() {
+    // A0 = 1e-4 rad: the nonlinear correction to the period is A0²/16 = 6e-10.
+    let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
+    let damping = Damping::from_zeta(0.01).unwrap();
+    let model = Model::new(pendulum, damping, 0.0, 0.0).unwrap();
+    let linear = pendulum_theory::damped::DampedPendulum::new(pendulum, damping);
+    let a0 = 1e-4;
+    let turns = turning_points(
+        &model,
+        a0,
+        20.0 * pendulum.small_angle_period(),
+        Method::Dop853,
+        1e-13,
+    );
+    let expected = linear.extrema(a0, turns.len() as u64 - 1);
+    for (tp, e) in turns.iter().zip(&expected) {
+        // Time: the period differs by A0²/16 relative; angle by about A0³.
+        assert!(
+            (tp.time - e.time).abs() <= 2e-9 * (1.0 + e.time),
+            "{tp:?} vs {e:?}"
+        );
+        assert!((tp.angle - e.angle).abs() <= 1e-12, "{tp:?} vs {e:?}");
+    }
+}
+
+#[test]
+fn dry_friction_drops_two_r_per_half_swing() {
+    let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
+    let r = 1e-3;
+    let model = Model::new(pendulum, Damping::NONE, 0.0, r).unwrap();
+    for method in [Method::Dop853, Method::Symplectic] {
+        let turns = turning_points(&model, 0.05, 1000.0, method, 1e-12);
+        // 0.05 / 0.002 = 25 half swings until it sticks.
+        assert_eq!(turns.len(), 26, "{}", method.name());
+        for pair in turns.windows(2) {
+            let (a, b) = (pair[0].angle.abs(), pair[1].angle.abs());
+            // Exactly 2r in the linear theory; sin θ shifts the centre by
+            // r θ²/6-ish, so allow the size of that correction.
+            let drop = a - b;
+            if b > r {
+                assert!(
+                    (drop - 2.0 * r).abs() < 2.0 * r * a * a,
+                    "{}: {drop}",
+                    method.name()
+                );
+            }
+        }
+    }
+}

@@ -314,173 +314,262 @@ fn run_dop853(
     let w = model.pendulum.natural_angular_frequency();
     let (w2, c1) = (w * w, 2.0 * model.damping.zeta() * w);
     let tolerance = Tolerance::both(options.tolerance);
-    let duration = options.duration;
-    let a0 = amplitude.radians();
-    // The direction of motion: released at +A0 it swings towards negative.
-    let mut direction = if a0 > 0.0 { -1.0 } else { 1.0 };
-    let mut evaluations = 0_u64;
-    let rhs = |_t: f64, y: State2, direction: f64| -> State2 {
-        [y[1], model.acceleration(w2, c1, y, direction)]
+    let rhs =
+        |y: State2, direction: f64| -> State2 { [y[1], model.acceleration(w2, c1, y, direction)] };
+    let mut run = match Run::start(model, Method::Dop853, amplitude, options, observer) {
+        Ok(run) => run,
+        Err(finished) => return finished,
     };
-    let mut samples = Samples {
-        interval: options.sample_interval,
-        next: 0,
-    };
-    let (mut t, mut y) = (0.0_f64, [a0, 0.0]);
-    let mut outcome = Outcome {
-        method: Method::Dop853,
-        swings: 0,
-        final_time: 0.0,
-        final_state: State {
-            angle: a0,
-            angular_velocity: 0.0,
-        },
-        final_amplitude: a0,
-        steps: 0,
-        rejected_steps: 0,
-        function_evaluations: 0,
-        stopped: Stopped::Duration,
-    };
-    let mut index = 0_u64;
-    let mut go_on = observer.turning_point(&TurningPoint {
-        index: 0,
-        time: 0.0,
-        angle: a0,
-    });
-    let sticks =
-        |angle: f64| model.friction_angle > 0.0 && angle.sin().abs() <= model.friction_angle;
-    if sticks(a0) || a0 == 0.0 {
-        outcome.stopped = if a0 == 0.0 {
-            Stopped::Duration
-        } else {
-            Stopped::Friction
-        };
-        return finish_at_rest(model, outcome, a0, duration, &mut samples, observer);
-    }
-    let mut f0 = rhs(t, y, direction);
-    evaluations += 1;
+    let (mut t, mut y) = (0.0_f64, [amplitude.radians(), 0.0]);
+    let mut f0 = rhs(y, run.direction);
     let mut h = {
-        let mut f = |t, y| rhs(t, y, direction);
-        evaluations += 1;
-        initial_step(&mut f, t, y, f0, &tolerance)
+        let direction = run.direction;
+        initial_step(&mut |_, y| rhs(y, direction), t, y, f0, &tolerance)
     };
+    run.evaluations += 2;
     let mut after_rejection = false;
-    while go_on && t < duration {
-        let last = t + h >= duration;
-        let h_step = if last { duration - t } else { h };
-        let mut f = |t, y| rhs(t, y, direction);
+    while run.go_on && t < run.duration {
+        let last = t + h >= run.duration;
+        let h_step = if last { run.duration - t } else { h };
+        let direction = run.direction;
+        let mut f = |_t: f64, y: State2| rhs(y, direction);
         let step = attempt(&mut f, t, y, f0, h_step, &tolerance);
-        evaluations += 11;
+        run.evaluations += 11;
         if step.error > 1.0 {
-            outcome.rejected_steps += 1;
+            run.outcome.rejected_steps += 1;
             h = h_step * step_factor(step.error, true);
             after_rejection = true;
             continue;
         }
-        outcome.steps += 1;
-        let t_new = if last { duration } else { t + h_step };
+        let t_new = if last { run.duration } else { t + h_step };
         let f1 = f(t_new, step.y1);
-        evaluations += 1;
-        let turned = step.y1[1] * direction < 0.0;
-        let wants_samples = samples.due(t_new).is_some();
-        if turned || wants_samples {
+        run.evaluations += 1;
+        if run.needs_interpolant(t_new, step.y1[1]) {
             let dense = dense_output(&mut f, &step, f1);
-            evaluations += 3;
-            let event =
-                turned.then(|| locate_root(|x| dense.component(x, 1), t, t_new, y[1], step.y1[1]));
-            let sample_limit = event
-                .filter(|_| model.friction_angle > 0.0)
-                .unwrap_or(t_new);
-            while let Some(ts) = samples.due(sample_limit) {
-                let s = dense.eval(ts);
-                go_on &= observer.sample(
-                    ts,
-                    &State {
-                        angle: s[0],
-                        angular_velocity: s[1],
-                    },
-                );
-                samples.next += 1;
-            }
-            if let Some(t_event) = event {
-                let angle = dense.component(t_event, 0);
-                index += 1;
-                go_on &= observer.turning_point(&TurningPoint {
-                    index,
-                    time: t_event,
-                    angle,
-                });
-                direction = -direction;
-                if model.friction_angle > 0.0 {
-                    // Restart from rest at the turning point with the new sign.
-                    t = t_event;
-                    y = [angle, 0.0];
-                    if sticks(angle) {
-                        outcome.swings = index;
-                        outcome.stopped = Stopped::Friction;
-                        outcome.function_evaluations = evaluations;
-                        outcome.final_time = t;
-                        return finish_at_rest(
-                            model,
-                            outcome,
-                            angle,
-                            duration,
-                            &mut samples,
-                            observer,
-                        );
-                    }
-                    f0 = rhs(t, y, direction);
-                    evaluations += 1;
+            run.evaluations += 3;
+            match run.after_step(&dense, t, t_new, y[1], step.y1[1]) {
+                AfterStep::Continue => {}
+                AfterStep::Restart { time, angle } => {
+                    (t, y) = (time, [angle, 0.0]);
+                    f0 = rhs(y, run.direction);
+                    run.evaluations += 1;
                     after_rejection = false;
                     continue;
                 }
+                AfterStep::Stuck { time, angle } => return run.stuck(time, angle),
             }
+        } else {
+            run.count_step(t_new);
         }
-        t = t_new;
-        y = step.y1;
-        f0 = f1;
+        (t, y, f0) = (t_new, step.y1, f1);
         h = h_step * step_factor(step.error, after_rejection);
         after_rejection = false;
-        if outcome.steps % PROGRESS_EVERY == 0 {
-            go_on &= observer.progress(t);
-        }
     }
-    outcome.swings = index;
-    outcome.final_time = t;
-    outcome.final_state = State {
-        angle: y[0],
-        angular_velocity: y[1],
-    };
-    outcome.final_amplitude = energy_amplitude(&model.pendulum, &outcome.final_state);
-    outcome.function_evaluations = evaluations;
-    if !go_on {
-        outcome.stopped = Stopped::Interrupted;
-    }
-    outcome
+    run.finish(t, y)
 }
 
-/// Ends a run held at rest at `angle`: samples up to the duration are that angle.
-fn finish_at_rest(
-    model: &Model,
-    mut outcome: Outcome,
-    angle: f64,
-    duration: f64,
-    samples: &mut Samples,
-    observer: &mut impl Observer,
-) -> Outcome {
-    let state = State {
-        angle,
-        angular_velocity: 0.0,
-    };
-    while let Some(t) = samples.due(duration) {
-        if !observer.sample(t, &state) {
-            break;
-        }
-        samples.next += 1;
+/// A step's continuous extension, as the events and samples need it.
+trait Interpolant {
+    /// `[θ, θ']` at `t` within the step.
+    fn state(&self, t: f64) -> State2;
+}
+
+impl Interpolant for crate::integrate::dense::DenseOutput {
+    fn state(&self, t: f64) -> State2 {
+        self.eval(t)
     }
-    outcome.final_state = state;
-    outcome.final_amplitude = energy_amplitude(&model.pendulum, &state);
-    outcome
+}
+
+impl Interpolant for Hermite {
+    fn state(&self, t: f64) -> State2 {
+        [self.angle(t), self.velocity(t)]
+    }
+}
+
+/// What the driver does after a step with a turning point or samples in it.
+enum AfterStep {
+    /// Carry on from the step's end.
+    Continue,
+    /// Restart from rest here (dry friction changed sign).
+    Restart { time: f64, angle: f64 },
+    /// Dry friction holds the pendulum here.
+    Stuck { time: f64, angle: f64 },
+}
+
+/// What every integrator's driver shares: the observer, the samples, the
+/// turning points, the direction of motion (the sign dry friction takes)
+/// and the counters.
+struct Run<'a, O: Observer> {
+    model: &'a Model,
+    observer: &'a mut O,
+    samples: Samples,
+    duration: f64,
+    outcome: Outcome,
+    index: u64,
+    direction: f64,
+    evaluations: u64,
+    go_on: bool,
+}
+
+impl<'a, O: Observer> Run<'a, O> {
+    /// Reports the release; `Err` with the finished outcome if the pendulum
+    /// never moves (zero amplitude, or held by friction from the start).
+    fn start(
+        model: &'a Model,
+        method: Method,
+        amplitude: Amplitude,
+        options: &Options,
+        observer: &'a mut O,
+    ) -> Result<Self, Outcome> {
+        let a0 = amplitude.radians();
+        let go_on = observer.turning_point(&TurningPoint {
+            index: 0,
+            time: 0.0,
+            angle: a0,
+        });
+        let run = Run {
+            model,
+            observer,
+            samples: Samples {
+                interval: options.sample_interval,
+                next: 0,
+            },
+            duration: options.duration,
+            outcome: Outcome {
+                method,
+                swings: 0,
+                final_time: 0.0,
+                final_state: State {
+                    angle: a0,
+                    angular_velocity: 0.0,
+                },
+                final_amplitude: a0,
+                steps: 0,
+                rejected_steps: 0,
+                function_evaluations: 0,
+                stopped: Stopped::Duration,
+            },
+            index: 0,
+            // Released at +A0 it swings towards negative angles.
+            direction: if a0 > 0.0 { -1.0 } else { 1.0 },
+            evaluations: 0,
+            go_on,
+        };
+        if a0 == 0.0 {
+            return Err(run.rest(0.0, 0.0, Stopped::Duration));
+        }
+        if run.sticks(a0) {
+            return Err(run.stuck(0.0, a0));
+        }
+        Ok(run)
+    }
+
+    fn sticks(&self, angle: f64) -> bool {
+        let r = self.model.friction_angle;
+        r > 0.0 && angle.sin().abs() <= r
+    }
+
+    /// Whether a step ending at `t_new` with velocity `v1` holds a turning
+    /// point or a sample, and so needs its interpolant.
+    fn needs_interpolant(&self, t_new: f64, v1: f64) -> bool {
+        v1 * self.direction < 0.0 || self.samples.due(t_new).is_some()
+    }
+
+    /// Emits the samples and the turning point of the step from `t` to `t_new`.
+    fn after_step(
+        &mut self,
+        step: &impl Interpolant,
+        t: f64,
+        t_new: f64,
+        v0: f64,
+        v1: f64,
+    ) -> AfterStep {
+        let friction = self.model.friction_angle > 0.0;
+        let turned = v1 * self.direction < 0.0;
+        let event = turned.then(|| locate_root(|x| step.state(x)[1], t, t_new, v0, v1));
+        // With friction the motion after the turning point is not this step's.
+        let sample_limit = event.filter(|_| friction).unwrap_or(t_new);
+        while let Some(ts) = self.samples.due(sample_limit) {
+            let s = step.state(ts);
+            let state = State {
+                angle: s[0],
+                angular_velocity: s[1],
+            };
+            self.go_on &= self.observer.sample(ts, &state);
+            self.samples.next += 1;
+        }
+        self.count_step(t_new);
+        let Some(time) = event else {
+            return AfterStep::Continue;
+        };
+        let angle = step.state(time)[0];
+        self.index += 1;
+        self.go_on &= self.observer.turning_point(&TurningPoint {
+            index: self.index,
+            time,
+            angle,
+        });
+        self.direction = -self.direction;
+        if !friction {
+            return AfterStep::Continue;
+        }
+        if self.sticks(angle) {
+            AfterStep::Stuck { time, angle }
+        } else {
+            AfterStep::Restart { time, angle }
+        }
+    }
+
+    /// Counts an accepted step and now and then reports progress.
+    fn count_step(&mut self, t: f64) {
+        self.outcome.steps += 1;
+        if self.outcome.steps % PROGRESS_EVERY == 0 {
+            self.go_on &= self.observer.progress(t);
+        }
+    }
+
+    /// The outcome at the end of the loop, at time `t` in state `y`.
+    fn finish(mut self, t: f64, y: State2) -> Outcome {
+        let state = State {
+            angle: y[0],
+            angular_velocity: y[1],
+        };
+        self.outcome.swings = self.index;
+        self.outcome.final_time = t;
+        self.outcome.final_amplitude = energy_amplitude(&self.model.pendulum, &state);
+        self.outcome.final_state = state;
+        self.outcome.function_evaluations = self.evaluations;
+        if !self.go_on {
+            self.outcome.stopped = Stopped::Interrupted;
+        }
+        self.outcome
+    }
+
+    /// Held by friction at `angle` from `time` on.
+    fn stuck(self, time: f64, angle: f64) -> Outcome {
+        self.rest(time, angle, Stopped::Friction)
+    }
+
+    /// At rest at `angle` from `time` to the end: later samples all show it.
+    fn rest(mut self, time: f64, angle: f64, stopped: Stopped) -> Outcome {
+        let state = State {
+            angle,
+            angular_velocity: 0.0,
+        };
+        while let Some(t) = self.samples.due(self.duration) {
+            if !self.observer.sample(t, &state) {
+                break;
+            }
+            self.samples.next += 1;
+        }
+        self.outcome.swings = self.index;
+        self.outcome.final_time = time;
+        self.outcome.final_state = state;
+        self.outcome.final_amplitude = energy_amplitude(&self.model.pendulum, &state);
+        self.outcome.function_evaluations = self.evaluations;
+        self.outcome.stopped = stopped;
+        self.outcome
+    }
 }
 
 /// Steps per small-angle period for the symplectic method at `tolerance`.
@@ -546,60 +635,25 @@ fn run_symplectic(
 ) -> Outcome {
     let w = model.pendulum.natural_angular_frequency();
     let (w2, c1) = (w * w, 2.0 * model.damping.zeta() * w);
-    let b = model.quadratic_drag;
-    let r = model.friction_angle;
-    let duration = options.duration;
+    let (b, r) = (model.quadratic_drag, model.friction_angle);
     let h = model.pendulum.small_angle_period() / symplectic_steps_per_period(options.tolerance);
     let flow = DampingFlow::new(c1, b, h);
-    let a0 = amplitude.radians();
-    let mut direction = if a0 > 0.0 { -1.0 } else { 1.0 };
     let velocity_part = |v: f64| -c1 * v - b * v * v.abs();
-    let mut samples = Samples {
-        interval: options.sample_interval,
-        next: 0,
+    let force_of = |theta: f64, direction: f64| -w2 * (theta.sin() + r * direction);
+    let mut run = match Run::start(model, Method::Symplectic, amplitude, options, observer) {
+        Ok(run) => run,
+        Err(finished) => return finished,
     };
-    let mut outcome = Outcome {
-        method: Method::Symplectic,
-        swings: 0,
-        final_time: 0.0,
-        final_state: State {
-            angle: a0,
-            angular_velocity: 0.0,
-        },
-        final_amplitude: a0,
-        steps: 0,
-        rejected_steps: 0,
-        function_evaluations: 0,
-        stopped: Stopped::Duration,
-    };
-    let mut go_on = observer.turning_point(&TurningPoint {
-        index: 0,
-        time: 0.0,
-        angle: a0,
-    });
-    let sticks = |angle: f64| r > 0.0 && angle.sin().abs() <= r;
-    if sticks(a0) || a0 == 0.0 {
-        outcome.stopped = if a0 == 0.0 {
-            Stopped::Duration
-        } else {
-            Stopped::Friction
-        };
-        return finish_at_rest(model, outcome, a0, duration, &mut samples, observer);
-    }
-    let mut evaluations = 0_u64;
-    let mut index = 0_u64;
     // Time is the restart time plus a whole number of steps, never a running sum.
     let (mut origin, mut n) = (0.0_f64, 0_u64);
-    let mut y = [a0, 0.0];
-    let force_of = |theta: f64, direction: f64| -w2 * (theta.sin() + r * direction);
-    let mut f = force_of(y[0], direction);
-    evaluations += 1;
-    let mut t = 0.0;
-    while go_on && t < duration {
+    let (mut t, mut y) = (0.0_f64, [amplitude.radians(), 0.0]);
+    let mut f = force_of(y[0], run.direction);
+    run.evaluations += 1;
+    while run.go_on && t < run.duration {
         let t_next = origin + (n + 1) as f64 * h;
-        let last = t_next >= duration;
+        let last = t_next >= run.duration;
         let (t_new, step_h) = if last {
-            (duration, duration - t)
+            (run.duration, run.duration - t)
         } else {
             (t_next, h)
         };
@@ -610,81 +664,33 @@ fn run_symplectic(
         } else {
             &flow
         };
+        let direction = run.direction;
         let mut force = |theta: f64| force_of(theta, direction);
         let mut damp = |v: f64, i: usize| flow_now.apply(v, i);
         let (y1, f1) = symplectic::step(&mut force, &mut damp, y, f, step_h);
-        evaluations += 7;
-        outcome.steps += 1;
-        let turned = y1[1] * direction < 0.0;
-        if turned || samples.due(t_new).is_some() {
+        run.evaluations += 7;
+        if run.needs_interpolant(t_new, y1[1]) {
             let hermite = Hermite::new(
                 t,
                 step_h,
                 [y[0], y[1], f + velocity_part(y[1])],
                 [y1[0], y1[1], f1 + velocity_part(y1[1])],
             );
-            let event = turned.then(|| locate_root(|x| hermite.velocity(x), t, t_new, y[1], y1[1]));
-            let sample_limit = event.filter(|_| r > 0.0).unwrap_or(t_new);
-            while let Some(ts) = samples.due(sample_limit) {
-                let state = State {
-                    angle: hermite.angle(ts),
-                    angular_velocity: hermite.velocity(ts),
-                };
-                go_on &= observer.sample(ts, &state);
-                samples.next += 1;
-            }
-            if let Some(t_event) = event {
-                let angle = hermite.angle(t_event);
-                index += 1;
-                go_on &= observer.turning_point(&TurningPoint {
-                    index,
-                    time: t_event,
-                    angle,
-                });
-                direction = -direction;
-                if r > 0.0 {
-                    if sticks(angle) {
-                        outcome.swings = index;
-                        outcome.stopped = Stopped::Friction;
-                        outcome.function_evaluations = evaluations;
-                        outcome.final_time = t_event;
-                        return finish_at_rest(
-                            model,
-                            outcome,
-                            angle,
-                            duration,
-                            &mut samples,
-                            observer,
-                        );
-                    }
-                    origin = t_event;
-                    n = 0;
-                    t = t_event;
-                    y = [angle, 0.0];
-                    f = force_of(angle, direction);
-                    evaluations += 1;
+            match run.after_step(&hermite, t, t_new, y[1], y1[1]) {
+                AfterStep::Continue => {}
+                AfterStep::Restart { time, angle } => {
+                    (origin, n, t, y) = (time, 0, time, [angle, 0.0]);
+                    f = force_of(angle, run.direction);
+                    run.evaluations += 1;
                     continue;
                 }
+                AfterStep::Stuck { time, angle } => return run.stuck(time, angle),
             }
+        } else {
+            run.count_step(t_new);
         }
         n += 1;
-        t = t_new;
-        y = y1;
-        f = f1;
-        if outcome.steps % PROGRESS_EVERY == 0 {
-            go_on &= observer.progress(t);
-        }
+        (t, y, f) = (t_new, y1, f1);
     }
-    outcome.swings = index;
-    outcome.final_time = t;
-    outcome.final_state = State {
-        angle: y[0],
-        angular_velocity: y[1],
-    };
-    outcome.final_amplitude = energy_amplitude(&model.pendulum, &outcome.final_state);
-    outcome.function_evaluations = evaluations;
-    if !go_on {
-        outcome.stopped = Stopped::Interrupted;
-    }
-    outcome
+    run.finish(t, y)
 }

@@ -30,6 +30,8 @@ pub enum Command {
     Gravity(GravityCommandArgs),
     /// The damped pendulum (seed section 1-4): Q, decay, turning points, dry friction, energy.
     Damped(Box<DampedArgs>),
+    /// The full nonlinear damped pendulum, integrated over days of swings.
+    Simulate(Box<SimulateArgs>),
 }
 
 /// Where g comes from: given, from latitude and height, or standard gravity.
@@ -146,9 +148,9 @@ pub struct GravityCommandArgs {
     pub json: bool,
 }
 
-/// One way to give viscous damping; exactly one is required.
+/// One way to give viscous damping (at most one; `damped` needs one).
 #[derive(Debug, Args)]
-#[group(required = true, multiple = false)]
+#[group(required = false, multiple = false)]
 pub struct DampingArgs {
     /// Damping ratio ζ (1 = critical damping).
     #[arg(long, value_name = "Z", allow_hyphen_values = true)]
@@ -167,9 +169,10 @@ pub struct DampingArgs {
     pub decay_time: Option<String>,
 }
 
-/// `pendulum damped`.
+/// A pendulum released from rest and what slows it: shared by `damped`
+/// and `simulate`.
 #[derive(Debug, Args)]
-pub struct DampedArgs {
+pub struct SwingArgs {
     /// Pendulum length.
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub length: String,
@@ -181,9 +184,18 @@ pub struct DampedArgs {
     /// Coulomb friction angle r (friction torque / restoring torque per radian), e.g. 0.01deg.
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub friction_angle: Option<String>,
-    /// Bob mass, for the energy budget (and with --damping-coefficient).
+    /// Bob mass, for the energy budget and with --damping-coefficient.
     #[arg(long, value_name = "M", allow_hyphen_values = true)]
     pub mass: Option<String>,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
+}
+
+/// `pendulum damped`.
+#[derive(Debug, Args)]
+pub struct DampedArgs {
+    #[command(flatten)]
+    pub swing: SwingArgs,
     /// How many turning points to list after the start.
     #[arg(long, value_name = "N", default_value_t = 10)]
     pub extrema: u64,
@@ -209,8 +221,64 @@ pub struct DampedArgs {
     /// Allow more than 10^8 trajectory samples.
     #[arg(long)]
     pub force: bool,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Integration methods for `simulate`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum MethodArg {
+    /// Dormand-Prince 8(5,3), adaptive, 7th-order dense output.
+    Dop853,
+    /// Yoshida 6th-order symplectic with exact damping: for very long runs.
+    Symplectic,
+    /// The closed form (no damping).
+    Exact,
+}
+
+/// `pendulum simulate`.
+#[derive(Debug, Args)]
+pub struct SimulateArgs {
     #[command(flatten)]
-    pub gravity: GravityArgs,
+    pub swing: SwingArgs,
+    /// Quadratic air drag b in θ'' = … - b θ'|θ'| (per radian).
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
+    pub quadratic_drag: Option<String>,
+    /// How long to simulate (e.g. 7day, 600s).
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
+    pub duration: String,
+    /// Integration method.
+    #[arg(long, value_enum, default_value_t = MethodArg::Dop853)]
+    pub method: MethodArg,
+    /// Local error tolerance (relative and absolute).
+    #[arg(
+        long,
+        value_name = "TOL",
+        allow_hyphen_values = true,
+        default_value = "1e-10"
+    )]
+    pub tolerance: String,
+    /// Write every turning point to this CSV file.
+    #[arg(long, value_name = "FILE.csv")]
+    pub swings: Option<std::path::PathBuf>,
+    /// Write the motion, sampled every --sample-interval, to this CSV file.
+    #[arg(long, value_name = "FILE.csv")]
+    pub trajectory: Option<std::path::PathBuf>,
+    /// Time between trajectory samples [default: a hundredth of the small-angle period].
+    #[arg(
+        long,
+        value_name = "H",
+        allow_hyphen_values = true,
+        requires = "trajectory"
+    )]
+    pub sample_interval: Option<String>,
+    /// Allow a duration over 10^9 s or more than 10^8 samples.
+    #[arg(long)]
+    pub force: bool,
+    /// No progress bar.
+    #[arg(long, short)]
+    pub quiet: bool,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,

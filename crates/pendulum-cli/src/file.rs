@@ -5,7 +5,7 @@
 
 use crate::error::CliError;
 use std::fs::File;
-use std::io::BufWriter;
+use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 /// A file being written; [`AtomicFile::commit`] puts it in place.
@@ -53,14 +53,15 @@ impl AtomicFile {
         )
     }
 
-    /// Flushes, syncs and renames the file into place.
-    pub fn commit(mut self) -> Result<(), CliError> {
+    /// Flushes, syncs and renames the file into place; returns its path.
+    pub fn commit(mut self) -> Result<String, CliError> {
         let writer = self.writer.take().expect("committed once");
         let file = writer
             .into_inner()
             .map_err(|e| self.write_error(e.error()))?;
         file.sync_all().map_err(|e| self.write_error(e))?;
-        std::fs::rename(&self.temporary, &self.target).map_err(|e| self.write_error(e))
+        std::fs::rename(&self.temporary, &self.target).map_err(|e| self.write_error(e))?;
+        Ok(self.target.display().to_string())
     }
 }
 
@@ -70,5 +71,64 @@ impl Drop for AtomicFile {
         if self.writer.take().is_some() {
             let _ = std::fs::remove_file(&self.temporary);
         }
+    }
+}
+
+/// A CSV file of numbers written row by row through an [`AtomicFile`]:
+/// shortest round-trip formatting (ryu), one buffer reused for every row.
+pub struct CsvFile {
+    file: AtomicFile,
+    line: String,
+    ryu: ryu::Buffer,
+}
+
+impl CsvFile {
+    /// Creates `target` and writes `header` (its column names, comma-separated).
+    pub fn create(target: &Path, flag: &'static str, header: &str) -> Result<Self, CliError> {
+        let mut file = AtomicFile::create(target, flag)?;
+        let head = format!("{header}\n");
+        file.writer()
+            .write_all(head.as_bytes())
+            .map_err(|e| file.write_error(e))?;
+        Ok(Self {
+            file,
+            line: String::with_capacity(96),
+            ryu: ryu::Buffer::new(),
+        })
+    }
+
+    /// Appends a whole number to the row.
+    pub fn integer(&mut self, value: u64) -> &mut Self {
+        self.separate();
+        self.line.push_str(&value.to_string());
+        self
+    }
+
+    /// Appends a number to the row; `None` leaves the cell empty.
+    pub fn number(&mut self, value: Option<f64>) -> &mut Self {
+        self.separate();
+        if let Some(v) = value {
+            self.line.push_str(self.ryu.format(v));
+        }
+        self
+    }
+
+    fn separate(&mut self) {
+        if !self.line.is_empty() {
+            self.line.push(',');
+        }
+    }
+
+    /// Ends the row and writes it.
+    pub fn end_row(&mut self) -> Result<(), CliError> {
+        self.line.push('\n');
+        let result = self.file.writer().write_all(self.line.as_bytes());
+        self.line.clear();
+        result.map_err(|e| self.file.write_error(e))
+    }
+
+    /// Puts the file in place; returns its path.
+    pub fn commit(self) -> Result<String, CliError> {
+        self.file.commit()
     }
 }

@@ -124,7 +124,8 @@ impl ExactSwing {
         }
         State {
             angle,
-            angular_velocity: -self.frequency * velocity,
+            // 0 - x, not -x: no "-0.0" at the turning points.
+            angular_velocity: 0.0 - self.frequency * velocity,
         }
     }
 

@@ -1,9 +1,10 @@
 //! Reading the arguments every command shares: quantities with units, the
 //! pendulum, the amplitude, and where g comes from.
 
-use crate::args::GravityArgs;
+use crate::args::{DampingArgs, GravityArgs, SwingArgs};
 use crate::error::CliError;
-use crate::units::{parse_quantity, Dimension};
+use crate::units::{parse_number, parse_quantity, Dimension};
+use pendulum_theory::damping::Damping;
 use pendulum_theory::gravity::normal_gravity;
 use pendulum_theory::{Amplitude, Pendulum, Quantity, STANDARD_GRAVITY};
 use serde::Serialize;
@@ -100,4 +101,139 @@ pub fn pendulum(length_text: &str, gravity: &ResolvedGravity) -> Result<Pendulum
 /// Infinite or NaN values become JSON `null` rather than a string.
 pub fn finite(value: f64) -> Option<f64> {
     value.is_finite().then_some(value)
+}
+
+/// The damping form given, converted to ζ; `None` when none was given.
+pub fn damping(
+    args: &DampingArgs,
+    mass: Option<f64>,
+    p: &Pendulum,
+) -> Result<Option<Damping>, CliError> {
+    let number = |flag: &str, text: &str| parse_number(text).map_err(|e| CliError::flag(flag, e));
+    if let Some(t) = &args.zeta {
+        let z = number("--zeta", t)?;
+        return Damping::from_zeta(z)
+            .map(Some)
+            .map_err(|e| CliError::input("--zeta", &e));
+    }
+    if let Some(t) = &args.q {
+        let q = number("--q", t)?;
+        return Damping::from_q(q)
+            .map(Some)
+            .map_err(|e| CliError::input("--q", &e));
+    }
+    if let Some(t) = &args.log_decrement {
+        let d = number("--log-decrement", t)?;
+        return Damping::from_log_decrement(d)
+            .map(Some)
+            .map_err(|e| CliError::input("--log-decrement", &e));
+    }
+    if let Some(t) = &args.decay_time {
+        let tau = quantity("--decay-time", t, Dimension::Time)?;
+        return Damping::from_decay_time(tau, p)
+            .map(Some)
+            .map_err(|e| CliError::input("--decay-time", &e));
+    }
+    if let Some(t) = &args.damping_coefficient {
+        let c = number("--damping-coefficient", t)?;
+        let m = mass.ok_or_else(|| CliError::flag("--damping-coefficient", "needs --mass"))?;
+        return Damping::from_coefficient(c, m, p)
+            .map(Some)
+            .map_err(|e| match e.quantity {
+                Quantity::Mass => CliError::input("--mass", &e),
+                _ => CliError::input("--damping-coefficient", &e),
+            });
+    }
+    Ok(None)
+}
+
+/// More trajectory samples than this need `--force`.
+pub const MAX_SAMPLES: f64 = 1e8;
+
+/// A duration from `--duration` (not negative), or `default` when absent.
+pub fn duration(text: Option<&str>, default: f64) -> Result<f64, CliError> {
+    let d = match text {
+        Some(t) => quantity("--duration", t, Dimension::Time)?,
+        None => default,
+    };
+    if d < 0.0 {
+        return Err(CliError::flag(
+            "--duration",
+            format!("must not be negative, got {} s", crate::output::num(d, 10)),
+        ));
+    }
+    Ok(d)
+}
+
+/// The sample interval from `--sample-interval` (or `default`), checked to
+/// be positive and to give at most 10^8 samples over `duration` unless
+/// `force`; returns it with the number of samples.
+pub fn sampling(
+    text: Option<&str>,
+    default: f64,
+    duration: f64,
+    force: bool,
+) -> Result<(f64, u64), CliError> {
+    let flag = "--sample-interval";
+    let h = match text {
+        Some(t) => quantity(flag, t, Dimension::Time)?,
+        None => default,
+    };
+    if h <= 0.0 {
+        return Err(CliError::flag(
+            flag,
+            format!("must be positive, got {} s", crate::output::num(h, 10)),
+        ));
+    }
+    let count = (duration / h).floor() + 1.0;
+    if count > MAX_SAMPLES && !force {
+        return Err(CliError::flag(
+            flag,
+            format!(
+                "{} samples requested; more than 10^8 needs --force (or a longer interval)",
+                crate::output::num(count, 4)
+            ),
+        ));
+    }
+    Ok((h, count as u64))
+}
+
+/// What `damped` and `simulate` read from [`SwingArgs`].
+pub struct Swing {
+    /// The pendulum.
+    pub pendulum: Pendulum,
+    /// The release amplitude.
+    pub amplitude: Amplitude,
+    /// The bob mass, if given.
+    pub mass: Option<f64>,
+    /// The viscous damping, if given.
+    pub damping: Option<Damping>,
+    /// The dry friction angle (0 if not given), rad.
+    pub friction_angle: f64,
+}
+
+/// Reads the pendulum, its release and its losses.
+pub fn swing(args: &SwingArgs) -> Result<Swing, CliError> {
+    let gravity = gravity(&args.gravity)?;
+    let pendulum = pendulum(&args.length, &gravity)?;
+    let amplitude = amplitude("--amplitude", &args.amplitude)?;
+    let mass = args
+        .mass
+        .as_deref()
+        .map(|t| quantity("--mass", t, Dimension::Mass))
+        .transpose()?;
+    let damping = damping(&args.damping, mass, &pendulum)?;
+    let friction_angle = args
+        .friction_angle
+        .as_deref()
+        .map(|t| quantity("--friction-angle", t, Dimension::Angle))
+        .transpose()?
+        .unwrap_or(0.0);
+    Ok(Swing {
+        pendulum,
+        amplitude,
+        mass,
+        damping,
+        friction_angle,
+    })
 }

@@ -2,21 +2,15 @@
 //! friction (book section 2-4) and the energy budget.
 
 use super::common::{self, finite};
-use crate::args::{DampedArgs, DampingArgs};
+use crate::args::DampedArgs;
 use crate::error::CliError;
-use crate::file::AtomicFile;
+use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
-use crate::units::{parse_number, Dimension};
 use pendulum_theory::damped::{DampedPendulum, Extremum, Regime};
-use pendulum_theory::damping::Damping;
 use pendulum_theory::energy::{energy_budget, EnergyBudget};
 use pendulum_theory::friction::{DryFriction, RunDown};
 use pendulum_theory::{Amplitude, Pendulum, Quantity};
 use serde::Serialize;
-use std::io::Write;
-
-/// More trajectory samples than this need `--force`.
-const MAX_SAMPLES: f64 = 1e8;
 
 #[derive(Serialize)]
 struct DampedJson {
@@ -89,17 +83,15 @@ struct Results {
 }
 
 pub fn run(args: &DampedArgs) -> Result<String, CliError> {
-    let gravity = common::gravity(&args.gravity)?;
-    let pendulum = common::pendulum(&args.length, &gravity)?;
-    let amplitude = common::amplitude("--amplitude", &args.amplitude)?;
-    let mass = args
-        .mass
-        .as_deref()
-        .map(|t| common::quantity("--mass", t, Dimension::Mass))
-        .transpose()?;
-    let damping = damping(&args.damping, mass, &pendulum)?;
+    let swing = common::swing(&args.swing)?;
+    let (pendulum, amplitude, mass) = (swing.pendulum, swing.amplitude, swing.mass);
+    let damping = swing.damping.ok_or_else(|| {
+        CliError::other(
+            "give the damping: one of --zeta, --q, --damping-coefficient, --log-decrement, --decay-time",
+        )
+    })?;
     let damped = DampedPendulum::new(pendulum, damping);
-    let friction = friction(args.friction_angle.as_deref(), damped, amplitude)?;
+    let friction = friction(swing.friction_angle, damped, amplitude)?;
     let a0 = amplitude.radians();
     let run = friction.run_down(a0, args.extrema);
     // Without friction the closed form gives every turning point directly,
@@ -138,49 +130,9 @@ pub fn run(args: &DampedArgs) -> Result<String, CliError> {
     }
 }
 
-/// The one damping form given, converted to ζ.
-fn damping(args: &DampingArgs, mass: Option<f64>, p: &Pendulum) -> Result<Damping, CliError> {
-    let number = |flag: &str, text: &str| parse_number(text).map_err(|e| CliError::flag(flag, e));
-    if let Some(t) = &args.zeta {
-        let z = number("--zeta", t)?;
-        return Damping::from_zeta(z).map_err(|e| CliError::input("--zeta", &e));
-    }
-    if let Some(t) = &args.q {
-        let q = number("--q", t)?;
-        return Damping::from_q(q).map_err(|e| CliError::input("--q", &e));
-    }
-    if let Some(t) = &args.log_decrement {
-        let d = number("--log-decrement", t)?;
-        return Damping::from_log_decrement(d).map_err(|e| CliError::input("--log-decrement", &e));
-    }
-    if let Some(t) = &args.decay_time {
-        let tau = common::quantity("--decay-time", t, Dimension::Time)?;
-        return Damping::from_decay_time(tau, p).map_err(|e| CliError::input("--decay-time", &e));
-    }
-    if let Some(t) = &args.damping_coefficient {
-        let c = number("--damping-coefficient", t)?;
-        let m = mass.ok_or_else(|| CliError::flag("--damping-coefficient", "needs --mass"))?;
-        return Damping::from_coefficient(c, m, p).map_err(|e| match e.quantity {
-            Quantity::Mass => CliError::input("--mass", &e),
-            _ => CliError::input("--damping-coefficient", &e),
-        });
-    }
-    Err(CliError::other(
-        "give one of --zeta, --q, --damping-coefficient, --log-decrement, --decay-time",
-    ))
-}
-
 /// The friction angle, which must be below the amplitude for any motion.
-fn friction(
-    text: Option<&str>,
-    damped: DampedPendulum,
-    amplitude: Amplitude,
-) -> Result<DryFriction, CliError> {
+fn friction(r: f64, damped: DampedPendulum, amplitude: Amplitude) -> Result<DryFriction, CliError> {
     let flag = "--friction-angle";
-    let r = text
-        .map(|t| common::quantity(flag, t, Dimension::Angle))
-        .transpose()?
-        .unwrap_or(0.0);
     let friction = DryFriction::new(damped, r).map_err(|e| CliError::input(flag, &e))?;
     if r > 0.0 && r >= amplitude.radians() {
         let show = |x| Quantity::FrictionAngle.format_value(x);
@@ -340,61 +292,30 @@ fn write_trajectory(
     r: &Results,
 ) -> Result<TrajectoryJson, CliError> {
     let t0 = r.pendulum.small_angle_period();
-    let duration = match &args.duration {
-        Some(t) => common::quantity("--duration", t, Dimension::Time)?,
-        None => 10.0 * t0,
-    };
-    if duration < 0.0 {
-        return Err(CliError::flag(
-            "--duration",
-            format!("must not be negative, got {} s", num(duration, 10)),
-        ));
-    }
-    let interval = match &args.sample_interval {
-        Some(t) => common::quantity("--sample-interval", t, Dimension::Time)?,
-        None => t0 / 100.0,
-    };
-    if interval <= 0.0 {
-        return Err(CliError::flag(
-            "--sample-interval",
-            format!("must be positive, got {} s", num(interval, 10)),
-        ));
-    }
-    let count = (duration / interval).floor() + 1.0;
-    if count > MAX_SAMPLES && !args.force {
-        return Err(CliError::flag(
-            "--sample-interval",
-            format!(
-                "{} samples requested; more than 10^8 needs --force (or a longer interval)",
-                num(count, 4)
-            ),
-        ));
-    }
-    let samples = count as u64;
-    let mut file = AtomicFile::create(path, "--trajectory")?;
+    let duration = common::duration(args.duration.as_deref(), 10.0 * t0)?;
+    let (interval, samples) = common::sampling(
+        args.sample_interval.as_deref(),
+        t0 / 100.0,
+        duration,
+        args.force,
+    )?;
+    let mut file = CsvFile::create(
+        path,
+        "--trajectory",
+        "time_s,angle_rad,angular_velocity_rad_s",
+    )?;
     let mut sampler = r.friction.sampler(r.amplitude.radians());
-    let mut line = String::with_capacity(80);
-    file.writer()
-        .write_all(b"time_s,angle_rad,angular_velocity_rad_s\n")
-        .map_err(|e| file.write_error(e))?;
-    let mut buffer = ryu::Buffer::new();
     for i in 0..samples {
         let t = i as f64 * interval;
         let state = sampler.state_at(t);
-        line.clear();
-        line.push_str(buffer.format(t));
-        line.push(',');
-        line.push_str(buffer.format(state.angle));
-        line.push(',');
-        line.push_str(buffer.format(state.angular_velocity));
-        line.push('\n');
-        if let Err(e) = file.writer().write_all(line.as_bytes()) {
-            return Err(file.write_error(e));
-        }
+        file.number(Some(t))
+            .number(Some(state.angle))
+            .number(Some(state.angular_velocity))
+            .end_row()?;
     }
-    file.commit()?;
+    let path = file.commit()?;
     Ok(TrajectoryJson {
-        path: path.display().to_string(),
+        path,
         samples,
         duration_s: duration,
         sample_interval_s: interval,

@@ -7,6 +7,7 @@ mod damped;
 mod gravity;
 mod length;
 mod period;
+mod simulate;
 
 use crate::args::Command;
 use crate::error::CliError;
@@ -19,5 +20,6 @@ pub fn run(command: &Command) -> Result<String, CliError> {
         Command::Amplitude(args) => amplitude::run(args),
         Command::Gravity(args) => gravity::run(args),
         Command::Damped(args) => damped::run(args),
+        Command::Simulate(args) => simulate::run(args),
     }
 }

@@ -3,4 +3,5 @@
 
 mod damped;
 mod period;
+mod simulate;
 mod util;

@@ -1,0 +1,388 @@
+//! `pendulum simulate`: the nonlinear damped pendulum over days of swings,
+//! with every turning point streamed to a CSV file.
+
+use super::common::{self, finite};
+use crate::args::{MethodArg, SimulateArgs};
+use crate::error::CliError;
+use crate::file::CsvFile;
+use crate::output::{self, num, Summary};
+use crate::units::parse_number;
+use indicatif::{ProgressBar, ProgressStyle};
+use pendulum_theory::damped::State;
+use pendulum_theory::damping::Damping;
+use pendulum_theory::simulation::{
+    simulate, Method, Model, Observer, Options, Outcome, SimulationError, Stopped, TurningPoint,
+};
+use pendulum_theory::{Pendulum, Quantity};
+use serde::Serialize;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+/// Longer simulated durations need `--force`, s.
+const MAX_DURATION: f64 = 1e9;
+
+#[derive(Serialize)]
+struct SimulateJson {
+    method: &'static str,
+    swings: u64,
+    final_time_s: f64,
+    final_angle_rad: f64,
+    final_angular_velocity_rad_s: f64,
+    final_amplitude_rad: f64,
+    steps: u64,
+    rejected_steps: u64,
+    function_evaluations: u64,
+    stopped: &'static str,
+    duration_s: f64,
+    tolerance: f64,
+    length_m: f64,
+    g_m_s2: f64,
+    amplitude_rad: f64,
+    zeta: f64,
+    q_factor: Option<f64>,
+    quadratic_drag: f64,
+    friction_angle_rad: f64,
+    elapsed_s: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    swings_file: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    trajectory_file: Option<String>,
+}
+
+pub fn run(args: &SimulateArgs) -> Result<String, CliError> {
+    let swing = common::swing(&args.swing)?;
+    let (pendulum, amplitude) = (swing.pendulum, swing.amplitude);
+    let damping = swing.damping.unwrap_or(Damping::NONE);
+    let friction_angle = swing.friction_angle;
+    let quadratic_drag = match &args.quadratic_drag {
+        Some(t) => parse_number(t).map_err(|e| CliError::flag("--quadratic-drag", e))?,
+        None => 0.0,
+    };
+    let model =
+        Model::new(pendulum, damping, quadratic_drag, friction_angle).map_err(|e| {
+            match e.quantity {
+                Quantity::QuadraticDrag => CliError::input("--quadratic-drag", &e),
+                _ => CliError::input("--friction-angle", &e),
+            }
+        })?;
+    let options = options(args, &pendulum)?;
+    let interrupted = Arc::new(AtomicBool::new(false));
+    {
+        let flag = Arc::clone(&interrupted);
+        // Ctrl-C asks the run to stop at its next progress check; the files
+        // written so far are then closed whole. Installing can fail only if a
+        // handler exists already, which is harmless.
+        let _ = ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst));
+    }
+    let mut observer = CliObserver::new(args, &pendulum, &options, Arc::clone(&interrupted))?;
+    let started = Instant::now();
+    let outcome = simulate(&model, amplitude, &options, &mut observer).map_err(|e| match e {
+        SimulationError::ExactWithDamping => CliError::flag("--method", e),
+        SimulationError::Input(e) => CliError::input(flag_for(e.quantity), &e),
+    })?;
+    let elapsed = started.elapsed().as_secs_f64();
+    let files = observer.close()?;
+    let result = SimulateJson {
+        method: outcome.method.name(),
+        swings: outcome.swings,
+        final_time_s: outcome.final_time,
+        final_angle_rad: outcome.final_state.angle,
+        final_angular_velocity_rad_s: outcome.final_state.angular_velocity,
+        final_amplitude_rad: outcome.final_amplitude,
+        steps: outcome.steps,
+        rejected_steps: outcome.rejected_steps,
+        function_evaluations: outcome.function_evaluations,
+        stopped: outcome.stopped.name(),
+        duration_s: options.duration,
+        tolerance: options.tolerance,
+        length_m: pendulum.length_m(),
+        g_m_s2: pendulum.g_m_s2(),
+        amplitude_rad: amplitude.radians(),
+        zeta: damping.zeta(),
+        q_factor: finite(damping.q_factor()),
+        quadratic_drag,
+        friction_angle_rad: friction_angle,
+        elapsed_s: elapsed,
+        swings_file: files.0,
+        trajectory_file: files.1,
+    };
+    if args.json {
+        output::json(&result)
+    } else {
+        Ok(text(&result, &outcome))
+    }
+}
+
+fn flag_for(quantity: Quantity) -> &'static str {
+    match quantity {
+        Quantity::Tolerance => "--tolerance",
+        Quantity::SampleInterval => "--sample-interval",
+        _ => "--duration",
+    }
+}
+
+fn options(args: &SimulateArgs, pendulum: &Pendulum) -> Result<Options, CliError> {
+    let duration = common::duration(Some(&args.duration), 0.0)?;
+    if duration > MAX_DURATION && !args.force {
+        return Err(CliError::flag(
+            "--duration",
+            format!(
+                "{} s is over 10^9 s (32 years); add --force if you mean it",
+                num(duration, 4)
+            ),
+        ));
+    }
+    let tolerance = parse_number(&args.tolerance).map_err(|e| CliError::flag("--tolerance", e))?;
+    if tolerance <= 0.0 || tolerance >= 1.0 {
+        return Err(CliError::flag(
+            "--tolerance",
+            format!(
+                "must lie between 0 and 1 (e.g. 1e-10), got {}",
+                args.tolerance.trim()
+            ),
+        ));
+    }
+    let sample_interval = match &args.trajectory {
+        None => None,
+        Some(_) => {
+            let default = pendulum.small_angle_period() / 100.0;
+            let (h, _) = common::sampling(
+                args.sample_interval.as_deref(),
+                default,
+                duration,
+                args.force,
+            )?;
+            Some(h)
+        }
+    };
+    let method = match args.method {
+        MethodArg::Dop853 => Method::Dop853,
+        MethodArg::Symplectic => Method::Symplectic,
+        MethodArg::Exact => Method::Exact,
+    };
+    Ok(Options {
+        duration,
+        tolerance,
+        method,
+        sample_interval,
+    })
+}
+
+/// Streams turning points and samples to their files, shows progress and
+/// listens for Ctrl-C.
+struct CliObserver {
+    swings: Option<SwingsFile>,
+    trajectory: Option<CsvFile>,
+    progress: Progress,
+    interrupted: Arc<AtomicBool>,
+    error: Option<CliError>,
+}
+
+struct SwingsFile {
+    file: CsvFile,
+    previous_time: f64,
+    /// Half the small-angle period: the beat the rate is measured against.
+    half_t0: f64,
+}
+
+impl CliObserver {
+    fn new(
+        args: &SimulateArgs,
+        pendulum: &Pendulum,
+        options: &Options,
+        interrupted: Arc<AtomicBool>,
+    ) -> Result<Self, CliError> {
+        let swings = match &args.swings {
+            Some(path) => Some(SwingsFile {
+                file: CsvFile::create(
+                    path,
+                    "--swings",
+                    "index,time_s,angle_rad,half_period_s,rate_s_per_day",
+                )?,
+                previous_time: 0.0,
+                half_t0: 0.5 * pendulum.small_angle_period(),
+            }),
+            None => None,
+        };
+        let trajectory = match &args.trajectory {
+            Some(path) => Some(CsvFile::create(
+                path,
+                "--trajectory",
+                "time_s,angle_rad,angular_velocity_rad_s",
+            )?),
+            None => None,
+        };
+        Ok(Self {
+            swings,
+            trajectory,
+            progress: Progress::new(options.duration, args.quiet),
+            interrupted,
+            error: None,
+        })
+    }
+
+    /// Keeps the first write error; says whether to go on.
+    fn keep(&mut self, result: Result<(), CliError>) -> bool {
+        match result {
+            Ok(()) => true,
+            Err(e) => {
+                self.error.get_or_insert(e);
+                false
+            }
+        }
+    }
+
+    /// Commits the files; returns their paths.
+    fn close(mut self) -> Result<(Option<String>, Option<String>), CliError> {
+        self.progress.finish();
+        if let Some(e) = self.error.take() {
+            return Err(e);
+        }
+        let swings = self.swings.take().map(|s| s.file.commit()).transpose()?;
+        let trajectory = self.trajectory.take().map(CsvFile::commit).transpose()?;
+        Ok((swings, trajectory))
+    }
+}
+
+impl Observer for CliObserver {
+    fn turning_point(&mut self, point: &TurningPoint) -> bool {
+        let Some(s) = self.swings.as_mut() else {
+            return true;
+        };
+        // Row 0 is the release: no half period and no rate.
+        let half = (point.index > 0).then_some(point.time - s.previous_time);
+        let rate = half.map(|h| 86_400.0 * (1.0 - s.half_t0 / h));
+        s.previous_time = point.time;
+        let result = s
+            .file
+            .integer(point.index)
+            .number(Some(point.time))
+            .number(Some(point.angle))
+            .number(half)
+            .number(rate)
+            .end_row();
+        self.keep(result)
+    }
+
+    fn sample(&mut self, time: f64, state: &State) -> bool {
+        let Some(file) = self.trajectory.as_mut() else {
+            return true;
+        };
+        let result = file
+            .number(Some(time))
+            .number(Some(state.angle))
+            .number(Some(state.angular_velocity))
+            .end_row();
+        self.keep(result)
+    }
+
+    fn progress(&mut self, time: f64) -> bool {
+        self.progress.update(time);
+        !self.interrupted.load(Ordering::SeqCst) && self.error.is_none()
+    }
+}
+
+/// A progress bar on standard error, shown only after a second of work and
+/// only when standard error is a terminal (indicatif hides it otherwise).
+struct Progress {
+    bar: Option<ProgressBar>,
+    duration: f64,
+    started: Instant,
+    quiet: bool,
+}
+
+impl Progress {
+    fn new(duration: f64, quiet: bool) -> Self {
+        Self {
+            bar: None,
+            duration,
+            started: Instant::now(),
+            quiet,
+        }
+    }
+
+    fn update(&mut self, time: f64) {
+        if self.quiet || self.duration <= 0.0 {
+            return;
+        }
+        if self.bar.is_none() && self.started.elapsed() > Duration::from_secs(1) {
+            let bar = ProgressBar::new(1000);
+            if let Ok(style) = ProgressStyle::with_template(
+                "{spinner} simulated {msg} [{bar:40}] {percent}% (eta {eta})",
+            ) {
+                bar.set_style(style.progress_chars("=> "));
+            }
+            self.bar = Some(bar);
+        }
+        if let Some(bar) = &self.bar {
+            bar.set_position((1000.0 * time / self.duration) as u64);
+            bar.set_message(format!("{} s", num(time, 6)));
+        }
+    }
+
+    fn finish(&mut self) {
+        if let Some(bar) = self.bar.take() {
+            bar.finish_and_clear();
+        }
+    }
+}
+
+fn text(r: &SimulateJson, outcome: &Outcome) -> String {
+    let deg = |x: f64| format!("{}°", num(x.to_degrees(), 8));
+    let mut s = Summary::default();
+    s.row(
+        "Method",
+        format!("{} (tolerance {})", r.method, num(r.tolerance, 3)),
+    )
+    .row(
+        "Simulated",
+        format!(
+            "{} s ({} days)",
+            num(r.final_time_s, 10),
+            num(r.final_time_s / 86_400.0, 6)
+        ),
+    )
+    .row(
+        "Stopped",
+        match outcome.stopped {
+            Stopped::Duration => "at the end of the duration".to_string(),
+            Stopped::Friction => "held by friction at a turning point".to_string(),
+            Stopped::Interrupted => "interrupted; files hold everything up to then".to_string(),
+        },
+    )
+    .row("Turning points", r.swings.to_string())
+    .row(
+        "Amplitude",
+        format!(
+            "{} at release, {} at the end",
+            deg(r.amplitude_rad),
+            deg(r.final_amplitude_rad)
+        ),
+    )
+    .row(
+        "Final state",
+        format!(
+            "{}, {} rad/s",
+            deg(r.final_angle_rad),
+            num(r.final_angular_velocity_rad_s, 8)
+        ),
+    )
+    .row(
+        "Work",
+        format!(
+            "{} steps ({} rejected), {} evaluations, {} s",
+            r.steps,
+            r.rejected_steps,
+            r.function_evaluations,
+            num(r.elapsed_s, 3)
+        ),
+    );
+    if let Some(f) = &r.swings_file {
+        s.row("Swings file", f.clone());
+    }
+    if let Some(f) = &r.trajectory_file {
+        s.row("Trajectory file", f.clone());
+    }
+    s.render()
+}

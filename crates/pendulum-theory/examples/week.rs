@@ -4,15 +4,17 @@
 //! amplitude. Usage: `week [TOLERANCE]` (default 1e-10).
 
 use pendulum_theory::damping::Damping;
-use pendulum_theory::simulation::{simulate, Method, Model, Observer, Options, TurningPoint};
+use pendulum_theory::simulation::{
+    simulate, Action, Method, Model, Observer, Options, TurningPoint,
+};
 use pendulum_theory::{Amplitude, Pendulum};
 use std::time::Instant;
 
 struct Collect(Vec<TurningPoint>);
 impl Observer for Collect {
-    fn turning_point(&mut self, p: &TurningPoint) -> bool {
+    fn turning_point(&mut self, p: &TurningPoint) -> Action {
         self.0.push(*p);
-        true
+        Action::Continue
     }
 }
 

@@ -21,7 +21,7 @@ use crate::error::{require_non_negative, require_positive, InputError, Quantity}
 use crate::exact::ExactSwing;
 use crate::integrate::control::{step_factor, Tolerance};
 use crate::integrate::dop853::{attempt, dense_output, initial_step};
-use crate::integrate::events::locate_root;
+use crate::integrate::events::{crossed, locate_root, Direction};
 use crate::integrate::symplectic::{self, damping_intervals, Hermite};
 use crate::integrate::State2;
 use crate::pendulum::{Amplitude, Pendulum};
@@ -124,8 +124,10 @@ pub enum Stopped {
     Duration,
     /// Dry friction held it at a turning point.
     Friction,
-    /// The observer asked it to stop.
+    /// The observer asked it to stop (Ctrl-C, a write error).
     Interrupted,
+    /// An event the observer made terminal.
+    Event,
 }
 
 impl Stopped {
@@ -135,6 +137,7 @@ impl Stopped {
             Stopped::Duration => "duration",
             Stopped::Friction => "friction",
             Stopped::Interrupted => "interrupted",
+            Stopped::Event => "event",
         }
     }
 }
@@ -146,6 +149,8 @@ pub struct Outcome {
     pub method: Method,
     /// Turning points after the release.
     pub swings: u64,
+    /// Upward zero crossings located (0 unless the observer wanted them).
+    pub zero_crossings: u64,
     /// Time reached, s.
     pub final_time: f64,
     /// State at that time.
@@ -162,18 +167,50 @@ pub struct Outcome {
     pub stopped: Stopped,
 }
 
-/// Receives what a run produces, as it produces it. Every method returns
-/// whether to go on.
+/// What an observer wants done after an event.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Action {
+    /// Carry on.
+    Continue,
+    /// End the run at the event (a terminal event).
+    Stop,
+    /// Carry on from this state instead, at the event's time: the hook an
+    /// escapement uses to give its impulse. The integrator restarts there.
+    Restart(State),
+}
+
+/// An upward zero crossing: θ passing 0 from negative to positive, where an
+/// escapement usually gives its impulse.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crossing {
+    /// 1 for the first crossing, and so on.
+    pub index: u64,
+    /// Time, s.
+    pub time: f64,
+    /// θ' there, rad/s.
+    pub angular_velocity: f64,
+}
+
+/// Receives what a run produces, as it produces it.
 pub trait Observer {
-    /// A turning point (the release is index 0).
-    fn turning_point(&mut self, _point: &TurningPoint) -> bool {
-        true
+    /// A turning point (the release is index 0, whose action is ignored).
+    fn turning_point(&mut self, _point: &TurningPoint) -> Action {
+        Action::Continue
     }
-    /// A sample at a multiple of the sample interval.
+    /// Whether to locate upward zero crossings (off by default: it costs an
+    /// interpolant every half period).
+    fn wants_zero_crossings(&self) -> bool {
+        false
+    }
+    /// An upward zero crossing.
+    fn zero_crossing(&mut self, _crossing: &Crossing) -> Action {
+        Action::Continue
+    }
+    /// A sample at a multiple of the sample interval; `false` stops the run.
     fn sample(&mut self, _time: f64, _state: &State) -> bool {
         true
     }
-    /// Called every few thousand steps with the time reached.
+    /// Called every few thousand steps with the time reached; `false` stops the run.
     fn progress(&mut self, _time: f64) -> bool {
         true
     }
@@ -251,16 +288,20 @@ fn run_exact(
 ) -> Outcome {
     let swing = ExactSwing::new(&model.pendulum, amplitude);
     let duration = options.duration;
+    let quarter = 0.25 * swing.period();
     let mut samples = Samples {
         interval: options.sample_interval,
         next: 0,
     };
-    let mut stopped = Stopped::Duration;
-    let mut index = 0;
-    loop {
-        let (time, angle) = swing.turning_point(index);
-        if time > duration || amplitude.radians() == 0.0 && index > 0 {
-            break;
+    let (mut stopped, mut turns, mut crossings) = (Stopped::Duration, 0_u64, 0_u64);
+    let wants_crossings = observer.wants_zero_crossings();
+    // Events fall on quarter periods: turning points on even ones, upward
+    // zero crossings (released at +A0) on those of the form 4k + 3.
+    let mut q = 0_u64;
+    let end = loop {
+        let time = q as f64 * quarter;
+        if time > duration || amplitude.radians() == 0.0 && q > 0 {
+            break duration;
         }
         while let Some(t) = samples.due(time) {
             if !observer.sample(t, &swing.state_at(t)) {
@@ -268,35 +309,52 @@ fn run_exact(
             }
             samples.next += 1;
         }
-        if stopped == Stopped::Interrupted
-            || !observer.turning_point(&TurningPoint { index, time, angle })
-        {
-            stopped = Stopped::Interrupted;
-            break;
+        let action = if q % 2 == 0 {
+            let (_, angle) = swing.turning_point(q / 2);
+            turns = q / 2;
+            let point = TurningPoint {
+                index: turns,
+                time,
+                angle,
+            };
+            observer.turning_point(&point)
+        } else if q % 4 == 3 && wants_crossings {
+            crossings += 1;
+            let state = swing.state_at(time);
+            let crossing = Crossing {
+                index: crossings,
+                time,
+                angular_velocity: state.angular_velocity,
+            };
+            observer.zero_crossing(&crossing)
+        } else {
+            Action::Continue
+        };
+        // The closed form cannot be restarted from another state: a
+        // restart request ends the run at the event, like a stop.
+        if q > 0 && action != Action::Continue {
+            stopped = Stopped::Event;
         }
-        if index % PROGRESS_EVERY == 0 && !observer.progress(time) {
+        if q % PROGRESS_EVERY == 0 && !observer.progress(time) {
             stopped = Stopped::Interrupted;
-            break;
         }
-        index += 1;
-    }
+        if stopped != Stopped::Duration {
+            break time.min(duration);
+        }
+        q += 1;
+    };
     if stopped == Stopped::Duration {
         while let Some(t) = samples.due(duration) {
             observer.sample(t, &swing.state_at(t));
             samples.next += 1;
         }
     }
-    let final_time = if stopped == Stopped::Duration {
-        duration
-    } else {
-        swing.turning_point(index).0.min(duration)
-    };
-    let final_state = swing.state_at(final_time);
     Outcome {
         method: Method::Exact,
-        swings: index.saturating_sub(1),
-        final_time,
-        final_state,
+        swings: turns,
+        zero_crossings: crossings,
+        final_time: end,
+        final_state: swing.state_at(end),
         final_amplitude: amplitude.radians(),
         steps: 0,
         rejected_steps: 0,
@@ -330,7 +388,10 @@ fn run_dop853(
     let mut after_rejection = false;
     while run.go_on && t < run.duration {
         let last = t + h >= run.duration;
-        let h_step = if last { run.duration - t } else { h };
+        // The step is the difference of two representable times, so that
+        // t + h_step is exactly t_new and no rounding builds up in t.
+        let t_new = if last { run.duration } else { t + h };
+        let h_step = t_new - t;
         let direction = run.direction;
         let mut f = |_t: f64, y: State2| rhs(y, direction);
         let step = attempt(&mut f, t, y, f0, h_step, &tolerance);
@@ -341,22 +402,22 @@ fn run_dop853(
             after_rejection = true;
             continue;
         }
-        let t_new = if last { run.duration } else { t + h_step };
         let f1 = f(t_new, step.y1);
         run.evaluations += 1;
-        if run.needs_interpolant(t_new, step.y1[1]) {
+        if run.needs_interpolant(t_new, y, step.y1) {
             let dense = dense_output(&mut f, &step, f1);
             run.evaluations += 3;
-            match run.after_step(&dense, t, t_new, y[1], step.y1[1]) {
+            match run.after_step(&dense, t, t_new, y, step.y1) {
                 AfterStep::Continue => {}
-                AfterStep::Restart { time, angle } => {
-                    (t, y) = (time, [angle, 0.0]);
+                AfterStep::Restart { time, state } => {
+                    (t, y) = (time, state);
                     f0 = rhs(y, run.direction);
                     run.evaluations += 1;
                     after_rejection = false;
                     continue;
                 }
                 AfterStep::Stuck { time, angle } => return run.stuck(time, angle),
+                AfterStep::Stop { time, state } => return run.stopped_at(time, state),
             }
         } else {
             run.count_step(t_new);
@@ -386,14 +447,24 @@ impl Interpolant for Hermite {
     }
 }
 
-/// What the driver does after a step with a turning point or samples in it.
+/// What the driver does after a step with an event or samples in it.
 enum AfterStep {
     /// Carry on from the step's end.
     Continue,
-    /// Restart from rest here (dry friction changed sign).
-    Restart { time: f64, angle: f64 },
+    /// Restart from `state` at `time` (dry friction changed sign, or the
+    /// observer changed the state).
+    Restart { time: f64, state: State2 },
     /// Dry friction holds the pendulum here.
     Stuck { time: f64, angle: f64 },
+    /// The observer ended the run at this event.
+    Stop { time: f64, state: State2 },
+}
+
+/// The events a step can hold.
+#[derive(Clone, Copy, PartialEq)]
+enum EventKind {
+    Turning,
+    Crossing,
 }
 
 /// What every integrator's driver shares: the observer, the samples, the
@@ -409,6 +480,7 @@ struct Run<'a, O: Observer> {
     direction: f64,
     evaluations: u64,
     go_on: bool,
+    wants_crossings: bool,
 }
 
 impl<'a, O: Observer> Run<'a, O> {
@@ -422,11 +494,14 @@ impl<'a, O: Observer> Run<'a, O> {
         observer: &'a mut O,
     ) -> Result<Self, Outcome> {
         let a0 = amplitude.radians();
-        let go_on = observer.turning_point(&TurningPoint {
+        // The release is reported; there is nothing to stop or restart yet.
+        observer.turning_point(&TurningPoint {
             index: 0,
             time: 0.0,
             angle: a0,
         });
+        let go_on = true;
+        let wants_crossings = observer.wants_zero_crossings();
         let run = Run {
             model,
             observer,
@@ -438,6 +513,7 @@ impl<'a, O: Observer> Run<'a, O> {
             outcome: Outcome {
                 method,
                 swings: 0,
+                zero_crossings: 0,
                 final_time: 0.0,
                 final_state: State {
                     angle: a0,
@@ -454,6 +530,7 @@ impl<'a, O: Observer> Run<'a, O> {
             direction: if a0 > 0.0 { -1.0 } else { 1.0 },
             evaluations: 0,
             go_on,
+            wants_crossings,
         };
         if a0 == 0.0 {
             return Err(run.rest(0.0, 0.0, Stopped::Duration));
@@ -469,27 +546,21 @@ impl<'a, O: Observer> Run<'a, O> {
         r > 0.0 && angle.sin().abs() <= r
     }
 
-    /// Whether a step ending at `t_new` with velocity `v1` holds a turning
-    /// point or a sample, and so needs its interpolant.
-    fn needs_interpolant(&self, t_new: f64, v1: f64) -> bool {
-        v1 * self.direction < 0.0 || self.samples.due(t_new).is_some()
+    /// Whether a step from `y0` to `y1`, ending at `t_new`, holds an event
+    /// or a sample, and so needs its interpolant.
+    fn needs_interpolant(&self, t_new: f64, y0: State2, y1: State2) -> bool {
+        y1[1] * self.direction < 0.0
+            || self.crosses_upward(y0, y1)
+            || self.samples.due(t_new).is_some()
     }
 
-    /// Emits the samples and the turning point of the step from `t` to `t_new`.
-    fn after_step(
-        &mut self,
-        step: &impl Interpolant,
-        t: f64,
-        t_new: f64,
-        v0: f64,
-        v1: f64,
-    ) -> AfterStep {
-        let friction = self.model.friction_angle > 0.0;
-        let turned = v1 * self.direction < 0.0;
-        let event = turned.then(|| locate_root(|x| step.state(x)[1], t, t_new, v0, v1));
-        // With friction the motion after the turning point is not this step's.
-        let sample_limit = event.filter(|_| friction).unwrap_or(t_new);
-        while let Some(ts) = self.samples.due(sample_limit) {
+    fn crosses_upward(&self, y0: State2, y1: State2) -> bool {
+        self.wants_crossings && crossed(y0[0], y1[0], Direction::Rising)
+    }
+
+    /// Emits the samples up to `limit` from the interpolant.
+    fn emit_samples(&mut self, step: &impl Interpolant, limit: f64) {
+        while let Some(ts) = self.samples.due(limit) {
             let s = step.state(ts);
             let state = State {
                 angle: s[0],
@@ -498,25 +569,104 @@ impl<'a, O: Observer> Run<'a, O> {
             self.go_on &= self.observer.sample(ts, &state);
             self.samples.next += 1;
         }
+    }
+
+    /// Handles the events and samples of the step from `(t, y0)` to
+    /// `(t_new, y1)`, in time order; an event that restarts or stops the
+    /// run drops the rest of the step.
+    fn after_step(
+        &mut self,
+        step: &impl Interpolant,
+        t: f64,
+        t_new: f64,
+        y0: State2,
+        y1: State2,
+    ) -> AfterStep {
         self.count_step(t_new);
-        let Some(time) = event else {
-            return AfterStep::Continue;
-        };
-        let angle = step.state(time)[0];
+        let mut events: [Option<(f64, EventKind)>; 2] = [None, None];
+        if y1[1] * self.direction < 0.0 {
+            let time = locate_root(|x| step.state(x)[1], t, t_new, y0[1], y1[1]);
+            events[0] = Some((time, EventKind::Turning));
+        }
+        if self.crosses_upward(y0, y1) {
+            let time = locate_root(|x| step.state(x)[0], t, t_new, y0[0], y1[0]);
+            events[1] = Some((time, EventKind::Crossing));
+        }
+        if let [Some(a), Some(b)] = events {
+            if b.0 < a.0 {
+                events = [Some(b), Some(a)];
+            }
+        }
+        for (time, kind) in events.into_iter().flatten() {
+            self.emit_samples(step, time);
+            let state = step.state(time);
+            let outcome = match kind {
+                EventKind::Turning => self.turning_point(time, state[0]),
+                EventKind::Crossing => self.zero_crossing(time, state),
+            };
+            if let Some(after) = outcome {
+                return after;
+            }
+        }
+        self.emit_samples(step, t_new);
+        AfterStep::Continue
+    }
+
+    /// A turning point at `time`: report it, flip the direction, apply the
+    /// observer's action and, with dry friction, stick or restart from rest.
+    fn turning_point(&mut self, time: f64, angle: f64) -> Option<AfterStep> {
         self.index += 1;
-        self.go_on &= self.observer.turning_point(&TurningPoint {
+        let action = self.observer.turning_point(&TurningPoint {
             index: self.index,
             time,
             angle,
         });
         self.direction = -self.direction;
-        if !friction {
-            return AfterStep::Continue;
+        match action {
+            Action::Stop => Some(AfterStep::Stop {
+                time,
+                state: [angle, 0.0],
+            }),
+            Action::Restart(s) => Some(self.restart(time, s)),
+            Action::Continue if self.model.friction_angle > 0.0 => Some(if self.sticks(angle) {
+                AfterStep::Stuck { time, angle }
+            } else {
+                AfterStep::Restart {
+                    time,
+                    state: [angle, 0.0],
+                }
+            }),
+            Action::Continue => None,
         }
-        if self.sticks(angle) {
-            AfterStep::Stuck { time, angle }
+    }
+
+    /// An upward zero crossing at `time`.
+    fn zero_crossing(&mut self, time: f64, state: State2) -> Option<AfterStep> {
+        self.outcome.zero_crossings += 1;
+        let action = self.observer.zero_crossing(&Crossing {
+            index: self.outcome.zero_crossings,
+            time,
+            angular_velocity: state[1],
+        });
+        match action {
+            Action::Continue => None,
+            Action::Stop => Some(AfterStep::Stop { time, state }),
+            Action::Restart(s) => Some(self.restart(time, s)),
+        }
+    }
+
+    /// A restart from the observer's `state`: the direction of motion (the
+    /// sign dry friction takes) follows its velocity, or points to the
+    /// centre when it is at rest.
+    fn restart(&mut self, time: f64, state: State) -> AfterStep {
+        self.direction = if state.angular_velocity != 0.0 {
+            state.angular_velocity.signum()
         } else {
-            AfterStep::Restart { time, angle }
+            -state.angle.signum()
+        };
+        AfterStep::Restart {
+            time,
+            state: [state.angle, state.angular_velocity],
         }
     }
 
@@ -543,6 +693,16 @@ impl<'a, O: Observer> Run<'a, O> {
             self.outcome.stopped = Stopped::Interrupted;
         }
         self.outcome
+    }
+
+    /// Ended by the observer at an event.
+    fn stopped_at(mut self, time: f64, state: State2) -> Outcome {
+        let mut outcome = {
+            self.go_on = true;
+            self.finish(time, state)
+        };
+        outcome.stopped = Stopped::Event;
+        outcome
     }
 
     /// Held by friction at `angle` from `time` on.
@@ -669,22 +829,23 @@ fn run_symplectic(
         let mut damp = |v: f64, i: usize| flow_now.apply(v, i);
         let (y1, f1) = symplectic::step(&mut force, &mut damp, y, f, step_h);
         run.evaluations += 7;
-        if run.needs_interpolant(t_new, y1[1]) {
+        if run.needs_interpolant(t_new, y, y1) {
             let hermite = Hermite::new(
                 t,
                 step_h,
                 [y[0], y[1], f + velocity_part(y[1])],
                 [y1[0], y1[1], f1 + velocity_part(y1[1])],
             );
-            match run.after_step(&hermite, t, t_new, y[1], y1[1]) {
+            match run.after_step(&hermite, t, t_new, y, y1) {
                 AfterStep::Continue => {}
-                AfterStep::Restart { time, angle } => {
-                    (origin, n, t, y) = (time, 0, time, [angle, 0.0]);
-                    f = force_of(angle, run.direction);
+                AfterStep::Restart { time, state } => {
+                    (origin, n, t, y) = (time, 0, time, state);
+                    f = force_of(state[0], run.direction);
                     run.evaluations += 1;
                     continue;
                 }
                 AfterStep::Stuck { time, angle } => return run.stuck(time, angle),
+                AfterStep::Stop { time, state } => return run.stopped_at(time, state),
             }
         } else {
             run.count_step(t_new);

@@ -6,7 +6,7 @@ use common::{check_all, Reference, Worst};
 use pendulum_theory::damping::Damping;
 use pendulum_theory::exact::ExactSwing;
 use pendulum_theory::simulation::{
-    simulate, Method, Model, Observer, Options, Silent, TurningPoint,
+    simulate, Action, Crossing, Method, Model, Observer, Options, Silent, TurningPoint,
 };
 use pendulum_theory::{Amplitude, Pendulum};
 
@@ -118,9 +118,9 @@ fn work_precision_orders() {
 
 struct Turns(Vec<TurningPoint>);
 impl Observer for Turns {
-    fn turning_point(&mut self, p: &TurningPoint) -> bool {
+    fn turning_point(&mut self, p: &TurningPoint) -> Action {
         self.0.push(*p);
-        true
+        Action::Continue
     }
 }
 
@@ -215,4 +215,128 @@ fn dry_friction_drops_two_r_per_half_swing() {
             }
         }
     }
+}
+
+/// Records upward zero crossings; optionally kicks at each one (an
+/// escapement), or stops at the `stop_at`-th.
+struct Escapement {
+    crossings: Vec<Crossing>,
+    kick: f64,
+    stop_at: Option<u64>,
+    last_turn: f64,
+}
+
+impl Observer for Escapement {
+    fn turning_point(&mut self, p: &TurningPoint) -> Action {
+        self.last_turn = p.angle.abs();
+        Action::Continue
+    }
+    fn wants_zero_crossings(&self) -> bool {
+        true
+    }
+    fn zero_crossing(&mut self, c: &Crossing) -> Action {
+        self.crossings.push(*c);
+        if Some(c.index) == self.stop_at {
+            return Action::Stop;
+        }
+        if self.kick == 0.0 {
+            return Action::Continue;
+        }
+        Action::Restart(pendulum_theory::damped::State {
+            angle: 0.0,
+            angular_velocity: c.angular_velocity + self.kick,
+        })
+    }
+}
+
+fn escapement(kick: f64, stop_at: Option<u64>) -> Escapement {
+    Escapement {
+        crossings: Vec::new(),
+        kick,
+        stop_at,
+        last_turn: 0.0,
+    }
+}
+
+#[test]
+fn upward_zero_crossings_fall_at_three_quarters_of_each_period() {
+    let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
+    let a = Amplitude::from_radians(0.5).unwrap();
+    let model = Model::new(pendulum, Damping::NONE, 0.0, 0.0).unwrap();
+    let period = ExactSwing::new(&pendulum, a).period();
+    for method in [Method::Dop853, Method::Symplectic, Method::Exact] {
+        let options = Options {
+            duration: 20.0 * period,
+            tolerance: 1e-12,
+            method,
+            sample_interval: None,
+        };
+        let mut observer = escapement(0.0, None);
+        let outcome = simulate(&model, a, &options, &mut observer).unwrap();
+        assert_eq!(observer.crossings.len(), 20, "{}", method.name());
+        assert_eq!(outcome.zero_crossings, 20);
+        for c in &observer.crossings {
+            let expected = (c.index as f64 - 0.25) * period;
+            assert!(
+                (c.time - expected).abs() < 1e-9,
+                "{}: {c:?} vs {expected}",
+                method.name()
+            );
+            assert!(c.angular_velocity > 0.0);
+        }
+    }
+}
+
+#[test]
+fn an_escapement_holds_the_amplitude_against_damping() {
+    // Q = 100 loses about 3% of the amplitude per period; a kick at each
+    // upward zero crossing makes that good, and the swing settles.
+    let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
+    let model = Model::new(pendulum, Damping::from_q(100.0).unwrap(), 0.0, 0.0).unwrap();
+    let a = Amplitude::from_degrees(3.0).unwrap();
+    let options = Options {
+        duration: 400.0,
+        tolerance: 1e-10,
+        method: Method::Dop853,
+        sample_interval: None,
+    };
+    let free = {
+        let mut o = escapement(0.0, None);
+        simulate(&model, a, &options, &mut o).unwrap();
+        o.last_turn
+    };
+    let mut driven = escapement(0.0052, None);
+    simulate(&model, a, &options, &mut driven).unwrap();
+    assert!(free < 0.01 * a.radians(), "free swing decays: {free}");
+    assert!(
+        driven.last_turn > 0.5 * a.radians() && driven.last_turn < 2.0 * a.radians(),
+        "{}",
+        driven.last_turn
+    );
+    // The same with the symplectic method, restarted at every kick.
+    let mut symplectic = escapement(0.0052, None);
+    let options_s = Options {
+        method: Method::Symplectic,
+        ..options
+    };
+    simulate(&model, a, &options_s, &mut symplectic).unwrap();
+    assert!((symplectic.last_turn / driven.last_turn - 1.0).abs() < 1e-6);
+}
+
+#[test]
+fn a_terminal_event_stops_the_run_there() {
+    let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
+    let model = Model::new(pendulum, Damping::from_zeta(0.001).unwrap(), 0.0, 0.0).unwrap();
+    let a = Amplitude::from_degrees(5.0).unwrap();
+    let options = Options {
+        duration: 100.0,
+        tolerance: 1e-12,
+        method: Method::Dop853,
+        sample_interval: None,
+    };
+    let mut observer = escapement(0.0, Some(3));
+    let outcome = simulate(&model, a, &options, &mut observer).unwrap();
+    assert_eq!(outcome.stopped, pendulum_theory::simulation::Stopped::Event);
+    assert_eq!(outcome.final_time, observer.crossings[2].time);
+    assert!(outcome.final_state.angle.abs() < 1e-12);
 }

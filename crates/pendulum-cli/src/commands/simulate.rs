@@ -11,7 +11,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 use pendulum_theory::damped::State;
 use pendulum_theory::damping::Damping;
 use pendulum_theory::simulation::{
-    simulate, Method, Model, Observer, Options, Outcome, SimulationError, Stopped, TurningPoint,
+    simulate, Action, Method, Model, Observer, Options, Outcome, SimulationError, Stopped,
+    TurningPoint,
 };
 use pendulum_theory::{Pendulum, Quantity};
 use serde::Serialize;
@@ -246,9 +247,9 @@ impl CliObserver {
 }
 
 impl Observer for CliObserver {
-    fn turning_point(&mut self, point: &TurningPoint) -> bool {
+    fn turning_point(&mut self, point: &TurningPoint) -> Action {
         let Some(s) = self.swings.as_mut() else {
-            return true;
+            return Action::Continue;
         };
         // Row 0 is the release: no half period and no rate.
         let half = (point.index > 0).then_some(point.time - s.previous_time);
@@ -262,7 +263,12 @@ impl Observer for CliObserver {
             .number(half)
             .number(rate)
             .end_row();
-        self.keep(result)
+        // A write error ends the run; close() then reports the error.
+        if self.keep(result) {
+            Action::Continue
+        } else {
+            Action::Stop
+        }
     }
 
     fn sample(&mut self, time: f64, state: &State) -> bool {
@@ -349,6 +355,7 @@ fn text(r: &SimulateJson, outcome: &Outcome) -> String {
             Stopped::Duration => "at the end of the duration".to_string(),
             Stopped::Friction => "held by friction at a turning point".to_string(),
             Stopped::Interrupted => "interrupted; files hold everything up to then".to_string(),
+            Stopped::Event => "at an event".to_string(),
         },
     )
     .row("Turning points", r.swings.to_string())

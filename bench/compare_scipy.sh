@@ -50,42 +50,11 @@ PY
 
 echo
 echo "== Simulation: 1000 periods (2000.3414 s), l = 0.99362 m, A0 = 3 deg, Q = 1e6, all turning points"
-DURATION=2000.3414
-PENDULUM=target/release/pendulum
-# The reference: our symplectic method at tolerance 1e-14 (DOP853 at 1e-14 agrees to 4e-12).
-REFERENCE=$("$PENDULUM" simulate --length 0.99362m --amplitude 3deg --q 1e6 --duration ${DURATION}s \
-  --method symplectic --tolerance 1e-14 --json | "$VENV/bin/python" -c 'import json,sys; print(json.load(sys.stdin)["final_amplitude_rad"])')
-echo "reference final amplitude: $REFERENCE rad"
-now() { date +%s.%N; }
-report() { # name tol seconds amplitude
-  "$VENV/bin/python" -c "import sys; n,t,s,a,r=sys.argv[1:]; print(f'{n:<22} tol {float(t):.0e}  {float(s)*1e3:9.1f} ms  final amplitude error {abs(float(a)-float(r))/float(r):.2e}')" "$1" "$2" "$3" "$4" "$REFERENCE"
-}
-for tol in 1e-8 1e-10 1e-12; do
-  for method in dop853 symplectic; do
-    t0=$(now)
-    amp=$("$PENDULUM" simulate --length 0.99362m --amplitude 3deg --q 1e6 --duration ${DURATION}s \
-      --method $method --tolerance $tol --swings /tmp/pendulum-bench-swings.csv --json \
-      | "$VENV/bin/python" -c 'import json,sys; print(json.load(sys.stdin)["final_amplitude_rad"])')
-    t1=$(now)
-    # The JSON parse above is Python's start-up; time our process alone:
-    t2=$(now)
-    "$PENDULUM" simulate --length 0.99362m --amplitude 3deg --q 1e6 --duration ${DURATION}s \
-      --method $method --tolerance $tol --swings /tmp/pendulum-bench-swings.csv --json >/dev/null
-    t3=$(now)
-    report "pendulum $method" $tol "$(echo "$t3 - $t2" | bc)" "$amp"
-  done
-  t0=$(now)
-  line=$("$VENV/bin/python" bench/simulate_scipy.py $tol $DURATION)
-  t1=$(now)
-  report "scipy DOP853" $tol "$(echo "$t1 - $t0" | bc)" "$(echo "$line" | awk '{print $5}')"
-  if command -v g++ >/dev/null && [ -f /usr/include/boost/numeric/odeint.hpp ]; then
-    [ -x /tmp/boost_pendulum ] || g++ -O3 -o /tmp/boost_pendulum bench/boost_pendulum.cpp
-    for stepper in dopri5 rkf78; do
-      t0=$(now)
-      line=$(/tmp/boost_pendulum $stepper $tol $DURATION)
-      t1=$(now)
-      report "boost $stepper" $tol "$(echo "$t1 - $t0" | bc)" "$(echo "$line" | awk '{print $5}')"
-    done
-  fi
-done
-rm -f /tmp/pendulum-bench-swings.csv
+echo "   wall time per process, start-up included (best of 10; SciPy: one run)"
+BOOST=""
+if command -v g++ >/dev/null && [ -f /usr/include/boost/numeric/odeint.hpp ]; then
+  g++ -O3 -o bench/.venv/boost_pendulum bench/boost_pendulum.cpp && BOOST=bench/.venv/boost_pendulum
+else
+  echo "   (Boost.Odeint not installed: apt-get install libboost-dev to include it)"
+fi
+"$VENV/bin/python" bench/compare_simulation.py target/release/pendulum $BOOST

@@ -42,6 +42,7 @@ pub mod elliptic;
 pub mod energy;
 pub mod error;
 pub mod exact;
+pub mod fitting;
 pub mod friction;
 pub mod gravity;
 pub mod integrate;

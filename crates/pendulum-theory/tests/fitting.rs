@@ -40,7 +40,10 @@ fn synthetic(model: DecayModel, seed: u64) -> (Vec<f64>, Vec<f64>) {
     let mut noise = Noise(seed);
     let p = truth(model);
     let t: Vec<f64> = (0..100).map(|i| f64::from(i) * 20.0).collect();
-    let a = t.iter().map(|&x| model.amplitude(x, &p) + SIGMA * noise.gaussian()).collect();
+    let a = t
+        .iter()
+        .map(|&x| model.amplitude(x, &p) + SIGMA * noise.gaussian())
+        .collect();
     (t, a)
 }
 
@@ -51,10 +54,18 @@ fn each_fit_recovers_its_parameters_within_three_sigma() {
         let fit = fit_decay(model, &t, &a, Some(std::f64::consts::PI)).unwrap();
         for (j, want) in truth(model).iter().enumerate() {
             let (got, se) = (fit.fit.parameters[j], fit.fit.standard_errors[j]);
-            assert!((got - want).abs() <= 3.0 * se, "{} p{j}: {got} ± {se} vs {want}", model.name());
+            assert!(
+                (got - want).abs() <= 3.0 * se,
+                "{} p{j}: {got} ± {se} vs {want}",
+                model.name()
+            );
         }
         // The residuals are the noise.
-        assert!((fit.fit.residual_rms / SIGMA - 1.0).abs() < 0.25, "{}", fit.fit.residual_rms);
+        assert!(
+            (fit.fit.residual_rms / SIGMA - 1.0).abs() < 0.25,
+            "{}",
+            fit.fit.residual_rms
+        );
     }
 }
 
@@ -81,7 +92,11 @@ fn one_sigma_coverage_over_100_seeds() {
 
 #[test]
 fn model_selection_picks_the_generating_model() {
-    for model in [DecayModel::Viscous, DecayModel::Coulomb, DecayModel::ViscousCoulomb] {
+    for model in [
+        DecayModel::Viscous,
+        DecayModel::Coulomb,
+        DecayModel::ViscousCoulomb,
+    ] {
         let mut right = 0;
         for seed in 0..20 {
             let (t, a) = synthetic(model, 5000 + seed);
@@ -94,7 +109,11 @@ fn model_selection_picks_the_generating_model() {
             }
         }
         eprintln!("{}: chosen in {right} of 20", model.name());
-        assert!(right >= 18, "{}: chosen in only {right} of 20", model.name());
+        assert!(
+            right >= 18,
+            "{}: chosen in only {right} of 20",
+            model.name()
+        );
     }
 }
 
@@ -105,11 +124,148 @@ fn beats_with_jitter_recover_rate_and_beat_error() {
     let mut t = vec![0.0];
     for i in 1..20_000 {
         let tick = if i % 2 == 1 { 0.0015 } else { -0.0015 };
-        t.push(i as f64 * beat + tick / 2.0 * if i % 2 == 1 { 1.0 } else { 0.0 } + 2e-4 * noise.gaussian());
+        t.push(
+            i as f64 * beat
+                + tick / 2.0 * if i % 2 == 1 { 1.0 } else { 0.0 }
+                + 2e-4 * noise.gaussian(),
+        );
     }
     let a = analyse_beats(&t, None).unwrap();
     assert_eq!(a.nominal_beat, Some(1.0));
-    assert!((a.rate_s_per_day.unwrap() - 5.0).abs() < 0.05, "{:?}", a.rate_s_per_day);
+    assert!(
+        (a.rate_s_per_day.unwrap() - 5.0).abs() < 0.05,
+        "{:?}",
+        a.rate_s_per_day
+    );
     assert!((a.beat_error_ms - 0.75).abs() < 0.05, "{}", a.beat_error_ms);
-    assert!((a.jitter_ms / (2e-4 * 2f64.sqrt() * 1e3) - 1.0).abs() < 0.1, "{}", a.jitter_ms);
+    assert!(
+        (a.jitter_ms / (2e-4 * 2f64.sqrt() * 1e3) - 1.0).abs() < 0.1,
+        "{}",
+        a.jitter_ms
+    );
+}
+
+mod trajectory {
+    use super::Noise;
+    use pendulum_theory::damped::DampedPendulum;
+    use pendulum_theory::damping::Damping;
+    use pendulum_theory::fitting::trajectory::{fit_trajectory, TrajectoryModel};
+    use pendulum_theory::simulation::{simulate, Method, Model, Observer, Options};
+    use pendulum_theory::{Amplitude, Pendulum};
+
+    const NOISE: f64 = 2e-3; // rad: a tracked video at a few pixels' precision
+    const OFFSET: f64 = 0.01;
+
+    /// 10 s at 100 frames a second of section 1-4's motion, released at
+    /// 0.1 rad, offset by 0.01 rad, with noise.
+    fn linear_data(seed: u64) -> (Vec<f64>, Vec<f64>, DampedPendulum) {
+        let pendulum = Pendulum::with_standard_gravity(0.5).unwrap();
+        let p = DampedPendulum::new(pendulum, Damping::from_zeta(0.005).unwrap());
+        let mut noise = Noise(seed);
+        let t: Vec<f64> = (0..1000).map(|i| f64::from(i) * 0.01).collect();
+        let theta = t
+            .iter()
+            .map(|&x| p.state_at(0.1, 0.0, x).angle + OFFSET + NOISE * noise.gaussian())
+            .collect();
+        (t, theta, p)
+    }
+
+    /// From rest at A0 the seed's form is `A0 e^{-ζωt} cos(ω_d t - φ) / sqrt(1 - ζ²)`:
+    /// envelope `A0/sqrt(1 - ζ²)` and phase `-φ` in the fit's parameters.
+    fn linear_truth(p: &DampedPendulum) -> [f64; 5] {
+        let zeta = p.damping.zeta();
+        [
+            0.1 / (1.0 - zeta * zeta).sqrt(),
+            p.damped_angular_frequency().unwrap(),
+            zeta,
+            -p.phase().unwrap(),
+            OFFSET,
+        ]
+    }
+
+    #[test]
+    fn linear_fit_recovers_the_motion() {
+        let (t, theta, p) = linear_data(3);
+        let fit = fit_trajectory(TrajectoryModel::Linear, &t, &theta).unwrap();
+        let truth = linear_truth(&p);
+        for (j, want) in truth.iter().enumerate() {
+            let (got, se) = (fit.fit.parameters[j], fit.fit.standard_errors[j]);
+            assert!(
+                (got - want).abs() <= 3.0 * se,
+                "{}: {got} ± {se} vs {want}",
+                fit.names()[j]
+            );
+        }
+        // g from the length, corrected for damping and amplitude: within 3σ
+        // of the truth up to the linear model's own error (A²/16 = 6e-4).
+        let (g, se) = fit.gravity(0.5);
+        assert!(
+            (g - 9.80665).abs() <= 3.0 * se + 9.80665 * 1e-3,
+            "{g} ± {se}"
+        );
+    }
+
+    #[test]
+    fn linear_fit_coverage_over_100_seeds() {
+        let (_, _, p) = linear_data(0);
+        let truth = linear_truth(&p);
+        let mut covered = [0; 5];
+        for seed in 0..100 {
+            let (t, theta, _) = linear_data(100 + seed);
+            let fit = fit_trajectory(TrajectoryModel::Linear, &t, &theta).unwrap();
+            for (j, want) in truth.iter().enumerate() {
+                if (fit.fit.parameters[j] - want).abs() <= fit.fit.standard_errors[j] {
+                    covered[j] += 1;
+                }
+            }
+        }
+        eprintln!("trajectory 1-sigma coverage {covered:?} of 100");
+        for c in covered {
+            assert!((55..=80).contains(&c), "coverage {c}");
+        }
+    }
+
+    struct Collect(Vec<f64>);
+    impl Observer for Collect {
+        fn sample(&mut self, _t: f64, s: &pendulum_theory::damped::State) -> bool {
+            self.0.push(s.angle);
+            true
+        }
+    }
+
+    #[test]
+    fn nonlinear_fit_of_a_wide_swing_finds_g() {
+        // 40° swing: the linear model's frequency is off by A²/16 = 3%.
+        let pendulum = Pendulum::with_standard_gravity(0.5).unwrap();
+        let model = Model::new(pendulum, Damping::from_zeta(0.002).unwrap(), 0.0, 0.0).unwrap();
+        let options = Options {
+            duration: 8.0,
+            tolerance: 1e-12,
+            method: Method::Dop853,
+            sample_interval: Some(0.01),
+        };
+        let mut collect = Collect(Vec::new());
+        simulate(
+            &model,
+            Amplitude::from_degrees(40.0).unwrap(),
+            &options,
+            &mut collect,
+        )
+        .unwrap();
+        let mut noise = Noise(11);
+        // The record starts 0.3 s after the release.
+        let t: Vec<f64> = (30..collect.0.len()).map(|i| i as f64 * 0.01).collect();
+        let theta: Vec<f64> = (30..collect.0.len())
+            .map(|i| collect.0[i] + NOISE * noise.gaussian())
+            .collect();
+        let fit = fit_trajectory(TrajectoryModel::Nonlinear, &t, &theta).unwrap();
+        let (g, se) = fit.gravity(0.5);
+        assert!((g - 9.80665).abs() <= 3.0 * se, "{g} ± {se}");
+        assert!(se < 0.01, "{se}");
+        let zeta = fit.fit.parameters[2];
+        assert!(
+            (zeta - 0.002).abs() <= 3.0 * fit.fit.standard_errors[2],
+            "{zeta}"
+        );
+    }
 }

@@ -12,6 +12,7 @@
 
 pub mod beats;
 pub mod decay;
+pub mod trajectory;
 
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};

@@ -1,0 +1,273 @@
+//! A pendulum's parameters from its tracked angle against time (video
+//! tracking: 30 to 1000 samples a second, noisy, with an unknown zero).
+//!
+//! Two models, five parameters each:
+//! * linear, the free vibration of seed section 1-4 about an offset:
+//!   `θ(t) = θ_off + A e^{-ζω_n t} cos(ω_d t + φ)`, `ω_n = ω_d / sqrt(1 - ζ²)`;
+//!   parameters `A, ω_d, ζ, φ, θ_off`;
+//! * nonlinear, the full equation `θ'' + 2ζω_n θ' + ω_n² sin θ = 0`
+//!   integrated inside the fit ([`crate::simulation`], DOP853 at 1e-12),
+//!   released from rest at amplitude `A` a time `|φ|/ω_n` before the first
+//!   sample; parameters `A, ω_n, ζ, φ, θ_off`. It is started from the
+//!   linear fit.
+//!
+//! With the length, `g = l ω_0²` where `ω_0` is the small-angle natural
+//! frequency: for the linear model `ω_d` is first corrected for damping
+//! (`/ sqrt(1 - ζ²)`) and for the finite amplitude (times `T(A_mid)/T0`,
+//! the exact period ratio at the amplitude in the middle of the record);
+//! the nonlinear model has `ω_n` directly.
+
+use super::{fit_curve, Curve, Fit, FitError};
+use crate::damped::State;
+use crate::damping::Damping;
+use crate::pendulum::{Amplitude, Pendulum};
+use crate::period::period_ratio;
+use crate::simulation::{simulate, Method, Model, Observer, Options};
+use std::cell::RefCell;
+
+/// Which trajectory model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TrajectoryModel {
+    /// Section 1-4's closed form.
+    Linear,
+    /// The nonlinear equation, integrated.
+    Nonlinear,
+}
+
+/// The fitted trajectory.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TrajectoryFit {
+    /// The model.
+    pub model: TrajectoryModel,
+    /// The least-squares fit, parameters in the order of [`Self::names`].
+    pub fit: Fit,
+    /// The small-angle natural angular frequency ω_0, rad/s.
+    pub natural_angular_frequency: f64,
+    /// Its standard error.
+    pub natural_angular_frequency_error: f64,
+}
+
+impl TrajectoryFit {
+    /// Parameter names as in JSON.
+    pub fn names(&self) -> [&'static str; 5] {
+        match self.model {
+            TrajectoryModel::Linear => [
+                "amplitude_rad",
+                "omega_d_rad_s",
+                "zeta",
+                "phase_rad",
+                "offset_rad",
+            ],
+            TrajectoryModel::Nonlinear => [
+                "amplitude_rad",
+                "omega_n_rad_s",
+                "zeta",
+                "phase_rad",
+                "offset_rad",
+            ],
+        }
+    }
+
+    /// `g = l ω_0²` and its standard error, for a pendulum of `length` m.
+    pub fn gravity(&self, length: f64) -> (f64, f64) {
+        let w = self.natural_angular_frequency;
+        (
+            length * w * w,
+            2.0 * length * w * self.natural_angular_frequency_error,
+        )
+    }
+}
+
+/// `θ_off + A e^{-ζω_n t} cos(ω_d t + φ)` with `t` from the first sample.
+fn linear(t: f64, p: &[f64]) -> f64 {
+    let (a, wd, zeta, phase, offset) = (p[0], p[1], p[2], p[3], p[4]);
+    let wn = wd / (1.0 - zeta * zeta).max(f64::MIN_POSITIVE).sqrt();
+    offset + a * (-zeta * wn * t).exp() * (wd * t + phase).cos()
+}
+
+/// Fits `model` to angles `theta` (rad) at times `time` (s, increasing).
+pub fn fit_trajectory(
+    model: TrajectoryModel,
+    time: &[f64],
+    theta: &[f64],
+) -> Result<TrajectoryFit, FitError> {
+    let t0 = time.first().copied().unwrap_or(0.0);
+    let t: Vec<f64> = time.iter().map(|x| x - t0).collect();
+    let start = initial_guess(&t, theta);
+    let lin = fit_curve(&linear, &t, theta, None, &start)?;
+    let (a, wd, zeta) = (
+        lin.parameters[0].abs(),
+        lin.parameters[1],
+        lin.parameters[2],
+    );
+    let damping_factor = (1.0 - zeta * zeta).max(f64::MIN_POSITIVE).sqrt();
+    // The amplitude in the middle of the record sets the finite-amplitude correction.
+    let mid = 0.5 * t.last().copied().unwrap_or(0.0);
+    let a_mid = (a * (-zeta * wd / damping_factor * mid).exp()).min(3.1);
+    let ratio = Amplitude::from_radians(a_mid)
+        .map(period_ratio)
+        .unwrap_or(1.0);
+    if model == TrajectoryModel::Linear {
+        let w0 = wd / damping_factor * ratio;
+        let w0_error = lin.standard_errors[1] / damping_factor * ratio;
+        return Ok(TrajectoryFit {
+            model,
+            fit: lin,
+            natural_angular_frequency: w0,
+            natural_angular_frequency_error: w0_error,
+        });
+    }
+    let wn = wd / damping_factor * ratio;
+    // Release from rest at the crest before the first sample: the phase
+    // φ of the linear fit places it φ/ω_d earlier.
+    let phase = lin.parameters[3].rem_euclid(std::f64::consts::TAU);
+    let a_release = a * (zeta * wd / damping_factor * phase / wd).exp();
+    let initial = [a_release, wn, zeta.max(0.0), phase, lin.parameters[4]];
+    let curve = NonlinearCurve {
+        times: &t,
+        cache: RefCell::new(Simulated::default()),
+    };
+    let fit = fit_curve(&curve, &t, theta, None, &initial)?;
+    let (w, e) = (fit.parameters[1], fit.standard_errors[1]);
+    Ok(TrajectoryFit {
+        model,
+        fit,
+        natural_angular_frequency: w,
+        natural_angular_frequency_error: e,
+    })
+}
+
+/// Starting values from the record itself: the offset is the mean, the
+/// frequency comes from the upward crossings of the mean, the amplitude
+/// from the first period's extremes, the damping from the first and last
+/// periods' amplitudes, the phase from the first sample.
+fn initial_guess(t: &[f64], theta: &[f64]) -> Vec<f64> {
+    let n = t.len();
+    let offset = theta.iter().sum::<f64>() / n as f64;
+    let crossings: Vec<f64> = (1..n)
+        .filter(|&i| theta[i - 1] < offset && theta[i] >= offset)
+        .map(|i| {
+            let f = (offset - theta[i - 1]) / (theta[i] - theta[i - 1]);
+            t[i - 1] + f * (t[i] - t[i - 1])
+        })
+        .collect();
+    let wd = if crossings.len() >= 2 {
+        std::f64::consts::TAU * (crossings.len() - 1) as f64
+            / (crossings[crossings.len() - 1] - crossings[0])
+    } else {
+        std::f64::consts::TAU / t[n - 1].max(f64::MIN_POSITIVE)
+    };
+    let period = std::f64::consts::TAU / wd;
+    let peak = |from: f64, to: f64| {
+        t.iter()
+            .zip(theta)
+            .filter(|(x, _)| **x >= from && **x <= to)
+            .map(|(_, y)| (y - offset).abs())
+            .fold(0.0_f64, f64::max)
+    };
+    let span = t[n - 1];
+    let (early, late) = (peak(0.0, period), peak(span - period, span));
+    let a = early.max(f64::MIN_POSITIVE);
+    let zeta = if late > 0.0 && early > late && span > 2.0 * period {
+        ((early / late).ln() / ((span - period) * wd)).min(0.5)
+    } else {
+        1e-4
+    };
+    let c = ((theta[0] - offset) / a).clamp(-1.0, 1.0);
+    let rising = n > 1 && theta[1] > theta[0];
+    let phase = if rising { -c.acos() } else { c.acos() };
+    vec![a, wd, zeta, phase, offset]
+}
+
+/// The nonlinear model evaluated by simulation. The fit asks for the
+/// points one at a time but always a whole parameter set in a row, so one
+/// simulation per parameter set, kept in `cache`, serves them all.
+struct NonlinearCurve<'a> {
+    times: &'a [f64],
+    cache: RefCell<Simulated>,
+}
+
+/// A simulation's samples for one parameter set.
+#[derive(Default)]
+struct Simulated {
+    parameters: Vec<f64>,
+    states: Vec<State>,
+    interval: f64,
+}
+
+/// Collects the samples of a simulation for Hermite interpolation.
+struct Samples(Vec<State>);
+
+impl Observer for Samples {
+    fn sample(&mut self, _time: f64, state: &State) -> bool {
+        self.0.push(*state);
+        true
+    }
+}
+
+impl Curve for NonlinearCurve<'_> {
+    /// θ at `x` for parameters `[A, ω_n, ζ, φ, θ_off]`.
+    fn value(&self, x: f64, p: &[f64]) -> f64 {
+        let mut cache = self.cache.borrow_mut();
+        if cache.parameters.as_slice() != p {
+            let (states, interval) = self.simulate(p);
+            *cache = Simulated {
+                parameters: p.to_vec(),
+                states,
+                interval,
+            };
+        }
+        if cache.states.len() < 2 {
+            return f64::NAN;
+        }
+        let lead = p[3].abs() / p[1].abs().max(f64::MIN_POSITIVE);
+        hermite(&cache.states, cache.interval, x + lead) + p[4]
+    }
+}
+
+impl NonlinearCurve<'_> {
+    fn simulate(&self, p: &[f64]) -> (Vec<State>, f64) {
+        let (a, wn, zeta, phase) = (p[0], p[1].abs(), p[2], p[3]);
+        let span = self.times.last().copied().unwrap_or(0.0);
+        let lead = phase.abs() / wn.max(f64::MIN_POSITIVE);
+        let length = 9.806_65 / (wn * wn);
+        let (Ok(pendulum), Ok(damping), Ok(amplitude)) = (
+            Pendulum::with_standard_gravity(length),
+            Damping::from_zeta(zeta.max(0.0)),
+            Amplitude::from_radians(a.abs().min(3.1)),
+        ) else {
+            return (Vec::new(), 1.0);
+        };
+        let Ok(model) = Model::new(pendulum, damping, 0.0, 0.0) else {
+            return (Vec::new(), 1.0);
+        };
+        // Cubic Hermite between samples errs by about (ωh)^4/384 of the
+        // amplitude: 2e-9 at 200 samples a period, below any video's noise.
+        let h = std::f64::consts::TAU / wn / 200.0;
+        let options = Options {
+            duration: span + lead + 2.0 * h,
+            tolerance: 1e-12,
+            method: Method::Dop853,
+            sample_interval: Some(h),
+        };
+        let mut samples = Samples(Vec::new());
+        match simulate(&model, amplitude, &options, &mut samples) {
+            Ok(_) => (samples.0, h),
+            Err(_) => (Vec::new(), h),
+        }
+    }
+}
+
+/// Cubic Hermite interpolation of samples every `h` seconds from 0.
+fn hermite(states: &[State], h: f64, t: f64) -> f64 {
+    let i = ((t / h).floor().max(0.0) as usize).min(states.len().saturating_sub(2));
+    let (a, b) = (states[i], states[i + 1]);
+    let x = t / h - i as f64;
+    let (h00, h10, h01, h11) = (
+        (1.0 + 2.0 * x) * (1.0 - x) * (1.0 - x),
+        x * (1.0 - x) * (1.0 - x),
+        x * x * (3.0 - 2.0 * x),
+        x * x * (x - 1.0),
+    );
+    h00 * a.angle + h10 * h * a.angular_velocity + h01 * b.angle + h11 * h * b.angular_velocity
+}

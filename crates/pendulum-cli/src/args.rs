@@ -32,6 +32,97 @@ pub enum Command {
     Damped(Box<DampedArgs>),
     /// The full nonlinear damped pendulum, integrated over days of swings.
     Simulate(Box<SimulateArgs>),
+    /// Fit the theory to measurements: amplitude decay, tracked angle, beat times.
+    Fit(FitArgs),
+}
+
+/// `pendulum fit`.
+#[derive(Debug, Args)]
+pub struct FitArgs {
+    /// What the file holds.
+    #[command(subcommand)]
+    pub what: FitCommand,
+}
+
+/// The kinds of measurement `fit` reads.
+#[derive(Debug, Subcommand)]
+pub enum FitCommand {
+    /// Amplitude against time or swing count: Q, and whether the damping is
+    /// viscous, dry friction or air drag.
+    Decay(FitDecayArgs),
+    /// Angle against time (video tracking): amplitude, frequency, damping, offset, g.
+    Trajectory(FitTrajectoryArgs),
+    /// One timestamp per beat: rate, beat error, jitter, Allan deviation.
+    Beats(FitBeatsArgs),
+}
+
+/// `pendulum fit decay`.
+#[derive(Debug, Args)]
+pub struct FitDecayArgs {
+    /// CSV with `time_s` (or `swing`, a half-swing count) and `amplitude_deg` (or `amplitude_rad`).
+    #[arg(value_name = "FILE.csv")]
+    pub file: std::path::PathBuf,
+    /// Which decay law to fit.
+    #[arg(long, default_value = "all", value_parser = ["viscous", "coulomb", "quadratic", "viscous+coulomb", "all"])]
+    pub model: String,
+    /// Pendulum length: turns rates into ζ, Q, friction angle and drag (needed for a swing column).
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length: Option<String>,
+    /// Bob mass, for the energy lost per period and the power.
+    #[arg(
+        long,
+        value_name = "M",
+        allow_hyphen_values = true,
+        requires = "length"
+    )]
+    pub mass: Option<String>,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum fit trajectory`.
+#[derive(Debug, Args)]
+pub struct FitTrajectoryArgs {
+    /// CSV with `time_s` and `angle_deg` (or `angle_rad`).
+    #[arg(value_name = "FILE.csv")]
+    pub file: std::path::PathBuf,
+    /// Pendulum length, to give g.
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length: Option<String>,
+    /// Section 1-4's closed form, or the nonlinear equation integrated inside the fit.
+    #[arg(long, default_value = "linear", value_parser = ["linear", "nonlinear"])]
+    pub model: String,
+    /// Write the residuals to this CSV file (time_s,residual_rad).
+    #[arg(long, value_name = "FILE.csv")]
+    pub residuals: Option<std::path::PathBuf>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum fit beats`.
+#[derive(Debug, Args)]
+pub struct FitBeatsArgs {
+    /// CSV with one `time_s` per beat.
+    #[arg(value_name = "FILE.csv")]
+    pub file: std::path::PathBuf,
+    /// The nominal beat rate, beats per hour [default: the nearest standard rate].
+    #[arg(
+        long,
+        value_name = "B",
+        allow_hyphen_values = true,
+        conflicts_with = "period"
+    )]
+    pub bph: Option<String>,
+    /// The nominal period (two beats).
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub period: Option<String>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// Where g comes from: given, from latitude and height, or standard gravity.

@@ -5,6 +5,7 @@
 
 mod args;
 mod commands;
+mod data;
 mod error;
 mod file;
 mod output;

@@ -69,6 +69,14 @@ pub fn gravity(args: &GravityArgs) -> Result<ResolvedGravity, CliError> {
     })
 }
 
+/// Standard gravity, for commands that need a pendulum only for its length.
+pub fn gravity_default() -> ResolvedGravity {
+    ResolvedGravity {
+        g_m_s2: STANDARD_GRAVITY,
+        g_source: "standard",
+    }
+}
+
 /// Normal gravity at the latitude and height typed, in m/s².
 pub fn wgs84(latitude: &str, height: Option<&str>) -> Result<f64, CliError> {
     let latitude_deg = latitude_degrees(latitude)?;

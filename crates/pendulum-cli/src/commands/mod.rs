@@ -4,6 +4,9 @@
 mod amplitude;
 mod common;
 mod damped;
+mod fit_beats;
+mod fit_decay;
+mod fit_trajectory;
 mod gravity;
 mod length;
 mod period;
@@ -21,5 +24,10 @@ pub fn run(command: &Command) -> Result<String, CliError> {
         Command::Gravity(args) => gravity::run(args),
         Command::Damped(args) => damped::run(args),
         Command::Simulate(args) => simulate::run(args),
+        Command::Fit(args) => match &args.what {
+            crate::args::FitCommand::Decay(a) => fit_decay::run(a),
+            crate::args::FitCommand::Trajectory(a) => fit_trajectory::run(a),
+            crate::args::FitCommand::Beats(a) => fit_beats::run(a),
+        },
     }
 }

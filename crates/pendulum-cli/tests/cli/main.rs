@@ -2,6 +2,7 @@
 //! one module per command family.
 
 mod damped;
+mod fit;
 mod period;
 mod simulate;
 mod util;

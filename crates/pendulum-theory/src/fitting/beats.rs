@@ -13,10 +13,12 @@
 //! * Jitter is the standard deviation of the intervals about their own
 //!   tick or tock mean.
 //! * The Allan deviation of the rate (overlapping estimator, IEEE 1139) at
-//!   averaging times of `2^k` beats, from the time error `x_n = t_n - n T_b`:
+//!   averaging times of `2^k` beats up to 65,536, from the time error
+//!   `x_n = t_n - n T_b`:
 //!   `σ²(τ) = Σ (x_{i+2m} - 2x_{i+m} + x_i)² / (2 τ² (N - 2m))`, `τ = m T_b`.
-
-use super::straight_line;
+//!
+//! All of it runs on a stream ([`BeatStream`]) in fixed memory, so a log of
+//! 10^7 beats needs no more than one of ten.
 
 /// Beat rates (beats per hour) a clock is usually made for; the nominal
 /// beat is taken from here when none is given.
@@ -86,118 +88,226 @@ pub enum BeatError {
 
 /// Analyses beat timestamps `times` (s); `nominal_beat` (s) is the beat the
 /// clock is meant to have, else the nearest standard rate within 2%.
+/// (The same as feeding them one by one to a [`BeatStream`].)
 pub fn analyse_beats(times: &[f64], nominal_beat: Option<f64>) -> Result<BeatAnalysis, BeatError> {
-    if times.len() < 4 {
-        return Err(BeatError::TooFew(times.len()));
+    let mut stream = BeatStream::new();
+    for &t in times {
+        stream.push(t)?;
     }
-    if let Some(i) = (1..times.len()).find(|&i| times[i] <= times[i - 1]) {
-        return Err(BeatError::NotIncreasing {
-            index: i,
-            time: times[i],
-        });
+    stream.finish(nominal_beat)
+}
+
+/// Timestamps buffered to find the typical interval before the stream starts.
+const WARM_UP: usize = 1001;
+/// The longest averaging time of the Allan deviation, in beats: its ring
+/// buffer of `2m + 1` time errors is the only memory that grows with `m`.
+pub const MAX_ALLAN_BEATS: usize = 1 << 16;
+
+/// The beat analysis fed one timestamp at a time, in memory independent of
+/// the number of beats (about 2 MB: the Allan deviation's buffers). The
+/// first 1001 timestamps set the typical interval for the repairs (their
+/// median); then every beat updates running sums: the regression of time
+/// on beat number, the tick and tock intervals (Welford's mean and
+/// variance), and, for each `m = 2^k`, the overlapping Allan sum over a
+/// ring buffer of the last `2m + 1` time errors. The time error is taken
+/// against the typical interval; the Allan deviation's second differences
+/// cancel any linear drift, so the final mean beat is not needed for it.
+#[derive(Clone, Debug, Default)]
+pub struct BeatStream {
+    warm_up: Vec<f64>,
+    typical: f64,
+    origin: f64,
+    count: usize,
+    last: f64,
+    raw_count: usize,
+    raw_last: f64,
+    repairs: Repairs,
+    // Regression of the time error e = (t - origin) - n T_typical on n, by
+    // running means and co-moments (Welford's update). Raw sums of n² and
+    // n t at n = 10^7 would cancel; the time error is 10^4 times smaller
+    // than t itself, and so are the roundings of its running mean.
+    mean_n: f64,
+    mean_t: f64,
+    co_nt: f64,
+    co_nn: f64,
+    // Interval statistics by parity (Welford).
+    parity: [Welford; 2],
+    allan: Vec<AllanSum>,
+}
+
+#[derive(Clone, Copy, Debug, Default)]
+struct Welford {
+    count: f64,
+    mean: f64,
+    m2: f64,
+}
+
+impl Welford {
+    fn push(&mut self, x: f64) {
+        self.count += 1.0;
+        let d = x - self.mean;
+        self.mean += d / self.count;
+        self.m2 += d * (x - self.mean);
     }
-    let (times, repaired) = repair(times);
-    let n = times.len();
-    let index: Vec<f64> = (0..n).map(|i| i as f64).collect();
-    let (_, mean_beat) = straight_line(&index, &times);
-    let nominal_beat = nominal_beat.or_else(|| nearest_standard(mean_beat));
-    let rate_s_per_day = nominal_beat.map(|nominal| 86_400.0 * (nominal / mean_beat - 1.0));
-    let intervals: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
-    let (tick, tock) = alternate_means(&intervals);
-    let spread: f64 = intervals
-        .iter()
-        .enumerate()
-        .map(|(i, d)| (d - if i % 2 == 0 { tick } else { tock }).powi(2))
-        .sum::<f64>()
-        / (intervals.len().saturating_sub(2).max(1)) as f64;
-    let time_error: Vec<f64> = times
-        .iter()
-        .enumerate()
-        .map(|(i, t)| t - times[0] - i as f64 * mean_beat)
-        .collect();
-    Ok(BeatAnalysis {
-        beats: n,
-        mean_beat,
-        beats_per_hour: 3600.0 / mean_beat,
-        nominal_beat,
-        rate_s_per_day,
-        beat_error_ms: 1e3 * 0.5 * (tick - tock).abs(),
-        jitter_ms: 1e3 * spread.sqrt(),
-        repaired,
-        allan_deviation: allan_deviation(&time_error, mean_beat),
-    })
+}
+
+#[derive(Clone, Debug)]
+struct AllanSum {
+    m: usize,
+    /// Time errors by beat index modulo `2m + 1`.
+    ring: Vec<f64>,
+    sum: f64,
+    terms: usize,
+}
+
+impl BeatStream {
+    /// An empty analysis.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Adds the next timestamp, s.
+    pub fn push(&mut self, t: f64) -> Result<(), BeatError> {
+        if self.raw_count > 0 && t <= self.raw_last {
+            return Err(BeatError::NotIncreasing {
+                index: self.raw_count,
+                time: t,
+            });
+        }
+        self.raw_count += 1;
+        self.raw_last = t;
+        if self.typical == 0.0 {
+            self.warm_up.push(t);
+            if self.warm_up.len() == WARM_UP {
+                self.start();
+            }
+            return Ok(());
+        }
+        self.repaired(t);
+        Ok(())
+    }
+
+    /// Sets the typical interval from the buffered timestamps and replays them.
+    fn start(&mut self) {
+        let buffered = std::mem::take(&mut self.warm_up);
+        let mut intervals: Vec<f64> = buffered.windows(2).map(|w| w[1] - w[0]).collect();
+        intervals.sort_by(f64::total_cmp);
+        self.typical = intervals[intervals.len() / 2];
+        self.origin = buffered[0];
+        // Every averaging time from the first beat, so that the sums are
+        // exactly the overlapping estimator's.
+        self.allan = (0..=MAX_ALLAN_BEATS.trailing_zeros())
+            .map(|k| AllanSum {
+                m: 1 << k,
+                ring: vec![0.0; (2 << k) + 1],
+                sum: 0.0,
+                terms: 0,
+            })
+            .collect();
+        self.accept(buffered[0]);
+        for &t in &buffered[1..] {
+            self.repaired(t);
+        }
+    }
+
+    /// Drops a doubled beat, fills in missed ones, then accepts `t`.
+    fn repaired(&mut self, t: f64) {
+        let gap = t - self.last;
+        if gap < 0.5 * self.typical {
+            self.repairs.doubled += 1;
+            return;
+        }
+        let k = (gap / self.typical).round() as usize;
+        if k >= 2 {
+            let last = self.last;
+            for j in 1..k {
+                self.accept(last + gap * j as f64 / k as f64);
+            }
+            self.repairs.missed += k - 1;
+        }
+        self.accept(t);
+    }
+
+    fn accept(&mut self, t: f64) {
+        let n = self.count as f64;
+        let x = t - self.origin;
+        if self.count > 0 {
+            let parity = (self.count - 1) % 2;
+            self.parity[parity].push(t - self.last);
+        }
+        let error = x - n * self.typical;
+        let k = (self.count + 1) as f64;
+        let dn = n - self.mean_n;
+        self.mean_n += dn / k;
+        self.mean_t += (error - self.mean_t) / k;
+        self.co_nt += dn * (error - self.mean_t);
+        self.co_nn += dn * (n - self.mean_n);
+        self.push_allan(error);
+        self.count += 1;
+        self.last = t;
+    }
+
+    fn push_allan(&mut self, error: f64) {
+        let index = self.count;
+        for a in &mut self.allan {
+            let size = 2 * a.m + 1;
+            a.ring[index % size] = error;
+            // x_i, x_{i+m}, x_{i+2m} with i + 2m = index.
+            if index >= 2 * a.m {
+                let at = |j: usize| a.ring[j % size];
+                let d = at(index) - 2.0 * at(index - a.m) + at(index - 2 * a.m);
+                a.sum += d * d;
+                a.terms += 1;
+            }
+        }
+    }
+
+    /// The analysis of all timestamps pushed.
+    pub fn finish(mut self, nominal_beat: Option<f64>) -> Result<BeatAnalysis, BeatError> {
+        if self.typical == 0.0 {
+            if self.warm_up.len() < 4 {
+                return Err(BeatError::TooFew(self.warm_up.len()));
+            }
+            self.start();
+        }
+        let mean_beat = self.typical + self.co_nt / self.co_nn;
+        let nominal_beat = nominal_beat.or_else(|| nearest_standard(mean_beat));
+        let [tick, tock] = self.parity;
+        let spread = (tick.m2 + tock.m2) / (tick.count + tock.count - 2.0).max(1.0);
+        let allan_deviation = self
+            .allan
+            .iter()
+            .filter(|a| a.terms >= 10)
+            .map(|a| {
+                let tau = a.m as f64 * mean_beat;
+                AllanPoint {
+                    tau,
+                    beats: a.m,
+                    deviation: (a.sum / (2.0 * tau * tau * a.terms as f64)).sqrt(),
+                }
+            })
+            .collect();
+        Ok(BeatAnalysis {
+            beats: self.count,
+            mean_beat,
+            beats_per_hour: 3600.0 / mean_beat,
+            nominal_beat,
+            rate_s_per_day: nominal_beat.map(|nominal| 86_400.0 * (nominal / mean_beat - 1.0)),
+            beat_error_ms: 1e3 * 0.5 * (tick.mean - tock.mean).abs(),
+            jitter_ms: 1e3 * spread.sqrt(),
+            repaired: self.repairs,
+            allan_deviation,
+        })
+    }
 }
 
 /// The nearest standard beat (s) within 2% of `beat`, if any.
 fn nearest_standard(beat: f64) -> Option<f64> {
-    let bph = 3600.0 / beat;
     STANDARD_BEAT_RATES
         .iter()
         .map(|&r| 3600.0 / r)
-        .min_by(|a, b| {
-            (a - 3600.0 / bph)
-                .abs()
-                .total_cmp(&(b - 3600.0 / bph).abs())
-        })
+        .min_by(|a, b| (a - beat).abs().total_cmp(&(b - beat).abs()))
         .filter(|&nominal| (nominal / beat - 1.0).abs() <= 0.02)
-}
-
-/// Means of the even-numbered and odd-numbered intervals.
-fn alternate_means(intervals: &[f64]) -> (f64, f64) {
-    let mean = |parity: usize| {
-        let picked: Vec<f64> = intervals.iter().skip(parity).step_by(2).copied().collect();
-        picked.iter().sum::<f64>() / picked.len().max(1) as f64
-    };
-    (mean(0), mean(1))
-}
-
-/// Drops doubled beats and fills in missed ones against the median interval.
-fn repair(times: &[f64]) -> (Vec<f64>, Repairs) {
-    let mut intervals: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
-    intervals.sort_by(f64::total_cmp);
-    let typical = intervals[intervals.len() / 2];
-    let mut out = Vec::with_capacity(times.len());
-    let mut repairs = Repairs::default();
-    out.push(times[0]);
-    for &t in &times[1..] {
-        let last = *out.last().expect("starts with one");
-        let gap = t - last;
-        if gap < 0.5 * typical {
-            repairs.doubled += 1;
-            continue;
-        }
-        let k = (gap / typical).round() as usize;
-        if k >= 2 {
-            for j in 1..k {
-                out.push(last + gap * j as f64 / k as f64);
-            }
-            repairs.missed += k - 1;
-        }
-        out.push(t);
-    }
-    (out, repairs)
-}
-
-/// Overlapping Allan deviation of the time error `x` sampled every `beat`
-/// seconds, at `m = 1, 2, 4, …` beats while `N - 2m >= 10`.
-fn allan_deviation(x: &[f64], beat: f64) -> Vec<AllanPoint> {
-    let n = x.len();
-    let mut out = Vec::new();
-    let mut m = 1;
-    while n >= 2 * m + 10 {
-        let terms = n - 2 * m;
-        let sum: f64 = (0..terms)
-            .map(|i| (x[i + 2 * m] - 2.0 * x[i + m] + x[i]).powi(2))
-            .sum();
-        let tau = m as f64 * beat;
-        out.push(AllanPoint {
-            tau,
-            beats: m,
-            deviation: (sum / (2.0 * tau * tau * terms as f64)).sqrt(),
-        });
-        m *= 2;
-    }
-    out
 }
 
 #[cfg(test)]
@@ -268,6 +378,37 @@ mod tests {
         let later = a.allan_deviation[4];
         assert_eq!(first.beats, 1);
         assert!(later.deviation < first.deviation / 10.0);
+    }
+
+    #[test]
+    fn streamed_allan_deviation_equals_the_batch_formula() {
+        // A wandering clock: the beat drifts and wobbles.
+        let times: Vec<f64> = (0..5000)
+            .map(|i| {
+                let x = f64::from(i);
+                x * 0.5 + 1e-4 * (x * 0.37).sin() + 3e-4 * (x * 0.011).sin()
+            })
+            .collect();
+        let a = analyse_beats(&times, None).unwrap();
+        let errors: Vec<f64> = times
+            .iter()
+            .enumerate()
+            .map(|(i, t)| t - i as f64 * 0.5)
+            .collect();
+        for p in &a.allan_deviation {
+            let m = p.beats;
+            let terms = errors.len() - 2 * m;
+            let sum: f64 = (0..terms)
+                .map(|i| (errors[i + 2 * m] - 2.0 * errors[i + m] + errors[i]).powi(2))
+                .sum();
+            let batch = (sum / (2.0 * p.tau * p.tau * terms as f64)).sqrt();
+            assert!(
+                (p.deviation / batch - 1.0).abs() < 1e-9,
+                "m = {m}: {} vs {batch}",
+                p.deviation
+            );
+        }
+        assert!(a.allan_deviation.len() >= 8);
     }
 
     #[test]

@@ -150,6 +150,25 @@ pub fn effective_angular_frequency(pendulum: &Pendulum, amplitudes: &[f64]) -> f
     std::f64::consts::TAU / pendulum.period(amplitude)
 }
 
+/// Times (s, from the first row) of rows given as half-swing counts: each
+/// half swing takes `T(A)/2` at the amplitude `A` it swings at (the mean of
+/// the two rows around it), with the exact period, so that wide swings are
+/// timed right.
+pub fn swings_to_time(pendulum: &Pendulum, swings: &[f64], amplitudes: &[f64]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(swings.len());
+    let mut t = 0.0;
+    for i in 0..swings.len() {
+        if i > 0 {
+            let mean = 0.5 * (amplitudes[i - 1] + amplitudes[i]).abs();
+            let a = Amplitude::from_radians(mean.min(std::f64::consts::PI.next_down()))
+                .expect("clamped into [0, π)");
+            t += (swings[i] - swings[i - 1]) * 0.5 * pendulum.period(a);
+        }
+        out.push(t);
+    }
+    out
+}
+
 /// Fits `model` to amplitudes `amplitude` (rad) at times `time` (s); with
 /// `omega` (rad/s) the physical parameters are added.
 pub fn fit_decay(

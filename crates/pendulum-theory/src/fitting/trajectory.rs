@@ -94,7 +94,19 @@ pub fn fit_trajectory(
     let t0 = time.first().copied().unwrap_or(0.0);
     let t: Vec<f64> = time.iter().map(|x| x - t0).collect();
     let start = initial_guess(&t, theta);
-    let lin = fit_curve(&linear, &t, theta, None, &start)?;
+    let mut lin = fit_curve(&linear, &t, theta, None, &start)?;
+    // The same curve with A >= 0 and φ in (-π, π]: a negative amplitude is
+    // a phase shifted by π.
+    if lin.parameters[0] < 0.0 {
+        lin.parameters[0] = -lin.parameters[0];
+        lin.parameters[3] += std::f64::consts::PI;
+    }
+    let wrapped = lin.parameters[3].rem_euclid(std::f64::consts::TAU);
+    lin.parameters[3] = if wrapped > std::f64::consts::PI {
+        wrapped - std::f64::consts::TAU
+    } else {
+        wrapped
+    };
     let (a, wd, zeta) = (
         lin.parameters[0].abs(),
         lin.parameters[1],

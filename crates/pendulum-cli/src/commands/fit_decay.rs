@@ -1,0 +1,193 @@
+//! `pendulum fit decay`: which damping, and how much, from a run-down.
+
+use super::common::{self, finite};
+use crate::args::FitDecayArgs;
+use crate::data::{read_columns, Wanted, DEG};
+use crate::error::CliError;
+use crate::output::{self, num};
+use crate::units::Dimension;
+use pendulum_theory::energy::energy_budget;
+use pendulum_theory::fitting::decay::{
+    effective_angular_frequency, fit_decay, half_swing_loss, preferred, swings_to_time, DecayFit,
+    DecayModel,
+};
+use pendulum_theory::fitting::FitError;
+use pendulum_theory::Pendulum;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+#[derive(Serialize)]
+struct DecayJson {
+    file: String,
+    points: usize,
+    models: Vec<ModelJson>,
+    preferred: Option<&'static str>,
+}
+
+#[derive(Serialize)]
+struct ModelJson {
+    model: &'static str,
+    parameters: BTreeMap<&'static str, f64>,
+    standard_errors: BTreeMap<&'static str, f64>,
+    q_factor: Option<f64>,
+    residual_rms: f64,
+    aic: f64,
+    bic: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    energy_loss_per_period_j: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    power_w: Option<f64>,
+}
+
+pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
+    let pendulum = match &args.length {
+        Some(l) => Some(common::pendulum(l, &common::gravity(&args.gravity)?)?),
+        None => None,
+    };
+    let mass = args
+        .mass
+        .as_deref()
+        .map(|t| common::quantity("--mass", t, Dimension::Mass))
+        .transpose()?;
+    if let Some(m) = mass {
+        if m <= 0.0 {
+            return Err(CliError::flag(
+                "--mass",
+                format!("must be positive, got {m} kg"),
+            ));
+        }
+    }
+    let wanted = [
+        Wanted {
+            what: "time",
+            names: &[("time_s", 1.0), ("swing", 1.0)],
+        },
+        Wanted {
+            what: "amplitude",
+            names: &[("amplitude_deg", DEG), ("amplitude_rad", 1.0)],
+        },
+    ];
+    let columns = read_columns(&args.file, &wanted)?;
+    columns.require_increasing(0)?;
+    columns.require_positive(1)?;
+    let amplitude = &columns.values[1];
+    let time = if columns.names[0] == "swing" {
+        let p = pendulum.as_ref().ok_or_else(|| {
+            CliError::flag(
+                "--length",
+                format!(
+                    "is needed to turn the swing column of {} into time",
+                    columns.file
+                ),
+            )
+        })?;
+        swings_to_time(p, &columns.values[0], amplitude)
+    } else {
+        columns.values[0].clone()
+    };
+    let omega = pendulum.map(|p| effective_angular_frequency(&p, amplitude));
+    let models: Vec<DecayModel> = match DecayModel::from_name(&args.model) {
+        Some(m) => vec![m],
+        None => DecayModel::ALL.to_vec(),
+    };
+    let mut fits = Vec::new();
+    let mut first_error = None;
+    for model in models {
+        match fit_decay(model, &time, amplitude, omega) {
+            Ok(fit) => fits.push(fit),
+            Err(e) => {
+                first_error.get_or_insert(e);
+            }
+        }
+    }
+    if fits.is_empty() {
+        let e = first_error.unwrap_or(FitError::Singular);
+        return Err(CliError::other(format!("{}: {e}", columns.file)));
+    }
+    let best = preferred(&fits);
+    let result = DecayJson {
+        file: columns.file.clone(),
+        points: time.len(),
+        models: fits
+            .iter()
+            .map(|f| model_json(f, pendulum.as_ref(), mass))
+            .collect(),
+        preferred: best.map(DecayModel::name),
+    };
+    if args.json {
+        output::json(&result)
+    } else {
+        Ok(text(&result))
+    }
+}
+
+fn model_json(f: &DecayFit, pendulum: Option<&Pendulum>, mass: Option<f64>) -> ModelJson {
+    let parameters = f.parameters.iter().map(|e| (e.name, e.value)).collect();
+    let standard_errors = f
+        .parameters
+        .iter()
+        .map(|e| (e.name, e.standard_error))
+        .collect();
+    let budget = match (pendulum, mass) {
+        (Some(p), Some(m)) => {
+            let a0 = f.fit.parameters[0];
+            let period = p.period(
+                pendulum_theory::Amplitude::from_radians(a0.abs().min(3.1)).unwrap_or_else(|_| {
+                    pendulum_theory::Amplitude::from_radians(0.0).expect("zero is valid")
+                }),
+            );
+            energy_budget(p, m, a0, half_swing_loss(f, a0, 0.5 * period), period).ok()
+        }
+        _ => None,
+    };
+    ModelJson {
+        model: f.model.name(),
+        parameters,
+        standard_errors,
+        q_factor: f.q_factor.and_then(finite),
+        residual_rms: f.fit.residual_rms,
+        aic: f.fit.aic,
+        bic: f.fit.bic,
+        energy_loss_per_period_j: budget.map(|b| b.loss_per_period),
+        power_w: budget.map(|b| b.power),
+    }
+}
+
+fn text(r: &DecayJson) -> String {
+    let mut out = format!("{}: {} points\n", r.file, r.points);
+    for m in &r.models {
+        let mark = if Some(m.model) == r.preferred {
+            "  <- preferred (lowest BIC)"
+        } else {
+            ""
+        };
+        out.push_str(&format!("\n{}{mark}\n", m.model));
+        for (name, value) in &m.parameters {
+            let se = m.standard_errors.get(name).copied().unwrap_or(f64::NAN);
+            out.push_str(&format!(
+                "  {name:<28} {} ± {}\n",
+                num(*value, 6),
+                num(se, 2)
+            ));
+        }
+        if let Some(q) = m.q_factor {
+            out.push_str(&format!("  {:<28} {}\n", "Q", num(q, 5)));
+        }
+        if let (Some(e), Some(p)) = (m.energy_loss_per_period_j, m.power_w) {
+            out.push_str(&format!(
+                "  {:<28} {} J per period, {} W\n",
+                "energy lost",
+                num(e, 4),
+                num(p, 4)
+            ));
+        }
+        out.push_str(&format!(
+            "  {:<28} {} rad;  AIC {}  BIC {}\n",
+            "residual rms",
+            num(m.residual_rms, 3),
+            num(m.aic, 6),
+            num(m.bic, 6)
+        ));
+    }
+    out
+}

@@ -1,0 +1,227 @@
+//! `pendulum fit decay|trajectory|beats`.
+
+use crate::util::{f, json, refuses};
+use pendulum_theory::fitting::decay::DecayModel;
+use std::path::{Path, PathBuf};
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// A run-down made by the library's own combined law, noiseless but for a
+/// deterministic ±1e-4 rad wobble, with a comment and an empty line.
+fn decay_file(dir: &Path) -> PathBuf {
+    let law = DecayModel::ViscousCoulomb;
+    let mut text = String::from("# a seconds pendulum running down\ntime_s,amplitude_deg\n");
+    for i in 0..100 {
+        let t = 20.0 * f64::from(i);
+        let wobble = 1e-4 * (f64::from(i) * 2.3).sin();
+        let a = law.amplitude(t, &[0.05, 3e-4, 8e-6]) + wobble;
+        text.push_str(&format!("{t},{}\n", a.to_degrees()));
+        if i == 40 {
+            text.push('\n');
+        }
+    }
+    write(dir, "decay.csv", &text)
+}
+
+#[test]
+fn decay_prefers_the_generating_model_and_reports_physics() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = decay_file(dir.path());
+    let v = json(&[
+        "fit",
+        "decay",
+        path.to_str().unwrap(),
+        "--length",
+        "0.99362m",
+        "--mass",
+        "5kg",
+    ]);
+    assert_eq!(v["points"], 100);
+    assert_eq!(v["preferred"], "viscous+coulomb");
+    let models = v["models"].as_array().unwrap();
+    assert_eq!(models.len(), 4);
+    let names: Vec<&str> = models
+        .iter()
+        .map(|m| m["model"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        ["viscous", "coulomb", "quadratic", "viscous+coulomb"]
+    );
+    let best = &models[3];
+    for key in ["zeta", "friction_angle_rad", "amplitude0_rad"] {
+        assert!(best["parameters"][key].is_number(), "{key}");
+        assert!(best["standard_errors"][key].is_number(), "{key}");
+    }
+    assert!(models[2]["parameters"]["quadratic_drag"].is_number());
+    for m in models {
+        for key in ["residual_rms", "aic", "bic"] {
+            assert!(m[key].is_number(), "{key}");
+        }
+    }
+    assert!(best["q_factor"].is_number());
+    assert!(models[1]["q_factor"].is_null(), "no Q for dry friction");
+    assert!(best["energy_loss_per_period_j"].is_number() && best["power_w"].is_number());
+    // λ = 3e-4 /s on ω = 2π/T: ζ = λ/ω.
+    let zeta = f(&best["parameters"], "zeta");
+    assert!((zeta / (3e-4 / 3.1413) - 1.0).abs() < 0.02, "{zeta}");
+}
+
+#[test]
+fn decay_by_swing_count_needs_the_length() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("swing,amplitude_rad\n");
+    for i in 0..50 {
+        text.push_str(&format!(
+            "{},{}\n",
+            10 * i,
+            0.05 * (-0.002 * f64::from(10 * i)).exp()
+        ));
+    }
+    let path = write(dir.path(), "swings.csv", &text);
+    let p = path.to_str().unwrap();
+    refuses(&["fit", "decay", p], "--length");
+    let v = json(&[
+        "fit", "decay", p, "--length", "0.99362", "--model", "viscous",
+    ]);
+    assert_eq!(v["models"].as_array().unwrap().len(), 1);
+    // 0.002 per half swing of about a second: λ ≈ 0.002 /s.
+    let lambda = f(&v["models"][0]["parameters"], "decay_rate_per_s");
+    assert!((lambda / 0.002 - 1.0).abs() < 0.01, "{lambda}");
+}
+
+#[test]
+fn trajectory_gives_g() {
+    let dir = tempfile::tempdir().unwrap();
+    let pendulum = pendulum_theory::Pendulum::with_standard_gravity(0.5).unwrap();
+    let damped = pendulum_theory::damped::DampedPendulum::new(
+        pendulum,
+        pendulum_theory::damping::Damping::from_zeta(0.005).unwrap(),
+    );
+    let mut text = String::from("time_s,angle_deg\n");
+    for i in 0..800 {
+        let t = 0.01 * f64::from(i);
+        let wobble = 1e-3 * (f64::from(i) * 1.7).sin();
+        let theta = damped.state_at(0.02, 0.0, t).angle + 0.01 + wobble;
+        text.push_str(&format!("{t},{}\n", theta.to_degrees()));
+    }
+    let path = write(dir.path(), "video.csv", &text);
+    let residuals = dir.path().join("res.csv");
+    let v = json(&[
+        "fit",
+        "trajectory",
+        path.to_str().unwrap(),
+        "--length",
+        "0.5m",
+        "--residuals",
+        residuals.to_str().unwrap(),
+    ]);
+    let p = &v["parameters"];
+    for key in [
+        "amplitude_rad",
+        "zeta",
+        "offset_rad",
+        "g_m_s2",
+        "omega_d_rad_s",
+        "phase_rad",
+    ] {
+        assert!(
+            p[key].is_number() && v["standard_errors"][key].is_number(),
+            "{key}"
+        );
+    }
+    // A 0.02 rad swing: the amplitude correction is 2.5e-5, far below the noise.
+    let g = f(p, "g_m_s2");
+    assert!((g / 9.80665 - 1.0).abs() < 1e-3, "{g}");
+    assert!((f(p, "offset_rad") - 0.01).abs() < 1e-3);
+    assert_eq!(
+        std::fs::read_to_string(&residuals).unwrap().lines().count(),
+        801
+    );
+}
+
+#[test]
+fn beats_like_a_timegrapher() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("time_s\n");
+    let beat = 0.2 / (1.0 + 8.0 / 86_400.0); // 18,000 beats/hour, 8 s/day fast
+    for i in 0..3000 {
+        if i == 500 {
+            continue; // a missed beat
+        }
+        let tock = if i % 2 == 1 { 0.0004 } else { 0.0 };
+        text.push_str(&format!("{}\n", f64::from(i) * beat + tock));
+    }
+    let path = write(dir.path(), "beats.csv", &text);
+    let v = json(&["fit", "beats", path.to_str().unwrap()]);
+    for key in [
+        "mean_beat_s",
+        "beats_per_hour",
+        "rate_s_per_day",
+        "beat_error_ms",
+        "jitter_ms",
+    ] {
+        assert!(v[key].is_number(), "{key}");
+    }
+    assert_eq!(v["beats"], 3000);
+    assert_eq!(v["repaired"]["missed"], 1);
+    assert!((f(&v, "rate_s_per_day") - 8.0).abs() < 0.01, "{v}");
+    // Tocks 0.4 ms late: intervals of beat ± 0.4 ms, half their difference 0.4 ms.
+    assert!((f(&v, "beat_error_ms") - 0.4).abs() < 0.01);
+    assert!(v["allan_deviation"].as_array().unwrap().len() >= 5);
+    let with_bph = json(&["fit", "beats", path.to_str().unwrap(), "--bph", "18000"]);
+    assert_eq!(with_bph["rate_s_per_day"], v["rate_s_per_day"]);
+}
+
+#[test]
+fn bad_files_name_the_file_the_line_and_the_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let bad = |name: &str, text: &str, what: &[&str]| {
+        let path = write(d, name, text);
+        let m = refuses(&["fit", "decay", path.to_str().unwrap()], name);
+        for w in what {
+            assert!(m.contains(w), "{m} should mention {w}");
+        }
+    };
+    bad(
+        "missing.csv",
+        "time_s,amp\n0,1\n1,0.9\n2,0.8\n",
+        &["amplitude_deg", "amplitude"],
+    );
+    bad(
+        "text.csv",
+        "time_s,amplitude_deg\n0,3\n1,abc\n2,2.8\n",
+        &["line 3", "amplitude_deg", "abc"],
+    );
+    bad(
+        "unsorted.csv",
+        "time_s,amplitude_deg\n0,3\n2,2.9\n1,2.8\n3,2.7\n",
+        &["line 4", "time_s", "sort"],
+    );
+    bad(
+        "few.csv",
+        "time_s,amplitude_deg\n0,3\n1,2.9\n",
+        &["2 points"],
+    );
+    bad(
+        "negative.csv",
+        "time_s,amplitude_deg\n0,3\n1,-2.9\n2,2.8\n3,2.7\n",
+        &["line 3", "amplitude_deg", "positive"],
+    );
+    bad(
+        "ragged.csv",
+        "time_s,amplitude_deg\n0,3\n1\n2,2.8\n",
+        &["line 3"],
+    );
+    let missing = d.join("nowhere.csv");
+    refuses(&["fit", "decay", missing.to_str().unwrap()], "nowhere.csv");
+    let beats = write(d, "beats.csv", "time_s\n0\n1\n");
+    refuses(&["fit", "beats", beats.to_str().unwrap()], "beats.csv");
+    let video = write(d, "video.csv", "time_s,angle_deg\n0,1\n0.01,x\n");
+    refuses(&["fit", "trajectory", video.to_str().unwrap()], "line 3");
+}

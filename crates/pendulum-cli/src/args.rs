@@ -78,6 +78,9 @@ pub struct FitDecayArgs {
     pub mass: Option<String>,
     #[command(flatten)]
     pub gravity: GravityArgs,
+    /// Plot the data, the fitted curves and the residuals to this file (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<std::path::PathBuf>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -98,6 +101,9 @@ pub struct FitTrajectoryArgs {
     /// Write the residuals to this CSV file (time_s,residual_rad).
     #[arg(long, value_name = "FILE.csv")]
     pub residuals: Option<std::path::PathBuf>,
+    /// Plot the data, the fitted curves and the residuals to this file (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<std::path::PathBuf>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -120,6 +126,9 @@ pub struct FitBeatsArgs {
     /// The nominal period (two beats).
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub period: Option<String>,
+    /// Plot the data, the fitted curves and the residuals to this file (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<std::path::PathBuf>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -175,6 +184,10 @@ pub struct PeriodArgs {
     /// Terms of the seed's power series in sin²(A0/2) to compare with.
     #[arg(long, value_name = "N", default_value_t = 3)]
     pub series_terms: u32,
+    /// Plot T/T0 (exact, series of 1 to 5 terms, small-angle) and the
+    /// circular error against amplitude to this file (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     #[command(flatten)]
@@ -312,6 +325,9 @@ pub struct DampedArgs {
     /// Allow more than 10^8 trajectory samples.
     #[arg(long)]
     pub force: bool,
+    /// Plot θ(t) with its envelope and turning points to this file (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<std::path::PathBuf>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -370,6 +386,12 @@ pub struct SimulateArgs {
     /// No progress bar.
     #[arg(long, short)]
     pub quiet: bool,
+    /// Plot the amplitude and the rate against time to this file (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<std::path::PathBuf>,
+    /// Plot the phase portrait, θ' against θ, to this file (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub phase_plot: Option<std::path::PathBuf>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,

@@ -9,6 +9,7 @@ mod data;
 mod error;
 mod file;
 mod output;
+mod plot;
 mod units;
 
 use clap::error::ErrorKind;

@@ -188,6 +188,17 @@ impl DampedPendulum {
         out
     }
 
+    /// The envelope of the swing released from rest at `amplitude`:
+    /// `A0 e^{-ζω_n t} / sqrt(1 - ζ²)` (the seed's form of the free
+    /// vibration); `None` unless underdamped.
+    pub fn envelope(&self, amplitude: f64, t: f64) -> Option<f64> {
+        let factor = self.damping.damped_frequency_factor()?;
+        Some(
+            amplitude * (-self.damping.zeta() * self.natural_angular_frequency() * t).exp()
+                / factor,
+        )
+    }
+
     /// The amplitude lost over one full period from `amplitude`, exactly:
     /// `A (1 - e^{-δ})`, with `δ` the logarithmic decrement. `None` unless
     /// underdamped.

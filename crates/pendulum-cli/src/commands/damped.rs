@@ -6,6 +6,7 @@ use crate::args::DampedArgs;
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
+use crate::plot::{render, Figure, Panel, Series, Target};
 use pendulum_theory::damped::{DampedPendulum, Extremum, Regime};
 use pendulum_theory::energy::{energy_budget, EnergyBudget};
 use pendulum_theory::friction::{DryFriction, RunDown};
@@ -83,6 +84,11 @@ struct Results {
 }
 
 pub fn run(args: &DampedArgs) -> Result<String, CliError> {
+    let plot = args
+        .plot
+        .as_deref()
+        .map(|p| Target::new(p, "--plot"))
+        .transpose()?;
     let swing = common::swing(&args.swing)?;
     let (pendulum, amplitude, mass) = (swing.pendulum, swing.amplitude, swing.mass);
     let damping = swing.damping.ok_or_else(|| {
@@ -122,6 +128,11 @@ pub fn run(args: &DampedArgs) -> Result<String, CliError> {
         Some(path) => Some(write_trajectory(args, path, &results)?),
         None => None,
     };
+    if let Some(target) = &plot {
+        let t0 = results.pendulum.small_angle_period();
+        let duration = common::duration(args.duration.as_deref(), 10.0 * t0)?;
+        render(target, &figure(&results, duration))?;
+    }
     let json = to_json(&results, trajectory);
     if args.json {
         output::json(&json)
@@ -320,4 +331,49 @@ fn write_trajectory(
         duration_s: duration,
         sample_interval_s: interval,
     })
+}
+
+/// θ(t) with its envelope (viscous damping only) and the turning points.
+fn figure(r: &Results, duration: f64) -> Figure {
+    let a0 = r.amplitude.radians();
+    let mut sampler = r.friction.sampler(a0);
+    let motion: Vec<(f64, f64)> = (0..=2000)
+        .map(|i| {
+            let t = duration * f64::from(i) / 2000.0;
+            (t, sampler.state_at(t).angle.to_degrees())
+        })
+        .collect();
+    let mut series = vec![Series::line("θ(t)", motion)];
+    if r.friction.friction_angle() == 0.0 {
+        let envelope: Vec<(f64, f64)> = (0..=200)
+            .filter_map(|i| {
+                let t = duration * f64::from(i) / 200.0;
+                r.damped.envelope(a0, t).map(|e| (t, e.to_degrees()))
+            })
+            .collect();
+        if !envelope.is_empty() {
+            let lower = envelope.iter().map(|&(t, e)| (t, -e)).collect();
+            series.push(Series::line("envelope A0 e^(-ζωt)/√(1-ζ²)", envelope));
+            series.push(Series::line("", lower).colored(1));
+        }
+    }
+    let turns: Vec<(f64, f64)> = r
+        .extrema
+        .iter()
+        .filter(|e| e.time <= duration)
+        .map(|e| (e.time, e.angle.to_degrees()))
+        .collect();
+    series.push(Series::dots("turning points", turns));
+    Figure {
+        panels: vec![Panel::new(
+            format!(
+                "Damped pendulum: ζ = {}, {}",
+                num(r.damped.damping.zeta(), 4),
+                r.damped.regime().name()
+            ),
+            "time (s)",
+            "angle (°)",
+            series,
+        )],
+    }
 }

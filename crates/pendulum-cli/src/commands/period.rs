@@ -5,8 +5,9 @@ use super::common::{self, ResolvedGravity};
 use crate::args::PeriodArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
+use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::{parse_range, Dimension};
-use pendulum_theory::period::PeriodAnalysis;
+use pendulum_theory::period::{circular_error, period_ratio, period_ratio_series, PeriodAnalysis};
 use pendulum_theory::{Amplitude, Pendulum};
 use serde::Serialize;
 
@@ -59,9 +60,24 @@ struct PeriodCsv {
 const MAX_STEPS: u32 = 1_000_000;
 
 pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
+    let plot = args
+        .plot
+        .as_deref()
+        .map(|p| Target::new(p, "--plot"))
+        .transpose()?;
     let gravity = common::gravity(&args.gravity)?;
     let pendulum = common::pendulum(&args.length, &gravity)?;
     let amplitudes = amplitudes(args)?;
+    if let Some(target) = &plot {
+        let first = amplitudes[0].degrees();
+        let last = amplitudes[amplitudes.len() - 1].degrees();
+        let (from, to) = if amplitudes.len() > 1 {
+            (first.min(last), first.max(last))
+        } else {
+            (0.0, (2.0 * first).clamp(10.0, 170.0))
+        };
+        render(target, &figure(&pendulum, from, to))?;
+    }
     let analyses = amplitudes
         .iter()
         .map(|&a| PeriodAnalysis::new(pendulum, a, args.series_terms))
@@ -234,4 +250,53 @@ fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodAnal
         .collect();
     out.push_str(&output::table(&header, &cells));
     out
+}
+
+/// T/T0 against amplitude (exact, the seed's series with 1 to 5 terms, the
+/// small-angle value) above the circular error in s/day.
+fn figure(pendulum: &Pendulum, from_deg: f64, to_deg: f64) -> Figure {
+    let grid: Vec<Amplitude> = (0..=200)
+        .filter_map(|i| {
+            Amplitude::from_degrees(from_deg + (to_deg - from_deg) * f64::from(i) / 200.0).ok()
+        })
+        .collect();
+    let curve = |f: &dyn Fn(Amplitude) -> f64| {
+        grid.iter()
+            .map(|&a| (a.degrees(), f(a)))
+            .collect::<Vec<_>>()
+    };
+    let mut ratio = vec![Series::line("exact, 2K/π", curve(&|a| period_ratio(a)))];
+    for terms in 1..=5 {
+        let label = if terms == 1 {
+            "small-angle (1 term)".to_string()
+        } else {
+            format!("series, {terms} terms")
+        };
+        ratio.push(Series::line(
+            label,
+            curve(&|a| period_ratio_series(a, terms).map_or(f64::NAN, |s| s.period_ratio)),
+        ));
+    }
+    let day = pendulum_theory::period::SECONDS_PER_DAY;
+    Figure {
+        panels: vec![
+            Panel::new(
+                format!("Period at amplitude, l = {} m", num(pendulum.length_m(), 6)),
+                "amplitude (°)",
+                "T / T0",
+                ratio,
+            )
+            .legend_upper_left(),
+            Panel::new(
+                "Circular error: what the clock loses against a vanishing swing",
+                "amplitude (°)",
+                "circular error (s/day)",
+                vec![Series::line(
+                    "86400 (1 - T0/T)",
+                    curve(&|a| day * circular_error(a)),
+                )],
+            )
+            .legend_upper_left(),
+        ],
+    }
 }

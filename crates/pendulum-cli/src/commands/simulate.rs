@@ -6,6 +6,7 @@ use crate::args::{MethodArg, SimulateArgs};
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
+use crate::plot::{render, thin, Figure, Panel, Series, Target};
 use crate::units::parse_number;
 use indicatif::{ProgressBar, ProgressStyle};
 use pendulum_theory::damped::State;
@@ -19,6 +20,11 @@ use serde::Serialize;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
+
+/// Whole periods drawn in the phase portrait (evenly chosen over the run).
+const PHASE_PERIODS: u64 = 200;
+/// Points kept for the amplitude and rate plot.
+const PLOT_POINTS: usize = 4000;
 
 /// Longer simulated durations need `--force`, s.
 const MAX_DURATION: f64 = 1e9;
@@ -52,6 +58,12 @@ struct SimulateJson {
 }
 
 pub fn run(args: &SimulateArgs) -> Result<String, CliError> {
+    // Refuse a bad plot name before any work.
+    for (path, flag) in [(&args.plot, "--plot"), (&args.phase_plot, "--phase-plot")] {
+        if let Some(p) = path {
+            Target::new(p, flag)?;
+        }
+    }
     let swing = common::swing(&args.swing)?;
     let (pendulum, amplitude) = (swing.pendulum, swing.amplitude);
     let damping = swing.damping.unwrap_or(Damping::NONE);
@@ -83,6 +95,7 @@ pub fn run(args: &SimulateArgs) -> Result<String, CliError> {
         SimulationError::Input(e) => CliError::input(flag_for(e.quantity), &e),
     })?;
     let elapsed = started.elapsed().as_secs_f64();
+    observer.draw(args)?;
     let files = observer.close()?;
     let result = SimulateJson {
         method: outcome.method.name(),
@@ -145,6 +158,8 @@ fn options(args: &SimulateArgs, pendulum: &Pendulum) -> Result<Options, CliError
         ));
     }
     let sample_interval = match &args.trajectory {
+        // The phase portrait alone: 100 samples a period.
+        None if args.phase_plot.is_some() => Some(pendulum.small_angle_period() / 100.0),
         None => None,
         Some(_) => {
             let default = pendulum.small_angle_period() / 100.0;
@@ -178,13 +193,20 @@ struct CliObserver {
     progress: Progress,
     interrupted: Arc<AtomicBool>,
     error: Option<CliError>,
+    /// For the plots: the previous turning point's time, half the small-
+    /// angle period, (time, amplitude °, rate s/day) of every turning point,
+    /// and the samples (θ °, θ' °/s) of every `phase_stride`-th period: whole
+    /// periods keep the portrait's curves smooth however long the run.
+    previous_turn: f64,
+    half_t0: f64,
+    turns: Option<Vec<(f64, f64, f64)>>,
+    phase: Option<Vec<Vec<(f64, f64)>>>,
+    phase_stride: u64,
+    phase_period: u64,
 }
 
 struct SwingsFile {
     file: CsvFile,
-    previous_time: f64,
-    /// Half the small-angle period: the beat the rate is measured against.
-    half_t0: f64,
 }
 
 impl CliObserver {
@@ -201,8 +223,6 @@ impl CliObserver {
                     "--swings",
                     "index,time_s,angle_rad,half_period_s,rate_s_per_day",
                 )?,
-                previous_time: 0.0,
-                half_t0: 0.5 * pendulum.small_angle_period(),
             }),
             None => None,
         };
@@ -214,12 +234,19 @@ impl CliObserver {
             )?),
             None => None,
         };
+        let periods = (options.duration / pendulum.small_angle_period()).ceil() as u64;
         Ok(Self {
             swings,
             trajectory,
             progress: Progress::new(options.duration, args.quiet),
             interrupted,
             error: None,
+            previous_turn: 0.0,
+            half_t0: 0.5 * pendulum.small_angle_period(),
+            turns: args.plot.as_ref().map(|_| Vec::new()),
+            phase: args.phase_plot.as_ref().map(|_| Vec::new()),
+            phase_stride: periods.div_ceil(PHASE_PERIODS).max(1),
+            phase_period: u64::MAX,
         })
     }
 
@@ -232,6 +259,56 @@ impl CliObserver {
                 false
             }
         }
+    }
+
+    /// Draws the plots asked for.
+    fn draw(&self, args: &SimulateArgs) -> Result<(), CliError> {
+        if let (Some(path), Some(turns)) = (&args.plot, &self.turns) {
+            let amplitude = thin(turns.iter().map(|&(t, a, _)| (t, a)).collect(), PLOT_POINTS);
+            let rate = thin(turns.iter().map(|&(t, _, r)| (t, r)).collect(), PLOT_POINTS);
+            let figure = Figure {
+                panels: vec![
+                    Panel::new(
+                        "Amplitude as the swing decays",
+                        "time (s)",
+                        "amplitude (°)",
+                        vec![Series::line("amplitude at each turning point", amplitude)],
+                    ),
+                    Panel::new(
+                        "Rate each half swing implies, against the small-angle beat",
+                        "time (s)",
+                        "rate (s/day)",
+                        vec![Series::line("86400 (1 - (T0/2) / half period)", rate)],
+                    ),
+                ],
+            };
+            render(&Target::new(path, "--plot")?, &figure)?;
+        }
+        if let (Some(path), Some(phase)) = (&args.phase_plot, &self.phase) {
+            // One curve per period kept, all in one colour.
+            let series = phase
+                .iter()
+                .enumerate()
+                .map(|(i, period)| {
+                    let label = if i == 0 {
+                        "(θ, θ'), one curve per period shown"
+                    } else {
+                        ""
+                    };
+                    Series::line(label, period.clone()).colored(0)
+                })
+                .collect();
+            let figure = Figure {
+                panels: vec![Panel::new(
+                    "Phase portrait",
+                    "angle θ (°)",
+                    "angular velocity θ' (°/s)",
+                    series,
+                )],
+            };
+            render(&Target::new(path, "--phase-plot")?, &figure)?;
+        }
+        Ok(())
     }
 
     /// Commits the files; returns their paths.
@@ -248,13 +325,16 @@ impl CliObserver {
 
 impl Observer for CliObserver {
     fn turning_point(&mut self, point: &TurningPoint) -> Action {
+        // Row 0 is the release: no half period and no rate.
+        let half = (point.index > 0).then_some(point.time - self.previous_turn);
+        let rate = half.map(|h| 86_400.0 * (1.0 - self.half_t0 / h));
+        self.previous_turn = point.time;
+        if let (Some(turns), Some(r)) = (self.turns.as_mut(), rate) {
+            turns.push((point.time, point.angle.abs().to_degrees(), r));
+        }
         let Some(s) = self.swings.as_mut() else {
             return Action::Continue;
         };
-        // Row 0 is the release: no half period and no rate.
-        let half = (point.index > 0).then_some(point.time - s.previous_time);
-        let rate = half.map(|h| 86_400.0 * (1.0 - s.half_t0 / h));
-        s.previous_time = point.time;
         let result = s
             .file
             .integer(point.index)
@@ -272,6 +352,20 @@ impl Observer for CliObserver {
     }
 
     fn sample(&mut self, time: f64, state: &State) -> bool {
+        if let Some(phase) = self.phase.as_mut() {
+            let period = (time / (2.0 * self.half_t0)) as u64;
+            if period % self.phase_stride == 0 {
+                if period != self.phase_period {
+                    phase.push(Vec::with_capacity(101));
+                    self.phase_period = period;
+                }
+                let point = (
+                    state.angle.to_degrees(),
+                    state.angular_velocity.to_degrees(),
+                );
+                phase.last_mut().expect("pushed above").push(point);
+            }
+        }
         let Some(file) = self.trajectory.as_mut() else {
             return true;
         };

@@ -34,6 +34,31 @@ pub enum Command {
     Simulate(Box<SimulateArgs>),
     /// Fit the theory to measurements: amplitude decay, tracked angle, beat times.
     Fit(FitArgs),
+    /// The one-command analysis of a pendulum, as an HTML page with figures
+    /// (default: a seconds pendulum at 3° with Q = 10,000).
+    Report(ReportArgs),
+}
+
+/// `pendulum report`.
+#[derive(Debug, Args)]
+pub struct ReportArgs {
+    /// Pendulum length [default: 0.99362 m, a seconds pendulum].
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length: Option<String>,
+    /// Working amplitude [default: 3°].
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub amplitude: Option<String>,
+    /// Damping [default: Q = 10,000].
+    #[command(flatten)]
+    pub damping: DampingArgs,
+    /// Bob mass, for the energy budget [default: 5 kg].
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub mass: Option<String>,
+    /// Folder to write index.html and its figures in.
+    #[arg(long, value_name = "DIR", default_value = "pendulum-report")]
+    pub output: std::path::PathBuf,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
 }
 
 /// `pendulum fit`.

@@ -6,7 +6,7 @@ use crate::args::DampedArgs;
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
-use crate::plot::{render, Figure, Panel, Series, Target};
+use crate::plot::{render, Figure, Panel, Points, Series, Target};
 use pendulum_theory::damped::{DampedPendulum, Extremum, Regime};
 use pendulum_theory::energy::{energy_budget, EnergyBudget};
 use pendulum_theory::friction::{DryFriction, RunDown};
@@ -345,15 +345,9 @@ fn figure(r: &Results, duration: f64) -> Figure {
         .collect();
     let mut series = vec![Series::line("θ(t)", motion)];
     if r.friction.friction_angle() == 0.0 {
-        let envelope: Vec<(f64, f64)> = (0..=200)
-            .filter_map(|i| {
-                let t = duration * f64::from(i) / 200.0;
-                r.damped.envelope(a0, t).map(|e| (t, e.to_degrees()))
-            })
-            .collect();
-        if !envelope.is_empty() {
-            let lower = envelope.iter().map(|&(t, e)| (t, -e)).collect();
-            series.push(Series::line("envelope A0 e^(-ζωt)/√(1-ζ²)", envelope));
+        let (upper, lower) = envelope_points(&r.damped, a0, duration);
+        if !upper.is_empty() {
+            series.push(Series::line("envelope A0 e^(-ζωt)/√(1-ζ²)", upper));
             series.push(Series::line("", lower).colored(1));
         }
     }
@@ -376,4 +370,17 @@ fn figure(r: &Results, duration: f64) -> Figure {
             series,
         )],
     }
+}
+
+/// The envelope `±A0 e^{-ζωt}/sqrt(1-ζ²)` in degrees over `[0, duration]`
+/// (empty unless underdamped).
+pub fn envelope_points(damped: &DampedPendulum, a0: f64, duration: f64) -> (Points, Points) {
+    let upper: Vec<(f64, f64)> = (0..=200)
+        .filter_map(|i| {
+            let t = duration * f64::from(i) / 200.0;
+            damped.envelope(a0, t).map(|e| (t, e.to_degrees()))
+        })
+        .collect();
+    let lower = upper.iter().map(|&(t, e)| (t, -e)).collect();
+    (upper, lower)
 }

@@ -5,6 +5,10 @@ use crate::args::FitBeatsArgs;
 use crate::data::{stream_columns, Wanted};
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
+use crate::plot::{render, Figure, Panel, Series, Target};
+
+/// Intervals kept for the plot, at most.
+const PLOT_LIMIT: usize = 8192;
 use crate::units::{parse_number, Dimension};
 use pendulum_theory::fitting::beats::BeatStream;
 use serde::Serialize;
@@ -38,6 +42,11 @@ struct AllanJson {
 }
 
 pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
+    let plot = args
+        .plot
+        .as_deref()
+        .map(|p| Target::new(p, "--plot"))
+        .transpose()?;
     let nominal = match (&args.bph, &args.period) {
         (Some(b), _) => {
             let bph = parse_number(b).map_err(|e| CliError::flag("--bph", e))?;
@@ -69,8 +78,26 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     let file = args.file.display().to_string();
     let mut stream = BeatStream::new();
     let mut previous = f64::NEG_INFINITY;
+    // For the plot: every `stride`-th interval, the stride doubling whenever
+    // the kept points reach their limit, so memory stays bounded.
+    let mut intervals: Vec<(f64, f64)> = Vec::new();
+    let (mut stride, mut seen) = (1_u64, 0_u64);
     stream_columns(&args.file, &[time], |row, line| {
         let t = row[0];
+        if plot.is_some() && previous.is_finite() {
+            if seen % stride == 0 {
+                intervals.push((t, 1e3 * (t - previous)));
+                if intervals.len() >= PLOT_LIMIT {
+                    stride *= 2;
+                    let mut keep = 0;
+                    intervals.retain(|_| {
+                        keep += 1;
+                        keep % 2 == 1
+                    });
+                }
+            }
+            seen += 1;
+        }
         if t <= previous {
             return Err(CliError::other(format!(
                 "{file}: line {line}, column time_s: {t} is not after the previous {previous}; sort the file by time_s"
@@ -84,6 +111,43 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     let a = stream
         .finish(nominal)
         .map_err(|e| CliError::other(format!("{file}: {e}")))?;
+    if let Some(target) = &plot {
+        let mean = vec![
+            (intervals.first().map_or(0.0, |p| p.0), 1e3 * a.mean_beat),
+            (intervals.last().map_or(1.0, |p| p.0), 1e3 * a.mean_beat),
+        ];
+        // Repaired gaps (missed beats) would squash the scale: show the
+        // intervals within half a beat of the mean.
+        let intervals: Vec<(f64, f64)> = intervals
+            .into_iter()
+            .filter(|p| (p.1 - 1e3 * a.mean_beat).abs() < 500.0 * a.mean_beat)
+            .collect();
+        let allan = a
+            .allan_deviation
+            .iter()
+            .map(|p| (p.tau.log10(), (86_400.0 * p.deviation).log10()))
+            .collect();
+        let figure = Figure {
+            panels: vec![
+                Panel::new(
+                    "Beat intervals (ticks and tocks)",
+                    "time (s)",
+                    "interval (ms)",
+                    vec![
+                        Series::dots("interval", intervals),
+                        Series::line("mean beat", mean),
+                    ],
+                ),
+                Panel::new(
+                    "Allan deviation of the rate",
+                    "log10 averaging time (s)",
+                    "log10 deviation (s/day)",
+                    vec![Series::line("overlapping Allan deviation", allan)],
+                ),
+            ],
+        };
+        render(target, &figure)?;
+    }
     let result = BeatsJson {
         file,
         beats: a.beats,

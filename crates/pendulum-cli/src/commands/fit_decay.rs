@@ -5,6 +5,7 @@ use crate::args::FitDecayArgs;
 use crate::data::{read_columns, Wanted, DEG};
 use crate::error::CliError;
 use crate::output::{self, num};
+use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::Dimension;
 use pendulum_theory::energy::energy_budget;
 use pendulum_theory::fitting::decay::{
@@ -40,6 +41,11 @@ struct ModelJson {
 }
 
 pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
+    let plot = args
+        .plot
+        .as_deref()
+        .map(|p| Target::new(p, "--plot"))
+        .transpose()?;
     let pendulum = match &args.length {
         Some(l) => Some(common::pendulum(l, &common::gravity(&args.gravity)?)?),
         None => None,
@@ -105,6 +111,9 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         return Err(CliError::other(format!("{}: {e}", columns.file)));
     }
     let best = preferred(&fits);
+    if let Some(target) = &plot {
+        render(target, &figure(&time, amplitude, &fits, best))?;
+    }
     let result = DecayJson {
         file: columns.file.clone(),
         points: time.len(),
@@ -190,4 +199,44 @@ fn text(r: &DecayJson) -> String {
         ));
     }
     out
+}
+
+/// The data with every fitted law, and the preferred law's residuals.
+fn figure(time: &[f64], amplitude: &[f64], fits: &[DecayFit], best: Option<DecayModel>) -> Figure {
+    let data: Vec<(f64, f64)> = time
+        .iter()
+        .zip(amplitude)
+        .map(|(t, a)| (*t, a.to_degrees()))
+        .collect();
+    let (t0, t1) = (time[0], time[time.len() - 1]);
+    let mut curves = vec![Series::dots("measured", data)];
+    for f in fits {
+        let curve = (0..=300)
+            .map(|i| {
+                let t = t0 + (t1 - t0) * f64::from(i) / 300.0;
+                (t, f.model.amplitude(t, &f.fit.parameters).to_degrees())
+            })
+            .collect();
+        curves.push(Series::line(f.model.name(), curve));
+    }
+    let mut panels = vec![Panel::new(
+        "Amplitude decay and the fitted laws",
+        "time (s)",
+        "amplitude (°)",
+        curves,
+    )];
+    if let Some(f) = fits.iter().find(|f| Some(f.model) == best) {
+        let residuals = time
+            .iter()
+            .zip(&f.fit.residuals)
+            .map(|(t, r)| (*t, r.to_degrees()))
+            .collect();
+        panels.push(Panel::new(
+            format!("Residuals of the preferred law ({})", f.model.name()),
+            "time (s)",
+            "measured - fitted (°)",
+            vec![Series::dots("residual", residuals)],
+        ));
+    }
+    Figure { panels }
 }

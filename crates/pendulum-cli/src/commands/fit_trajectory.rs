@@ -7,6 +7,7 @@ use crate::data::{read_columns, Wanted, DEG};
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num};
+use crate::plot::{render, Figure, Panel, Series, Target};
 use pendulum_theory::fitting::trajectory::{fit_trajectory, TrajectoryModel};
 use pendulum_theory::STANDARD_GRAVITY;
 use serde::Serialize;
@@ -25,6 +26,11 @@ struct TrajectoryJson {
 }
 
 pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
+    let plot = args
+        .plot
+        .as_deref()
+        .map(|p| Target::new(p, "--plot"))
+        .transpose()?;
     let length = args
         .length
         .as_deref()
@@ -50,6 +56,9 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     let (time, theta) = (&columns.values[0], &columns.values[1]);
     let fit = fit_trajectory(model, time, theta)
         .map_err(|e| CliError::other(format!("{}: {e}", columns.file)))?;
+    if let Some(target) = &plot {
+        render(target, &figure(time, theta, &fit.fit.residuals))?;
+    }
     let names = fit.names();
     let mut parameters: BTreeMap<&'static str, f64> = names
         .iter()
@@ -120,4 +129,40 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         num(result.residual_rms_rad.to_degrees(), 3)
     ));
     Ok(out)
+}
+
+/// The tracked angle with the fitted curve (the data less the residuals),
+/// and the residuals.
+fn figure(time: &[f64], theta: &[f64], residuals: &[f64]) -> Figure {
+    let deg = |v: f64| v.to_degrees();
+    let data = time.iter().zip(theta).map(|(t, y)| (*t, deg(*y))).collect();
+    let fitted = time
+        .iter()
+        .zip(theta.iter().zip(residuals))
+        .map(|(t, (y, r))| (*t, deg(y - r)))
+        .collect();
+    let res = time
+        .iter()
+        .zip(residuals)
+        .map(|(t, r)| (*t, deg(*r)))
+        .collect();
+    Figure {
+        panels: vec![
+            Panel::new(
+                "Tracked angle and the fitted motion",
+                "time (s)",
+                "angle (°)",
+                vec![
+                    Series::dots("measured", data),
+                    Series::line("fitted", fitted),
+                ],
+            ),
+            Panel::new(
+                "Residuals",
+                "time (s)",
+                "measured - fitted (°)",
+                vec![Series::dots("residual", res)],
+            ),
+        ],
+    }
 }

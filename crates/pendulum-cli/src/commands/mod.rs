@@ -3,14 +3,15 @@
 
 mod amplitude;
 mod common;
-mod damped;
+pub(crate) mod damped;
 mod fit_beats;
 mod fit_decay;
 mod fit_trajectory;
 mod gravity;
 mod length;
-mod period;
-mod simulate;
+pub(crate) mod period;
+mod report;
+pub(crate) mod simulate;
 
 use crate::args::Command;
 use crate::error::CliError;
@@ -24,6 +25,7 @@ pub fn run(command: &Command) -> Result<String, CliError> {
         Command::Gravity(args) => gravity::run(args),
         Command::Damped(args) => damped::run(args),
         Command::Simulate(args) => simulate::run(args),
+        Command::Report(args) => report::run(args),
         Command::Fit(args) => match &args.what {
             crate::args::FitCommand::Decay(a) => fit_decay::run(a),
             crate::args::FitCommand::Trajectory(a) => fit_trajectory::run(a),

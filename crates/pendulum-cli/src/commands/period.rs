@@ -254,7 +254,7 @@ fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodAnal
 
 /// T/T0 against amplitude (exact, the seed's series with 1 to 5 terms, the
 /// small-angle value) above the circular error in s/day.
-fn figure(pendulum: &Pendulum, from_deg: f64, to_deg: f64) -> Figure {
+pub fn figure(pendulum: &Pendulum, from_deg: f64, to_deg: f64) -> Figure {
     let grid: Vec<Amplitude> = (0..=200)
         .filter_map(|i| {
             Amplitude::from_degrees(from_deg + (to_deg - from_deg) * f64::from(i) / 200.0).ok()

@@ -264,25 +264,7 @@ impl CliObserver {
     /// Draws the plots asked for.
     fn draw(&self, args: &SimulateArgs) -> Result<(), CliError> {
         if let (Some(path), Some(turns)) = (&args.plot, &self.turns) {
-            let amplitude = thin(turns.iter().map(|&(t, a, _)| (t, a)).collect(), PLOT_POINTS);
-            let rate = thin(turns.iter().map(|&(t, _, r)| (t, r)).collect(), PLOT_POINTS);
-            let figure = Figure {
-                panels: vec![
-                    Panel::new(
-                        "Amplitude as the swing decays",
-                        "time (s)",
-                        "amplitude (°)",
-                        vec![Series::line("amplitude at each turning point", amplitude)],
-                    ),
-                    Panel::new(
-                        "Rate each half swing implies, against the small-angle beat",
-                        "time (s)",
-                        "rate (s/day)",
-                        vec![Series::line("86400 (1 - (T0/2) / half period)", rate)],
-                    ),
-                ],
-            };
-            render(&Target::new(path, "--plot")?, &figure)?;
+            render(&Target::new(path, "--plot")?, &rundown_figure(turns))?;
         }
         if let (Some(path), Some(phase)) = (&args.phase_plot, &self.phase) {
             // One curve per period kept, all in one colour.
@@ -486,4 +468,27 @@ fn text(r: &SimulateJson, outcome: &Outcome) -> String {
         s.row("Trajectory file", f.clone());
     }
     s.render()
+}
+
+/// Amplitude and rate against time from the turning points
+/// `(time s, amplitude °, rate s/day)`, thinned for drawing.
+pub fn rundown_figure(turns: &[(f64, f64, f64)]) -> Figure {
+    let amplitude = thin(turns.iter().map(|&(t, a, _)| (t, a)).collect(), PLOT_POINTS);
+    let rate = thin(turns.iter().map(|&(t, _, r)| (t, r)).collect(), PLOT_POINTS);
+    Figure {
+        panels: vec![
+            Panel::new(
+                "Amplitude as the swing decays",
+                "time (s)",
+                "amplitude (°)",
+                vec![Series::line("amplitude at each turning point", amplitude)],
+            ),
+            Panel::new(
+                "Rate each half swing implies, against the small-angle beat",
+                "time (s)",
+                "rate (s/day)",
+                vec![Series::line("86400 (1 - (T0/2) / half period)", rate)],
+            ),
+        ],
+    }
 }

@@ -65,6 +65,9 @@ impl Target {
     }
 }
 
+/// Points of a curve, in the panel's units.
+pub type Points = Vec<(f64, f64)>;
+
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Style {

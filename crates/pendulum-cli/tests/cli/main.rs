@@ -4,5 +4,6 @@
 mod damped;
 mod fit;
 mod period;
+mod plot;
 mod simulate;
 mod util;

@@ -1,0 +1,343 @@
+//! `pendulum report`: the one-command analysis of a pendulum. Everything
+//! the other commands compute, for one pendulum, as an HTML page with SVG
+//! figures beside it: self-contained, readable without network or script.
+
+use super::common;
+use super::damped::envelope_points;
+use super::period::figure as period_figure;
+use super::simulate::rundown_figure;
+use crate::args::ReportArgs;
+use crate::error::CliError;
+use crate::file::AtomicFile;
+use crate::output::num;
+use crate::plot::{render, Figure, Panel, Series, Target};
+use crate::units::Dimension;
+use pendulum_theory::damped::DampedPendulum;
+use pendulum_theory::damping::Damping;
+use pendulum_theory::energy::energy_budget;
+use pendulum_theory::friction::DryFriction;
+use pendulum_theory::period::PeriodAnalysis;
+use pendulum_theory::simulation::{
+    simulate, Action, Method, Model, Observer, Options, TurningPoint,
+};
+use std::io::Write;
+use std::path::Path;
+
+/// The default pendulum: a seconds pendulum.
+const DEFAULT_LENGTH: &str = "0.99362m";
+const DEFAULT_AMPLITUDE: &str = "3deg";
+const DEFAULT_Q: f64 = 10_000.0;
+const DEFAULT_MASS_KG: f64 = 5.0;
+
+/// Collects (time, amplitude °, rate s/day) at each turning point.
+struct Turns {
+    half_t0: f64,
+    previous: f64,
+    points: Vec<(f64, f64, f64)>,
+}
+
+impl Observer for Turns {
+    fn turning_point(&mut self, p: &TurningPoint) -> Action {
+        if p.index > 0 {
+            let half = p.time - self.previous;
+            let rate = 86_400.0 * (1.0 - self.half_t0 / half);
+            self.points.push((p.time, p.angle.abs().to_degrees(), rate));
+        }
+        self.previous = p.time;
+        Action::Continue
+    }
+}
+
+/// One line of the page's table: quantity, value with unit, note.
+struct Row(&'static str, String, &'static str);
+
+pub fn run(args: &ReportArgs) -> Result<String, CliError> {
+    let gravity = common::gravity(&args.gravity)?;
+    let pendulum = common::pendulum(args.length.as_deref().unwrap_or(DEFAULT_LENGTH), &gravity)?;
+    let amplitude = common::amplitude(
+        "--amplitude",
+        args.amplitude.as_deref().unwrap_or(DEFAULT_AMPLITUDE),
+    )?;
+    let mass = match &args.mass {
+        Some(t) => common::quantity("--mass", t, Dimension::Mass)?,
+        None => DEFAULT_MASS_KG,
+    };
+    let damping = match common::damping(&args.damping, Some(mass), &pendulum)? {
+        Some(d) => d,
+        None => Damping::from_q(DEFAULT_Q).expect("a valid default"),
+    };
+    let folder = prepare(&args.output)?;
+
+    // Section 1-6: the exact period around the working amplitude.
+    let analysis = PeriodAnalysis::new(pendulum, amplitude, 3)
+        .map_err(|e| CliError::input("--amplitude", &e))?;
+    let a_deg = amplitude.degrees();
+    write_figure(
+        &folder,
+        "period.svg",
+        &period_figure(&pendulum, 0.0, (2.0 * a_deg).clamp(6.0, 170.0)),
+    )?;
+
+    // Section 1-4: the linear decay, its Q and the energy budget.
+    let damped = DampedPendulum::new(pendulum, damping);
+    let a0 = amplitude.radians();
+    let friction = DryFriction::new(damped, 0.0).expect("no friction is valid");
+    let half_loss = friction.half_swing_loss(a0);
+    let budget = match (half_loss, damped.damped_period()) {
+        (Some(loss), Some(period)) => energy_budget(&pendulum, mass, a0, loss, period).ok(),
+        _ => None,
+    };
+    let half_life = damping.amplitude_half_life(&pendulum);
+    let decay_span = if half_life.is_finite() {
+        3.0 * half_life
+    } else {
+        100.0 * pendulum.small_angle_period()
+    };
+    write_figure(&folder, "decay.svg", &decay_figure(&damped, a0, decay_span))?;
+
+    // The full nonlinear run-down until the amplitude halves.
+    let model = Model::new(pendulum, damping, 0.0, 0.0).expect("valid model");
+    let run_duration = if half_life.is_finite() {
+        half_life
+    } else {
+        100.0 * pendulum.small_angle_period()
+    };
+    let options = Options {
+        duration: run_duration,
+        tolerance: 1e-8,
+        method: Method::Symplectic,
+        sample_interval: None,
+    };
+    let mut turns = Turns {
+        half_t0: 0.5 * pendulum.small_angle_period(),
+        previous: 0.0,
+        points: Vec::new(),
+    };
+    let outcome = simulate(&model, amplitude, &options, &mut turns)
+        .map_err(|e| CliError::other(e.to_string()))?;
+    write_figure(&folder, "rundown.svg", &rundown_figure(&turns.points))?;
+
+    let rate_start = turns.points.first().map_or(f64::NAN, |p| p.2);
+    let rate_end = turns.points.last().map_or(f64::NAN, |p| p.2);
+    let mut rows = vec![
+        Row("Length", format!("{} m", num(pendulum.length_m(), 8)), ""),
+        Row("Gravity", gravity.describe(), ""),
+        Row(
+            "Working amplitude",
+            format!("{}°", num(a_deg, 6)),
+            "either side of the vertical",
+        ),
+        Row(
+            "Period at that amplitude",
+            format!("{} s", num(analysis.period_s, 12)),
+            "exact: 4 sqrt(l/g) K(sin²(A0/2))",
+        ),
+        Row(
+            "Small-angle period",
+            format!("{} s", num(analysis.small_angle_period_s, 12)),
+            "2π sqrt(l/g)",
+        ),
+        Row(
+            "Beats per hour",
+            num(analysis.beats_per_hour, 9),
+            "a beat is half a period",
+        ),
+        Row(
+            "Circular error",
+            format!("{} s/day", num(analysis.circular_error_s_per_day(), 5)),
+            "lost against a vanishing swing",
+        ),
+        Row(
+            "… per degree of amplitude",
+            format!(
+                "{} s/day/°",
+                num(analysis.circular_error_s_per_day_per_deg(), 5)
+            ),
+            "how a change of swing moves the rate",
+        ),
+        Row("Damping ratio ζ", num(damping.zeta(), 5), "section 1-4"),
+        Row("Q", num(damping.q_factor(), 6), "1/(2ζ)"),
+    ];
+    if let Some(delta) = damping.log_decrement() {
+        rows.push(Row(
+            "Logarithmic decrement",
+            format!("{} per period", num(delta, 5)),
+            "2πζ/sqrt(1-ζ²)",
+        ));
+    }
+    if let (Some(exact), Some(approx)) = (
+        damped.amplitude_loss_per_period(a0),
+        damped.amplitude_loss_per_period_approx(a0),
+    ) {
+        rows.push(Row(
+            "Amplitude lost per period",
+            format!(
+                "{}° (first order {}°)",
+                num(exact.to_degrees(), 5),
+                num(approx.to_degrees(), 5)
+            ),
+            "A0 (1 - e^(-δ)), and the seed's first-order δ A0",
+        ));
+    }
+    rows.push(Row(
+        "Amplitude decay time",
+        format!("{} s", num(damping.decay_time(&pendulum), 6)),
+        "1/(ζ ω_n)",
+    ));
+    rows.push(Row(
+        "Amplitude half-life",
+        format!("{} s ({} min)", num(half_life, 6), num(half_life / 60.0, 4)),
+        "ln 2 × decay time",
+    ));
+    rows.push(Row(
+        "Bob mass",
+        format!("{} kg", num(mass, 4)),
+        "for the energy budget",
+    ));
+    if let Some(b) = budget {
+        rows.push(Row(
+            "Energy in the swing",
+            format!("{} J", num(b.energy, 5)),
+            "m g l (1 - cos A0)",
+        ));
+        rows.push(Row(
+            "Energy lost per period",
+            format!("{} J", num(b.loss_per_period, 5)),
+            "what the escapement must restore",
+        ));
+        rows.push(Row(
+            "Mean power",
+            format!("{} µW", num(1e6 * b.power, 5)),
+            "energy lost per period / period",
+        ));
+        rows.push(Row(
+            "Impulse per beat",
+            format!("{} kg m²/s", num(b.impulse_per_beat, 5)),
+            "given at the bottom of the swing",
+        ));
+    }
+    rows.push(Row(
+        "Simulated run-down",
+        format!(
+            "{} s, {} turning points",
+            num(outcome.final_time, 6),
+            outcome.swings
+        ),
+        "nonlinear, symplectic integrator",
+    ));
+    rows.push(Row(
+        "Final amplitude",
+        format!("{}°", num(outcome.final_amplitude.to_degrees(), 6)),
+        "half the working amplitude",
+    ));
+    rows.push(Row(
+        "Rate drift during the run-down",
+        format!("{} → {} s/day", num(rate_start, 5), num(rate_end, 5)),
+        "circular error falls as the swing shrinks",
+    ));
+
+    let page = html(&rows);
+    let index = folder.join("index.html");
+    let mut file = AtomicFile::create(&index, "--output")?;
+    file.writer()
+        .write_all(page.as_bytes())
+        .map_err(|e| file.write_error(e))?;
+    let path = file.commit()?;
+    Ok(format!("{path}\n"))
+}
+
+/// Creates the output folder, refusing one that cannot be written.
+fn prepare(folder: &Path) -> Result<std::path::PathBuf, CliError> {
+    std::fs::create_dir_all(folder).map_err(|e| {
+        CliError::flag(
+            "--output",
+            format!("cannot create the folder '{}': {e}", folder.display()),
+        )
+    })?;
+    Ok(folder.to_path_buf())
+}
+
+fn write_figure(folder: &Path, name: &str, figure: &Figure) -> Result<(), CliError> {
+    render(&Target::new(&folder.join(name), "--output")?, figure)?;
+    Ok(())
+}
+
+/// The section 1-4 decay: the envelope of the linear theory over three half-lives.
+fn decay_figure(damped: &DampedPendulum, a0: f64, span: f64) -> Figure {
+    let (upper, lower) = envelope_points(damped, a0, span);
+    Figure {
+        panels: vec![Panel::new(
+            format!(
+                "Amplitude envelope, section 1-4 (Q = {})",
+                num(damped.damping.q_factor(), 6)
+            ),
+            "time (s)",
+            "angle (°)",
+            vec![
+                Series::line("A0 e^(-ζωt)/√(1-ζ²)", upper),
+                Series::line("", lower).colored(0),
+            ],
+        )],
+    }
+}
+
+/// The page: a table of figures with units, then the pictures.
+fn html(rows: &[Row]) -> String {
+    let mut table = String::new();
+    for Row(name, value, note) in rows {
+        table.push_str(&format!(
+            "<tr><th>{}</th><td>{}</td><td class=\"note\">{}</td></tr>\n",
+            escape(name),
+            escape(value),
+            escape(note)
+        ));
+    }
+    format!(
+        r#"<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<title>Pendulum report</title>
+<style>
+body {{ font-family: "DejaVu Sans", Verdana, sans-serif; max-width: 62em; margin: 2em auto; color: #222; }}
+table {{ border-collapse: collapse; margin: 1em 0 2em; }}
+th, td {{ text-align: left; padding: 0.25em 1em 0.25em 0; border-bottom: 1px solid #ddd; }}
+th {{ font-weight: normal; }}
+.note {{ color: #666; font-size: 90%; }}
+img {{ width: 100%; max-width: 960px; display: block; margin: 1em 0 2em; }}
+</style>
+</head>
+<body>
+<h1>Pendulum report</h1>
+<p>Made by <code>pendulum report</code>: the exact period (section 1-6), the viscous
+damping of section 1-4, the energy an escapement must supply, and the full
+nonlinear damped motion run down until the amplitude halves.</p>
+<table>
+{table}</table>
+<h2>The period and the circular error around the working amplitude</h2>
+<img src="period.svg" alt="period ratio and circular error against amplitude">
+<h2>The decay of section 1-4</h2>
+<img src="decay.svg" alt="amplitude envelope against time">
+<h2>The simulated run-down and the rate it causes</h2>
+<img src="rundown.svg" alt="amplitude and rate against time">
+<script>
+// Only for automated checks: counts pictures that failed to load.
+window.addEventListener("load", function () {{
+  var broken = 0;
+  for (var i = 0; i < document.images.length; i++) {{
+    if (!document.images[i].complete || document.images[i].naturalWidth === 0) broken++;
+  }}
+  document.body.setAttribute("data-broken-images", String(broken));
+}});
+</script>
+</body>
+</html>
+"#
+    )
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}

@@ -4,6 +4,22 @@
 use crate::util::{pendulum, refuses};
 use std::path::{Path, PathBuf};
 
+/// Decodes a PNG: its size and how many pixels differ from the first.
+fn png_summary(bytes: Vec<u8>) -> (u32, u32, usize) {
+    let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
+        .read_info()
+        .unwrap();
+    let mut pixels = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut pixels).unwrap();
+    let channels = info.color_type.samples();
+    let first = pixels[..channels].to_vec();
+    let distinct = pixels
+        .chunks(channels)
+        .filter(|p| *p != first.as_slice())
+        .count();
+    (info.width, info.height, distinct)
+}
+
 /// Checks that `path` is a well-formed SVG or a PNG of the plot size that
 /// is not one flat colour.
 fn check_picture(path: &Path) {
@@ -35,13 +51,8 @@ fn check_picture(path: &Path) {
             );
         }
         Some("png") => {
-            let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
-            let mut reader = decoder.read_info().unwrap();
-            let mut pixels = vec![0; reader.output_buffer_size()];
-            let info = reader.next_frame(&mut pixels).unwrap();
-            assert_eq!((info.width, info.height), (960, 640));
-            let first = &pixels[..3];
-            let distinct = pixels.chunks(3).filter(|p| *p != first).count();
+            let (width, height, distinct) = png_summary(bytes);
+            assert_eq!((width, height), (960, 640));
             assert!(distinct > 1000, "{}: a flat picture", path.display());
         }
         other => panic!("unexpected extension {other:?}"),

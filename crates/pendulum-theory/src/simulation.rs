@@ -239,6 +239,15 @@ pub fn energy_amplitude(pendulum: &Pendulum, state: &State) -> f64 {
     2.0 * (s * s + v * v).sqrt().min(1.0).asin()
 }
 
+/// The rate a clock would keep if every beat took `half_period` seconds,
+/// against the small-angle beat `T0/2` of `pendulum`, in s/day:
+/// `86400 (1 - (T0/2) / half_period)`; negative when it loses. This is the
+/// circular error a half swing shows, the column `rate_s_per_day` of a
+/// swings file.
+pub fn half_swing_rate(pendulum: &Pendulum, half_period: f64) -> f64 {
+    crate::period::SECONDS_PER_DAY * (1.0 - 0.5 * pendulum.small_angle_period() / half_period)
+}
+
 /// Steps between calls to [`Observer::progress`].
 const PROGRESS_EVERY: u64 = 4096;
 

@@ -18,8 +18,9 @@ use pendulum_theory::energy::energy_budget;
 use pendulum_theory::friction::DryFriction;
 use pendulum_theory::period::PeriodAnalysis;
 use pendulum_theory::simulation::{
-    simulate, Action, Method, Model, Observer, Options, TurningPoint,
+    half_swing_rate, simulate, Action, Method, Model, Observer, Options, TurningPoint,
 };
+use pendulum_theory::Pendulum;
 use std::io::Write;
 use std::path::Path;
 
@@ -31,7 +32,7 @@ const DEFAULT_MASS_KG: f64 = 5.0;
 
 /// Collects (time, amplitude °, rate s/day) at each turning point.
 struct Turns {
-    half_t0: f64,
+    pendulum: Pendulum,
     previous: f64,
     points: Vec<(f64, f64, f64)>,
 }
@@ -39,8 +40,7 @@ struct Turns {
 impl Observer for Turns {
     fn turning_point(&mut self, p: &TurningPoint) -> Action {
         if p.index > 0 {
-            let half = p.time - self.previous;
-            let rate = 86_400.0 * (1.0 - self.half_t0 / half);
+            let rate = half_swing_rate(&self.pendulum, p.time - self.previous);
             self.points.push((p.time, p.angle.abs().to_degrees(), rate));
         }
         self.previous = p.time;
@@ -109,7 +109,7 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         sample_interval: None,
     };
     let mut turns = Turns {
-        half_t0: 0.5 * pendulum.small_angle_period(),
+        pendulum,
         previous: 0.0,
         points: Vec::new(),
     };

@@ -12,8 +12,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 use pendulum_theory::damped::State;
 use pendulum_theory::damping::Damping;
 use pendulum_theory::simulation::{
-    simulate, Action, Method, Model, Observer, Options, Outcome, SimulationError, Stopped,
-    TurningPoint,
+    half_swing_rate, simulate, Action, Method, Model, Observer, Options, Outcome, SimulationError,
+    Stopped, TurningPoint,
 };
 use pendulum_theory::{Pendulum, Quantity};
 use serde::Serialize;
@@ -198,7 +198,7 @@ struct CliObserver {
     /// and the samples (θ °, θ' °/s) of every `phase_stride`-th period: whole
     /// periods keep the portrait's curves smooth however long the run.
     previous_turn: f64,
-    half_t0: f64,
+    pendulum: Pendulum,
     turns: Option<Vec<(f64, f64, f64)>>,
     phase: Option<Vec<Vec<(f64, f64)>>>,
     phase_stride: u64,
@@ -242,7 +242,7 @@ impl CliObserver {
             interrupted,
             error: None,
             previous_turn: 0.0,
-            half_t0: 0.5 * pendulum.small_angle_period(),
+            pendulum: *pendulum,
             turns: args.plot.as_ref().map(|_| Vec::new()),
             phase: args.phase_plot.as_ref().map(|_| Vec::new()),
             phase_stride: periods.div_ceil(PHASE_PERIODS).max(1),
@@ -309,7 +309,7 @@ impl Observer for CliObserver {
     fn turning_point(&mut self, point: &TurningPoint) -> Action {
         // Row 0 is the release: no half period and no rate.
         let half = (point.index > 0).then_some(point.time - self.previous_turn);
-        let rate = half.map(|h| 86_400.0 * (1.0 - self.half_t0 / h));
+        let rate = half.map(|h| half_swing_rate(&self.pendulum, h));
         self.previous_turn = point.time;
         if let (Some(turns), Some(r)) = (self.turns.as_mut(), rate) {
             turns.push((point.time, point.angle.abs().to_degrees(), r));
@@ -335,7 +335,7 @@ impl Observer for CliObserver {
 
     fn sample(&mut self, time: f64, state: &State) -> bool {
         if let Some(phase) = self.phase.as_mut() {
-            let period = (time / (2.0 * self.half_t0)) as u64;
+            let period = (time / self.pendulum.small_angle_period()) as u64;
             if period % self.phase_stride == 0 {
                 if period != self.phase_period {
                     phase.push(Vec::with_capacity(101));

@@ -83,28 +83,7 @@ pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
 
 /// A number for people: `digits` significant digits, no trailing zeros.
 pub fn num(value: f64, digits: usize) -> String {
-    if value == 0.0 || !value.is_finite() {
-        return format!("{value}");
-    }
-    let exponent = value.abs().log10().floor() as i32;
-    if (-4..9).contains(&exponent) {
-        let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
-        trim(&format!("{value:.decimals$}"))
-    } else {
-        let text = format!("{value:.*e}", digits.saturating_sub(1));
-        match text.split_once('e') {
-            Some((mantissa, exp)) => format!("{}e{exp}", trim(mantissa)),
-            None => text,
-        }
-    }
-}
-
-fn trim(text: &str) -> String {
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        text.to_string()
-    }
+    pendulum_theory::error::format_significant(value, digits)
 }
 
 #[cfg(test)]

@@ -228,16 +228,22 @@ pub(crate) fn require_finite(quantity: Quantity, value: f64) -> Result<f64, Inpu
 
 /// Ten significant digits, trailing zeros removed: `-1`, `0.99362`, `1.5e-7`.
 pub fn significant(value: f64) -> String {
+    format_significant(value, 10)
+}
+
+/// `value` to `digits` significant digits for people: fixed notation from
+/// 1e-4 to 1e10, scientific outside, trailing zeros dropped (`6.58`,
+/// `1.5e-12`, `2.5e12`).
+pub fn format_significant(value: f64, digits: usize) -> String {
     if value == 0.0 || !value.is_finite() {
         return format!("{value}");
     }
     let exponent = value.abs().log10().floor() as i32;
     if (-4..10).contains(&exponent) {
-        let decimals = (9 - exponent).max(0) as usize;
-        let text = format!("{value:.decimals$}");
-        trim_zeros(&text)
+        let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
+        trim_zeros(&format!("{value:.decimals$}"))
     } else {
-        let text = format!("{value:.9e}");
+        let text = format!("{value:.*e}", digits.saturating_sub(1));
         match text.split_once('e') {
             Some((mantissa, exp)) => format!("{}e{exp}", trim_zeros(mantissa)),
             None => text,

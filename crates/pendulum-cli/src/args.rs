@@ -4,7 +4,10 @@
 
 use clap::{Args, Parser, Subcommand};
 
-/// The theory of the clock pendulum: exact period, circular error, gravity.
+/// The theory of the clock pendulum: exact period and circular error, damping,
+/// simulation over weeks of swings, fitting to measurements, and reports.
+///
+/// Start with `pendulum report`: a complete analysis of a seconds pendulum.
 ///
 /// Quantities take units: lengths 994mm, 99.4cm, 0.994m, 39.1in; angles 3deg,
 /// 3°, 0.05rad, 30arcmin; times 2s, 1.5ms, 3h, 1day. A bare number is SI,

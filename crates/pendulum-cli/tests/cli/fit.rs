@@ -225,3 +225,28 @@ fn bad_files_name_the_file_the_line_and_the_column() {
     let video = write(d, "video.csv", "time_s,angle_deg\n0,1\n0.01,x\n");
     refuses(&["fit", "trajectory", video.to_str().unwrap()], "line 3");
 }
+
+/// The README's example files give what the README says they hold.
+#[test]
+fn the_example_files_fit_as_documented() {
+    let examples = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let file = |name: &str| examples.join(name).to_str().unwrap().to_string();
+    let decay = json(&["fit", "decay", &file("rundown.csv"), "--length", "0.99362m"]);
+    assert_eq!(decay["preferred"], "viscous+coulomb");
+    let best = &decay["models"][3]["parameters"];
+    assert!((f(best, "friction_angle_rad") / 1e-6 - 1.0).abs() < 0.05);
+    assert!((decay["models"][3]["q_factor"].as_f64().unwrap() / 10_000.0 - 1.0).abs() < 0.02);
+    let video = json(&[
+        "fit",
+        "trajectory",
+        &file("video.csv"),
+        "--length",
+        "0.5m",
+        "--model",
+        "nonlinear",
+    ]);
+    assert!((f(&video["parameters"], "g_m_s2") / 9.80665 - 1.0).abs() < 3e-4);
+    let beats = json(&["fit", "beats", &file("beats.csv"), "--bph", "3600"]);
+    assert!((f(&beats, "rate_s_per_day") - 4.0).abs() < 0.05);
+    assert_eq!(beats["repaired"]["missed"], 2);
+}

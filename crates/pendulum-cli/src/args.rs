@@ -366,6 +366,8 @@ pub struct DampedArgs {
 pub enum MethodArg {
     /// Dormand-Prince 8(5,3), adaptive, 7th-order dense output.
     Dop853,
+    /// Verner 9(8), adaptive: for tight tolerances (events by re-stepping).
+    Vern9,
     /// Yoshida 6th-order symplectic with exact damping: for very long runs.
     Symplectic,
     /// The closed form (no damping).

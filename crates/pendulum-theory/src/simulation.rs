@@ -23,8 +23,10 @@ use crate::integrate::control::{step_factor, Tolerance};
 use crate::integrate::dop853::{attempt, dense_output, initial_step};
 use crate::integrate::events::{crossed, locate_root, Direction};
 use crate::integrate::symplectic::{self, damping_intervals, Hermite};
+use crate::integrate::vern9;
 use crate::integrate::State2;
 use crate::pendulum::{Amplitude, Pendulum};
+use std::cell::Cell;
 
 /// The physics: a pendulum and what slows it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -80,6 +82,8 @@ pub enum Method {
     /// Yoshida's 6th-order symplectic composition with exact damping flows,
     /// at a fixed step set by the tolerance.
     Symplectic,
+    /// Verner's 9(8) pair, adaptive: for tight tolerances.
+    Vern9,
 }
 
 impl Method {
@@ -89,6 +93,7 @@ impl Method {
             Method::Dop853 => "dop853",
             Method::Exact => "exact",
             Method::Symplectic => "symplectic",
+            Method::Vern9 => "vern9",
         }
     }
 }
@@ -272,6 +277,7 @@ pub fn simulate(
         }
         Method::Dop853 => Ok(run_dop853(model, amplitude, options, observer)),
         Method::Symplectic => Ok(run_symplectic(model, amplitude, options, observer)),
+        Method::Vern9 => Ok(run_vern9(model, amplitude, options, observer)),
     }
 }
 
@@ -407,7 +413,7 @@ fn run_dop853(
         run.evaluations += 11;
         if step.error > 1.0 {
             run.outcome.rejected_steps += 1;
-            h = h_step * step_factor(step.error, true);
+            h = h_step * step_factor(step.error, true, DOP853_ESTIMATE_ORDER);
             after_rejection = true;
             continue;
         }
@@ -432,10 +438,121 @@ fn run_dop853(
             run.count_step(t_new);
         }
         (t, y, f0) = (t_new, step.y1, f1);
-        h = h_step * step_factor(step.error, after_rejection);
+        h = h_step * step_factor(step.error, after_rejection, DOP853_ESTIMATE_ORDER);
         after_rejection = false;
     }
     run.finish(t, y)
+}
+
+/// Orders of the error estimates, for the step-size controller.
+const DOP853_ESTIMATE_ORDER: u32 = 7;
+const VERN9_ESTIMATE_ORDER: u32 = 8;
+
+fn run_vern9(
+    model: &Model,
+    amplitude: Amplitude,
+    options: &Options,
+    observer: &mut impl Observer,
+) -> Outcome {
+    let w = model.pendulum.natural_angular_frequency();
+    let (w2, c1) = (w * w, 2.0 * model.damping.zeta() * w);
+    let tolerance = Tolerance::both(options.tolerance);
+    let mut run = match Run::start(model, Method::Vern9, amplitude, options, observer) {
+        Ok(run) => run,
+        Err(finished) => return finished,
+    };
+    let (mut t, mut y) = (0.0_f64, [amplitude.radians(), 0.0]);
+    let direction = run.direction;
+    let f =
+        move |_t: f64, y: State2| -> State2 { [y[1], model.acceleration(w2, c1, y, direction)] };
+    let mut f0 = f(t, y);
+    // The same starting step as DOP853's (Hairer II.4).
+    let mut h = initial_step(&mut |t, y| f(t, y), t, y, f0, &tolerance);
+    run.evaluations += 2;
+    let mut after_rejection = false;
+    while run.go_on && t < run.duration {
+        let direction = run.direction;
+        let f = |_t: f64, y: State2| -> State2 { [y[1], model.acceleration(w2, c1, y, direction)] };
+        let last = t + h >= run.duration;
+        let t_new = if last { run.duration } else { t + h };
+        let h_step = t_new - t;
+        let step = vern9::attempt(&f, t, y, f0, h_step, &tolerance);
+        run.evaluations += 15;
+        if step.error > 1.0 {
+            run.outcome.rejected_steps += 1;
+            h = h_step * step_factor(step.error, true, VERN9_ESTIMATE_ORDER);
+            after_rejection = true;
+            continue;
+        }
+        if run.needs_interpolant(t_new, y, step.y1) {
+            let restep = ReStep {
+                f: &f,
+                t0: t,
+                y0: y,
+                f0,
+                end: (t_new, step.y1),
+                tolerance,
+                evaluations: Cell::new(0),
+            };
+            let after = run.after_step(&restep, t, t_new, y, step.y1);
+            run.evaluations += restep.evaluations.get();
+            match after {
+                AfterStep::Continue => {}
+                AfterStep::Restart { time, state } => {
+                    (t, y) = (time, state);
+                    let direction = run.direction;
+                    f0 = [y[1], model.acceleration(w2, c1, y, direction)];
+                    run.evaluations += 1;
+                    after_rejection = false;
+                    continue;
+                }
+                AfterStep::Stuck { time, angle } => return run.stuck(time, angle),
+                AfterStep::Stop { time, state } => return run.stopped_at(time, state),
+            }
+        } else {
+            run.count_step(t_new);
+        }
+        f0 = f(t_new, step.y1);
+        run.evaluations += 1;
+        (t, y) = (t_new, step.y1);
+        h = h_step * step_factor(step.error, after_rejection, VERN9_ESTIMATE_ORDER);
+        after_rejection = false;
+    }
+    run.finish(t, y)
+}
+
+/// The "interpolant" of a Verner step: a fresh step from the step's start
+/// to the time wanted, exact to the method's order at any length (the pair
+/// has no dense output here). Each call costs 15 evaluations, counted.
+struct ReStep<'a, F: Fn(f64, State2) -> State2> {
+    f: &'a F,
+    t0: f64,
+    y0: State2,
+    f0: State2,
+    end: (f64, State2),
+    tolerance: Tolerance,
+    evaluations: Cell<u64>,
+}
+
+impl<F: Fn(f64, State2) -> State2> Interpolant for ReStep<'_, F> {
+    fn state(&self, t: f64) -> State2 {
+        if t == self.t0 {
+            return self.y0;
+        }
+        if t == self.end.0 {
+            return self.end.1;
+        }
+        self.evaluations.set(self.evaluations.get() + 15);
+        vern9::attempt(
+            self.f,
+            self.t0,
+            self.y0,
+            self.f0,
+            t - self.t0,
+            &self.tolerance,
+        )
+        .y1
+    }
 }
 
 /// A step's continuous extension, as the events and samples need it.

@@ -105,7 +105,10 @@ fn observed_order(method: Method, loose: f64, tight: f64) -> f64 {
 fn work_precision_orders() {
     let dop = observed_order(Method::Dop853, 1e-10, 1e-12);
     let symplectic = observed_order(Method::Symplectic, 1e-8, 1e-10);
-    eprintln!("observed orders: dop853 {dop:.2}, symplectic {symplectic:.2}");
+    let vern9 = observed_order(Method::Vern9, 1e-11, 1e-13);
+    eprintln!("observed orders: dop853 {dop:.2}, symplectic {symplectic:.2}, vern9 {vern9:.2}");
+    assert!((8.0..=11.0).contains(&vern9), "vern9 order {vern9}");
+    assert!(final_error(Method::Vern9, 1e-13).0 < 1e-9);
     assert!((7.0..=10.0).contains(&dop), "dop853 order {dop}");
     assert!(
         (5.5..=7.0).contains(&symplectic),
@@ -156,8 +159,10 @@ fn turning_point_times_at_tolerance_1e12() {
     let exact = ExactSwing::new(&pendulum, a);
     let turns = turning_points(&model, 0.5, 100.25 * exact.period(), Method::Dop853, 1e-12);
     assert_eq!(turns.len(), 201);
+    let vern9 = turning_points(&model, 0.5, 100.25 * exact.period(), Method::Vern9, 1e-12);
+    assert_eq!(vern9.len(), 201);
     let mut worst = 0.0_f64;
-    for tp in &turns {
+    for tp in turns.iter().chain(&vern9) {
         let (t, angle) = exact.turning_point(tp.index);
         worst = worst.max((tp.time - t).abs());
         assert!((tp.angle - angle).abs() < 1e-10, "{tp:?}");
@@ -197,7 +202,7 @@ fn dry_friction_drops_two_r_per_half_swing() {
     let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
     let r = 1e-3;
     let model = Model::new(pendulum, Damping::NONE, 0.0, r).unwrap();
-    for method in [Method::Dop853, Method::Symplectic] {
+    for method in [Method::Dop853, Method::Symplectic, Method::Vern9] {
         let turns = turning_points(&model, 0.05, 1000.0, method, 1e-12);
         // 0.05 / 0.002 = 25 half swings until it sticks.
         assert_eq!(turns.len(), 26, "{}", method.name());

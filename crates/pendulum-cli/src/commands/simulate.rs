@@ -175,6 +175,7 @@ fn options(args: &SimulateArgs, pendulum: &Pendulum) -> Result<Options, CliError
     let method = match args.method {
         MethodArg::Dop853 => Method::Dop853,
         MethodArg::Symplectic => Method::Symplectic,
+        MethodArg::Vern9 => Method::Vern9,
         MethodArg::Exact => Method::Exact,
     };
     Ok(Options {

@@ -43,7 +43,7 @@ fn json_has_the_documented_keys() {
 fn methods_agree_without_damping() {
     let args = |m| simulate(&["--duration", "30s", "--method", m, "--tolerance", "1e-12"]);
     let exact = json(&args("exact"));
-    for method in ["dop853", "symplectic"] {
+    for method in ["dop853", "vern9", "symplectic"] {
         let v = json(&args(method));
         assert_eq!(v["swings"], exact["swings"], "{method}");
         let d = (f(&v, "final_angle_rad") - f(&exact, "final_angle_rad")).abs();

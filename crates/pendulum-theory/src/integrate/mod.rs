@@ -21,6 +21,8 @@ pub mod dop853;
 pub mod dop853_tableau;
 pub mod events;
 pub mod symplectic;
+pub mod vern9;
+pub mod vern9_tableau;
 
 /// A state `[θ, θ']` (or any pair).
 pub type State2 = [f64; 2];

@@ -345,3 +345,37 @@ fn a_terminal_event_stops_the_run_there() {
     assert_eq!(outcome.final_time, observer.crossings[2].time);
     assert!(outcome.final_state.angle.abs() < 1e-12);
 }
+
+#[test]
+fn methods_agree_under_heavy_damping_and_drag() {
+    // Overdamped (ζ = 10) and strong air drag: the symplectic step must
+    // follow the damping rate, not only the oscillation.
+    let pendulum = Pendulum::with_standard_gravity(1.0).unwrap();
+    let a = Amplitude::from_degrees(60.0).unwrap();
+    for (zeta, drag) in [(10.0, 0.0), (0.0, 5.0), (0.3, 1.0)] {
+        let model = Model::new(pendulum, Damping::from_zeta(zeta).unwrap(), drag, 0.0).unwrap();
+        let run = |method| {
+            let options = Options {
+                duration: 10.0,
+                tolerance: 1e-12,
+                method,
+                sample_interval: None,
+            };
+            simulate(&model, a, &options, &mut Silent)
+                .unwrap()
+                .final_state
+        };
+        let reference = run(Method::Dop853);
+        for method in [Method::Symplectic, Method::Vern9] {
+            let s = run(method);
+            let scale = reference.angle.abs().max(1e-3);
+            assert!(
+                (s.angle - reference.angle).abs() < 1e-7 * scale.max(1e-2),
+                "ζ {zeta}, b {drag}, {}: {} vs {}",
+                method.name(),
+                s.angle,
+                reference.angle
+            );
+        }
+    }
+}

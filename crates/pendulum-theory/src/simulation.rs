@@ -275,9 +275,21 @@ pub fn simulate(
             }
             Ok(run_exact(model, amplitude, options, observer))
         }
-        Method::Dop853 => Ok(run_dop853(model, amplitude, options, observer)),
+        Method::Dop853 => Ok(run_adaptive::<Dop853>(
+            Method::Dop853,
+            model,
+            amplitude,
+            options,
+            observer,
+        )),
         Method::Symplectic => Ok(run_symplectic(model, amplitude, options, observer)),
-        Method::Vern9 => Ok(run_vern9(model, amplitude, options, observer)),
+        Method::Vern9 => Ok(run_adaptive::<Vern9>(
+            Method::Vern9,
+            model,
+            amplitude,
+            options,
+            observer,
+        )),
     }
 }
 
@@ -378,7 +390,134 @@ fn run_exact(
     }
 }
 
-fn run_dop853(
+/// What the adaptive driver needs of an embedded Runge-Kutta pair: one
+/// attempted step, its end and error norm, and its continuous extension.
+trait EmbeddedPair {
+    /// The attempted step, with whatever its interpolant needs.
+    type Step;
+    /// Order of the error estimate (for the step-size controller).
+    const ESTIMATE_ORDER: u32;
+    /// Evaluations of `f` per attempt, beyond the first stage (reused).
+    const EVALUATIONS: u64;
+    /// Attempts a step of length `h` from `(t, y0)` with `f0 = f(t, y0)`.
+    fn attempt(
+        f: &impl Fn(f64, State2) -> State2,
+        t: f64,
+        y0: State2,
+        f0: State2,
+        h: f64,
+        tolerance: &Tolerance,
+    ) -> Self::Step;
+    /// The step's end state and error norm.
+    fn end(step: &Self::Step) -> (State2, f64);
+    /// Calls `handle` with the step's interpolant over `[t, t1]` (`f1 = f(t1, y1)`);
+    /// returns its result and the evaluations the interpolant cost.
+    #[allow(clippy::too_many_arguments)]
+    fn with_interpolant<R>(
+        f: &impl Fn(f64, State2) -> State2,
+        step: &Self::Step,
+        t: f64,
+        y0: State2,
+        f0: State2,
+        t1: f64,
+        f1: State2,
+        tolerance: &Tolerance,
+        handle: impl FnOnce(&dyn Interpolant) -> R,
+    ) -> (R, u64);
+}
+
+/// DOP853 with its 7th-order dense output (3 more evaluations).
+struct Dop853;
+
+impl EmbeddedPair for Dop853 {
+    type Step = crate::integrate::dop853::Step;
+    const ESTIMATE_ORDER: u32 = 7;
+    const EVALUATIONS: u64 = 11;
+
+    fn attempt(
+        f: &impl Fn(f64, State2) -> State2,
+        t: f64,
+        y0: State2,
+        f0: State2,
+        h: f64,
+        tolerance: &Tolerance,
+    ) -> Self::Step {
+        attempt(&mut |t, y| f(t, y), t, y0, f0, h, tolerance)
+    }
+
+    fn end(step: &Self::Step) -> (State2, f64) {
+        (step.y1, step.error)
+    }
+
+    fn with_interpolant<R>(
+        f: &impl Fn(f64, State2) -> State2,
+        step: &Self::Step,
+        _t: f64,
+        _y0: State2,
+        _f0: State2,
+        _t1: f64,
+        f1: State2,
+        _tolerance: &Tolerance,
+        handle: impl FnOnce(&dyn Interpolant) -> R,
+    ) -> (R, u64) {
+        let dense = dense_output(&mut |t, y| f(t, y), step, f1);
+        (handle(&dense), 3)
+    }
+}
+
+/// Verner's 9(8) pair, whose "interpolant" steps again ([`ReStep`]).
+struct Vern9;
+
+impl EmbeddedPair for Vern9 {
+    type Step = vern9::Step;
+    const ESTIMATE_ORDER: u32 = 8;
+    const EVALUATIONS: u64 = 15;
+
+    fn attempt(
+        f: &impl Fn(f64, State2) -> State2,
+        t: f64,
+        y0: State2,
+        f0: State2,
+        h: f64,
+        tolerance: &Tolerance,
+    ) -> Self::Step {
+        vern9::attempt(f, t, y0, f0, h, tolerance)
+    }
+
+    fn end(step: &Self::Step) -> (State2, f64) {
+        (step.y1, step.error)
+    }
+
+    fn with_interpolant<R>(
+        f: &impl Fn(f64, State2) -> State2,
+        step: &Self::Step,
+        t: f64,
+        y0: State2,
+        f0: State2,
+        t1: f64,
+        _f1: State2,
+        tolerance: &Tolerance,
+        handle: impl FnOnce(&dyn Interpolant) -> R,
+    ) -> (R, u64) {
+        let restep = ReStep {
+            f,
+            t0: t,
+            y0,
+            f0,
+            end: (t1, step.y1),
+            tolerance: *tolerance,
+            evaluations: Cell::new(0),
+        };
+        let result = handle(&restep);
+        (result, restep.evaluations.get())
+    }
+}
+
+/// The adaptive driver for any embedded pair: steps under the controller,
+/// time as a difference of representable values, events and samples on the
+/// pair's interpolant, restarts where friction or the observer asks.
+fn run_adaptive<P: EmbeddedPair>(
+    method: Method,
     model: &Model,
     amplitude: Amplitude,
     options: &Options,
@@ -389,7 +528,7 @@ fn run_dop853(
     let tolerance = Tolerance::both(options.tolerance);
     let rhs =
         |y: State2, direction: f64| -> State2 { [y[1], model.acceleration(w2, c1, y, direction)] };
-    let mut run = match Run::start(model, Method::Dop853, amplitude, options, observer) {
+    let mut run = match Run::start(model, method, amplitude, options, observer) {
         Ok(run) => run,
         Err(finished) => return finished,
     };
@@ -408,21 +547,25 @@ fn run_dop853(
         let t_new = if last { run.duration } else { t + h };
         let h_step = t_new - t;
         let direction = run.direction;
-        let mut f = |_t: f64, y: State2| rhs(y, direction);
-        let step = attempt(&mut f, t, y, f0, h_step, &tolerance);
-        run.evaluations += 11;
-        if step.error > 1.0 {
+        let f = |_t: f64, y: State2| rhs(y, direction);
+        let step = P::attempt(&f, t, y, f0, h_step, &tolerance);
+        run.evaluations += P::EVALUATIONS;
+        let (y1, error) = P::end(&step);
+        if error > 1.0 {
             run.outcome.rejected_steps += 1;
-            h = h_step * step_factor(step.error, true, DOP853_ESTIMATE_ORDER);
+            h = h_step * step_factor(error, true, P::ESTIMATE_ORDER);
             after_rejection = true;
             continue;
         }
-        let f1 = f(t_new, step.y1);
+        let f1 = f(t_new, y1);
         run.evaluations += 1;
-        if run.needs_interpolant(t_new, y, step.y1) {
-            let dense = dense_output(&mut f, &step, f1);
-            run.evaluations += 3;
-            match run.after_step(&dense, t, t_new, y, step.y1) {
+        if run.needs_interpolant(t_new, y, y1) {
+            let (after, cost) =
+                P::with_interpolant(&f, &step, t, y, f0, t_new, f1, &tolerance, |interpolant| {
+                    run.after_step(interpolant, t, t_new, y, y1)
+                });
+            run.evaluations += cost;
+            match after {
                 AfterStep::Continue => {}
                 AfterStep::Restart { time, state } => {
                     (t, y) = (time, state);
@@ -437,85 +580,8 @@ fn run_dop853(
         } else {
             run.count_step(t_new);
         }
-        (t, y, f0) = (t_new, step.y1, f1);
-        h = h_step * step_factor(step.error, after_rejection, DOP853_ESTIMATE_ORDER);
-        after_rejection = false;
-    }
-    run.finish(t, y)
-}
-
-/// Orders of the error estimates, for the step-size controller.
-const DOP853_ESTIMATE_ORDER: u32 = 7;
-const VERN9_ESTIMATE_ORDER: u32 = 8;
-
-fn run_vern9(
-    model: &Model,
-    amplitude: Amplitude,
-    options: &Options,
-    observer: &mut impl Observer,
-) -> Outcome {
-    let w = model.pendulum.natural_angular_frequency();
-    let (w2, c1) = (w * w, 2.0 * model.damping.zeta() * w);
-    let tolerance = Tolerance::both(options.tolerance);
-    let mut run = match Run::start(model, Method::Vern9, amplitude, options, observer) {
-        Ok(run) => run,
-        Err(finished) => return finished,
-    };
-    let (mut t, mut y) = (0.0_f64, [amplitude.radians(), 0.0]);
-    let direction = run.direction;
-    let f =
-        move |_t: f64, y: State2| -> State2 { [y[1], model.acceleration(w2, c1, y, direction)] };
-    let mut f0 = f(t, y);
-    // The same starting step as DOP853's (Hairer II.4).
-    let mut h = initial_step(&mut |t, y| f(t, y), t, y, f0, &tolerance);
-    run.evaluations += 2;
-    let mut after_rejection = false;
-    while run.go_on && t < run.duration {
-        let direction = run.direction;
-        let f = |_t: f64, y: State2| -> State2 { [y[1], model.acceleration(w2, c1, y, direction)] };
-        let last = t + h >= run.duration;
-        let t_new = if last { run.duration } else { t + h };
-        let h_step = t_new - t;
-        let step = vern9::attempt(&f, t, y, f0, h_step, &tolerance);
-        run.evaluations += 15;
-        if step.error > 1.0 {
-            run.outcome.rejected_steps += 1;
-            h = h_step * step_factor(step.error, true, VERN9_ESTIMATE_ORDER);
-            after_rejection = true;
-            continue;
-        }
-        if run.needs_interpolant(t_new, y, step.y1) {
-            let restep = ReStep {
-                f: &f,
-                t0: t,
-                y0: y,
-                f0,
-                end: (t_new, step.y1),
-                tolerance,
-                evaluations: Cell::new(0),
-            };
-            let after = run.after_step(&restep, t, t_new, y, step.y1);
-            run.evaluations += restep.evaluations.get();
-            match after {
-                AfterStep::Continue => {}
-                AfterStep::Restart { time, state } => {
-                    (t, y) = (time, state);
-                    let direction = run.direction;
-                    f0 = [y[1], model.acceleration(w2, c1, y, direction)];
-                    run.evaluations += 1;
-                    after_rejection = false;
-                    continue;
-                }
-                AfterStep::Stuck { time, angle } => return run.stuck(time, angle),
-                AfterStep::Stop { time, state } => return run.stopped_at(time, state),
-            }
-        } else {
-            run.count_step(t_new);
-        }
-        f0 = f(t_new, step.y1);
-        run.evaluations += 1;
-        (t, y) = (t_new, step.y1);
-        h = h_step * step_factor(step.error, after_rejection, VERN9_ESTIMATE_ORDER);
+        (t, y, f0) = (t_new, y1, f1);
+        h = h_step * step_factor(error, after_rejection, P::ESTIMATE_ORDER);
         after_rejection = false;
     }
     run.finish(t, y)
@@ -685,7 +751,7 @@ impl<'a, O: Observer> Run<'a, O> {
     }
 
     /// Emits the samples up to `limit` from the interpolant.
-    fn emit_samples(&mut self, step: &impl Interpolant, limit: f64) {
+    fn emit_samples(&mut self, step: &(impl Interpolant + ?Sized), limit: f64) {
         while let Some(ts) = self.samples.due(limit) {
             let s = step.state(ts);
             let state = State {
@@ -702,7 +768,7 @@ impl<'a, O: Observer> Run<'a, O> {
     /// run drops the rest of the step.
     fn after_step(
         &mut self,
-        step: &impl Interpolant,
+        step: &(impl Interpolant + ?Sized),
         t: f64,
         t_new: f64,
         y0: State2,

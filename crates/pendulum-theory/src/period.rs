@@ -203,10 +203,24 @@ pub fn length_for_period(
     Ok(g * root * root)
 }
 
+/// Seconds in an hour, for beat rates.
+const SECONDS_PER_HOUR: f64 = 3600.0;
+
 /// The period of a clock beating `beats_per_hour` times an hour: each beat
 /// is half a period, so `T = 7200 / bph` s.
 pub fn period_for_beat_rate(beats_per_hour: f64) -> Result<f64, InputError> {
-    Ok(7200.0 / require_positive(Quantity::BeatRate, beats_per_hour)?)
+    Ok(2.0 * SECONDS_PER_HOUR / require_positive(Quantity::BeatRate, beats_per_hour)?)
+}
+
+/// Beats per hour of a clock with period `period_s`: `7200 / T`.
+pub fn beats_per_hour(period_s: f64) -> f64 {
+    2.0 * SECONDS_PER_HOUR / period_s
+}
+
+/// The beat (half a period) of a clock with period `period_s`, which must
+/// be positive.
+pub fn beat_of_period(period_s: f64) -> Result<f64, InputError> {
+    Ok(0.5 * require_positive(Quantity::Period, period_s)?)
 }
 
 /// The amplitude that a measured period implies, with how well it is determined.
@@ -358,7 +372,7 @@ impl PeriodAnalysis {
             period_s,
             small_angle_period_s,
             period_ratio: ratio,
-            beats_per_hour: 7200.0 / period_s,
+            beats_per_hour: beats_per_hour(period_s),
             circular_error: circular_error(amplitude),
             circular_error_slope_per_rad: circular_error_slope(amplitude),
             series: period_ratio_series(amplitude, series_terms)?,

@@ -9,8 +9,8 @@ use crate::plot::{render, Figure, Panel, Series, Target};
 
 /// Intervals kept for the plot, at most.
 const PLOT_LIMIT: usize = 8192;
-use crate::units::{parse_number, Dimension};
 use pendulum_theory::fitting::beats::BeatStream;
+use pendulum_theory::period::{beat_of_period, beats_per_hour, SECONDS_PER_DAY};
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -47,29 +47,9 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let nominal = match (&args.bph, &args.period) {
-        (Some(b), _) => {
-            let bph = parse_number(b).map_err(|e| CliError::flag("--bph", e))?;
-            if bph <= 0.0 {
-                return Err(CliError::flag(
-                    "--bph",
-                    format!("must be positive, got {bph}"),
-                ));
-            }
-            Some(3600.0 / bph)
-        }
-        (None, Some(p)) => {
-            let period = common::quantity("--period", p, Dimension::Time)?;
-            if period <= 0.0 {
-                return Err(CliError::flag(
-                    "--period",
-                    format!("must be positive, got {period} s"),
-                ));
-            }
-            Some(0.5 * period)
-        }
-        (None, None) => None,
-    };
+    let nominal = common::period_or_beat_rate(args.period.as_deref(), args.bph.as_deref())?
+        .map(|period| beat_of_period(period).map_err(|e| CliError::input("--period", &e)))
+        .transpose()?;
     let time = Wanted {
         what: "time",
         names: &[("time_s", 1.0)],
@@ -125,7 +105,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         let allan = a
             .allan_deviation
             .iter()
-            .map(|p| (p.tau.log10(), (86_400.0 * p.deviation).log10()))
+            .map(|p| (p.tau.log10(), (SECONDS_PER_DAY * p.deviation).log10()))
             .collect();
         let figure = Figure {
             panels: vec![
@@ -168,7 +148,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
                 tau_s: p.tau,
                 beats: p.beats,
                 deviation: p.deviation,
-                deviation_s_per_day: 86_400.0 * p.deviation,
+                deviation_s_per_day: SECONDS_PER_DAY * p.deviation,
             })
             .collect(),
     };
@@ -197,7 +177,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
             (Some(r), Some(n)) => format!(
                 "{} s/day against {} beats/hour",
                 num(r, 4),
-                num(3600.0 / n, 6)
+                num(beats_per_hour(2.0 * n), 6)
             ),
             _ => "unknown: give --bph or --period (no standard rate within 2%)".into(),
         },
@@ -215,7 +195,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
                     p.beats.to_string(),
                     num(p.tau, 6),
                     num(p.deviation, 3),
-                    num(86_400.0 * p.deviation, 3),
+                    num(SECONDS_PER_DAY * p.deviation, 3),
                 ]
             })
             .collect();

@@ -4,8 +4,7 @@ use super::common;
 use crate::args::LengthArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
-use crate::units::Dimension;
-use pendulum_theory::period::{length_for_period, period_for_beat_rate};
+use pendulum_theory::period::{beats_per_hour, length_for_period};
 use pendulum_theory::Amplitude;
 use serde::Serialize;
 
@@ -21,20 +20,9 @@ struct LengthJson {
 
 pub fn run(args: &LengthArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let period = match (&args.period, &args.bph) {
-        // A bad period is refused by the library below, named --period.
-        (Some(text), _) => common::quantity("--period", text, Dimension::Time)?,
-        (None, Some(text)) => {
-            let bph: f64 = text.trim().parse().map_err(|_| {
-                CliError::flag(
-                    "--bph",
-                    format!("'{text}' is not a number of beats per hour"),
-                )
-            })?;
-            period_for_beat_rate(bph).map_err(|e| CliError::input("--bph", &e))?
-        }
-        (None, None) => return Err(CliError::other("give --period or --bph")),
-    };
+    // A bad period is refused by the library below, named --period.
+    let period = common::period_or_beat_rate(args.period.as_deref(), args.bph.as_deref())?
+        .ok_or_else(|| CliError::other("give --period or --bph"))?;
     let amplitude = match &args.amplitude {
         Some(text) => common::amplitude("--amplitude", text)?,
         None => Amplitude::from_radians(0.0).expect("zero is a valid amplitude"),
@@ -44,7 +32,7 @@ pub fn run(args: &LengthArgs) -> Result<String, CliError> {
     let result = LengthJson {
         length_m: length,
         period_s: period,
-        beats_per_hour: 7200.0 / period,
+        beats_per_hour: beats_per_hour(period),
         amplitude_rad: amplitude.radians(),
         g_m_s2: gravity.g_m_s2,
         g_source: gravity.g_source,

@@ -1,6 +1,6 @@
 //! `pendulum damped`.
 
-use crate::util::{f, json, pendulum, refuses};
+use crate::util::{f, files_in, json, pendulum, refuses};
 use std::path::Path;
 
 fn damped<'a>(extra: &[&'a str]) -> Vec<&'a str> {
@@ -11,10 +11,7 @@ fn damped<'a>(extra: &[&'a str]) -> Vec<&'a str> {
 
 /// No file and no temporary file left in `dir`.
 fn folder_is_empty(dir: &Path) {
-    let left: Vec<_> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name())
-        .collect();
+    let left = files_in(dir);
     assert!(left.is_empty(), "left behind: {left:?}");
 }
 
@@ -136,10 +133,7 @@ fn trajectory_is_written_whole() {
     assert_eq!(rows.len(), 101);
     assert_eq!(rows[0][1].parse::<f64>().unwrap(), 3.0_f64.to_radians());
     assert_eq!(rows[100][0].parse::<f64>().unwrap(), 10.0);
-    let names: Vec<_> = std::fs::read_dir(dir.path())
-        .unwrap()
-        .map(|e| e.unwrap().file_name())
-        .collect();
+    let names = files_in(dir.path());
     assert_eq!(names.len(), 1, "only the CSV is left: {names:?}");
 }
 

@@ -1,6 +1,6 @@
 //! `pendulum simulate`.
 
-use crate::util::{f, json, pendulum, refuses};
+use crate::util::{f, files_in, json, pendulum, refuses};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -158,10 +158,7 @@ fn ctrl_c_leaves_complete_files() {
     assert_eq!(v["stopped"], "interrupted");
     let (_, rows) = read_csv(&path);
     assert_eq!(rows.len() as u64, v["swings"].as_u64().unwrap() + 1);
-    let names: Vec<_> = std::fs::read_dir(dir.path())
-        .unwrap()
-        .map(|e| e.unwrap().file_name())
-        .collect();
+    let names = files_in(dir.path());
     assert_eq!(names.len(), 1, "{names:?}");
 }
 

@@ -350,7 +350,7 @@ pub struct DampedArgs {
         requires = "trajectory"
     )]
     pub sample_interval: Option<String>,
-    /// Allow more than 10^8 trajectory samples.
+    /// Allow more than 10^8 trajectory samples or 10^5 turning points.
     #[arg(long)]
     pub force: bool,
     /// Plot θ(t) with its envelope and turning points to this file (.svg or .png).

@@ -11,6 +11,7 @@ pub const EXIT_ERROR: i32 = 2;
 #[derive(Debug)]
 pub struct CliError {
     message: String,
+    status: u8,
 }
 
 impl CliError {
@@ -18,6 +19,7 @@ impl CliError {
     pub fn flag(flag: &str, detail: impl fmt::Display) -> Self {
         Self {
             message: format!("{flag}: {detail}"),
+            status: EXIT_ERROR as u8,
         }
     }
 
@@ -25,7 +27,19 @@ impl CliError {
     pub fn other(message: impl Into<String>) -> Self {
         Self {
             message: message.into(),
+            status: EXIT_ERROR as u8,
         }
+    }
+
+    /// The same error with another exit status (130 after Ctrl-C).
+    pub fn with_status(mut self, status: u8) -> Self {
+        self.status = status;
+        self
+    }
+
+    /// The exit status: 2, or 130 after Ctrl-C.
+    pub fn status(&self) -> u8 {
+        self.status
     }
 
     /// A library refusal, attributed to `flag`.

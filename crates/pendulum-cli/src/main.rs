@@ -1,20 +1,24 @@
 //! `pendulum`: the theory of the clock pendulum from the command line.
 //!
-//! This file only wires: parse the arguments, run the subcommand, print its
-//! output or one error line. Exit status: 0 on success, 2 on any error.
+//! This file only wires: parse the arguments, run the subcommand, check
+//! that what it is about to print holds no non-finite number, print it or
+//! one error line. Exit status: 0 on success, 2 on any error, 130 after
+//! Ctrl-C.
 
 mod args;
 mod commands;
 mod data;
 mod error;
 mod file;
+mod interrupt;
 mod output;
 mod plot;
 mod units;
 
 use clap::error::ErrorKind;
 use clap::Parser;
-use error::{one_line_clap_error, EXIT_ERROR};
+use error::{one_line_clap_error, CliError, EXIT_ERROR};
+use output::Output;
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -23,9 +27,20 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),
     };
-    match commands::run(&cli.command) {
-        Ok(text) => print_stdout(&text),
-        Err(e) => fail(&e.to_string()),
+    interrupt::install();
+    let result = commands::run(&cli.command).and_then(|out| {
+        // A command that does not stop on Ctrl-C by itself is stopped here:
+        // nothing of it is printed.
+        if interrupt::requested() && out.status == 0 {
+            return Err(interrupt::error());
+        }
+        output::check_finite_text(&out.stdout)?;
+        output::check_finite_text(&out.stderr)?;
+        Ok(out)
+    });
+    match result {
+        Ok(out) => print(&out),
+        Err(e) => fail(&e),
     }
 }
 
@@ -40,21 +55,29 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
             let _ = e.print();
             ExitCode::from(EXIT_ERROR as u8)
         }
-        _ => fail(&one_line_clap_error(e)),
+        _ => fail(&CliError::other(one_line_clap_error(e))),
     }
 }
 
-fn fail(message: &str) -> ExitCode {
-    eprintln!("error: {message}");
-    ExitCode::from(EXIT_ERROR as u8)
+fn fail(error: &CliError) -> ExitCode {
+    eprintln!("error: {error}");
+    ExitCode::from(error.status())
 }
 
 /// Writes the output; a closed pipe (`pendulum … | head`) is not an error.
-fn print_stdout(text: &str) -> ExitCode {
-    let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
-        Err(e) => fail(&format!("could not write to standard output: {e}")),
+fn print(out: &Output) -> ExitCode {
+    if !out.stderr.is_empty() {
+        eprint!("{}", out.stderr);
+    }
+    let mut stdout = std::io::stdout().lock();
+    match stdout
+        .write_all(out.stdout.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Ok(()) => ExitCode::from(out.status),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::from(out.status),
+        Err(e) => fail(&CliError::other(format!(
+            "could not write to standard output: {e}"
+        ))),
     }
 }

@@ -2,9 +2,75 @@
 //!
 //! Every command builds its whole output as a `String` first and prints it
 //! at the end, so an error half-way leaves nothing on standard output.
+//! Nothing non-finite is printed: [`json`] refuses a NaN or infinite
+//! number (serde_json would silently print `null`), naming its key, and
+//! `main` passes every text through [`check_finite_text`]. A value that is
+//! legitimately undefined is an `Option` (JSON `null`) and a word in text.
 
 use crate::error::CliError;
 use serde::Serialize;
+use serde_value::Value;
+
+/// What a command prints, and its exit status.
+#[derive(Debug, Default)]
+pub struct Output {
+    /// For standard output.
+    pub stdout: String,
+    /// For standard error (a summary when standard output carries data).
+    pub stderr: String,
+    /// 0, or 130 for a run that Ctrl-C ended with its files complete.
+    pub status: u8,
+}
+
+impl From<String> for Output {
+    fn from(stdout: String) -> Self {
+        Self {
+            stdout,
+            ..Self::default()
+        }
+    }
+}
+
+/// Refuses text holding a non-finite number (`NaN`, `inf`, `-inf` as a
+/// word): the one check every printed text passes, whatever made it.
+pub fn check_finite_text(text: &str) -> Result<(), CliError> {
+    let bad = text
+        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '.' || c == '_'))
+        .find(|word| matches!(*word, "NaN" | "inf" | "infinity" | "Infinity" | "nan"));
+    match bad {
+        Some(word) => Err(CliError::other(format!(
+            "a result came out as '{word}' for these inputs (an overflow or an undefined value); \
+             please report it with the command line"
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// The dotted path of the first non-finite number in `value`, if any.
+fn non_finite(value: &Value, path: &str) -> Option<String> {
+    match value {
+        Value::F64(x) if !x.is_finite() => Some(path.to_string()),
+        Value::F32(x) if !x.is_finite() => Some(path.to_string()),
+        Value::Option(Some(inner)) | Value::Newtype(inner) => non_finite(inner, path),
+        Value::Seq(items) => items
+            .iter()
+            .enumerate()
+            .find_map(|(i, v)| non_finite(v, &format!("{path}[{i}]"))),
+        Value::Map(map) => map.iter().find_map(|(k, v)| {
+            let key = match k {
+                Value::String(s) => s.clone(),
+                other => format!("{other:?}"),
+            };
+            let joined = if path.is_empty() {
+                key
+            } else {
+                format!("{path}.{key}")
+            };
+            non_finite(v, &joined)
+        }),
+        _ => None,
+    }
+}
 
 /// A two-column summary: labels padded to one width.
 #[derive(Default)]
@@ -38,6 +104,14 @@ impl Summary {
 
 /// One JSON document, pretty-printed, with a final newline.
 pub fn json<T: Serialize + ?Sized>(value: &T) -> Result<String, CliError> {
+    let tree = serde_value::to_value(value)
+        .map_err(|e| CliError::other(format!("could not encode JSON: {e}")))?;
+    if let Some(key) = non_finite(&tree, "") {
+        return Err(CliError::other(format!(
+            "the result {key} is not a finite number for these inputs (an overflow); \
+             please report it with the command line"
+        )));
+    }
     let mut text = serde_json::to_string_pretty(value)
         .map_err(|e| CliError::other(format!("could not encode JSON: {e}")))?;
     text.push('\n');
@@ -96,6 +170,29 @@ mod tests {
         assert_eq!(num(6.5812, 3), "6.58");
         assert_eq!(num(1.5e-12, 3), "1.5e-12");
         assert_eq!(num(-0.25, 3), "-0.25");
+    }
+
+    #[test]
+    fn non_finite_numbers_are_refused() {
+        #[derive(Serialize)]
+        struct Inner {
+            value_s: f64,
+        }
+        #[derive(Serialize)]
+        struct Outer {
+            fine: Option<f64>,
+            inner: Vec<Inner>,
+        }
+        let bad = Outer {
+            fine: None,
+            inner: vec![Inner { value_s: 1.0 }, Inner { value_s: f64::INFINITY }],
+        };
+        let message = json(&bad).unwrap_err().to_string();
+        assert!(message.contains("inner[1].value_s"), "{message}");
+        assert!(json(&Outer { fine: None, inner: vec![] }).is_ok());
+        assert!(check_finite_text("Length  inf m").is_err());
+        assert!(check_finite_text("Simulated NaN s").is_err());
+        assert!(check_finite_text("undamped, infinite Q: none; 1e-300 m").is_ok());
     }
 
     #[test]

@@ -108,6 +108,22 @@ impl DampedPendulum {
         Some(self.natural_angular_frequency() * factor)
     }
 
+    /// The time constant of the slowest part of the motion, s: the envelope's
+    /// `1/(ζω_n)` when underdamped, `1/ω_n` at critical damping, and when
+    /// overdamped the slow root's `1/(ω_n (ζ - sqrt(ζ² - 1)))`, computed as
+    /// `(ζ + sqrt(ζ² - 1))/ω_n` (no cancellation: at ζ = 1e5 it is 2ζ/ω_n,
+    /// where the pendulum creeps back, not the fast `1/(ζω_n)`). Infinite
+    /// without damping.
+    pub fn slowest_time_constant(&self) -> f64 {
+        let zeta = self.damping.zeta();
+        let w = self.natural_angular_frequency();
+        if zeta <= 1.0 {
+            1.0 / (zeta * w)
+        } else {
+            (zeta + ((zeta - 1.0) * (zeta + 1.0)).sqrt()) / w
+        }
+    }
+
     /// The damped period `T_d = 2π/ω_d`, s; `None` unless underdamped.
     pub fn damped_period(&self) -> Option<f64> {
         self.damped_angular_frequency().map(|w| 2.0 * PI / w)
@@ -252,6 +268,23 @@ mod tests {
         assert_eq!(pendulum(1.5).regime(), Regime::Overdamped);
         assert_eq!(pendulum(1.5).damped_period(), None);
         assert_eq!(pendulum(1.0).phase(), None);
+    }
+
+    #[test]
+    fn slowest_time_constant_is_what_the_motion_shows() {
+        // Overdamped from rest: θ(t)/θ0 falls by e over the slow time
+        // constant once the fast mode has died (independent check: the
+        // closed form's own state over one time constant late in the creep).
+        for zeta in [2.0, 10.0, 1e5] {
+            let d = pendulum(zeta);
+            let tau = d.slowest_time_constant();
+            let t1 = 20.0 / (zeta * d.natural_angular_frequency());
+            let a = d.state_at(1.0, 0.0, t1).angle;
+            let b = d.state_at(1.0, 0.0, t1 + tau).angle;
+            assert!(((a / b).ln() - 1.0).abs() < 1e-6, "ζ {zeta}: {}", (a / b).ln());
+        }
+        let u = pendulum(0.01);
+        assert_eq!(u.slowest_time_constant(), u.damping.decay_time(&u.pendulum));
     }
 
     #[test]

@@ -4,8 +4,8 @@
 use super::common::{self, finite};
 use crate::args::DampedArgs;
 use crate::error::CliError;
-use crate::file::CsvFile;
-use crate::output::{self, num, Summary};
+use crate::file::{check_outputs, is_stdout, CsvFile};
+use crate::output::{self, num, Output, Summary};
 use crate::plot::{render, Figure, Panel, Points, Series, Target};
 use pendulum_theory::damped::{DampedPendulum, Extremum, Regime};
 use pendulum_theory::energy::{energy_budget, EnergyBudget};
@@ -48,7 +48,18 @@ struct DampedJson {
     impulse_per_beat_kg_m2_s: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     trajectory: Option<TrajectoryJson>,
+    /// The exact period at the amplitude, s (the small-angle theory's
+    /// damped period ignores the amplitude).
+    exact_period_s: f64,
+    /// What a person must know about these results.
+    warnings: Vec<String>,
 }
+
+/// Above this amplitude the small-angle theory is off by more than 0.2%
+/// in the period: a warning names the exact period.
+const SMALL_ANGLE_LIMIT_DEG: f64 = 10.0;
+/// More turning points than this need `--force`.
+const MAX_EXTREMA: u64 = 100_000;
 
 #[derive(Serialize)]
 struct ExtremumJson {
@@ -83,7 +94,28 @@ struct Results {
     budget: Option<EnergyBudget>,
 }
 
-pub fn run(args: &DampedArgs) -> Result<String, CliError> {
+pub fn run(args: &DampedArgs) -> Result<Output, CliError> {
+    check_outputs(&[
+        ("--trajectory", args.trajectory.as_deref()),
+        ("--plot", args.plot.as_deref()),
+    ])?;
+    let to_stdout = args.trajectory.as_deref().is_some_and(is_stdout)
+        || args.plot.as_deref().is_some_and(is_stdout);
+    if to_stdout && args.json {
+        return Err(CliError::other(
+            "--json prints to standard output, where '-' also writes; give the file a name",
+        ));
+    }
+    if args.extrema > MAX_EXTREMA && !args.force {
+        return Err(CliError::flag(
+            "--extrema",
+            format!(
+                "{} turning points requested; more than {MAX_EXTREMA} needs --force \
+                 (or a trajectory file)",
+                args.extrema
+            ),
+        ));
+    }
     let plot = args
         .plot
         .as_deref()
@@ -135,10 +167,37 @@ pub fn run(args: &DampedArgs) -> Result<String, CliError> {
     }
     let json = to_json(&results, trajectory);
     if args.json {
-        output::json(&json)
-    } else {
-        Ok(text(&results, &json))
+        return Ok(output::json(&json)?.into());
     }
+    let summary = text(&results, &json);
+    // With data on standard output, the summary goes to standard error.
+    Ok(if to_stdout {
+        Output {
+            stderr: summary,
+            ..Output::default()
+        }
+    } else {
+        summary.into()
+    })
+}
+
+/// The small-angle theory's limits, said where they bite.
+fn warnings(r: &Results, exact_period: f64) -> Vec<String> {
+    let mut out = Vec::new();
+    let a_deg = r.amplitude.degrees();
+    if a_deg > SMALL_ANGLE_LIMIT_DEG {
+        out.push(format!(
+            "at {}° the small-angle theory (book section 1-4) is only approximate: \
+             the exact period at this amplitude is {} s, not {}; \
+             `pendulum simulate` integrates the full nonlinear damped motion",
+            num(a_deg, 10),
+            num(exact_period, 7),
+            r.damped
+                .damped_period()
+                .map_or("the small-angle one".to_string(), |p| format!("{} s", num(p, 7)))
+        ));
+    }
+    out
 }
 
 /// The friction angle, which must be below the amplitude for any motion.
@@ -177,7 +236,8 @@ fn to_json(r: &Results, trajectory: Option<TrajectoryJson>) -> DampedJson {
         damped_period_s: d.damped_period(),
         phase_rad: d.phase(),
         regime: d.regime().name(),
-        decay_time_s: finite(damping.decay_time(&r.pendulum)),
+        // The time constant a user sees: the slow creep when overdamped.
+        decay_time_s: finite(d.slowest_time_constant()),
         // An envelope e^{-ζω_n t} exists only when the pendulum oscillates.
         amplitude_half_life_s: d
             .damped_period()
@@ -206,6 +266,8 @@ fn to_json(r: &Results, trajectory: Option<TrajectoryJson>) -> DampedJson {
         power_w: r.budget.map(|b| b.power),
         impulse_per_beat_kg_m2_s: r.budget.map(|b| b.impulse_per_beat),
         trajectory,
+        exact_period_s: r.pendulum.period(r.amplitude),
+        warnings: warnings(r, r.pendulum.period(r.amplitude)),
     }
 }
 
@@ -220,7 +282,8 @@ fn text(r: &Results, j: &DampedJson) -> String {
     let deg = |x: f64| format!("{}°", num(x.to_degrees(), 6));
     let mut s = Summary::default();
     s.row("Length", format!("{} m", num(j.length_m, 10)))
-        .row("Amplitude", deg(j.amplitude_rad))
+        // Ten digits: a release at 179.999999° must not read as 180°.
+        .row("Amplitude", format!("{}°", num(j.amplitude_rad.to_degrees(), 10)))
         .row(
             "Damping",
             format!(
@@ -241,7 +304,16 @@ fn text(r: &Results, j: &DampedJson) -> String {
         )
         .row("Damped period", opt(j.damped_period_s, 10, "s"))
         .row("Phase φ", opt(j.phase_rad, 6, "rad"))
-        .row("Decay time", opt(j.decay_time_s, 6, "s"))
+        .row(
+            if r.damped.regime() == Regime::Overdamped {
+                "Decay time (slow creep)"
+            } else {
+                "Decay time"
+            },
+            j.decay_time_s.map_or("none (undamped)".to_string(), |t| {
+                format!("{} s", num(t, 6))
+            }),
+        )
         .row("Amplitude half-life", opt(j.amplitude_half_life_s, 6, "s"));
     if let (Some(e), Some(a)) = (
         j.amplitude_loss_per_period_rad,
@@ -275,6 +347,9 @@ fn text(r: &Results, j: &DampedJson) -> String {
     }
     if let Some(t) = &j.trajectory {
         s.row("Trajectory", format!("{} ({} samples)", t.path, t.samples));
+    }
+    for w in &j.warnings {
+        s.row("WARNING", w.clone());
     }
     let mut out = s.render();
     out.push_str("\nTurning points\n");

@@ -15,21 +15,23 @@ pub(crate) mod simulate;
 
 use crate::args::Command;
 use crate::error::CliError;
+use crate::output::Output;
 
 /// Runs one subcommand and returns what it prints.
-pub fn run(command: &Command) -> Result<String, CliError> {
-    match command {
+pub fn run(command: &Command) -> Result<Output, CliError> {
+    let text = match command {
         Command::Period(args) => period::run(args),
         Command::Length(args) => length::run(args),
         Command::Amplitude(args) => amplitude::run(args),
         Command::Gravity(args) => gravity::run(args),
-        Command::Damped(args) => damped::run(args),
-        Command::Simulate(args) => simulate::run(args),
+        Command::Simulate(args) => return simulate::run(args),
+        Command::Damped(args) => return damped::run(args),
         Command::Report(args) => report::run(args),
         Command::Fit(args) => match &args.what {
             crate::args::FitCommand::Decay(a) => fit_decay::run(a),
             crate::args::FitCommand::Trajectory(a) => fit_trajectory::run(a),
             crate::args::FitCommand::Beats(a) => fit_beats::run(a),
         },
-    }
+    };
+    text.map(Output::from)
 }

@@ -8,7 +8,8 @@ use super::period::figure as period_figure;
 use super::simulate::rundown_figure;
 use crate::args::ReportArgs;
 use crate::error::CliError;
-use crate::file::AtomicFile;
+use crate::file::{AtomicFile, AtomicFolder};
+use crate::interrupt;
 use crate::output::num;
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::Dimension;
@@ -18,10 +19,10 @@ use pendulum_theory::energy::energy_budget;
 use pendulum_theory::friction::DryFriction;
 use pendulum_theory::period::PeriodAnalysis;
 use pendulum_theory::simulation::{
-    half_swing_rate, simulate, Action, Method, Model, Observer, Options, TurningPoint,
+    half_swing_rate, simulate, work_estimate, Action, Method, Model, Observer, Options,
+    TurningPoint,
 };
 use pendulum_theory::Pendulum;
-use std::io::Write;
 use std::path::Path;
 
 /// The default pendulum: a seconds pendulum.
@@ -29,6 +30,10 @@ const DEFAULT_LENGTH: &str = "0.99362m";
 const DEFAULT_AMPLITUDE: &str = "3deg";
 const DEFAULT_Q: f64 = 10_000.0;
 const DEFAULT_MASS_KG: f64 = 5.0;
+/// The simulated run-down stops after this many periods at the most.
+const MAX_RUNDOWN_PERIODS: f64 = 1e5;
+/// ... and after about this much computing, s.
+const MAX_RUNDOWN_SECONDS: f64 = 1.0;
 
 /// Collects (time, amplitude °, rate s/day) at each turning point.
 struct Turns {
@@ -45,6 +50,10 @@ impl Observer for Turns {
         }
         self.previous = p.time;
         Action::Continue
+    }
+
+    fn progress(&mut self, _time: f64) -> bool {
+        !interrupt::requested()
     }
 }
 
@@ -66,7 +75,8 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         Some(d) => d,
         None => Damping::from_q(DEFAULT_Q).expect("a valid default"),
     };
-    let folder = prepare(&args.output)?;
+    let output = AtomicFolder::create(&args.output, "--output")?;
+    let folder = output.path().to_path_buf();
 
     // Section 1-6: the exact period around the working amplitude.
     let analysis = PeriodAnalysis::new(pendulum, amplitude, 3)
@@ -87,7 +97,10 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         (Some(loss), Some(period)) => energy_budget(&pendulum, mass, a0, loss, period).ok(),
         _ => None,
     };
-    let half_life = damping.amplitude_half_life(&pendulum);
+    // The slowest time constant: the envelope's when underdamped, the
+    // creep's when overdamped.
+    let decay_time = damped.slowest_time_constant();
+    let half_life = std::f64::consts::LN_2 * decay_time;
     let decay_span = if half_life.is_finite() {
         3.0 * half_life
     } else {
@@ -95,18 +108,30 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
     };
     write_figure(&folder, "decay.svg", &decay_figure(&damped, a0, decay_span))?;
 
-    // The full nonlinear run-down until the amplitude halves.
+    // The full nonlinear run-down until the amplitude halves: at most 10^5
+    // periods and about a second of computing (a stiff, heavily overdamped
+    // pendulum gets a shorter run), said on the page.
     let model = Model::new(pendulum, damping, 0.0, 0.0).expect("valid model");
-    let run_duration = if half_life.is_finite() {
+    let t0 = pendulum.small_angle_period();
+    let wanted = if half_life.is_finite() {
         half_life
     } else {
-        100.0 * pendulum.small_angle_period()
+        100.0 * t0
     };
-    let options = Options {
-        duration: run_duration,
+    let mut options = Options {
+        duration: wanted.min(MAX_RUNDOWN_PERIODS * t0),
         tolerance: 1e-8,
         method: Method::Symplectic,
         sample_interval: None,
+    };
+    let work = work_estimate(&model, amplitude, &options);
+    if work.seconds > MAX_RUNDOWN_SECONDS {
+        options.duration *= MAX_RUNDOWN_SECONDS / work.seconds;
+    }
+    let run_note = if options.duration < wanted {
+        "stopped short of half amplitude: at most 10^5 periods, or a second of computing"
+    } else {
+        "nonlinear, symplectic integrator"
     };
     let mut turns = Turns {
         pendulum,
@@ -115,10 +140,17 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
     };
     let outcome = simulate(&model, amplitude, &options, &mut turns)
         .map_err(|e| CliError::other(e.to_string()))?;
+    if interrupt::requested() {
+        return Err(interrupt::error());
+    }
     write_figure(&folder, "rundown.svg", &rundown_figure(&turns.points))?;
 
-    let rate_start = turns.points.first().map_or(f64::NAN, |p| p.2);
-    let rate_end = turns.points.last().map_or(f64::NAN, |p| p.2);
+    let rates = turns
+        .points
+        .first()
+        .zip(turns.points.last())
+        .map(|(a, b)| (a.2, b.2));
+    let undamped = damping.zeta() == 0.0;
     let mut rows = vec![
         Row("Length", format!("{} m", num(pendulum.length_m(), 8)), ""),
         Row("Gravity", gravity.describe(), ""),
@@ -156,7 +188,15 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
             "how a change of swing moves the rate",
         ),
         Row("Damping ratio ζ", num(damping.zeta(), 5), "section 1-4"),
-        Row("Q", num(damping.q_factor(), 6), "1/(2ζ)"),
+        Row(
+            "Q",
+            if undamped {
+                "infinite (undamped)".to_string()
+            } else {
+                num(damping.q_factor(), 6)
+            },
+            "1/(2ζ)",
+        ),
     ];
     if let Some(delta) = damping.log_decrement() {
         rows.push(Row(
@@ -179,14 +219,32 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
             "A0 (1 - e^(-δ)), and the seed's first-order δ A0",
         ));
     }
+    let overdamped = damping.zeta() > 1.0;
     rows.push(Row(
         "Amplitude decay time",
-        format!("{} s", num(damping.decay_time(&pendulum), 6)),
-        "1/(ζ ω_n)",
+        if undamped {
+            "none (undamped)".to_string()
+        } else {
+            format!("{} s", num(decay_time, 6))
+        },
+        if overdamped {
+            "the slow creep: (ζ + sqrt(ζ² - 1))/ω_n"
+        } else {
+            "1/(ζ ω_n)"
+        },
     ));
     rows.push(Row(
         "Amplitude half-life",
-        format!("{} s ({} min)", num(half_life, 6), num(half_life / 60.0, 4)),
+        if undamped {
+            "none (undamped)".to_string()
+        } else if damped.damped_period().is_none() {
+            format!(
+                "none (overdamped: no swing; the creep halves in {} s)",
+                num(half_life, 6)
+            )
+        } else {
+            format!("{} s ({} min)", num(half_life, 6), num(half_life / 60.0, 4))
+        },
         "ln 2 × decay time",
     ));
     rows.push(Row(
@@ -223,38 +281,34 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
             num(outcome.final_time, 6),
             outcome.swings
         ),
-        "nonlinear, symplectic integrator",
+        run_note,
     ));
     rows.push(Row(
         "Final amplitude",
         format!("{}°", num(outcome.final_amplitude.to_degrees(), 6)),
-        "half the working amplitude",
+        if run_note == "nonlinear, symplectic integrator" && !undamped {
+            "half the working amplitude"
+        } else {
+            "at the end of the simulated run"
+        },
     ));
     rows.push(Row(
         "Rate drift during the run-down",
-        format!("{} → {} s/day", num(rate_start, 5), num(rate_end, 5)),
+        rates.map_or("not determined (no full swing)".to_string(), |(a, b)| {
+            format!("{} → {} s/day", num(a, 5), num(b, 5))
+        }),
         "circular error falls as the swing shrinks",
     ));
 
     let page = html(&rows);
-    let index = folder.join("index.html");
-    let mut file = AtomicFile::create(&index, "--output")?;
+    crate::output::check_finite_text(&page)?;
+    let mut file = AtomicFile::create(&folder.join("index.html"), "--output")?;
     file.writer()
         .write_all(page.as_bytes())
         .map_err(|e| file.write_error(e))?;
-    let path = file.commit()?;
-    Ok(format!("{path}\n"))
-}
-
-/// Creates the output folder, refusing one that cannot be written.
-fn prepare(folder: &Path) -> Result<std::path::PathBuf, CliError> {
-    std::fs::create_dir_all(folder).map_err(|e| {
-        CliError::flag(
-            "--output",
-            format!("cannot create the folder '{}': {e}", folder.display()),
-        )
-    })?;
-    Ok(folder.to_path_buf())
+    file.commit()?;
+    let written = output.commit("--output")?;
+    Ok(format!("{}\n", written.join("index.html").display()))
 }
 
 fn write_figure(folder: &Path, name: &str, figure: &Figure) -> Result<(), CliError> {

@@ -4,21 +4,20 @@
 use super::common::{self, finite};
 use crate::args::{MethodArg, SimulateArgs};
 use crate::error::CliError;
-use crate::file::CsvFile;
-use crate::output::{self, num, Summary};
+use crate::file::{check_outputs, is_stdout, CsvFile};
+use crate::interrupt;
+use crate::output::{self, num, Output, Summary};
 use crate::plot::{render, thin, Figure, Panel, Series, Target};
 use crate::units::parse_number;
 use indicatif::{ProgressBar, ProgressStyle};
 use pendulum_theory::damped::State;
 use pendulum_theory::damping::Damping;
 use pendulum_theory::simulation::{
-    half_swing_rate, simulate, Action, Method, Model, Observer, Options, Outcome, SimulationError,
-    Stopped, TurningPoint,
+    half_swing_rate, simulate, work_estimate, Action, Limit, Method, Model, Observer, Options,
+    Outcome, SimulationError, Stopped, TurningPoint,
 };
-use pendulum_theory::{Pendulum, Quantity};
+use pendulum_theory::{Amplitude, Pendulum, Quantity};
 use serde::Serialize;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// Whole periods drawn in the phase portrait (evenly chosen over the run).
@@ -28,6 +27,11 @@ const PLOT_POINTS: usize = 4000;
 
 /// Longer simulated durations need `--force`, s.
 const MAX_DURATION: f64 = 1e9;
+/// Runs estimated to take longer than this need `--force`, s of computing.
+const MAX_WORK_SECONDS: f64 = 5.0;
+/// Runs estimated to take longer than this are refused even with
+/// `--force`: they would not end in a day, s of computing.
+const IMPOSSIBLE_WORK_SECONDS: f64 = 86_400.0;
 
 #[derive(Serialize)]
 struct SimulateJson {
@@ -51,14 +55,31 @@ struct SimulateJson {
     quadratic_drag: f64,
     friction_angle_rad: f64,
     elapsed_s: f64,
+    /// Problems a person must see: an energy gain no damping explains, a
+    /// pendulum over the top, a step that fell to nothing.
+    warnings: Vec<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     swings_file: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     trajectory_file: Option<String>,
 }
 
-pub fn run(args: &SimulateArgs) -> Result<String, CliError> {
-    // Refuse a bad plot name before any work.
+pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
+    // Refuse bad output names before any work.
+    let outputs = [
+        ("--swings", args.swings.as_deref()),
+        ("--trajectory", args.trajectory.as_deref()),
+        ("--plot", args.plot.as_deref()),
+        ("--phase-plot", args.phase_plot.as_deref()),
+    ];
+    check_outputs(&outputs)?;
+    let to_stdout = outputs.iter().find(|(_, p)| p.is_some_and(is_stdout));
+    if let (Some((flag, _)), true) = (to_stdout, args.json) {
+        return Err(CliError::flag(
+            flag,
+            "writes to standard output ('-'), where --json also prints; give it a file",
+        ));
+    }
     for (path, flag) in [(&args.plot, "--plot"), (&args.phase_plot, "--phase-plot")] {
         if let Some(p) = path {
             Target::new(p, flag)?;
@@ -80,15 +101,8 @@ pub fn run(args: &SimulateArgs) -> Result<String, CliError> {
             }
         })?;
     let options = options(args, &pendulum)?;
-    let interrupted = Arc::new(AtomicBool::new(false));
-    {
-        let flag = Arc::clone(&interrupted);
-        // Ctrl-C asks the run to stop at its next progress check; the files
-        // written so far are then closed whole. Installing can fail only if a
-        // handler exists already, which is harmless.
-        let _ = ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst));
-    }
-    let mut observer = CliObserver::new(args, &pendulum, &options, Arc::clone(&interrupted))?;
+    check_work(args, &model, amplitude, &options)?;
+    let mut observer = CliObserver::new(args, &pendulum, &options)?;
     let started = Instant::now();
     let outcome = simulate(&model, amplitude, &options, &mut observer).map_err(|e| match e {
         SimulationError::ExactWithDamping => CliError::flag("--method", e),
@@ -118,13 +132,155 @@ pub fn run(args: &SimulateArgs) -> Result<String, CliError> {
         quadratic_drag,
         friction_angle_rad: friction_angle,
         elapsed_s: elapsed,
+        warnings: warnings(&outcome, args.method),
         swings_file: files.0,
         trajectory_file: files.1,
     };
-    if args.json {
-        output::json(&result)
+    let status = if outcome.stopped == Stopped::Interrupted && interrupt::requested() {
+        interrupt::EXIT_INTERRUPTED
     } else {
-        Ok(text(&result, &outcome))
+        0
+    };
+    if args.json {
+        return Ok(Output {
+            stdout: output::json(&result)?,
+            status,
+            ..Output::default()
+        });
+    }
+    let summary = text(&result, &outcome);
+    // With data on standard output, the summary goes to standard error.
+    Ok(if to_stdout.is_some() {
+        Output {
+            stderr: summary,
+            status,
+            ..Output::default()
+        }
+    } else {
+        Output {
+            stdout: summary,
+            status,
+            ..Output::default()
+        }
+    })
+}
+
+/// What a person must be told about a run's numerics.
+fn warnings(outcome: &Outcome, method: MethodArg) -> Vec<String> {
+    let mut out = Vec::new();
+    let exact_hint = if method == MethodArg::Exact {
+        ""
+    } else {
+        " (without damping, --method exact is exact at any amplitude)"
+    };
+    if let Some(gain) = outcome.energy_gain {
+        out.push(format!(
+            "the energy at a turning point changed by {} of itself (or of the period it \
+             implies) at {} s, which the damping does not explain: the tolerance is too \
+             loose for this motion; tighten --tolerance{exact_hint}",
+            num(gain.relative, 3),
+            num(gain.time, 8)
+        ));
+    }
+    match outcome.stopped {
+        Stopped::OverTheTop => out.push(format!(
+            "the pendulum passed over the top at {} s, impossible from rest below 180°: \
+             the release is too close to 180° for this method and tolerance; \
+             the run was stopped there{exact_hint}",
+            num(outcome.final_time, 8)
+        )),
+        Stopped::StepTooSmall => out.push(format!(
+            "the step size fell to nothing at {} s; the run was stopped there",
+            num(outcome.final_time, 8)
+        )),
+        _ => {}
+    }
+    out
+}
+
+/// Refuses, before any file is made, a run that would take more than a few
+/// seconds (unless `--force`) or more than a day, naming what makes it long.
+fn check_work(
+    args: &SimulateArgs,
+    model: &Model,
+    amplitude: Amplitude,
+    options: &Options,
+) -> Result<(), CliError> {
+    let work = work_estimate(model, amplitude, options);
+    if work.seconds <= MAX_WORK_SECONDS
+        || (args.force && work.seconds <= IMPOSSIBLE_WORK_SECONDS)
+    {
+        return Ok(());
+    }
+    let (flag, why) = match work.limit {
+        Limit::Oscillation => (
+            "--duration",
+            format!(
+                "{} s is {} periods of this pendulum",
+                num(options.duration, 6),
+                num(work.periods, 3)
+            ),
+        ),
+        Limit::Viscous => (
+            damping_flag(&args.swing.damping),
+            format!(
+                "ζ = {} makes the equation stiff for an explicit method (the overdamped \
+                 creep has a closed form: pendulum damped)",
+                num(model.damping.zeta(), 4)
+            ),
+        ),
+        Limit::Drag => (
+            "--quadratic-drag",
+            format!(
+                "a drag of {} makes the equation stiff (try --method symplectic, whose drag \
+                 flow is exact)",
+                num(model.quadratic_drag, 4)
+            ),
+        ),
+    };
+    let hint = if work.seconds > IMPOSSIBLE_WORK_SECONDS {
+        "more than a day of computing; shorten the run"
+    } else {
+        "add --force if you mean it"
+    };
+    Err(CliError::flag(
+        flag,
+        format!(
+            "{why}: about {} integration steps, {} of computing; {hint}",
+            num(work.steps, 2),
+            human_seconds(work.seconds)
+        ),
+    ))
+}
+
+/// The flag the damping was given with.
+fn damping_flag(d: &crate::args::DampingArgs) -> &'static str {
+    if d.q.is_some() {
+        "--q"
+    } else if d.log_decrement.is_some() {
+        "--log-decrement"
+    } else if d.decay_time.is_some() {
+        "--decay-time"
+    } else if d.damping_coefficient.is_some() {
+        "--damping-coefficient"
+    } else {
+        "--zeta"
+    }
+}
+
+/// A computing time for people: "40 s", "3 minutes", "2e5 years".
+fn human_seconds(s: f64) -> String {
+    const YEAR: f64 = 3.156e7;
+    if s < 120.0 {
+        format!("{} s", num(s, 2))
+    } else if s < 7200.0 {
+        format!("{} minutes", num(s / 60.0, 2))
+    } else if s < 172_800.0 {
+        format!("{} hours", num(s / 3600.0, 2))
+    } else if s < YEAR {
+        format!("{} days", num(s / 86_400.0, 2))
+    } else {
+        format!("{} years", num(s / YEAR, 2))
     }
 }
 
@@ -192,7 +348,6 @@ struct CliObserver {
     swings: Option<SwingsFile>,
     trajectory: Option<CsvFile>,
     progress: Progress,
-    interrupted: Arc<AtomicBool>,
     error: Option<CliError>,
     /// For the plots: the previous turning point's time, half the small-
     /// angle period, (time, amplitude °, rate s/day) of every turning point,
@@ -215,7 +370,6 @@ impl CliObserver {
         args: &SimulateArgs,
         pendulum: &Pendulum,
         options: &Options,
-        interrupted: Arc<AtomicBool>,
     ) -> Result<Self, CliError> {
         let swings = match &args.swings {
             Some(path) => Some(SwingsFile {
@@ -240,7 +394,6 @@ impl CliObserver {
             swings,
             trajectory,
             progress: Progress::new(options.duration, args.quiet),
-            interrupted,
             error: None,
             previous_turn: 0.0,
             pendulum: *pendulum,
@@ -362,7 +515,7 @@ impl Observer for CliObserver {
 
     fn progress(&mut self, time: f64) -> bool {
         self.progress.update(time);
-        !self.interrupted.load(Ordering::SeqCst) && self.error.is_none()
+        !interrupt::requested() && self.error.is_none()
     }
 }
 
@@ -433,6 +586,11 @@ fn text(r: &SimulateJson, outcome: &Outcome) -> String {
             Stopped::Friction => "held by friction at a turning point".to_string(),
             Stopped::Interrupted => "interrupted; files hold everything up to then".to_string(),
             Stopped::Event => "at an event".to_string(),
+            Stopped::AmplitudeBelowTolerance => {
+                "the swing decayed below 1e-280 rad, the end of double precision".to_string()
+            }
+            Stopped::OverTheTop => "over the top (see the warning)".to_string(),
+            Stopped::StepTooSmall => "the step size fell to nothing".to_string(),
         },
     )
     .row("Turning points", r.swings.to_string())
@@ -462,6 +620,9 @@ fn text(r: &SimulateJson, outcome: &Outcome) -> String {
             num(r.elapsed_s, 3)
         ),
     );
+    for w in &r.warnings {
+        s.row("WARNING", w.clone());
+    }
     if let Some(f) = &r.swings_file {
         s.row("Swings file", f.clone());
     }

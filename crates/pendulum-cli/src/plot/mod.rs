@@ -9,7 +9,6 @@ use crate::error::CliError;
 use crate::file::AtomicFile;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Once;
 
@@ -37,8 +36,16 @@ pub struct Target {
 }
 
 impl Target {
-    /// Checks the extension of `path` (given to `flag`): `.svg` or `.png`.
+    /// Checks the extension of `path` (given to `flag`): `.svg` or `.png`;
+    /// `-` is SVG on standard output.
     pub fn new(path: &Path, flag: &'static str) -> Result<Self, CliError> {
+        if crate::file::is_stdout(path) {
+            return Ok(Self {
+                path: path.to_path_buf(),
+                format: Format::Svg,
+                flag,
+            });
+        }
         let extension = path
             .extension()
             .and_then(|e| e.to_str())

@@ -1,0 +1,179 @@
+//! How much work a run will take, known before it starts: so that a caller
+//! can refuse a run that would take hours (a 1 µm pendulum for a day, or
+//! ζ = 10⁹, which makes the equation stiff for the explicit methods)
+//! instead of hanging.
+
+use super::{Method, Model, Options, Rates, AMPLITUDE_FLOOR};
+use crate::pendulum::Amplitude;
+use std::f64::consts::{PI, TAU};
+
+/// What sets the number of steps.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Limit {
+    /// The oscillation: the number of periods in the duration.
+    Oscillation,
+    /// The viscous damping: ζ well above 1 makes the equation stiff.
+    Viscous,
+    /// The quadratic drag, likewise.
+    Drag,
+}
+
+/// The estimated cost of a run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorkEstimate {
+    /// Small-angle periods in the part of the run that is integrated (up to
+    /// the duration, or until the swing decays below [`AMPLITUDE_FLOOR`] or
+    /// friction holds it).
+    pub periods: f64,
+    /// Integration steps (quarter periods for the closed form).
+    pub steps: f64,
+    /// Seconds of computing on one core of the reference machine (see
+    /// [`NANOSECONDS_PER_STEP`]).
+    pub seconds: f64,
+    /// What sets the number of steps.
+    pub limit: Limit,
+}
+
+/// Cost of one step in nanoseconds on the machine of `bench/RESULTS.md`
+/// (no output files): DOP853 (12 evaluations, dense output on about one
+/// step in five), Verner 9(8) (16 evaluations), the symplectic step (7
+/// sines), a quarter period of the closed form.
+pub const NANOSECONDS_PER_STEP: [(Method, f64); 4] = [
+    (Method::Dop853, 300.0),
+    (Method::Vern9, 450.0),
+    (Method::Symplectic, 120.0),
+    (Method::Exact, 60.0),
+];
+
+/// The steps an adaptive method takes per small-angle period at tolerance
+/// `tol` (its error per step scales as `h^(order+1)`): measured at 0.5 rad
+/// and 1e-10 and fitted to that power law.
+fn adaptive_steps_per_period(method: Method, tol: f64) -> f64 {
+    let tol = tol.clamp(1e-16, 1e-2);
+    match method {
+        Method::Vern9 => 17.0 * (tol / 1e-10).powf(-1.0 / 9.0),
+        _ => 22.0 * (tol / 1e-10).powf(-1.0 / 8.0),
+    }
+}
+
+/// The real part of the stability boundary of the explicit pairs, used to
+/// estimate their steps when damping makes the equation stiff: a step may
+/// not exceed about this over the fastest decay rate (DOP853's region
+/// reaches -6 on the real axis; half of it allows for the controller's
+/// rejections at the boundary).
+const STABILITY: f64 = 3.0;
+
+/// Estimates the work of `model` released at `amplitude` under `options`.
+/// An estimate, not a bound: the steps are from power laws measured on the
+/// free swing (within a factor of 2 over tolerances 1e-6 to 1e-13), the
+/// stiff part from the stability boundary.
+pub fn work_estimate(model: &Model, amplitude: Amplitude, options: &Options) -> WorkEstimate {
+    let omega = model.pendulum.natural_angular_frequency();
+    let rates = Rates::new(model, amplitude);
+    let a0 = amplitude.radians();
+    // Scaled time integrated: the duration, or until the swing is gone.
+    let mut active = options.duration * omega;
+    let zeta = model.damping.zeta();
+    if zeta > 0.0 && a0 > 0.0 {
+        // The slowest decay rate: ζ, or ζ - sqrt(ζ² - 1) = 1/(ζ + sqrt(ζ² - 1)).
+        let slow = if zeta <= 1.0 {
+            zeta
+        } else {
+            1.0 / (zeta + (zeta * zeta - 1.0).sqrt())
+        };
+        active = active.min((a0 / AMPLITUDE_FLOOR).ln() / slow);
+    }
+    let r = model.friction_angle;
+    if r > 0.0 {
+        // Each half swing (π of scaled time) loses about 2r.
+        active = active.min(PI * (a0 / (2.0 * r) + 1.0));
+    }
+    if a0 == 0.0 {
+        active = 0.0;
+    }
+    let periods = active / TAU;
+    let stiff = rates.viscous.max(rates.drag);
+    let limit = if rates.fastest() == rates.oscillation {
+        Limit::Oscillation
+    } else if rates.viscous >= rates.drag {
+        Limit::Viscous
+    } else {
+        Limit::Drag
+    };
+    let steps = match options.method {
+        Method::Exact => 4.0 * periods,
+        Method::Symplectic => {
+            periods * rates.fastest() * super::symplectic_steps_per_period(options.tolerance)
+        }
+        Method::Dop853 | Method::Vern9 => {
+            let accurate = periods * adaptive_steps_per_period(options.method, options.tolerance);
+            accurate.max(active * stiff / STABILITY)
+        }
+    };
+    let limit = match options.method {
+        Method::Dop853 | Method::Vern9 if limit != Limit::Oscillation => {
+            // Stiffness sets the steps only where it outweighs accuracy.
+            let accurate = periods * adaptive_steps_per_period(options.method, options.tolerance);
+            if active * stiff / STABILITY > accurate {
+                limit
+            } else {
+                Limit::Oscillation
+            }
+        }
+        _ => limit,
+    };
+    let per_step = NANOSECONDS_PER_STEP
+        .iter()
+        .find(|(m, _)| *m == options.method)
+        .map_or(300.0, |(_, ns)| *ns);
+    WorkEstimate {
+        periods,
+        steps,
+        seconds: steps * per_step * 1e-9,
+        limit,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::damping::Damping;
+    use crate::Pendulum;
+
+    fn estimate(length: f64, zeta: f64, drag: f64, duration: f64, method: Method) -> WorkEstimate {
+        let p = Pendulum::with_standard_gravity(length).unwrap();
+        let model = Model::new(p, Damping::from_zeta(zeta).unwrap(), drag, 0.0).unwrap();
+        let options = Options {
+            duration,
+            tolerance: 1e-10,
+            method,
+            sample_interval: None,
+        };
+        work_estimate(&model, Amplitude::from_degrees(3.0).unwrap(), &options)
+    }
+
+    #[test]
+    fn periods_follow_the_length() {
+        let e = estimate(0.99362, 0.0, 0.0, 7.0 * 86_400.0, Method::Symplectic);
+        assert!((e.periods - 302_400.0).abs() < 1.0, "{}", e.periods);
+        assert_eq!(e.limit, Limit::Oscillation);
+        let tiny = estimate(1e-300, 0.0, 0.0, 1.0, Method::Dop853);
+        assert!(tiny.periods > 1e149 && tiny.seconds.is_finite());
+    }
+
+    #[test]
+    fn stiffness_is_named() {
+        let e = estimate(0.99362, 1e9, 0.0, 60.0, Method::Dop853);
+        assert_eq!(e.limit, Limit::Viscous);
+        assert!(e.steps > 1e10);
+        let d = estimate(0.99362, 0.0, 1e9, 10.0, Method::Symplectic);
+        assert_eq!(d.limit, Limit::Drag);
+    }
+
+    #[test]
+    fn decay_ends_the_work() {
+        // Q = 300 over a year: the swing is gone after about 1e5 periods.
+        let e = estimate(0.99362, 1.0 / 600.0, 0.0, 3.2e7, Method::Dop853);
+        assert!(e.periods < 2e5, "{}", e.periods);
+    }
+}

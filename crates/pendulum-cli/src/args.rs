@@ -23,22 +23,66 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// The exact period at any amplitude, the circular error in s/day, and the seed's series.
+    /// The exact period at any amplitude, the circular error in s/day, and the power series.
+    #[command(after_help = "Examples:
+  pendulum period --length 0.99362m --amplitude 2deg
+  pendulum period --length 994mm --amplitude 1deg..10deg --steps 10 --csv
+  pendulum period --length 0.99362m --amplitude 1deg..30deg --plot period.svg
+
+Method: T = 4 sqrt(l/g) K(sin²(A0/2)) (section 1-6 of the web book 機械式時計の理論,
+The theory of mechanical clocks and watches), K by the arithmetic-geometric mean.")]
     Period(PeriodArgs),
     /// The length that gives a period (or a beat rate) at an amplitude.
+    #[command(after_help = "Examples:
+  pendulum length --bph 3600 --amplitude 3deg
+  pendulum length --period 2s --latitude 51.75 --height 70m --json")]
     Length(LengthArgs),
     /// The amplitude a measured period implies for a pendulum of known length.
+    #[command(after_help = "Examples:
+  pendulum amplitude --period 2.0001s --length 0.99362m
+  pendulum amplitude --period 2.0001s --length 0.99362m --period-uncertainty 10us")]
     Amplitude(AmplitudeArgs),
     /// Local gravity from latitude and height (WGS 84 normal gravity).
+    #[command(after_help = "Examples:
+  pendulum gravity --latitude 51.75 --height 70m
+  pendulum gravity --latitude -33.9 --json
+
+Heights from -11 km to +100 km (the free-air formula means nothing inside the Earth).")]
     Gravity(GravityCommandArgs),
-    /// The damped pendulum (seed section 1-4): Q, decay, turning points, dry friction, energy.
+    /// The damped pendulum in the small-angle theory: Q, decay, turning points, dry friction, energy.
+    #[command(after_help = "Examples:
+  pendulum damped --length 0.99362m --amplitude 3deg --q 10000 --mass 5kg
+  pendulum damped --length 0.99362m --amplitude 3deg --q 300 --friction-angle 0.02deg --extrema 40
+  pendulum damped --length 1m --amplitude 5deg --zeta 0.05 --trajectory - --duration 60s
+
+Theory: the linear viscous pendulum of section 1-4 of the web book 機械式時計の理論
+(The theory of mechanical clocks and watches), with dry friction as in its section 2-4.
+Above about 10° the small-angle period is off; `pendulum simulate` integrates the full
+nonlinear motion.")]
     Damped(Box<DampedArgs>),
     /// The full nonlinear damped pendulum, integrated over days of swings.
+    #[command(after_help = "Examples:
+  pendulum simulate --length 0.99362m --amplitude 3deg --q 1e6 --duration 7day --method symplectic --swings week.csv
+  pendulum simulate --length 1m --amplitude 120deg --duration 60s --method exact --trajectory big.csv
+  pendulum simulate --length 0.99362m --amplitude 10deg --q 300 --duration 1h --swings - --quiet
+
+Runs estimated to need more than a few seconds of computing are refused without --force.
+Ctrl-C stops a run with its files complete (exit status 130).")]
     Simulate(Box<SimulateArgs>),
     /// Fit the theory to measurements: amplitude decay, tracked angle, beat times.
+    #[command(after_help = "Examples:
+  pendulum fit decay examples/rundown.csv --length 0.99362m --mass 5kg --plot decay.svg
+  pendulum fit trajectory examples/video.csv --length 0.5m --model nonlinear
+  pendulum fit beats examples/beats.csv --bph 3600")]
     Fit(FitArgs),
     /// The one-command analysis of a pendulum, as an HTML page with figures
     /// (default: a seconds pendulum at 3° with Q = 10,000).
+    #[command(after_help = "Examples:
+  pendulum report
+  pendulum report --length 0.2485m --amplitude 5deg --q 3000 --output half-seconds
+  pendulum report --zeta 0 --output free
+
+The folder is written whole or not at all; the simulated run-down is at most 10^5 periods.")]
     Report(ReportArgs),
 }
 
@@ -206,10 +250,10 @@ pub struct PeriodArgs {
     /// Amplitude (e.g. 3deg, 0.05rad), or a range 1deg..10deg for a table.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: String,
-    /// Rows in the table when --amplitude is a range.
+    /// Rows in the table when --amplitude is a range (at least 2).
     #[arg(long, value_name = "N", default_value_t = 10)]
     pub steps: u32,
-    /// Terms of the seed's power series in sin²(A0/2) to compare with.
+    /// Terms of the power series of K in sin²(A0/2) (section 1-6) to compare with.
     #[arg(long, value_name = "N", default_value_t = 3)]
     pub series_terms: u32,
     /// Plot T/T0 (exact, series of 1 to 5 terms, small-angle) and the
@@ -290,7 +334,7 @@ pub struct DampingArgs {
     /// Quality factor Q = 1/(2ζ).
     #[arg(long, value_name = "Q", allow_hyphen_values = true)]
     pub q: Option<String>,
-    /// The seed's viscous coefficient c in N s (force on the bob c dθ/dt); needs --mass.
+    /// The viscous damping coefficient c in N s (force on the bob c dθ/dt); needs --mass.
     #[arg(long, value_name = "C", allow_hyphen_values = true, requires = "mass")]
     pub damping_coefficient: Option<String>,
     /// Logarithmic decrement of the amplitude per full period.

@@ -52,6 +52,23 @@ impl Columns {
         }
     }
 
+    /// Checks that the amplitudes of column `column` (radians) are below
+    /// 180°: a pendulum released at or past the top never swings back.
+    pub fn require_swing(&self, column: usize) -> Result<(), CliError> {
+        let v = &self.values[column];
+        match v.iter().position(|&x| x.abs() >= std::f64::consts::PI) {
+            Some(i) => Err(self.error_at(
+                i,
+                column,
+                format!(
+                    "an amplitude of {}° is not a swing (it must be below 180°)",
+                    crate::output::num(v[i].to_degrees(), 8)
+                ),
+            )),
+            None => Ok(()),
+        }
+    }
+
     /// Checks that column `column` is positive throughout.
     pub fn require_positive(&self, column: usize) -> Result<(), CliError> {
         match self.values[column].iter().position(|&x| x <= 0.0) {

@@ -149,7 +149,10 @@ impl AtomicFile {
         temporary_name.push(format!(".{}.partial", std::process::id()));
         let temporary = real.with_file_name(temporary_name);
         let file = File::create(&temporary).map_err(|e| {
-            CliError::flag(flag, format!("cannot write in the folder of '{shown}': {e}"))
+            CliError::flag(
+                flag,
+                format!("cannot write in the folder of '{shown}': {e}"),
+            )
         })?;
         Ok(Self {
             sink: Some(Sink::File {
@@ -193,8 +196,8 @@ impl AtomicFile {
                 writer,
             } => {
                 let flushed = writer.into_inner().map_err(|e| e.error().to_string());
-                let renamed =
-                    flushed.and_then(|_| std::fs::rename(&temporary, &target).map_err(|e| e.to_string()));
+                let renamed = flushed
+                    .and_then(|_| std::fs::rename(&temporary, &target).map_err(|e| e.to_string()));
                 if let Err(e) = renamed {
                     let _ = std::fs::remove_file(&temporary);
                     return Err(self.write_error(e));
@@ -216,8 +219,7 @@ impl Drop for AtomicFile {
 
 /// A CSV file of numbers written row by row through an [`AtomicFile`]:
 /// shortest round-trip formatting (ryu), one buffer reused for every row.
-/// A non-finite number is refused (naming its column), and Ctrl-C ends the
-/// writing at the next row.
+/// A non-finite number is refused, naming its column.
 pub struct CsvFile {
     file: AtomicFile,
     columns: Vec<String>,
@@ -279,9 +281,6 @@ impl CsvFile {
             return Err(self.file.write_error(format!(
                 "the computed {name} is not a finite number (an overflow of the inputs)"
             )));
-        }
-        if interrupt::requested() {
-            return Err(interrupt::error());
         }
         self.line.push('\n');
         let result = self.file.writer().write_all(self.line.as_bytes());

@@ -185,11 +185,20 @@ mod tests {
         }
         let bad = Outer {
             fine: None,
-            inner: vec![Inner { value_s: 1.0 }, Inner { value_s: f64::INFINITY }],
+            inner: vec![
+                Inner { value_s: 1.0 },
+                Inner {
+                    value_s: f64::INFINITY,
+                },
+            ],
         };
         let message = json(&bad).unwrap_err().to_string();
         assert!(message.contains("inner[1].value_s"), "{message}");
-        assert!(json(&Outer { fine: None, inner: vec![] }).is_ok());
+        assert!(json(&Outer {
+            fine: None,
+            inner: vec![]
+        })
+        .is_ok());
         assert!(check_finite_text("Length  inf m").is_err());
         assert!(check_finite_text("Simulated NaN s").is_err());
         assert!(check_finite_text("undamped, infinite Q: none; 1e-300 m").is_ok());

@@ -281,7 +281,11 @@ mod tests {
             let t1 = 20.0 / (zeta * d.natural_angular_frequency());
             let a = d.state_at(1.0, 0.0, t1).angle;
             let b = d.state_at(1.0, 0.0, t1 + tau).angle;
-            assert!(((a / b).ln() - 1.0).abs() < 1e-6, "ζ {zeta}: {}", (a / b).ln());
+            assert!(
+                ((a / b).ln() - 1.0).abs() < 1e-6,
+                "ζ {zeta}: {}",
+                (a / b).ln()
+            );
         }
         let u = pendulum(0.01);
         assert_eq!(u.slowest_time_constant(), u.damping.decay_time(&u.pendulum));

@@ -138,6 +138,12 @@ pub enum Problem {
         /// The smallest value accepted, in the quantity's units.
         minimum: f64,
     },
+    /// So large or small that a result computed from it overflows (or
+    /// underflows to zero).
+    ResultOverflows {
+        /// What overflows ("the length").
+        result: &'static str,
+    },
 }
 
 /// A refused input: which quantity, the value given, and why.
@@ -190,6 +196,9 @@ impl InputError {
             }
             Problem::BelowMinimum { minimum } => {
                 format!("must be at least {}, got {got}", q.format_value(minimum))
+            }
+            Problem::ResultOverflows { result } => {
+                format!("out of range: {result} it gives is beyond double precision, got {got}")
             }
         }
     }

@@ -19,8 +19,17 @@ pub const ECCENTRICITY_SQUARED: f64 = 0.006_694_379_990_13;
 /// Free-air gradient, m/s² per metre (negative: gravity falls with height).
 pub const FREE_AIR_GRADIENT: f64 = -3.086e-6;
 
+/// The lowest height the free-air formula is used at, m: the deepest ocean
+/// floor (Challenger Deep, about −11 km). Below it one is inside the
+/// Earth, where gravity falls with depth instead of rising.
+pub const MIN_HEIGHT_M: f64 = -11_000.0;
+/// The highest, m: the Kármán line. The linear free-air term errs by
+/// `3h/R` of itself (5% at 100 km).
+pub const MAX_HEIGHT_M: f64 = 100_000.0;
+
 /// WGS 84 normal gravity at geodetic latitude `latitude_deg` (degrees,
-/// −90..=90) and `height_m` metres above the ellipsoid, m/s².
+/// −90..=90) and `height_m` metres above the ellipsoid, m/s²; heights from
+/// [`MIN_HEIGHT_M`] to [`MAX_HEIGHT_M`].
 ///
 /// 9.7803253359 at the equator, 9.8321849379 at the poles, 9.806199 at 45°.
 /// The formula is evaluated in double precision with no cancellation, so
@@ -36,19 +45,28 @@ pub fn normal_gravity(latitude_deg: f64, height_m: f64) -> Result<f64, InputErro
         ));
     }
     let h = require_finite(Quantity::Height, height_m)?;
-    let s2 = lat.to_radians().sin().powi(2);
-    let surface =
-        EQUATORIAL_GRAVITY * (1.0 + SOMIGLIANA_K * s2) / (1.0 - ECCENTRICITY_SQUARED * s2).sqrt();
-    let g = surface + FREE_AIR_GRADIENT * h;
-    if g <= 0.0 {
-        // Only at heights beyond 3000 km, where the linear term means nothing.
+    if h < MIN_HEIGHT_M {
         return Err(InputError::new(
             Quantity::Height,
             h,
-            Problem::AboveMaximum { maximum: 1.0e6 },
+            Problem::BelowMinimum {
+                minimum: MIN_HEIGHT_M,
+            },
         ));
     }
-    Ok(g)
+    if h > MAX_HEIGHT_M {
+        return Err(InputError::new(
+            Quantity::Height,
+            h,
+            Problem::AboveMaximum {
+                maximum: MAX_HEIGHT_M,
+            },
+        ));
+    }
+    let s2 = lat.to_radians().sin().powi(2);
+    let surface =
+        EQUATORIAL_GRAVITY * (1.0 + SOMIGLIANA_K * s2) / (1.0 - ECCENTRICITY_SQUARED * s2).sqrt();
+    Ok(surface + FREE_AIR_GRADIENT * h)
 }
 
 #[cfg(test)]
@@ -76,5 +94,15 @@ mod tests {
         assert!(normal_gravity(90.5, 0.0).is_err());
         assert!(normal_gravity(f64::NAN, 0.0).is_err());
         assert!(normal_gravity(10.0, f64::INFINITY).is_err());
+    }
+
+    #[test]
+    fn refuses_heights_inside_the_earth_or_in_space() {
+        // 1e7 m below sea level is inside the Earth (issue 9).
+        let deep = normal_gravity(45.0, -1e7).unwrap_err();
+        assert!(matches!(deep.problem, Problem::BelowMinimum { .. }));
+        assert!(normal_gravity(45.0, 1e6).is_err());
+        assert!(normal_gravity(45.0, -10_994.0).is_ok()); // Challenger Deep
+        assert!(normal_gravity(45.0, 8_849.0).is_ok()); // Everest
     }
 }

@@ -200,7 +200,19 @@ pub fn length_for_period(
     let g = require_positive(Quantity::Gravity, g_m_s2)?;
     let small_angle_period = period / period_ratio(amplitude);
     let root = small_angle_period / TAU;
-    Ok(g * root * root)
+    let length = g * root * root;
+    if !length.is_finite() || length == 0.0 {
+        // Periods beyond about 1e150 s (or below 1e-150 s) give lengths
+        // outside the range of double precision.
+        return Err(InputError::new(
+            Quantity::Period,
+            period,
+            Problem::ResultOverflows {
+                result: "the length",
+            },
+        ));
+    }
+    Ok(length)
 }
 
 /// Seconds in an hour, for beat rates.

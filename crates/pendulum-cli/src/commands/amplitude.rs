@@ -17,6 +17,16 @@ struct AmplitudeJson {
     condition_number: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     amplitude_uncertainty_rad: Option<f64>,
+    /// The amplitudes of the period minus and plus its uncertainty (the
+    /// lower clipped at 0 where that period is below the small-angle one).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    amplitude_low_rad: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    amplitude_high_rad: Option<f64>,
+    /// Set when the period minus its uncertainty is below the small-angle
+    /// period: the measurement then only bounds the amplitude from above.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    amplitude_upper_bound_rad: Option<f64>,
     period_s: f64,
     small_angle_period_s: f64,
     length_m: f64,
@@ -38,7 +48,7 @@ pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
                     format!("must not be negative, got {dt} s"),
                 ));
             }
-            Some(amplitude_uncertainty(&pendulum, period, dt)?)
+            Some(amplitude_interval(&pendulum, period, dt)?)
         }
         None => None,
     };
@@ -47,7 +57,10 @@ pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
         amplitude_rad: a.radians(),
         amplitude_deg: a.degrees(),
         condition_number: finite(estimate.condition_number),
-        amplitude_uncertainty_rad: uncertainty,
+        amplitude_uncertainty_rad: uncertainty.map(|i| 0.5 * (i.high - i.low)),
+        amplitude_low_rad: uncertainty.map(|i| i.low),
+        amplitude_high_rad: uncertainty.map(|i| i.high),
+        amplitude_upper_bound_rad: uncertainty.filter(|i| i.clipped).map(|i| i.high),
         period_s: period,
         small_angle_period_s: pendulum.small_angle_period(),
         length_m: pendulum.length_m(),
@@ -59,23 +72,47 @@ pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
     }
     let mut s = Summary::default();
     let amplitude = match uncertainty {
-        Some(da) => format!(
-            "{}° ± {}°  ({} rad)",
+        // Below T0 the measurement bounds the amplitude only from above.
+        Some(i) if i.clipped => format!(
+            "{}°  ({} rad); not determined within the period's uncertainty: \
+             at most {}°",
             num(a.degrees(), 8),
-            num(da.to_degrees(), 3),
+            num(a.radians(), 8),
+            num(i.high.to_degrees(), 3)
+        ),
+        // A symmetric ± where the interval is nearly so, else its ends.
+        Some(i)
+            if (i.high - a.radians() - (a.radians() - i.low)).abs() < 0.1 * (i.high - i.low) =>
+        {
+            format!(
+                "{}° ± {}°  ({} rad)",
+                num(a.degrees(), 8),
+                num(0.5 * (i.high - i.low).to_degrees(), 3),
+                num(a.radians(), 8)
+            )
+        }
+        Some(i) => format!(
+            "{}°, between {}° and {}°  ({} rad)",
+            num(a.degrees(), 8),
+            num(i.low.to_degrees(), 3),
+            num(i.high.to_degrees(), 3),
             num(a.radians(), 8)
         ),
         None => format!("{}°  ({} rad)", num(a.degrees(), 8), num(a.radians(), 8)),
     };
-    s.row("Amplitude", amplitude)
-        .row(
-            "Conditioning",
-            format!(
-                "{}: an error of 1 ppm in the period moves the amplitude by {} ppm",
-                num(estimate.condition_number, 3),
-                num(estimate.condition_number, 3)
-            ),
+    let conditioning = if estimate.condition_number.is_finite() {
+        format!(
+            "{}: an error of 1 ppm in the period moves the amplitude by {} ppm",
+            num(estimate.condition_number, 3),
+            num(estimate.condition_number, 3)
         )
+    } else {
+        "not determined: at the small-angle period the amplitude has no finite \
+         sensitivity to the period"
+            .to_string()
+    };
+    s.row("Amplitude", amplitude)
+        .row("Conditioning", conditioning)
         .row("Precision", precision_note(estimate.condition_number))
         .row("Period", format!("{} s", num(period, 12)))
         .row(
@@ -116,11 +153,22 @@ fn solve(
     amplitude_for_period(pendulum, period).map_err(|e| CliError::input("--period", &e))
 }
 
-/// Half the spread of the amplitudes implied by `period ± dt` (the lower
-/// end clamped at the small-angle period, where the amplitude is zero).
-fn amplitude_uncertainty(pendulum: &Pendulum, period: f64, dt: f64) -> Result<f64, CliError> {
+/// The amplitudes implied by `period ± dt`.
+#[derive(Clone, Copy)]
+struct Interval {
+    low: f64,
+    high: f64,
+    /// `period - dt` was below the small-angle period (`low` is then 0).
+    clipped: bool,
+}
+
+/// The amplitudes implied by `period ± dt`: the lower end clipped at the
+/// small-angle period, where the amplitude is zero; the upper end always
+/// below 180°, since the period grows without bound there.
+fn amplitude_interval(pendulum: &Pendulum, period: f64, dt: f64) -> Result<Interval, CliError> {
     let t0 = pendulum.small_angle_period();
     let high = solve(pendulum, period + dt)?.amplitude.radians();
+    let clipped = period - dt <= t0;
     let low = solve(pendulum, (period - dt).max(t0))?.amplitude.radians();
-    Ok(0.5 * (high - low))
+    Ok(Interval { low, high, clipped })
 }

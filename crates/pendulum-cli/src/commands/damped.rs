@@ -1,4 +1,4 @@
-//! `pendulum damped`: the damped pendulum of seed section 1-4, with dry
+//! `pendulum damped`: the damped pendulum of section 1-4 of the clock book, with dry
 //! friction (book section 2-4) and the energy budget.
 
 use super::common::{self, finite};
@@ -194,7 +194,10 @@ fn warnings(r: &Results, exact_period: f64) -> Vec<String> {
             num(exact_period, 7),
             r.damped
                 .damped_period()
-                .map_or("the small-angle one".to_string(), |p| format!("{} s", num(p, 7)))
+                .map_or("the small-angle one".to_string(), |p| format!(
+                    "{} s",
+                    num(p, 7)
+                ))
         ));
     }
     out
@@ -283,7 +286,10 @@ fn text(r: &Results, j: &DampedJson) -> String {
     let mut s = Summary::default();
     s.row("Length", format!("{} m", num(j.length_m, 10)))
         // Ten digits: a release at 179.999999° must not read as 180°.
-        .row("Amplitude", format!("{}°", num(j.amplitude_rad.to_degrees(), 10)))
+        .row(
+            "Amplitude",
+            format!("{}°", num(j.amplitude_rad.to_degrees(), 10)),
+        )
         .row(
             "Damping",
             format!(
@@ -392,6 +398,10 @@ fn write_trajectory(
     )?;
     let mut sampler = r.friction.sampler(r.amplitude.radians());
     for i in 0..samples {
+        // Ctrl-C: the temporary file is removed, nothing is left.
+        if i % 4096 == 0 && crate::interrupt::requested() {
+            return Err(crate::interrupt::error());
+        }
         let t = i as f64 * interval;
         let state = sampler.state_at(t);
         file.number(Some(t))

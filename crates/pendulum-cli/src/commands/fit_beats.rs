@@ -175,8 +175,15 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         "Rate",
         match (a.rate_s_per_day, a.nominal_beat) {
             (Some(r), Some(n)) => format!(
-                "{} s/day against {} beats/hour",
+                "{} s/day ({}) against {} beats/hour",
                 num(r, 4),
+                if r > 0.0 {
+                    "gaining"
+                } else if r < 0.0 {
+                    "losing"
+                } else {
+                    "keeping time"
+                },
                 num(beats_per_hour(2.0 * n), 6)
             ),
             _ => "unknown: give --bph or --period (no standard rate within 2%)".into(),

@@ -31,6 +31,9 @@ struct ModelJson {
     parameters: BTreeMap<&'static str, f64>,
     standard_errors: BTreeMap<&'static str, f64>,
     q_factor: Option<f64>,
+    /// With no measurable viscous decay: the two-sigma lower bound on Q.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    q_factor_lower_bound: Option<f64>,
     residual_rms: f64,
     aic: f64,
     bic: f64,
@@ -76,6 +79,7 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     let columns = read_columns(&args.file, &wanted)?;
     columns.require_increasing(0)?;
     columns.require_positive(1)?;
+    columns.require_swing(1)?;
     let amplitude = &columns.values[1];
     let time = if columns.names[0] == "swing" {
         let p = pendulum.as_ref().ok_or_else(|| {
@@ -154,6 +158,7 @@ fn model_json(f: &DecayFit, pendulum: Option<&Pendulum>, mass: Option<f64>) -> M
         parameters,
         standard_errors,
         q_factor: f.q_factor.and_then(finite),
+        q_factor_lower_bound: f.q_factor_lower_bound.and_then(finite),
         residual_rms: f.fit.residual_rms,
         aic: f.fit.aic,
         bic: f.fit.bic,
@@ -181,6 +186,12 @@ fn text(r: &DecayJson) -> String {
         }
         if let Some(q) = m.q_factor {
             out.push_str(&format!("  {:<28} {}\n", "Q", num(q, 5)));
+        } else if let Some(q) = m.q_factor_lower_bound {
+            out.push_str(&format!(
+                "  {:<28} no measurable decay: Q > {} (two standard errors)\n",
+                "Q",
+                num(q, 3)
+            ));
         }
         if let (Some(e), Some(p)) = (m.energy_loss_per_period_j, m.power_w) {
             out.push_str(&format!(

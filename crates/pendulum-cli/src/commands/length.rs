@@ -27,8 +27,26 @@ pub fn run(args: &LengthArgs) -> Result<String, CliError> {
         Some(text) => common::amplitude("--amplitude", text)?,
         None => Amplitude::from_radians(0.0).expect("zero is a valid amplitude"),
     };
-    let length = length_for_period(period, amplitude, gravity.g_m_s2)
-        .map_err(|e| CliError::input("--period", &e))?;
+    // The period came from --bph when --period was not given.
+    let flag = if args.period.is_some() {
+        "--period"
+    } else {
+        "--bph"
+    };
+    let length = length_for_period(period, amplitude, gravity.g_m_s2).map_err(|e| {
+        if args.period.is_none() && e.quantity == pendulum_theory::Quantity::Period {
+            let bph = beats_per_hour(period);
+            CliError::flag(
+                flag,
+                format!(
+                    "out of range: the length it gives is beyond double precision, got {} beats/h",
+                    num(bph, 6)
+                ),
+            )
+        } else {
+            CliError::input(flag, &e)
+        }
+    })?;
     let result = LengthJson {
         length_m: length,
         period_s: period,

@@ -1,5 +1,5 @@
 //! `pendulum period`: the exact period at one amplitude, or a table over a
-//! range of amplitudes (seed section 1-6).
+//! range of amplitudes (section 1-6 of the clock book).
 
 use super::common::{self, ResolvedGravity};
 use crate::args::PeriodArgs;
@@ -110,17 +110,18 @@ fn amplitudes(args: &PeriodArgs) -> Result<Vec<Amplitude>, CliError> {
         return Ok(vec![common::amplitude(flag, &args.amplitude)?]);
     };
     let (from, to) = range.map_err(|e| CliError::flag(flag, e))?;
-    if args.steps == 0 || args.steps > MAX_STEPS {
+    // A range has two ends: at least two rows.
+    if args.steps < 2 || args.steps > MAX_STEPS {
         return Err(CliError::flag(
             "--steps",
-            format!("must be between 1 and {MAX_STEPS}, got {}", args.steps),
+            format!(
+                "must be between 2 and {MAX_STEPS} with a range of amplitudes, got {}",
+                args.steps
+            ),
         ));
     }
-    let first = common::amplitude_from_radians(flag, from)?;
+    common::amplitude_from_radians(flag, from)?;
     common::amplitude_from_radians(flag, to)?;
-    if args.steps == 1 {
-        return Ok(vec![first]);
-    }
     // Spaced in degrees, the unit people type, so 1deg..10deg gives 1, 2, … 10
     // exactly rather than 2.0000000000000004.
     let (from_deg, to_deg) = (from.to_degrees(), to.to_degrees());
@@ -252,7 +253,7 @@ fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodAnal
     out
 }
 
-/// T/T0 against amplitude (exact, the seed's series with 1 to 5 terms, the
+/// T/T0 against amplitude (exact, the power series with 1 to 5 terms, the
 /// small-angle value) above the circular error in s/day.
 pub fn figure(pendulum: &Pendulum, from_deg: f64, to_deg: f64) -> Figure {
     let grid: Vec<Amplitude> = (0..=200)

@@ -216,7 +216,7 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
                 num(exact.to_degrees(), 5),
                 num(approx.to_degrees(), 5)
             ),
-            "A0 (1 - e^(-δ)), and the seed's first-order δ A0",
+            "A0 (1 - e^(-δ)), and the first-order δ A0 of section 1-4",
         ));
     }
     let overdamped = damping.zeta() > 1.0;

@@ -207,9 +207,7 @@ fn check_work(
     options: &Options,
 ) -> Result<(), CliError> {
     let work = work_estimate(model, amplitude, options);
-    if work.seconds <= MAX_WORK_SECONDS
-        || (args.force && work.seconds <= IMPOSSIBLE_WORK_SECONDS)
-    {
+    if work.seconds <= MAX_WORK_SECONDS || (args.force && work.seconds <= IMPOSSIBLE_WORK_SECONDS) {
         return Ok(());
     }
     let (flag, why) = match work.limit {
@@ -366,11 +364,7 @@ struct SwingsFile {
 }
 
 impl CliObserver {
-    fn new(
-        args: &SimulateArgs,
-        pendulum: &Pendulum,
-        options: &Options,
-    ) -> Result<Self, CliError> {
+    fn new(args: &SimulateArgs, pendulum: &Pendulum, options: &Options) -> Result<Self, CliError> {
         let swings = match &args.swings {
             Some(path) => Some(SwingsFile {
                 file: CsvFile::create(

@@ -5,7 +5,10 @@
 //! * Gaps and doubles are repaired first: against the median interval, an
 //!   interval under half of it marks a doubled (spurious) beat, which is
 //!   dropped, and one of `k` times it marks `k - 1` missed beats, which are
-//!   filled in evenly.
+//!   filled in evenly, up to [`MAX_FILLED`] of them. A longer gap is a
+//!   pause in the record, not missed beats: how many beats it held cannot be
+//!   told from the times (a 28-hour pause at +4 s/day is 4.6 beats off a
+//!   whole count), so it is refused with its place, to split the record.
 //! * The mean beat is the slope of the least-squares line of time against
 //!   beat number, as timers compute it (robust to the jitter of single beats).
 //! * Beat error is half the difference between the mean "tick" and "tock"
@@ -84,6 +87,22 @@ pub enum BeatError {
         /// Its time, s.
         time: f64,
     },
+    /// A pause in the record too long to fill with missed beats.
+    #[error(
+        "beat {index} at {time} s comes {gap} s after the one before, about {beats} beats: \
+         a pause in the record, not missed beats (at most 10 are filled in); \
+         analyse the parts before and after it separately"
+    )]
+    Gap {
+        /// Index of the timestamp after the gap.
+        index: usize,
+        /// Its time, s.
+        time: f64,
+        /// The gap, s.
+        gap: f64,
+        /// The gap in typical beats.
+        beats: f64,
+    },
 }
 
 /// Analyses beat timestamps `times` (s); `nominal_beat` (s) is the beat the
@@ -96,6 +115,10 @@ pub fn analyse_beats(times: &[f64], nominal_beat: Option<f64>) -> Result<BeatAna
     }
     stream.finish(nominal_beat)
 }
+
+/// The most missed beats one gap may be filled with; a longer gap is
+/// refused ([`BeatError::Gap`]).
+pub const MAX_FILLED: usize = 10;
 
 /// Timestamps buffered to find the typical interval before the stream starts.
 const WARM_UP: usize = 1001;
@@ -179,16 +202,15 @@ impl BeatStream {
         if self.typical == 0.0 {
             self.warm_up.push(t);
             if self.warm_up.len() == WARM_UP {
-                self.start();
+                self.start()?;
             }
             return Ok(());
         }
-        self.repaired(t);
-        Ok(())
+        self.repaired(t, self.raw_count - 1)
     }
 
     /// Sets the typical interval from the buffered timestamps and replays them.
-    fn start(&mut self) {
+    fn start(&mut self) -> Result<(), BeatError> {
         let buffered = std::mem::take(&mut self.warm_up);
         let mut intervals: Vec<f64> = buffered.windows(2).map(|w| w[1] - w[0]).collect();
         intervals.sort_by(f64::total_cmp);
@@ -205,19 +227,31 @@ impl BeatStream {
             })
             .collect();
         self.accept(buffered[0]);
-        for &t in &buffered[1..] {
-            self.repaired(t);
+        for (i, &t) in buffered.iter().enumerate().skip(1) {
+            self.repaired(t, i)?;
         }
+        Ok(())
     }
 
-    /// Drops a doubled beat, fills in missed ones, then accepts `t`.
-    fn repaired(&mut self, t: f64) {
+    /// Drops a doubled beat, fills in missed ones, then accepts `t` (the
+    /// `index`-th timestamp); refuses a pause of more than [`MAX_FILLED`]
+    /// missed beats.
+    fn repaired(&mut self, t: f64, index: usize) -> Result<(), BeatError> {
         let gap = t - self.last;
         if gap < 0.5 * self.typical {
             self.repairs.doubled += 1;
-            return;
+            return Ok(());
         }
-        let k = (gap / self.typical).round() as usize;
+        let beats = gap / self.typical;
+        if beats > MAX_FILLED as f64 + 1.5 {
+            return Err(BeatError::Gap {
+                index,
+                time: t,
+                gap,
+                beats: beats.round(),
+            });
+        }
+        let k = beats.round() as usize;
         if k >= 2 {
             let last = self.last;
             for j in 1..k {
@@ -226,6 +260,7 @@ impl BeatStream {
             self.repairs.missed += k - 1;
         }
         self.accept(t);
+        Ok(())
     }
 
     fn accept(&mut self, t: f64) {
@@ -268,7 +303,7 @@ impl BeatStream {
             if self.warm_up.len() < 4 {
                 return Err(BeatError::TooFew(self.warm_up.len()));
             }
-            self.start();
+            self.start()?;
         }
         let mean_beat = self.typical + self.co_nt / self.co_nn;
         let nominal_beat = nominal_beat.or_else(|| nearest_standard(mean_beat));
@@ -409,6 +444,29 @@ mod tests {
             );
         }
         assert!(a.allan_deviation.len() >= 8);
+    }
+
+    #[test]
+    fn a_pause_is_refused_not_filled() {
+        // An hour at 3600 bph gaining 4 s/day, a 27.8-hour pause, an hour
+        // more: filling the pause would invent about 1e5 beats and a wrong
+        // rate (issue 9 measured -56 s/day for the truth +4).
+        let beat = 1.0 / (1.0 + 4.0 / 86_400.0);
+        let mut t: Vec<f64> = (0..3600).map(|i| i as f64 * beat).collect();
+        let resume = t[3599] + 27.8 * 3600.0;
+        t.extend((0..3600).map(|i| resume + i as f64 * beat));
+        match analyse_beats(&t, Some(1.0)) {
+            Err(BeatError::Gap { index, beats, .. }) => {
+                assert_eq!(index, 3600);
+                assert!(beats > 1e5, "{beats}");
+            }
+            other => panic!("{other:?}"),
+        }
+        // Ten missed beats in a row are still filled in.
+        let mut short: Vec<f64> = (0..100).map(|i| i as f64).collect();
+        short.retain(|&x| !(40.0..50.0).contains(&x));
+        let a = analyse_beats(&short, Some(1.0)).unwrap();
+        assert_eq!(a.repaired.missed, 10);
     }
 
     #[test]

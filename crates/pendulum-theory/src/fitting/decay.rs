@@ -52,8 +52,14 @@ pub struct DecayFit {
     pub fit: Fit,
     /// The fitted rates and, given `ω`, the physical parameters.
     pub parameters: Vec<Estimate>,
-    /// `Q = ω/(2λ)`, for the models with viscous damping and a known `ω`.
+    /// `Q = ω/(2λ)`, for the models with viscous damping and a known `ω`,
+    /// when the decay is measurable (`ζ` at least two standard errors
+    /// above 0).
     pub q_factor: Option<f64>,
+    /// When the viscous decay is not measurable (`ζ` within two standard
+    /// errors of 0, or below): the two-sigma lower bound on Q,
+    /// `1/(2 (ζ + 2σ_ζ))`, what the data can still say.
+    pub q_factor_lower_bound: Option<f64>,
 }
 
 impl DecayModel {
@@ -195,7 +201,7 @@ pub fn fit_decay(
             standard_error,
         })
         .collect();
-    let mut q_factor = None;
+    let (mut q_factor, mut q_factor_lower_bound) = (None, None);
     if let Some(w) = omega {
         let physical: Vec<Estimate> = parameters
             .iter()
@@ -217,10 +223,14 @@ pub fn fit_decay(
                 })
             })
             .collect();
-        q_factor = physical
-            .iter()
-            .find(|e| e.name == "zeta")
-            .map(|e| 0.5 / e.value);
+        if let Some(z) = physical.iter().find(|e| e.name == "zeta") {
+            if z.value > 2.0 * z.standard_error {
+                q_factor = Some(0.5 / z.value);
+            } else {
+                let upper = z.value.max(0.0) + 2.0 * z.standard_error;
+                q_factor_lower_bound = (upper > 0.0).then(|| 0.5 / upper);
+            }
+        }
         parameters.extend(physical);
     }
     Ok(DecayFit {
@@ -228,6 +238,7 @@ pub fn fit_decay(
         fit,
         parameters,
         q_factor,
+        q_factor_lower_bound,
     })
 }
 

@@ -189,7 +189,7 @@ fn run_adaptive<P: EmbeddedPair>(
         // t + h_step is exactly t_new and no rounding builds up in t.
         let t_new = if last { run.duration } else { t + h };
         let h_step = t_new - t;
-        if !(h_step > 0.0) {
+        if h_step.is_nan() || h_step <= 0.0 {
             return run.ended(t, y, Stopped::StepTooSmall);
         }
         let direction = run.direction;
@@ -198,7 +198,7 @@ fn run_adaptive<P: EmbeddedPair>(
         run.evaluations += P::EVALUATIONS;
         let (y1, error) = P::end(&step);
         // A NaN error norm (an overflow inside the step) is a rejection.
-        if !(error <= 1.0) {
+        if error.is_nan() || error > 1.0 {
             run.outcome.rejected_steps += 1;
             let factor = if error.is_nan() {
                 MIN_FACTOR
@@ -291,4 +291,3 @@ impl<F: Fn(f64, State2) -> State2> Interpolant for ReStep<'_, F> {
         .y1
     }
 }
-

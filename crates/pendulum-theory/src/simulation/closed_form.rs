@@ -92,4 +92,3 @@ pub(super) fn run_exact(
         energy_gain: None,
     }
 }
-

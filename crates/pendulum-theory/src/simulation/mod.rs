@@ -29,8 +29,8 @@ pub use work::{work_estimate, Limit, WorkEstimate};
 
 use crate::damped::State;
 use crate::damping::Damping;
-use crate::integrate::State2;
 use crate::error::{require_non_negative, require_positive, InputError, Quantity};
+use crate::integrate::State2;
 use crate::pendulum::{Amplitude, Pendulum};
 
 /// The physics: a pendulum and what slows it.
@@ -338,7 +338,8 @@ pub fn energy_amplitude(pendulum: &Pendulum, state: &State) -> f64 {
 
 /// The rate a clock would keep if every beat took `half_period` seconds,
 /// against the small-angle beat `T0/2` of `pendulum`, in s/day:
-/// `86400 (1 - (T0/2) / half_period)`; negative when it loses. This is the
+/// `86400 (1 - (T0/2) / half_period)`; positive when the swing is slower
+/// than the small-angle one (the clock loses that much). This is the
 /// circular error a half swing shows, the column `rate_s_per_day` of a
 /// swings file.
 pub fn half_swing_rate(pendulum: &Pendulum, half_period: f64) -> f64 {
@@ -374,4 +375,3 @@ pub fn simulate(
         Method::Vern9 => Ok(adaptive::run_vern9(model, amplitude, options, observer)),
     }
 }
-

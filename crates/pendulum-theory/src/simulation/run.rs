@@ -9,8 +9,8 @@
 //! to the observer back to seconds and rad/s.
 
 use super::{
-    Action, Crossing, EnergyGain, Model, Observer, Outcome, Stopped, TurningPoint,
-    AMPLITUDE_FLOOR, PROGRESS_EVERY,
+    Action, Crossing, EnergyGain, Model, Observer, Outcome, Stopped, TurningPoint, AMPLITUDE_FLOOR,
+    PROGRESS_EVERY,
 };
 use crate::damped::State;
 use crate::integrate::events::{crossed, locate_root, Direction};

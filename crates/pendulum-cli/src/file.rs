@@ -100,6 +100,16 @@ fn resolve_link(path: &Path) -> PathBuf {
     current
 }
 
+/// The hidden temporary name beside `target`, `.NAME.PID.partial`, in the
+/// same folder so that the final rename stays on one file system; `None`
+/// when `target` has no file name (`/`, `..`).
+fn temporary_beside(target: &Path) -> Option<PathBuf> {
+    let mut name = std::ffi::OsString::from(".");
+    name.push(target.file_name()?);
+    name.push(format!(".{}.partial", std::process::id()));
+    Some(target.with_file_name(name))
+}
+
 /// Where the bytes go.
 enum Sink {
     /// A temporary file beside the target, renamed into place at the end.
@@ -141,13 +151,8 @@ impl AtomicFile {
             ));
         }
         let real = resolve_link(target);
-        let name = real
-            .file_name()
+        let temporary = temporary_beside(&real)
             .ok_or_else(|| CliError::flag(flag, format!("'{shown}' is not a file name")))?;
-        let mut temporary_name = std::ffi::OsString::from(".");
-        temporary_name.push(name);
-        temporary_name.push(format!(".{}.partial", std::process::id()));
-        let temporary = real.with_file_name(temporary_name);
         let file = File::create(&temporary).map_err(|e| {
             CliError::flag(
                 flag,
@@ -313,13 +318,8 @@ impl AtomicFolder {
                 format!("'{shown}' exists and is not a folder"),
             ));
         }
-        let name = target
-            .file_name()
+        let temporary = temporary_beside(target)
             .ok_or_else(|| CliError::flag(flag, format!("'{shown}' is not a folder name")))?;
-        let mut temporary_name = std::ffi::OsString::from(".");
-        temporary_name.push(name);
-        temporary_name.push(format!(".{}.partial", std::process::id()));
-        let temporary = target.with_file_name(temporary_name);
         if let Some(parent) = target.parent().filter(|p| !p.as_os_str().is_empty()) {
             std::fs::create_dir_all(parent)
                 .map_err(|e| CliError::flag(flag, format!("cannot create '{shown}': {e}")))?;

@@ -31,17 +31,29 @@ impl From<String> for Output {
     }
 }
 
+/// The words of `text` as the finiteness check splits them.
+fn words(text: &str) -> impl Iterator<Item = &str> {
+    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '.' || c == '_'))
+}
+
 /// Refuses text holding a non-finite number (`NaN`, `inf`, `-inf` as a
 /// word): the one check every printed text passes, whatever made it.
+/// Words the user typed (a file called `nan`) are echoes, not results.
 pub fn check_finite_text(text: &str) -> Result<(), CliError> {
-    let bad = text
-        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '.' || c == '_'))
-        .find(|word| matches!(*word, "NaN" | "inf" | "infinity" | "Infinity" | "nan"));
+    let typed: Vec<String> = std::env::args_os()
+        .skip(1)
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
+    let typed_words: Vec<&str> = typed.iter().flat_map(|a| words(a)).collect();
+    let bad = words(text).find(|word| {
+        matches!(*word, "NaN" | "inf" | "infinity" | "Infinity" | "nan")
+            && !typed_words.contains(word)
+    });
     match bad {
-        Some(word) => Err(CliError::other(format!(
-            "a result came out as '{word}' for these inputs (an overflow or an undefined value); \
-             please report it with the command line"
-        ))),
+        Some(_) => Err(CliError::other(
+            "a result is not a finite number for these inputs (an overflow or an undefined \
+             value); please report it with the command line",
+        )),
         None => Ok(()),
     }
 }

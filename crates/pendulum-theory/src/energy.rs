@@ -12,7 +12,7 @@
 //! `Ω = 2 ω_n sin(A/2)`, an angular impulse `J` adds `Ω J` of energy
 //! (to first order in `J`), so `J = ΔE_beat / Ω`.
 
-use crate::error::{require_positive, InputError, Quantity};
+use crate::error::{require_positive, InputError, Problem, Quantity};
 use crate::pendulum::Pendulum;
 
 /// The energy budget at one amplitude.
@@ -30,7 +30,8 @@ pub struct EnergyBudget {
 
 /// The budget of a bob of `mass_kg` on `pendulum` swinging at `amplitude`
 /// (rad) that loses `half_swing_loss` (rad) of amplitude per beat, with a
-/// full period of `period` (s). The mass must be positive.
+/// full period of `period` (s). The mass must be positive; a budget that
+/// overflows (a pendulum of 1e300 m) is refused, attributed to the length.
 pub fn energy_budget(
     pendulum: &Pendulum,
     mass_kg: f64,
@@ -46,12 +47,28 @@ pub fn energy_budget(
     let loss_per_beat =
         2.0 * weight_moment * (0.5 * half_swing_loss).sin() * (0.5 * (a + a1)).sin();
     let bottom_speed = 2.0 * pendulum.natural_angular_frequency() * (0.5 * a).sin();
-    Ok(EnergyBudget {
+    let budget = EnergyBudget {
         energy,
         loss_per_period: 2.0 * loss_per_beat,
         power: 2.0 * loss_per_beat / period,
         impulse_per_beat: loss_per_beat / bottom_speed,
-    })
+    };
+    let values = [
+        budget.energy,
+        budget.loss_per_period,
+        budget.power,
+        budget.impulse_per_beat,
+    ];
+    if values.iter().any(|v| !v.is_finite()) {
+        return Err(InputError::new(
+            Quantity::Length,
+            pendulum.length_m(),
+            Problem::ResultOverflows {
+                result: "the energy budget",
+            },
+        ));
+    }
+    Ok(budget)
 }
 
 #[cfg(test)]

@@ -19,10 +19,29 @@ pub struct Pendulum {
 }
 
 impl Pendulum {
-    /// A pendulum of `length_m` metres under `g_m_s2` m/s².
+    /// A pendulum of `length_m` metres under `g_m_s2` m/s²; both positive,
+    /// and `g/l` within the range of double precision.
     pub fn new(length_m: f64, g_m_s2: f64) -> Result<Self, InputError> {
         let length = require_positive(Quantity::Length, length_m)?;
         let gravity = require_positive(Quantity::Gravity, g_m_s2)?;
+        // g/l and l/g must both be normal doubles, or the frequency or the
+        // period overflows (a length of 1e-310 m under standard gravity).
+        let ratio = gravity / length;
+        if !ratio.is_normal() || !(1.0 / ratio).is_normal() {
+            // Blame the one that is out of the ordinary.
+            let (quantity, value) = if (1e-150..1e150).contains(&length) {
+                (Quantity::Gravity, gravity)
+            } else {
+                (Quantity::Length, length)
+            };
+            return Err(InputError::new(
+                quantity,
+                value,
+                Problem::ResultOverflows {
+                    result: "the frequency (sqrt(g/l))",
+                },
+            ));
+        }
         Ok(Self {
             length,
             gravity,

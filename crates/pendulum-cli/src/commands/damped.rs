@@ -141,8 +141,10 @@ pub fn run(args: &DampedArgs) -> Result<Output, CliError> {
     };
     let budget = match (mass, friction.half_swing_loss(a0), damped.damped_period()) {
         (Some(m), Some(loss), Some(period)) => Some(
-            energy_budget(&pendulum, m, a0, loss, period)
-                .map_err(|e| CliError::input("--mass", &e))?,
+            energy_budget(&pendulum, m, a0, loss, period).map_err(|e| match e.quantity {
+                Quantity::Length => CliError::input("--length", &e),
+                _ => CliError::input("--mass", &e),
+            })?,
         ),
         _ => None,
     };

@@ -91,6 +91,26 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     let a = stream
         .finish(nominal)
         .map_err(|e| CliError::other(format!("{file}: {e}")))?;
+    // A nominal beat far from the measured one is a typing error (the rate
+    // would be meaningless, or overflow).
+    if let Some(n) = nominal {
+        let ratio = n / a.mean_beat;
+        if !(0.5..=2.0).contains(&ratio) {
+            let flag = if args.period.is_some() {
+                "--period"
+            } else {
+                "--bph"
+            };
+            return Err(CliError::flag(
+                flag,
+                format!(
+                    "a nominal beat of {} s is nowhere near the {} s measured in {file}",
+                    num(n, 6),
+                    num(a.mean_beat, 6)
+                ),
+            ));
+        }
+    }
     if let Some(target) = &plot {
         let mean = vec![
             (intervals.first().map_or(0.0, |p| p.0), 1e3 * a.mean_beat),

@@ -2,7 +2,9 @@
 //! one module per command family.
 
 mod damped;
+mod extremes;
 mod fit;
+mod hardening;
 mod period;
 mod plot;
 mod simulate;

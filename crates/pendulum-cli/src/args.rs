@@ -432,7 +432,7 @@ pub struct SimulateArgs {
     /// Integration method.
     #[arg(long, value_enum, default_value_t = MethodArg::Dop853)]
     pub method: MethodArg,
-    /// Local error tolerance (relative and absolute).
+    /// Local error tolerance of each step, relative to the size of the swing.
     #[arg(
         long,
         value_name = "TOL",
@@ -454,7 +454,8 @@ pub struct SimulateArgs {
         requires = "trajectory"
     )]
     pub sample_interval: Option<String>,
-    /// Allow a duration over 10^9 s or more than 10^8 samples.
+    /// Allow a duration over 10^9 s, more than 10^8 samples, or a run
+    /// estimated to take more than a few seconds.
     #[arg(long)]
     pub force: bool,
     /// No progress bar.

@@ -385,3 +385,81 @@ fn methods_agree_under_heavy_damping_and_drag() {
         }
     }
 }
+
+/// Scaled time: a 1 µm and a 10 km pendulum take the same steps as a 1 m
+/// one and find their turning points to the same relative accuracy (before
+/// the drivers scaled time, the tolerance was absolute in rad/s and a 1e-300 m
+/// pendulum gave NaN).
+#[test]
+fn any_length_takes_the_same_steps() {
+    let a = Amplitude::from_radians(0.5).unwrap();
+    let mut steps = Vec::new();
+    for length in [1e-6, 1.0, 1e4] {
+        let pendulum = Pendulum::with_standard_gravity(length).unwrap();
+        let exact = ExactSwing::new(&pendulum, a);
+        let model = Model::new(pendulum, Damping::NONE, 0.0, 0.0).unwrap();
+        for method in [Method::Dop853, Method::Symplectic] {
+            let turns = turning_points(&model, 0.5, 20.25 * exact.period(), method, 1e-12);
+            assert_eq!(turns.len(), 41, "{length} m {}", method.name());
+            for tp in &turns {
+                let (t, _) = exact.turning_point(tp.index);
+                let relative = (tp.time - t).abs() / exact.period();
+                assert!(relative < 1e-9, "{length} m: {relative:e}");
+            }
+        }
+        let options = Options {
+            duration: 20.25 * exact.period(),
+            tolerance: 1e-10,
+            method: Method::Dop853,
+            sample_interval: None,
+        };
+        steps.push(simulate(&model, a, &options, &mut Silent).unwrap().steps);
+    }
+    assert!(
+        steps.iter().all(|&s| s.abs_diff(steps[1]) <= 2),
+        "{steps:?}"
+    );
+}
+
+/// A swing that decays below the floor of double precision ends the run,
+/// said so; every turning point before it is kept.
+#[test]
+fn a_swing_decayed_to_nothing_stops_the_run() {
+    use pendulum_theory::simulation::{Stopped, AMPLITUDE_FLOOR};
+    let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
+    let model = Model::new(pendulum, Damping::from_q(10.0).unwrap(), 0.0, 0.0).unwrap();
+    let a = Amplitude::from_degrees(10.0).unwrap();
+    for method in [Method::Dop853, Method::Vern9, Method::Symplectic] {
+        let options = Options {
+            duration: 1e4,
+            tolerance: 1e-10,
+            method,
+            sample_interval: None,
+        };
+        let mut turns = Turns(Vec::new());
+        let outcome = simulate(&model, a, &options, &mut turns).unwrap();
+        assert_eq!(
+            outcome.stopped,
+            Stopped::AmplitudeBelowTolerance,
+            "{}",
+            method.name()
+        );
+        assert!(outcome.final_amplitude < 2.0 * AMPLITUDE_FLOOR);
+        // Linear envelope: A_n = A0 e^{-n ζπ/sqrt(1-ζ²)} (section 1-4); the
+        // swing reaches the floor after ln(A0/floor)/(ζπ/sqrt(1-ζ²)) half swings.
+        let zeta: f64 = 0.05;
+        let per_half = zeta * std::f64::consts::PI / (1.0 - zeta * zeta).sqrt();
+        let expected = ((a.radians() / AMPLITUDE_FLOOR).ln() / per_half).floor();
+        let got = (turns.0.len() - 1) as f64;
+        assert!(
+            (got - expected).abs() <= 2.0,
+            "{}: {got} vs {expected}",
+            method.name()
+        );
+        // No turning point is lost on the way down.
+        for w in turns.0.windows(2) {
+            assert!(w[1].angle.abs() < w[0].angle.abs());
+            assert!((w[1].time - w[0].time - 1.0).abs() < 0.01);
+        }
+    }
+}

@@ -247,11 +247,11 @@ fn run_adaptive<P: EmbeddedPair>(
 
 /// The error control of a step that starts in the scaled state `y`: the
 /// relative tolerance `tol`, and an absolute tolerance `tol` times the
-/// swing's size `sqrt(θ² + (dθ/dτ)²)` (the amplitude, to within the
-/// nonlinearity), so that the control follows the swing as it decays
-/// instead of losing it below a fixed absolute tolerance.
+/// swing's size `max(|θ|, |dθ/dτ|)` (the amplitude to within a factor √2,
+/// and no squares to underflow at 1e-160), so that the control follows the
+/// swing as it decays instead of losing it below a fixed absolute tolerance.
 fn swing_tolerance(tol: f64, y: State2) -> Tolerance {
-    let size = (y[0] * y[0] + y[1] * y[1]).sqrt();
+    let size = super::run::swing_size(y);
     Tolerance {
         absolute: tol * size,
         relative: tol,

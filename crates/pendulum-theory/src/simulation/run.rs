@@ -18,6 +18,12 @@ use crate::integrate::State2;
 use crate::simulation::{energy_amplitude, Method, Options};
 use crate::Amplitude;
 
+/// The size of the swing in the scaled state `y`: `max(|θ|, |dθ/dτ|)`,
+/// between `A/√2` and `A` for an amplitude `A` in the linear regime.
+pub(super) fn swing_size(y: State2) -> f64 {
+    y[0].abs().max(y[1].abs())
+}
+
 /// `sin²(θ/2)` (the energy over `2mgl`) and the period ratio `T/T0` of
 /// the swing whose turning point is at `angle`; the period ratio is 1 where
 /// it is undefined (at or past 180°, which the state check reports).
@@ -211,7 +217,7 @@ impl<'a, O: Observer> Run<'a, O> {
     pub fn check_state(&self, y: State2) -> Option<Stopped> {
         if y[0].abs() > std::f64::consts::PI {
             Some(Stopped::OverTheTop)
-        } else if y[0] * y[0] + y[1] * y[1] < AMPLITUDE_FLOOR * AMPLITUDE_FLOOR {
+        } else if swing_size(y) < AMPLITUDE_FLOOR {
             Some(Stopped::AmplitudeBelowTolerance)
         } else {
             None

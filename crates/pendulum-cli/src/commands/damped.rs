@@ -4,8 +4,8 @@
 use super::common::{self, finite};
 use crate::args::DampedArgs;
 use crate::error::CliError;
-use crate::file::{check_outputs, is_stdout, CsvFile};
-use crate::output::{self, num, Output, Summary};
+use crate::file::CsvFile;
+use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Points, Series, Target};
 use pendulum_theory::damped::{DampedPendulum, Extremum, Regime};
 use pendulum_theory::energy::{energy_budget, EnergyBudget};
@@ -94,18 +94,7 @@ struct Results {
     budget: Option<EnergyBudget>,
 }
 
-pub fn run(args: &DampedArgs) -> Result<Output, CliError> {
-    check_outputs(&[
-        ("--trajectory", args.trajectory.as_deref()),
-        ("--plot", args.plot.as_deref()),
-    ])?;
-    let to_stdout = args.trajectory.as_deref().is_some_and(is_stdout)
-        || args.plot.as_deref().is_some_and(is_stdout);
-    if to_stdout && args.json {
-        return Err(CliError::other(
-            "--json prints to standard output, where '-' also writes; give the file a name",
-        ));
-    }
+pub fn run(args: &DampedArgs) -> Result<String, CliError> {
     if args.extrema > MAX_EXTREMA && !args.force {
         return Err(CliError::flag(
             "--extrema",
@@ -169,18 +158,10 @@ pub fn run(args: &DampedArgs) -> Result<Output, CliError> {
     }
     let json = to_json(&results, trajectory);
     if args.json {
-        return Ok(output::json(&json)?.into());
-    }
-    let summary = text(&results, &json);
-    // With data on standard output, the summary goes to standard error.
-    Ok(if to_stdout {
-        Output {
-            stderr: summary,
-            ..Output::default()
-        }
+        output::json(&json)
     } else {
-        summary.into()
-    })
+        Ok(text(&results, &json))
+    }
 }
 
 /// The small-angle theory's limits, said where they bite.

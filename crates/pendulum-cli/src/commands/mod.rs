@@ -13,24 +13,88 @@ pub(crate) mod period;
 mod report;
 pub(crate) mod simulate;
 
-use crate::args::Command;
+use crate::args::{Command, FitCommand};
 use crate::error::CliError;
+use crate::file::{check_outputs, is_stdout};
 use crate::output::Output;
+use std::path::Path;
 
-/// Runs one subcommand and returns what it prints.
+/// The files a command writes (flag and path, when asked for), and whether
+/// it prints JSON or CSV for programs on standard output.
+fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
+    match command {
+        Command::Period(a) => (
+            vec![("--plot", a.plot.as_deref())],
+            a.format.json || a.format.csv,
+        ),
+        Command::Damped(a) => (
+            vec![
+                ("--trajectory", a.trajectory.as_deref()),
+                ("--plot", a.plot.as_deref()),
+            ],
+            a.json,
+        ),
+        Command::Simulate(a) => (
+            vec![
+                ("--swings", a.swings.as_deref()),
+                ("--trajectory", a.trajectory.as_deref()),
+                ("--plot", a.plot.as_deref()),
+                ("--phase-plot", a.phase_plot.as_deref()),
+            ],
+            a.json,
+        ),
+        Command::Fit(f) => match &f.what {
+            FitCommand::Decay(a) => (vec![("--plot", a.plot.as_deref())], a.json),
+            FitCommand::Trajectory(a) => (
+                vec![
+                    ("--residuals", a.residuals.as_deref()),
+                    ("--plot", a.plot.as_deref()),
+                ],
+                a.json,
+            ),
+            FitCommand::Beats(a) => (vec![("--plot", a.plot.as_deref())], a.json),
+        },
+        Command::Length(_) | Command::Amplitude(_) | Command::Gravity(_) | Command::Report(_) => {
+            (Vec::new(), false)
+        }
+    }
+}
+
+/// Runs one subcommand and returns what it prints. Its output files are
+/// checked first, in one place: none a folder, no two the same, at most
+/// one `-`; with data on standard output, the command's own text goes to
+/// standard error, and JSON or CSV (which would mix with the data) is
+/// refused.
 pub fn run(command: &Command) -> Result<Output, CliError> {
+    let (files, machine) = outputs(command);
+    check_outputs(&files)?;
+    let data_on_stdout = files.iter().find(|(_, p)| p.is_some_and(is_stdout));
+    if let (Some((flag, _)), true) = (data_on_stdout, machine) {
+        return Err(CliError::flag(
+            flag,
+            "writes to standard output ('-'), where --json or --csv also prints; give it a file",
+        ));
+    }
+    let mut out = run_command(command)?;
+    if data_on_stdout.is_some() {
+        out.stderr.push_str(&std::mem::take(&mut out.stdout));
+    }
+    Ok(out)
+}
+
+fn run_command(command: &Command) -> Result<Output, CliError> {
     let text = match command {
         Command::Period(args) => period::run(args),
         Command::Length(args) => length::run(args),
         Command::Amplitude(args) => amplitude::run(args),
         Command::Gravity(args) => gravity::run(args),
         Command::Simulate(args) => return simulate::run(args),
-        Command::Damped(args) => return damped::run(args),
+        Command::Damped(args) => damped::run(args),
         Command::Report(args) => report::run(args),
         Command::Fit(args) => match &args.what {
-            crate::args::FitCommand::Decay(a) => fit_decay::run(a),
-            crate::args::FitCommand::Trajectory(a) => fit_trajectory::run(a),
-            crate::args::FitCommand::Beats(a) => fit_beats::run(a),
+            FitCommand::Decay(a) => fit_decay::run(a),
+            FitCommand::Trajectory(a) => fit_trajectory::run(a),
+            FitCommand::Beats(a) => fit_beats::run(a),
         },
     };
     text.map(Output::from)

@@ -4,7 +4,7 @@
 use super::common::{self, finite};
 use crate::args::{MethodArg, SimulateArgs};
 use crate::error::CliError;
-use crate::file::{check_outputs, is_stdout, CsvFile};
+use crate::file::CsvFile;
 use crate::interrupt;
 use crate::output::{self, num, Output, Summary};
 use crate::plot::{render, thin, Figure, Panel, Series, Target};
@@ -42,6 +42,8 @@ struct SimulateJson {
     final_angular_velocity_rad_s: f64,
     final_amplitude_rad: f64,
     steps: u64,
+    /// The steps estimated before the run (what `--force` is judged on).
+    estimated_steps: f64,
     rejected_steps: u64,
     function_evaluations: u64,
     stopped: &'static str,
@@ -65,21 +67,7 @@ struct SimulateJson {
 }
 
 pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
-    // Refuse bad output names before any work.
-    let outputs = [
-        ("--swings", args.swings.as_deref()),
-        ("--trajectory", args.trajectory.as_deref()),
-        ("--plot", args.plot.as_deref()),
-        ("--phase-plot", args.phase_plot.as_deref()),
-    ];
-    check_outputs(&outputs)?;
-    let to_stdout = outputs.iter().find(|(_, p)| p.is_some_and(is_stdout));
-    if let (Some((flag, _)), true) = (to_stdout, args.json) {
-        return Err(CliError::flag(
-            flag,
-            "writes to standard output ('-'), where --json also prints; give it a file",
-        ));
-    }
+    // Refuse a bad plot name before any work.
     for (path, flag) in [(&args.plot, "--plot"), (&args.phase_plot, "--phase-plot")] {
         if let Some(p) = path {
             Target::new(p, flag)?;
@@ -101,7 +89,7 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
             }
         })?;
     let options = options(args, &pendulum)?;
-    check_work(args, &model, amplitude, &options)?;
+    let estimated_steps = check_work(args, &model, amplitude, &options)?;
     let mut observer = CliObserver::new(args, &pendulum, &options)?;
     let started = Instant::now();
     let outcome = simulate(&model, amplitude, &options, &mut observer).map_err(|e| match e {
@@ -119,6 +107,7 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         final_angular_velocity_rad_s: outcome.final_state.angular_velocity,
         final_amplitude_rad: outcome.final_amplitude,
         steps: outcome.steps,
+        estimated_steps,
         rejected_steps: outcome.rejected_steps,
         function_evaluations: outcome.function_evaluations,
         stopped: outcome.stopped.name(),
@@ -141,27 +130,15 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
     } else {
         0
     };
-    if args.json {
-        return Ok(Output {
-            stdout: output::json(&result)?,
-            status,
-            ..Output::default()
-        });
-    }
-    let summary = text(&result, &outcome);
-    // With data on standard output, the summary goes to standard error.
-    Ok(if to_stdout.is_some() {
-        Output {
-            stderr: summary,
-            status,
-            ..Output::default()
-        }
+    let stdout = if args.json {
+        output::json(&result)?
     } else {
-        Output {
-            stdout: summary,
-            status,
-            ..Output::default()
-        }
+        text(&result, &outcome)
+    };
+    Ok(Output {
+        stdout,
+        status,
+        ..Output::default()
     })
 }
 
@@ -199,16 +176,17 @@ fn warnings(outcome: &Outcome, method: MethodArg) -> Vec<String> {
 }
 
 /// Refuses, before any file is made, a run that would take more than a few
-/// seconds (unless `--force`) or more than a day, naming what makes it long.
+/// seconds (unless `--force`) or more than a day, naming what makes it
+/// long; returns the estimated steps.
 fn check_work(
     args: &SimulateArgs,
     model: &Model,
     amplitude: Amplitude,
     options: &Options,
-) -> Result<(), CliError> {
+) -> Result<f64, CliError> {
     let work = work_estimate(model, amplitude, options);
     if work.seconds <= MAX_WORK_SECONDS || (args.force && work.seconds <= IMPOSSIBLE_WORK_SECONDS) {
-        return Ok(());
+        return Ok(work.steps);
     }
     let (flag, why) = match work.limit {
         Limit::Oscillation => (
@@ -230,9 +208,13 @@ fn check_work(
         Limit::Drag => (
             "--quadratic-drag",
             format!(
-                "a drag of {} makes the equation stiff (try --method symplectic, whose drag \
-                 flow is exact)",
-                num(model.quadratic_drag, 4)
+                "a drag of {} makes the equation stiff{}",
+                num(model.quadratic_drag, 4),
+                if args.method == MethodArg::Symplectic {
+                    " (--method dop853 often takes fewer steps in the drag-limited creep)"
+                } else {
+                    ""
+                }
             ),
         ),
     };

@@ -65,8 +65,11 @@ const STABILITY: f64 = 3.0;
 
 /// Estimates the work of `model` released at `amplitude` under `options`.
 /// An estimate, not a bound: the steps are from power laws measured on the
-/// free swing (within a factor of 2 over tolerances 1e-6 to 1e-13), the
-/// stiff part from the stability boundary.
+/// free swing, the stiff part from the stability boundary. Measured against
+/// the steps taken (1 m, 3°, tolerance 1e-10): free, Q = 300, ζ = 10 and
+/// 10^4, dry friction and moderate drag within a factor of 2.2 (the
+/// symplectic step count exactly); under drag-limited creep (b = 1e9) it
+/// overestimates the explicit pairs' steps 13 to 19-fold, on the safe side.
 pub fn work_estimate(model: &Model, amplitude: Amplitude, options: &Options) -> WorkEstimate {
     let omega = model.pendulum.natural_angular_frequency();
     let rates = Rates::new(model, amplitude);
@@ -92,35 +95,33 @@ pub fn work_estimate(model: &Model, amplitude: Amplitude, options: &Options) -> 
         active = 0.0;
     }
     let periods = active / TAU;
-    let stiff = rates.viscous.max(rates.drag);
-    let limit = if rates.fastest() == rates.oscillation {
-        Limit::Oscillation
-    } else if rates.viscous >= rates.drag {
+    let stiff_rate = rates.viscous.max(rates.drag);
+    let stiff_limit = if rates.viscous >= rates.drag {
         Limit::Viscous
     } else {
         Limit::Drag
     };
-    let steps = match options.method {
-        Method::Exact => 4.0 * periods,
+    let (steps, limit) = match options.method {
+        Method::Exact => (4.0 * periods, Limit::Oscillation),
         Method::Symplectic => {
-            periods * rates.fastest() * super::symplectic_steps_per_period(options.tolerance)
+            let limit = if rates.fastest() == rates.oscillation {
+                Limit::Oscillation
+            } else {
+                stiff_limit
+            };
+            let per_period = super::symplectic_steps_per_period(options.tolerance);
+            (periods * rates.fastest() * per_period, limit)
         }
         Method::Dop853 | Method::Vern9 => {
+            // Accuracy sets the steps, unless the stability bound is tighter.
             let accurate = periods * adaptive_steps_per_period(options.method, options.tolerance);
-            accurate.max(active * stiff / STABILITY)
-        }
-    };
-    let limit = match options.method {
-        Method::Dop853 | Method::Vern9 if limit != Limit::Oscillation => {
-            // Stiffness sets the steps only where it outweighs accuracy.
-            let accurate = periods * adaptive_steps_per_period(options.method, options.tolerance);
-            if active * stiff / STABILITY > accurate {
-                limit
+            let stable = active * stiff_rate / STABILITY;
+            if stable > accurate {
+                (stable, stiff_limit)
             } else {
-                Limit::Oscillation
+                (accurate, Limit::Oscillation)
             }
         }
-        _ => limit,
     };
     let per_step = NANOSECONDS_PER_STEP
         .iter()

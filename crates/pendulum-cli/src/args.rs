@@ -128,12 +128,35 @@ pub enum FitCommand {
     Beats(FitBeatsArgs),
 }
 
+/// How to read a measurement file: shared by the `fit` commands.
+#[derive(Debug, Args)]
+pub struct MeasurementArgs {
+    /// The unit of angle or amplitude columns whose header names none.
+    #[arg(long, value_name = "UNIT", value_parser = ["deg", "rad"])]
+    pub angle_unit: Option<String>,
+    /// Names of the columns of a file without a header, in order
+    /// (e.g. time_s,angle_deg).
+    #[arg(long, value_name = "NAMES")]
+    pub columns: Option<String>,
+    /// Rebuild the times as the row number over this frame rate (frames
+    /// per second), for times exported rounded.
+    #[arg(long, value_name = "FPS", allow_hyphen_values = true)]
+    pub frame_rate: Option<String>,
+    /// For x and y positions: the pivot, as X,Y in the file's units
+    /// [default: 0,0], or `fit` for the centre of the circle the bob traces.
+    #[arg(long, value_name = "X,Y|fit", allow_hyphen_values = true)]
+    pub pivot: Option<String>,
+}
+
 /// `pendulum fit decay`.
 #[derive(Debug, Args)]
 pub struct FitDecayArgs {
-    /// CSV with `time_s` (or `swing`, a half-swing count) and `amplitude_deg` (or `amplitude_rad`).
-    #[arg(value_name = "FILE.csv")]
+    /// Amplitudes against time (`time_s` or `swing`, and `amplitude_deg`,
+    /// `amplitude (rad)`, …): CSV, semicolon, tab or space separated.
+    #[arg(value_name = "FILE")]
     pub file: std::path::PathBuf,
+    #[command(flatten)]
+    pub read: MeasurementArgs,
     /// Which decay law to fit.
     #[arg(long, default_value = "all", value_parser = ["viscous", "coulomb", "quadratic", "viscous+coulomb", "all"])]
     pub model: String,
@@ -148,6 +171,14 @@ pub struct FitDecayArgs {
         requires = "length"
     )]
     pub mass: Option<String>,
+    /// The period, to turn rates into ζ, Q, friction angle and drag
+    /// [default: from the turning points of a track, else from --length].
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub period: Option<String>,
+    /// With a track (angle or x/y against time): write the turning points
+    /// found to this CSV file (time_s,amplitude_rad,side).
+    #[arg(long, value_name = "FILE.csv")]
+    pub turning_points: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Plot the data, the fitted curves and the residuals to this file (.svg or .png).
@@ -161,14 +192,18 @@ pub struct FitDecayArgs {
 /// `pendulum fit trajectory`.
 #[derive(Debug, Args)]
 pub struct FitTrajectoryArgs {
-    /// CSV with `time_s` and `angle_deg` (or `angle_rad`).
-    #[arg(value_name = "FILE.csv")]
+    /// Angle against time (`time_s`, `t`, `Time (s)` and `angle_deg`,
+    /// `θ (rad)`, …) or tracked positions `x`, `y` (a Tracker export).
+    #[arg(value_name = "FILE")]
     pub file: std::path::PathBuf,
+    #[command(flatten)]
+    pub read: MeasurementArgs,
     /// Pendulum length, to give g.
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub length: Option<String>,
-    /// Section 1-4's closed form, or the nonlinear equation integrated inside the fit.
-    #[arg(long, default_value = "linear", value_parser = ["linear", "nonlinear"])]
+    /// Section 1-4's closed form, the nonlinear equation integrated inside
+    /// the fit, or auto: nonlinear when the largest swing exceeds 5°.
+    #[arg(long, default_value = "auto", value_parser = ["auto", "linear", "nonlinear"])]
     pub model: String,
     /// Write the residuals to this CSV file (time_s,residual_rad).
     #[arg(long, value_name = "FILE.csv")]
@@ -184,9 +219,12 @@ pub struct FitTrajectoryArgs {
 /// `pendulum fit beats`.
 #[derive(Debug, Args)]
 pub struct FitBeatsArgs {
-    /// CSV with one `time_s` per beat.
-    #[arg(value_name = "FILE.csv")]
+    /// One time per beat (`time_s`, `t`, `Time (s)`, …).
+    #[arg(value_name = "FILE")]
     pub file: std::path::PathBuf,
+    /// Names of the columns of a file without a header, in order (e.g. time_s).
+    #[arg(long, value_name = "NAMES")]
+    pub columns: Option<String>,
     /// The nominal beat rate, beats per hour [default: the nearest standard rate].
     #[arg(
         long,

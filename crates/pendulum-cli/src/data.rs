@@ -1,65 +1,229 @@
-//! Reading measurement files: CSV with a header, `#` comment lines and
-//! empty lines skipped, columns found by name. Every refusal names the
-//! file, and where it can the line and the column.
+//! Reading measurement files as people have them: CSV, semicolon files
+//! with decimal commas, tab-separated Tracker exports with a title line and
+//! CRLF line ends, space-aligned tables, files without a header. One reader
+//! for every `fit` command.
+//!
+//! * The separator (comma, semicolon, tab, runs of spaces) is the one that
+//!   splits the first rows into the same number of numeric cells; decimal
+//!   commas are recognised when the separator is not a comma.
+//! * The header is the last non-numeric line before the first numeric row;
+//!   lines above it (a title such as Tracker's `mass_A`) are skipped, as are
+//!   `#` comments and empty lines.
+//! * Columns are found by name, case-insensitively, with the unit as a
+//!   suffix, in brackets or in parentheses (`time_s`, `t`, `Time (s)`,
+//!   `t [s]`, `t_{1}`, `angle_deg`, `θ (rad)`, `amplitude (deg)`, `x`, `y`).
+//! * A row with a blank cell in a used column is skipped and counted.
+//!
+//! Every refusal names the file, and where it can the line, the column and
+//! the separator detected.
 
 use crate::error::CliError;
+use serde::Serialize;
+use std::io::{BufRead, BufReader};
 use std::path::Path;
 
-/// One column wanted: its accepted names, each with the factor to SI.
-pub struct Wanted {
-    /// What it is, for messages ("time", "amplitude").
-    pub what: &'static str,
-    /// Accepted header names and the factor that turns their values into SI.
-    pub names: &'static [(&'static str, f64)],
+/// Degrees to radians.
+pub const DEG: f64 = std::f64::consts::PI / 180.0;
+
+/// What a column holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    /// Time.
+    Time,
+    /// A half-swing count.
+    Swing,
+    /// The angle of the pendulum.
+    Angle,
+    /// The amplitude of a swing.
+    Amplitude,
+    /// Horizontal position.
+    X,
+    /// Vertical position (up).
+    Y,
 }
 
-/// Columns read from a file, in SI.
-pub struct Columns {
+impl Role {
+    fn name(self) -> &'static str {
+        match self {
+            Role::Time => "time",
+            Role::Swing => "swing",
+            Role::Angle => "angle",
+            Role::Amplitude => "amplitude",
+            Role::X => "x",
+            Role::Y => "y",
+        }
+    }
+
+    /// The role of a base name (lower case, unit removed).
+    fn of(base: &str) -> Option<Role> {
+        Some(match base {
+            "t" | "time" | "timestamp" | "times" => Role::Time,
+            "swing" | "swings" | "half_swing" | "halfswing" => Role::Swing,
+            "angle" | "theta" | "θ" | "phi" | "φ" | "angular_position" => Role::Angle,
+            "amplitude" | "amp" | "peak" | "peaks" => Role::Amplitude,
+            "x" => Role::X,
+            "y" => Role::Y,
+            _ => return None,
+        })
+    }
+}
+
+/// How angles without a unit in their header are to be read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AngleUnit {
+    /// Degrees.
+    Degrees,
+    /// Radians.
+    Radians,
+}
+
+/// What the user said about the file on the command line.
+#[derive(Clone, Debug, Default)]
+pub struct ReadOptions {
+    /// `--angle-unit`: for angle or amplitude columns without a unit.
+    pub angle_unit: Option<AngleUnit>,
+    /// `--columns`: the names of a headerless file's columns, in order.
+    pub columns: Option<Vec<String>>,
+    /// `--frame-rate`: rebuild times as the first time + row index / rate.
+    pub frame_rate: Option<f64>,
+}
+
+/// What was read, for the JSON output (`format`).
+#[derive(Clone, Debug, Serialize)]
+pub struct Format {
+    /// `comma`, `semicolon`, `tab` or `spaces`.
+    pub separator: &'static str,
+    /// `point` or `comma`.
+    pub decimal: &'static str,
+    /// The header names of the columns used.
+    pub columns_used: Vec<String>,
+    /// Rows read.
+    pub rows: usize,
+    /// Rows skipped for a blank cell in a used column.
+    pub skipped_rows: usize,
+    /// The frame rate the times were rebuilt from (`--frame-rate`), if any.
+    pub frame_rate: Option<f64>,
+    /// The time of the first row, subtracted from every time (a data
+    /// logger's Unix time, say), s; `null` when rebuilt from the frame rate
+    /// or when there is no time column.
+    pub time_origin_s: Option<f64>,
+}
+
+/// A column found in the header.
+#[derive(Clone, Debug)]
+pub struct Found {
+    /// What it holds.
+    pub role: Role,
+    /// Its header name as written.
+    pub header: String,
+    index: usize,
+    /// The factor to SI (time in s, angles in rad); `None` for an angle
+    /// column without a unit.
+    factor: Option<f64>,
+}
+
+/// The columns a command uses, chosen from those the header has: the
+/// command sees every column found and returns the ones it wants, in its
+/// order, or a message saying what is missing.
+pub type Choose<'a> = dyn Fn(&[Found]) -> Result<Vec<Role>, String> + 'a;
+
+/// Columns read into memory, in SI, times measured from the first row.
+pub struct Table {
     /// The file, as given.
     pub file: String,
-    /// The header name found for each wanted column.
-    pub names: Vec<&'static str>,
-    /// Values, one vector per wanted column.
+    /// The roles read, in the order asked for.
+    pub roles: Vec<Role>,
+    /// Their header names.
+    pub names: Vec<String>,
+    /// Values, one vector per role.
     pub values: Vec<Vec<f64>>,
     /// The file line of each row, for messages.
     pub lines: Vec<u64>,
+    /// What was read.
+    pub format: Format,
 }
 
-impl Columns {
-    /// An error about row `row`, column `column`.
-    pub fn error_at(&self, row: usize, column: usize, message: impl std::fmt::Display) -> CliError {
+impl Table {
+    /// The values of `role`, if read.
+    pub fn column(&self, role: Role) -> Option<&[f64]> {
+        self.roles
+            .iter()
+            .position(|&r| r == role)
+            .map(|i| self.values[i].as_slice())
+    }
+
+    /// An error about row `row` of the column of `role`.
+    pub fn error_at(&self, row: usize, role: Role, message: impl std::fmt::Display) -> CliError {
+        let column = self
+            .roles
+            .iter()
+            .position(|&r| r == role)
+            .map_or("?", |i| self.names[i].as_str());
         CliError::other(format!(
-            "{}: line {}, column {}: {message}",
-            self.file, self.lines[row], self.names[column]
+            "{}: line {}, column {column}: {message}",
+            self.file, self.lines[row]
         ))
     }
 
-    /// Checks that column `column` strictly increases.
-    pub fn require_increasing(&self, column: usize) -> Result<(), CliError> {
-        let v = &self.values[column];
+    /// Checks that the column of `role` strictly increases; repeated values
+    /// are named as rounding, with the fix.
+    pub fn require_increasing(&self, role: Role) -> Result<(), CliError> {
+        let Some(v) = self.column(role) else {
+            return Ok(());
+        };
         match (1..v.len()).find(|&i| v[i] <= v[i - 1]) {
+            Some(i) if v[i] == v[i - 1] => Err(self.error_at(
+                i,
+                role,
+                format!(
+                    "{} repeats the time before it: the times look rounded (exported to too few \
+                     digits); give --frame-rate FPS to rebuild them from the row numbers",
+                    crate::output::num(v[i] + self.origin(role), 12)
+                ),
+            )),
             Some(i) => Err(self.error_at(
                 i,
-                column,
+                role,
                 format!(
                     "{} is not after the previous {}; sort the file by {}",
-                    v[i],
-                    v[i - 1],
-                    self.names[column]
+                    crate::output::num(v[i] + self.origin(role), 12),
+                    crate::output::num(v[i - 1] + self.origin(role), 12),
+                    self.names[self.roles.iter().position(|&r| r == role).unwrap_or(0)]
                 ),
             )),
             None => Ok(()),
         }
     }
 
-    /// Checks that the amplitudes of column `column` (radians) are below
-    /// 180°: a pendulum released at or past the top never swings back.
-    pub fn require_swing(&self, column: usize) -> Result<(), CliError> {
-        let v = &self.values[column];
+    /// The value subtracted from the column (the first time), for messages.
+    fn origin(&self, role: Role) -> f64 {
+        match role {
+            Role::Time => self.format.time_origin_s.unwrap_or(0.0),
+            _ => 0.0,
+        }
+    }
+
+    /// Checks that the column of `role` is positive throughout.
+    pub fn require_positive(&self, role: Role) -> Result<(), CliError> {
+        let Some(v) = self.column(role) else {
+            return Ok(());
+        };
+        match v.iter().position(|&x| x <= 0.0) {
+            Some(i) => Err(self.error_at(i, role, format!("must be positive, got {}", v[i]))),
+            None => Ok(()),
+        }
+    }
+
+    /// Checks that the amplitudes of the column of `role` (radians) are
+    /// below 180°: a pendulum released at or past the top never swings back.
+    pub fn require_swing(&self, role: Role) -> Result<(), CliError> {
+        let Some(v) = self.column(role) else {
+            return Ok(());
+        };
         match v.iter().position(|&x| x.abs() >= std::f64::consts::PI) {
             Some(i) => Err(self.error_at(
                 i,
-                column,
+                role,
                 format!(
                     "an amplitude of {}° is not a swing (it must be below 180°)",
                     crate::output::num(v[i].to_degrees(), 8)
@@ -68,122 +232,411 @@ impl Columns {
             None => Ok(()),
         }
     }
-
-    /// Checks that column `column` is positive throughout.
-    pub fn require_positive(&self, column: usize) -> Result<(), CliError> {
-        match self.values[column].iter().position(|&x| x <= 0.0) {
-            Some(i) => Err(self.error_at(
-                i,
-                column,
-                format!("must be positive, got {}", self.values[column][i]),
-            )),
-            None => Ok(()),
-        }
-    }
 }
 
-/// Reads the wanted columns of `path` into memory.
-pub fn read_columns(path: &Path, wanted: &[Wanted]) -> Result<Columns, CliError> {
-    let mut values: Vec<Vec<f64>> = vec![Vec::new(); wanted.len()];
+/// Reads the columns `choose` picks from `path` into memory.
+pub fn read_table(
+    path: &Path,
+    options: &ReadOptions,
+    choose: &Choose<'_>,
+) -> Result<Table, CliError> {
+    let mut values: Vec<Vec<f64>> = Vec::new();
     let mut lines = Vec::new();
-    let (file, names) = stream_columns(path, wanted, |row, line| {
+    let (file, roles, names, format) = stream_table(path, options, choose, |row, line| {
+        if values.is_empty() {
+            values = vec![Vec::new(); row.len()];
+        }
         for (column, v) in values.iter_mut().zip(row) {
             column.push(*v);
         }
         lines.push(line);
         Ok(())
     })?;
-    Ok(Columns {
+    if values.is_empty() {
+        values = vec![Vec::new(); roles.len()];
+    }
+    Ok(Table {
         file,
+        roles,
         names,
         values,
         lines,
+        format,
     })
 }
 
-/// Streams the wanted columns of `path`, row by row (in SI, with the file
-/// line), to `each`, in memory independent of the file's length. Returns
-/// the file name and the header names found.
-pub fn stream_columns(
-    path: &Path,
-    wanted: &[Wanted],
-    mut each: impl FnMut(&[f64], u64) -> Result<(), CliError>,
-) -> Result<(String, Vec<&'static str>), CliError> {
-    let file = path.display().to_string();
-    let fail = |message: String| CliError::other(format!("{file}: {message}"));
-    let mut reader = csv::ReaderBuilder::new()
-        .comment(Some(b'#'))
-        .trim(csv::Trim::All)
-        .from_path(path)
-        .map_err(|e| fail(format!("cannot read it: {}", io_message(&e))))?;
-    let headers = reader
-        .headers()
-        .map_err(|e| fail(format!("cannot read its header: {}", io_message(&e))))?
-        .clone();
-    let mut indices = Vec::with_capacity(wanted.len());
-    let mut names = Vec::with_capacity(wanted.len());
-    let mut factors = Vec::with_capacity(wanted.len());
-    for w in wanted {
-        let found = w.names.iter().find_map(|&(name, factor)| {
-            headers
-                .iter()
-                .position(|h| h == name)
-                .map(|i| (i, name, factor))
-        });
-        let Some((index, name, factor)) = found else {
-            let accepted: Vec<&str> = w.names.iter().map(|(n, _)| *n).collect();
-            return Err(fail(format!(
-                "no {} column: the header needs {} (found: {})",
-                w.what,
-                accepted.join(" or "),
-                headers.iter().collect::<Vec<_>>().join(",")
-            )));
-        };
-        indices.push(index);
-        names.push(name);
-        factors.push(factor);
+/// The separators tried, in order of preference.
+const SEPARATORS: [(Separator, &str); 4] = [
+    (Separator::Char('\t'), "tab"),
+    (Separator::Char(';'), "semicolon"),
+    (Separator::Char(','), "comma"),
+    (Separator::Spaces, "spaces"),
+];
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Separator {
+    Char(char),
+    Spaces,
+}
+
+impl Separator {
+    fn split(self, line: &str) -> Vec<&str> {
+        match self {
+            Separator::Char(c) => line.split(c).map(str::trim).collect(),
+            Separator::Spaces => line.split_whitespace().collect(),
+        }
     }
-    let mut row = vec![0.0; wanted.len()];
-    let mut record = csv::StringRecord::new();
-    loop {
-        match reader.read_record(&mut record) {
-            Ok(false) => break,
-            Ok(true) => {}
-            Err(e) => {
-                let line = e.position().map_or(0, |p| p.line());
-                return Err(fail(format!("line {line}: {}", io_message(&e))));
+}
+
+/// Lines read before the separator is decided.
+const SNIFF_LINES: usize = 64;
+
+/// A cell as a number, with `decimal_comma` read as a point; `None` if
+/// it is not one. An empty cell is `Some(None)`.
+fn cell_value(cell: &str, decimal_comma: bool) -> Option<Option<f64>> {
+    let cell = cell.trim().trim_matches('"');
+    if cell.is_empty() {
+        return Some(None);
+    }
+    let parsed = if decimal_comma {
+        cell.replace(',', ".").parse::<f64>()
+    } else {
+        cell.parse::<f64>()
+    };
+    match parsed {
+        Ok(v) if v.is_finite() => Some(Some(v)),
+        _ => None,
+    }
+}
+
+/// Whether every cell is a number or empty, with at least one number.
+fn is_numeric(cells: &[&str], decimal_comma: bool) -> bool {
+    let mut any = false;
+    for c in cells {
+        match cell_value(c, decimal_comma) {
+            None => return false,
+            Some(Some(_)) => any = true,
+            Some(None) => {}
+        }
+    }
+    any
+}
+
+/// The separator and decimal mark of the sampled `lines`: the candidate
+/// under which the most numeric rows share one field count above 1 (ties
+/// go to the earlier in [`SEPARATORS`]); a single column otherwise.
+fn sniff(lines: &[String]) -> (Separator, &'static str, bool) {
+    let mut best = (SEPARATORS[2].0, SEPARATORS[2].1, false, 0usize);
+    for (sep, name) in SEPARATORS {
+        for decimal_comma in [false, true] {
+            if decimal_comma && sep == Separator::Char(',') {
+                continue;
+            }
+            let mut counts: Vec<(usize, usize)> = Vec::new();
+            for line in lines {
+                let cells = sep.split(line);
+                if cells.len() < 2 || !is_numeric(&cells, decimal_comma) {
+                    continue;
+                }
+                match counts.iter_mut().find(|(n, _)| *n == cells.len()) {
+                    Some(entry) => entry.1 += 1,
+                    None => counts.push((cells.len(), 1)),
+                }
+            }
+            let score = counts.iter().map(|&(_, c)| c).max().unwrap_or(0);
+            if score > best.3 {
+                best = (sep, name, decimal_comma, score);
             }
         }
-        let line = record.position().map_or(0, |p| p.line());
-        for (k, &i) in indices.iter().enumerate() {
-            let cell = record.get(i).unwrap_or("");
-            let value: f64 = match cell.parse::<f64>() {
-                Ok(v) if v.is_finite() => v,
-                _ => {
+    }
+    if best.3 == 0 {
+        // One column: decimal commas are possible with no separator at all.
+        let comma = lines
+            .iter()
+            .any(|l| l.trim().parse::<f64>().is_err() && cell_value(l, true).is_some());
+        return (SEPARATORS[2].0, SEPARATORS[2].1, comma);
+    }
+    (best.0, best.1, best.2)
+}
+
+/// A header name split into its base (lower case) and unit, if any:
+/// `Time (s)`, `t [s]`, `time_s`, `t_{1}`, `angle_deg`, `θ (rad)`.
+fn split_header(header: &str) -> (String, Option<String>) {
+    let mut text = header.trim().trim_matches('"').trim().to_lowercase();
+    // Tracker's subscripts: t_{1}, x_{A}.
+    if let Some(i) = text.find("_{") {
+        if text.ends_with('}') {
+            text.truncate(i);
+        }
+    }
+    for (open, close) in [('(', ')'), ('[', ']'), ('{', '}')] {
+        if let (Some(i), true) = (text.find(open), text.ends_with(close)) {
+            let unit = text[i + 1..text.len() - 1].trim().to_string();
+            let base = text[..i].trim().to_string();
+            return (base, Some(unit));
+        }
+    }
+    if let Some((base, unit)) = text.rsplit_once(['_', ' ']) {
+        if unit_factor(unit).is_some() && !base.is_empty() {
+            return (base.trim().to_string(), Some(unit.to_string()));
+        }
+    }
+    (text, None)
+}
+
+/// The SI factor of a unit written in a header.
+fn unit_factor(unit: &str) -> Option<f64> {
+    Some(match unit {
+        "s" | "sec" | "secs" | "second" | "seconds" => 1.0,
+        "ms" => 1e-3,
+        "us" | "µs" => 1e-6,
+        "min" => 60.0,
+        "h" => 3600.0,
+        "deg" | "degree" | "degrees" | "°" => DEG,
+        "rad" | "radian" | "radians" => 1.0,
+        "m" | "cm" | "mm" | "px" | "pixels" | "pixel" | "in" => 1.0,
+        _ => return None,
+    })
+}
+
+/// The columns a header holds, with their roles and units.
+fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
+    let mut found: Vec<Found> = Vec::new();
+    for (index, header) in headers.iter().enumerate() {
+        let (base, unit) = split_header(header);
+        let Some(role) = Role::of(&base) else {
+            continue;
+        };
+        if found.iter().any(|f| f.role == role) {
+            continue; // The first column of a kind counts.
+        }
+        let factor = match (role, unit.as_deref()) {
+            (Role::Angle | Role::Amplitude, None) => options.angle_unit.map(|u| match u {
+                AngleUnit::Degrees => DEG,
+                AngleUnit::Radians => 1.0,
+            }),
+            (Role::Time, None) | (Role::Swing | Role::X | Role::Y, _) => Some(1.0),
+            (_, Some(u)) => unit_factor(u),
+        };
+        found.push(Found {
+            role,
+            header: header.trim().trim_matches('"').to_string(),
+            index,
+            factor,
+        });
+    }
+    found
+}
+
+/// Streams the columns `choose` picks from `path`, row by row (in SI, with
+/// the file line), to `each`, in memory independent of the file's length.
+/// Times are measured from the first row. Returns the file name, the roles
+/// and header names used, and what was read.
+pub fn stream_table(
+    path: &Path,
+    options: &ReadOptions,
+    choose: &Choose<'_>,
+    mut each: impl FnMut(&[f64], u64) -> Result<(), CliError>,
+) -> Result<(String, Vec<Role>, Vec<String>, Format), CliError> {
+    let file = path.display().to_string();
+    let fail = |message: String| CliError::other(format!("{file}: {message}"));
+    let handle = std::fs::File::open(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+    let mut reader = BufReader::new(handle);
+    let mut next_line = |number: &mut u64| -> Result<Option<String>, CliError> {
+        let mut bytes = Vec::new();
+        let read = reader
+            .read_until(b'\n', &mut bytes)
+            .map_err(|e| fail(format!("cannot read it: {e}")))?;
+        if read == 0 {
+            return Ok(None);
+        }
+        *number += 1;
+        let text = String::from_utf8_lossy(&bytes);
+        let text = text.trim_start_matches('\u{feff}');
+        Ok(Some(text.trim_end_matches(['\n', '\r']).to_string()))
+    };
+    // The first lines decide the separator; they are kept to be replayed.
+    let mut number = 0_u64;
+    let mut sample: Vec<(u64, String)> = Vec::new();
+    while sample.len() < SNIFF_LINES {
+        let Some(line) = next_line(&mut number)? else {
+            break;
+        };
+        let t = line.trim();
+        if t.is_empty() || t.starts_with('#') {
+            continue;
+        }
+        sample.push((number, line));
+    }
+    let texts: Vec<String> = sample.iter().map(|(_, l)| l.clone()).collect();
+    let (separator, separator_name, decimal_comma) = sniff(&texts);
+    let shown_separator = if decimal_comma {
+        format!("{separator_name}-separated with decimal commas")
+    } else {
+        format!("{separator_name}-separated")
+    };
+    // The header: the last non-numeric line before the first numeric row.
+    let first_numeric = sample
+        .iter()
+        .position(|(_, l)| is_numeric(&separator.split(l), decimal_comma));
+    let Some(first_numeric) = first_numeric else {
+        return Err(fail(format!(
+            "no rows of numbers found (read as {shown_separator})"
+        )));
+    };
+    let headers: Vec<String> =
+        match (&options.columns, first_numeric) {
+            (Some(names), _) => names.clone(),
+            (None, 0) => return Err(fail(
+                "no header line: name the columns with --columns (e.g. --columns time_s,angle_deg)"
+                    .to_string(),
+            )),
+            (None, i) => separator
+                .split(&sample[i - 1].1)
+                .into_iter()
+                .map(String::from)
+                .collect(),
+        };
+    let found = find_columns(&headers, options);
+    let roles = choose(&found).map_err(|m| {
+        fail(format!(
+            "{m} (found: {}; read as {shown_separator})",
+            headers.join(", ")
+        ))
+    })?;
+    let mut used: Vec<&Found> = Vec::with_capacity(roles.len());
+    for role in &roles {
+        let f = found
+            .iter()
+            .find(|f| f.role == *role)
+            .expect("choose returns found roles");
+        if f.factor.is_none() {
+            return Err(fail(format!(
+                "column '{}' has no unit: give --angle-unit deg or --angle-unit rad",
+                f.header
+            )));
+        }
+        used.push(f);
+    }
+    let names: Vec<String> = used.iter().map(|f| f.header.clone()).collect();
+    let time_column = roles.iter().position(|&r| r == Role::Time);
+    let mut format = Format {
+        separator: separator_name,
+        decimal: if decimal_comma { "comma" } else { "point" },
+        columns_used: names.clone(),
+        rows: 0,
+        skipped_rows: 0,
+        frame_rate: options.frame_rate,
+        time_origin_s: None,
+    };
+    let mut row = vec![0.0; used.len()];
+    let mut first_time: Option<f64> = None;
+    let mut index = 0_u64;
+    let mut handle_line = |line_number: u64, line: &str, format: &mut Format| {
+        let t = line.trim();
+        if t.is_empty() || t.starts_with('#') {
+            return Ok(());
+        }
+        let cells = separator.split(line);
+        let row_index = index;
+        index += 1;
+        let mut blank = false;
+        for (k, f) in used.iter().enumerate() {
+            let cell = cells.get(f.index).copied().unwrap_or("");
+            match cell_value(cell, decimal_comma) {
+                Some(Some(v)) => row[k] = v * f.factor.unwrap_or(1.0),
+                Some(None) => blank = true,
+                None => {
                     return Err(fail(format!(
-                        "line {line}, column {}: '{cell}' is not a finite number",
-                        names[k]
+                        "line {line_number}, column {}: '{cell}' is not a number (read as \
+                         {shown_separator})",
+                        f.header
                     )))
                 }
-            };
-            row[k] = value * factors[k];
+            }
         }
-        each(&row, line)?;
+        if blank {
+            format.skipped_rows += 1;
+            return Ok(());
+        }
+        if let Some(k) = time_column {
+            if let Some(rate) = options.frame_rate {
+                // Frames counted from the first row of numbers.
+                row[k] = row_index as f64 / rate;
+            } else {
+                let origin = *first_time.get_or_insert(row[k]);
+                format.time_origin_s = Some(origin);
+                row[k] -= origin;
+            }
+        }
+        format.rows += 1;
+        each(&row, line_number)
+    };
+    for (line_number, line) in sample.iter().skip(first_numeric) {
+        handle_line(*line_number, line, &mut format)?;
     }
-    Ok((file, names))
+    while let Some(line) = next_line(&mut number)? {
+        handle_line(number, &line, &mut format)?;
+    }
+    Ok((file, roles, names, format))
 }
 
-fn io_message(e: &csv::Error) -> String {
-    match e.kind() {
-        csv::ErrorKind::Io(io) => io.to_string(),
-        csv::ErrorKind::UnequalLengths {
-            expected_len, len, ..
-        } => {
-            format!("{len} fields where the header has {expected_len}")
+/// A chooser for commands that need exactly these roles (each given as
+/// alternatives, the first found wins): `[[Time], [Angle]]`.
+pub fn need<'a>(groups: &'a [&'a [Role]]) -> impl Fn(&[Found]) -> Result<Vec<Role>, String> + 'a {
+    move |found: &[Found]| {
+        let mut out = Vec::new();
+        for group in groups {
+            match group.iter().find(|r| found.iter().any(|f| f.role == **r)) {
+                Some(r) => out.push(*r),
+                None => {
+                    let names: Vec<&str> = group.iter().map(|r| r.name()).collect();
+                    return Err(format!("no {} column", names.join(" or ")));
+                }
+            }
         }
-        _ => e.to_string(),
+        Ok(out)
     }
 }
 
-/// Degrees to radians, for the column tables.
-pub const DEG: f64 = std::f64::consts::PI / 180.0;
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn header_names_with_units() {
+        let cases = [
+            ("time_s", "time", Some("s")),
+            ("Time (s)", "time", Some("s")),
+            ("t [s]", "t", Some("s")),
+            ("t_{1}", "t", None),
+            ("angle_deg", "angle", Some("deg")),
+            ("θ (rad)", "θ", Some("rad")),
+            ("amplitude (deg)", "amplitude", Some("deg")),
+            ("x", "x", None),
+            ("amplitude_rad", "amplitude", Some("rad")),
+        ];
+        for (header, base, unit) in cases {
+            let (b, u) = split_header(header);
+            assert_eq!(b, base, "{header}");
+            assert_eq!(u.as_deref(), unit, "{header}");
+        }
+    }
+
+    #[test]
+    fn separators_and_decimal_commas() {
+        let lines = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        let (s, name, comma) = sniff(&lines(&[
+            "t\tx\ty",
+            "0.0\t0.41\t-1.41",
+            "0.03\t0.40\t-1.42",
+        ]));
+        assert_eq!((s, name, comma), (Separator::Char('\t'), "tab", false));
+        let (_, name, comma) = sniff(&lines(&["zeit;winkel", "0,0;5,2", "0,5;4,9"]));
+        assert_eq!((name, comma), ("semicolon", true));
+        let (_, name, _) = sniff(&lines(&["  t    angle", "  0.0  5.0", "  0.1  4.9"]));
+        assert_eq!(name, "spaces");
+        let (_, name, comma) = sniff(&lines(&["time (s),amplitude (rad)", "0,0.1", "1,0.09"]));
+        assert_eq!((name, comma), ("comma", false));
+    }
+}

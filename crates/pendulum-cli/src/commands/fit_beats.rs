@@ -2,7 +2,7 @@
 
 use super::common;
 use crate::args::FitBeatsArgs;
-use crate::data::{stream_columns, Wanted};
+use crate::data::{need, stream_table, ReadOptions, Role};
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Series, Target};
@@ -16,6 +16,7 @@ use serde::Serialize;
 #[derive(Serialize)]
 struct BeatsJson {
     file: String,
+    format: crate::data::Format,
     beats: usize,
     mean_beat_s: f64,
     beats_per_hour: f64,
@@ -50,9 +51,9 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     let nominal = common::period_or_beat_rate(args.period.as_deref(), args.bph.as_deref())?
         .map(|period| beat_of_period(period).map_err(|e| CliError::input("--period", &e)))
         .transpose()?;
-    let time = Wanted {
-        what: "time",
-        names: &[("time_s", 1.0)],
+    let options = ReadOptions {
+        columns: super::measured::columns(args.columns.as_deref()),
+        ..ReadOptions::default()
     };
     // Streamed: a log of 10^7 beats takes no more memory than one of ten.
     let file = args.file.display().to_string();
@@ -62,7 +63,9 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     // the kept points reach their limit, so memory stays bounded.
     let mut intervals: Vec<(f64, f64)> = Vec::new();
     let (mut stride, mut seen) = (1_u64, 0_u64);
-    stream_columns(&args.file, &[time], |row, line| {
+    let groups: &[&[Role]] = &[&[Role::Time]];
+    let chooser = need(groups);
+    let (_, _, _, format) = stream_table(&args.file, &options, &chooser, |row, line| {
         let t = row[0];
         if plot.is_some() && previous.is_finite() {
             if seen % stride == 0 {
@@ -80,13 +83,13 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         }
         if t <= previous {
             return Err(CliError::other(format!(
-                "{file}: line {line}, column time_s: {t} is not after the previous {previous}; sort the file by time_s"
+                "{file}: line {line}: the time {t} is not after the previous {previous}; sort the file by time"
             )));
         }
         previous = t;
         stream
             .push(t)
-            .map_err(|e| CliError::other(format!("{file}: line {line}, column time_s: {e}")))
+            .map_err(|e| CliError::other(format!("{file}: line {line}: {e}")))
     })?;
     let a = stream
         .finish(nominal)
@@ -150,6 +153,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     }
     let result = BeatsJson {
         file,
+        format,
         beats: a.beats,
         mean_beat_s: a.mean_beat,
         beats_per_hour: a.beats_per_hour,

@@ -1,9 +1,11 @@
 //! `pendulum fit decay`: which damping, and how much, from a run-down.
 
 use super::common::{self, finite};
+use super::measured::{has_track, read_options, track_of, track_roles};
 use crate::args::FitDecayArgs;
-use crate::data::{read_columns, Wanted, DEG};
+use crate::data::{need, read_table, Format, Found, Role};
 use crate::error::CliError;
+use crate::file::CsvFile;
 use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::Dimension;
@@ -12,6 +14,7 @@ use pendulum_theory::fitting::decay::{
     effective_angular_frequency, fit_decay, half_swing_loss, preferred, swings_to_time, DecayFit,
     DecayModel,
 };
+use pendulum_theory::fitting::turning::{turning_points, Turns};
 use pendulum_theory::fitting::FitError;
 use pendulum_theory::Pendulum;
 use serde::Serialize;
@@ -21,6 +24,17 @@ use std::collections::BTreeMap;
 struct DecayJson {
     file: String,
     points: usize,
+    /// What was read.
+    format: Format,
+    /// The angular frequency rates are converted with, rad/s.
+    omega_rad_s: Option<f64>,
+    /// `period` (--period), `turning_points` (their times) or `length`.
+    omega_source: Option<&'static str>,
+    /// With a track: the zero of the swing removed from the turning angles.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    zero_offset_rad: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    turning_points_file: Option<String>,
     models: Vec<ModelJson>,
     preferred: Option<&'static str>,
 }
@@ -66,36 +80,90 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
             ));
         }
     }
-    let wanted = [
-        Wanted {
-            what: "time",
-            names: &[("time_s", 1.0), ("swing", 1.0)],
-        },
-        Wanted {
-            what: "amplitude",
-            names: &[("amplitude_deg", DEG), ("amplitude_rad", 1.0)],
-        },
-    ];
-    let columns = read_columns(&args.file, &wanted)?;
-    columns.require_increasing(0)?;
-    columns.require_positive(1)?;
-    columns.require_swing(1)?;
-    let amplitude = &columns.values[1];
-    let time = if columns.names[0] == "swing" {
-        let p = pendulum.as_ref().ok_or_else(|| {
-            CliError::flag(
-                "--length",
-                format!(
-                    "is needed to turn the swing column of {} into time",
-                    columns.file
-                ),
+    let period = args
+        .period
+        .as_deref()
+        .map(|t| common::quantity("--period", t, Dimension::Time))
+        .transpose()?;
+    if let Some(p) = period {
+        if p <= 0.0 {
+            return Err(CliError::flag(
+                "--period",
+                format!("must be positive, got {p} s"),
+            ));
+        }
+    }
+    let options = read_options(&args.read)?;
+    // A track (angle, or x and y, against time) to find the amplitudes in;
+    // else a column of amplitudes. A track wins: Tracker files carry
+    // per-frame columns a user may have called "amp".
+    let choose = |found: &[Found]| {
+        if has_track(found) {
+            track_roles(found)
+        } else if found.iter().any(|f| f.role == Role::Amplitude) {
+            need(&[&[Role::Time, Role::Swing], &[Role::Amplitude]])(found)
+        } else {
+            Err(
+                "no amplitude column (amplitude_deg, amplitude (rad), …), nor a track \
+                 (time with angle, or with x and y)"
+                    .to_string(),
             )
-        })?;
-        swings_to_time(p, &columns.values[0], amplitude)
-    } else {
-        columns.values[0].clone()
+        }
     };
-    let omega = pendulum.map(|p| effective_angular_frequency(&p, amplitude));
+    let table = read_table(&args.file, &options, &choose)?;
+    let file = table.file.clone();
+    let format = table.format.clone();
+    let (time, amplitude, turns_found, half_period) = if table.column(Role::Amplitude).is_some() {
+        table.require_increasing(table.roles[0])?;
+        table.require_positive(Role::Amplitude)?;
+        table.require_swing(Role::Amplitude)?;
+        let amplitude = table.column(Role::Amplitude).unwrap_or(&[]).to_vec();
+        let first = table.values[0].clone();
+        let time = if table.roles[0] == Role::Swing {
+            let p = pendulum.as_ref().ok_or_else(|| {
+                CliError::flag(
+                    "--length",
+                    format!("is needed to turn the swing column of {file} into time"),
+                )
+            })?;
+            swings_to_time(p, &first, &amplitude)
+        } else {
+            first
+        };
+        (time, amplitude, None, None)
+    } else {
+        let track = track_of(table, args.read.pivot.as_deref())?;
+        let found = turning_points(&track.time, &track.angle);
+        if found.turns.len() < 4 {
+            return Err(CliError::other(format!(
+                "{file}: only {} turning points found in the track; a decay needs more swings",
+                found.turns.len()
+            )));
+        }
+        let half = found.half_period();
+        let time = found.turns.iter().map(|t| t.time).collect();
+        let amplitude = found.turns.iter().map(|t| t.amplitude).collect();
+        (time, amplitude, Some(found), half)
+    };
+    let turning_points_file = match (&args.turning_points, &turns_found) {
+        (Some(path), Some(found)) => Some(write_turns(path, found)?),
+        (Some(_), None) => {
+            return Err(CliError::flag(
+                "--turning-points",
+                format!("{file} holds amplitudes already, not a track"),
+            ))
+        }
+        _ => None,
+    };
+    let (omega, omega_source) = match (period, half_period, &pendulum) {
+        (Some(p), _, _) => (Some(std::f64::consts::TAU / p), Some("period")),
+        (None, Some(h), _) => (Some(std::f64::consts::PI / h), Some("turning_points")),
+        (None, None, Some(p)) => (
+            Some(effective_angular_frequency(p, &amplitude)),
+            Some("length"),
+        ),
+        (None, None, None) => (None, None),
+    };
     let models: Vec<DecayModel> = match DecayModel::from_name(&args.model) {
         Some(m) => vec![m],
         None => DecayModel::ALL.to_vec(),
@@ -103,7 +171,7 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     let mut fits = Vec::new();
     let mut first_error = None;
     for model in models {
-        match fit_decay(model, &time, amplitude, omega) {
+        match fit_decay(model, &time, &amplitude, omega) {
             Ok(fit) => fits.push(fit),
             Err(e) => {
                 first_error.get_or_insert(e);
@@ -112,15 +180,20 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     }
     if fits.is_empty() {
         let e = first_error.unwrap_or(FitError::Singular);
-        return Err(CliError::other(format!("{}: {e}", columns.file)));
+        return Err(CliError::other(format!("{file}: {e}")));
     }
     let best = preferred(&fits);
     if let Some(target) = &plot {
-        render(target, &figure(&time, amplitude, &fits, best))?;
+        render(target, &figure(&time, &amplitude, &fits, best))?;
     }
     let result = DecayJson {
-        file: columns.file.clone(),
+        file,
         points: time.len(),
+        format,
+        omega_rad_s: omega,
+        omega_source,
+        zero_offset_rad: turns_found.as_ref().map(|t| t.offset),
+        turning_points_file,
         models: fits
             .iter()
             .map(|f| model_json(f, pendulum.as_ref(), mass))
@@ -132,6 +205,18 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     } else {
         Ok(text(&result))
     }
+}
+
+/// Writes the turning points found (time_s,amplitude_rad,side).
+fn write_turns(path: &std::path::Path, found: &Turns) -> Result<String, CliError> {
+    let mut file = CsvFile::create(path, "--turning-points", "time_s,amplitude_rad,side")?;
+    for t in &found.turns {
+        file.number(Some(t.time))
+            .number(Some(t.amplitude))
+            .number(Some(t.side))
+            .end_row()?;
+    }
+    file.commit()
 }
 
 fn model_json(f: &DecayFit, pendulum: Option<&Pendulum>, mass: Option<f64>) -> ModelJson {

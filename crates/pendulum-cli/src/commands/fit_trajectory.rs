@@ -2,8 +2,9 @@
 //! from a tracked angle.
 
 use super::common;
+use super::measured::{read_track, PivotJson};
 use crate::args::FitTrajectoryArgs;
-use crate::data::{read_columns, Wanted, DEG};
+use crate::data::Format;
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num};
@@ -23,6 +24,33 @@ struct TrajectoryJson {
     residual_rms_rad: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     residuals_file: Option<String>,
+    /// `auto`, `linear` or `nonlinear`, as asked (`model` is what was used).
+    model_requested: String,
+    /// What was read.
+    format: Format,
+    /// The pivot, when the angles came from x/y positions.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pivot: Option<PivotJson>,
+    /// The radius of the circle the bob traced (`--pivot fit`), file units.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    track_radius: Option<f64>,
+    /// The length g is computed with, m.
+    length_m: Option<f64>,
+    /// `given` (--length) or `track_radius`.
+    length_source: Option<&'static str>,
+}
+
+/// `--model auto` fits the nonlinear equation above this swing, degrees.
+const AUTO_NONLINEAR_ABOVE_DEG: f64 = 5.0;
+
+/// Half the spread of the angles: the largest swing about the middle.
+fn largest_swing(theta: &[f64]) -> f64 {
+    let (lo, hi) = theta
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
+            (lo.min(t), hi.max(t))
+        });
+    0.5 * (hi - lo)
 }
 
 pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
@@ -31,31 +59,35 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let length = args
+    let given_length = args
         .length
         .as_deref()
         .map(|l| common::pendulum(l, &common::gravity_default()).map(|p| p.length_m()))
         .transpose()?;
-    let wanted = [
-        Wanted {
-            what: "time",
-            names: &[("time_s", 1.0)],
-        },
-        Wanted {
-            what: "angle",
-            names: &[("angle_deg", DEG), ("angle_rad", 1.0)],
-        },
-    ];
-    let columns = read_columns(&args.file, &wanted)?;
-    columns.require_increasing(0)?;
-    let model = if args.model == "nonlinear" {
-        TrajectoryModel::Nonlinear
-    } else {
-        TrajectoryModel::Linear
+    let track = read_track(&args.file, &args.read)?;
+    // Without --length, a fitted pivot's radius is the length (in the
+    // file's units, which Tracker calibrates to metres).
+    let (length, length_source) = match (given_length, track.track_radius) {
+        (Some(l), _) => (Some(l), Some("given")),
+        (None, Some(r)) => (Some(r), Some("track_radius")),
+        (None, None) => (None, None),
     };
-    let (time, theta) = (&columns.values[0], &columns.values[1]);
-    let fit = fit_trajectory(model, time, theta)
-        .map_err(|e| CliError::other(format!("{}: {e}", columns.file)))?;
+    let (time, theta) = (&track.time, &track.angle);
+    let model = match args.model.as_str() {
+        "nonlinear" => TrajectoryModel::Nonlinear,
+        "linear" => TrajectoryModel::Linear,
+        // Auto: the nonlinear model when the largest swing exceeds 5°.
+        _ => {
+            if largest_swing(theta) > AUTO_NONLINEAR_ABOVE_DEG.to_radians() {
+                TrajectoryModel::Nonlinear
+            } else {
+                TrajectoryModel::Linear
+            }
+        }
+    };
+    let file = track.table.file.clone();
+    let fit =
+        fit_trajectory(model, time, theta).map_err(|e| CliError::other(format!("{file}: {e}")))?;
     if let Some(target) = &plot {
         render(target, &figure(time, theta, &fit.fit.residuals))?;
     }
@@ -90,24 +122,41 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         None => None,
     };
     let result = TrajectoryJson {
-        file: columns.file.clone(),
+        file,
         points: time.len(),
         model: if model == TrajectoryModel::Linear {
             "linear"
         } else {
             "nonlinear"
         },
+        model_requested: args.model.clone(),
         parameters,
         standard_errors,
         residual_rms_rad: fit.fit.residual_rms,
         residuals_file,
+        format: track.table.format.clone(),
+        pivot: track.pivot.clone(),
+        track_radius: track.track_radius,
+        length_m: length,
+        length_source,
     };
     if args.json {
         return output::json(&result);
     }
     let mut out = format!(
-        "{}: {} points, {} model\n",
-        result.file, result.points, result.model
+        "{}: {} points ({}-separated{}), {} model\n",
+        result.file,
+        result.points,
+        result.format.separator,
+        if result.format.skipped_rows > 0 {
+            format!(
+                ", {} rows with blank cells skipped",
+                result.format.skipped_rows
+            )
+        } else {
+            String::new()
+        },
+        result.model
     );
     for (name, value) in &result.parameters {
         let se = result.standard_errors[name];
@@ -116,6 +165,14 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             num(*value, 8),
             num(se, 2)
         ));
+    }
+    if let (Some(source), Some(l)) = (result.length_source, result.length_m) {
+        if source == "track_radius" {
+            out.push_str(&format!(
+                "  length {} (the radius of the tracked arc; give --length to override)\n",
+                num(l, 6)
+            ));
+        }
     }
     if let Some(g) = result.parameters.get("g_m_s2") {
         out.push_str(&format!(

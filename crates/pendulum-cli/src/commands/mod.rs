@@ -9,6 +9,7 @@ mod fit_decay;
 mod fit_trajectory;
 mod gravity;
 mod length;
+mod measured;
 pub(crate) mod period;
 mod report;
 pub(crate) mod simulate;
@@ -44,7 +45,13 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
             a.json,
         ),
         Command::Fit(f) => match &f.what {
-            FitCommand::Decay(a) => (vec![("--plot", a.plot.as_deref())], a.json),
+            FitCommand::Decay(a) => (
+                vec![
+                    ("--plot", a.plot.as_deref()),
+                    ("--turning-points", a.turning_points.as_deref()),
+                ],
+                a.json,
+            ),
             FitCommand::Trajectory(a) => (
                 vec![
                     ("--residuals", a.residuals.as_deref()),

@@ -190,8 +190,14 @@ fn bad_files_name_the_file_the_line_and_the_column() {
     };
     bad(
         "missing.csv",
+        "time_s,foo\n0,1\n1,0.9\n2,0.8\n",
+        &["no amplitude column", "time_s, foo", "comma-separated"],
+    );
+    // An amplitude column without a unit needs --angle-unit.
+    bad(
+        "unitless.csv",
         "time_s,amp\n0,1\n1,0.9\n2,0.8\n",
-        &["amplitude_deg", "amplitude"],
+        &["amp", "--angle-unit"],
     );
     bad(
         "text.csv",
@@ -213,11 +219,21 @@ fn bad_files_name_the_file_the_line_and_the_column() {
         "time_s,amplitude_deg\n0,3\n1,-2.9\n2,2.8\n3,2.7\n",
         &["line 3", "amplitude_deg", "positive"],
     );
-    bad(
+    // A short row is a row with blank cells: skipped and counted.
+    let ragged = write(
+        d,
         "ragged.csv",
-        "time_s,amplitude_deg\n0,3\n1\n2,2.8\n",
-        &["line 3"],
+        "time_s,amplitude_deg\n0,3\n1\n2,2.8\n3,2.7\n4,2.6\n",
     );
+    let v = json(&[
+        "fit",
+        "decay",
+        ragged.to_str().unwrap(),
+        "--model",
+        "viscous",
+    ]);
+    assert_eq!(v["format"]["skipped_rows"], 1);
+    assert_eq!(v["points"], 4);
     let missing = d.join("nowhere.csv");
     refuses(&["fit", "decay", missing.to_str().unwrap()], "nowhere.csv");
     let beats = write(d, "beats.csv", "time_s\n0\n1\n");

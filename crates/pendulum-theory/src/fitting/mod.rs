@@ -12,7 +12,9 @@
 
 pub mod beats;
 pub mod decay;
+pub mod track;
 pub mod trajectory;
+pub mod turning;
 
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};

@@ -1,0 +1,190 @@
+//! What the `fit` commands share about their files: the reading options
+//! from the command line, and a tracked swing (angle against time) read
+//! from an angle column or from x/y positions about a pivot.
+
+use crate::args::MeasurementArgs;
+use crate::data::{read_table, AngleUnit, Found, ReadOptions, Role, Table};
+use crate::error::CliError;
+use crate::units::parse_number;
+use pendulum_theory::fitting::track::{angle_about, fit_circle};
+use serde::Serialize;
+use std::path::Path;
+
+/// The reading options given on the command line.
+pub fn read_options(args: &MeasurementArgs) -> Result<ReadOptions, CliError> {
+    Ok(ReadOptions {
+        angle_unit: args.angle_unit.as_deref().map(|u| match u {
+            "rad" => AngleUnit::Radians,
+            _ => AngleUnit::Degrees,
+        }),
+        columns: columns(args.columns.as_deref()),
+        frame_rate: frame_rate(args.frame_rate.as_deref())?,
+    })
+}
+
+/// `--columns a,b,c` as names.
+pub fn columns(text: Option<&str>) -> Option<Vec<String>> {
+    text.map(|t| t.split(',').map(|c| c.trim().to_string()).collect())
+}
+
+fn frame_rate(text: Option<&str>) -> Result<Option<f64>, CliError> {
+    let Some(text) = text else {
+        return Ok(None);
+    };
+    let fps = parse_number(text).map_err(|e| CliError::flag("--frame-rate", e))?;
+    if fps <= 0.0 {
+        return Err(CliError::flag(
+            "--frame-rate",
+            format!("must be positive, got {text}"),
+        ));
+    }
+    Ok(Some(fps))
+}
+
+/// Where the pivot of tracked positions came from, for the JSON output.
+#[derive(Clone, Debug, Serialize)]
+pub struct PivotJson {
+    /// Horizontal position, file units.
+    pub x: f64,
+    /// Vertical position, file units.
+    pub y: f64,
+    /// `given`, `default` (0,0) or `fit`.
+    pub source: &'static str,
+}
+
+/// A swing read from a file: times (s, from the first row) and angles (rad).
+pub struct Track {
+    /// What was read.
+    pub table: Table,
+    /// Times, s.
+    pub time: Vec<f64>,
+    /// Angles, rad.
+    pub angle: Vec<f64>,
+    /// The pivot, when the angles came from positions.
+    pub pivot: Option<PivotJson>,
+    /// The radius of the circle the bob traced (`--pivot fit`), file units.
+    pub track_radius: Option<f64>,
+}
+
+/// Whether the header holds a swing: time with an angle, or with x and y.
+pub fn has_track(found: &[Found]) -> bool {
+    let has = |r: Role| found.iter().any(|f| f.role == r);
+    has(Role::Time) && (has(Role::Angle) || has(Role::X) && has(Role::Y))
+}
+
+/// The roles of a swing: time and angle, or time, x and y.
+pub fn track_roles(found: &[Found]) -> Result<Vec<Role>, String> {
+    let has = |r: Role| found.iter().any(|f| f.role == r);
+    if !has(Role::Time) {
+        return Err("no time column".into());
+    }
+    if has(Role::Angle) {
+        Ok(vec![Role::Time, Role::Angle])
+    } else if has(Role::X) && has(Role::Y) {
+        Ok(vec![Role::Time, Role::X, Role::Y])
+    } else {
+        Err("no angle column (angle, theta, θ), nor x and y positions".into())
+    }
+}
+
+/// Reads a swing from `path`.
+pub fn read_track(path: &Path, args: &MeasurementArgs) -> Result<Track, CliError> {
+    let options = read_options(args)?;
+    let table = read_table(path, &options, &track_roles)?;
+    track_of(table, args.pivot.as_deref())
+}
+
+/// The swing of a table read with [`track_roles`].
+pub fn track_of(table: Table, pivot: Option<&str>) -> Result<Track, CliError> {
+    table.require_increasing(Role::Time)?;
+    let time = table.column(Role::Time).unwrap_or(&[]).to_vec();
+    if let Some(angle) = table.column(Role::Angle) {
+        let angle = angle.to_vec();
+        return Ok(Track {
+            table,
+            time,
+            angle,
+            pivot: None,
+            track_radius: None,
+        });
+    }
+    let (x, y) = (
+        table.column(Role::X).unwrap_or(&[]),
+        table.column(Role::Y).unwrap_or(&[]),
+    );
+    let (pivot, radius) = match pivot.map(str::trim) {
+        Some("fit") => {
+            let circle = fit_circle(x, y).map_err(|e| {
+                CliError::flag(
+                    "--pivot",
+                    format!("no circle fits the positions of {}: {e}", table.file),
+                )
+            })?;
+            (
+                PivotJson {
+                    x: circle.centre_x,
+                    y: circle.centre_y,
+                    source: "fit",
+                },
+                Some(circle.radius),
+            )
+        }
+        Some(text) => {
+            let parts: Vec<&str> = text.split(',').collect();
+            let bad = || {
+                CliError::flag(
+                    "--pivot",
+                    format!("give X,Y in the file's units (e.g. 0,0) or 'fit', got '{text}'"),
+                )
+            };
+            if parts.len() != 2 {
+                return Err(bad());
+            }
+            let px = parse_number(parts[0]).map_err(|_| bad())?;
+            let py = parse_number(parts[1]).map_err(|_| bad())?;
+            (
+                PivotJson {
+                    x: px,
+                    y: py,
+                    source: "given",
+                },
+                None,
+            )
+        }
+        None => (
+            PivotJson {
+                x: 0.0,
+                y: 0.0,
+                source: "default",
+            },
+            None,
+        ),
+    };
+    let angle: Vec<f64> = x
+        .iter()
+        .zip(y)
+        .map(|(&xi, &yi)| angle_about(xi, yi, pivot.x, pivot.y))
+        .collect();
+    // A bob above its pivot means the pivot is wrong (or y points down).
+    if let Some(i) = angle
+        .iter()
+        .position(|a| a.abs() >= std::f64::consts::FRAC_PI_2)
+    {
+        return Err(table.error_at(
+            i,
+            Role::Y,
+            format!(
+                "the bob is level with or above the pivot ({}, {}): give the pivot with \
+                 --pivot X,Y, or --pivot fit",
+                pivot.x, pivot.y
+            ),
+        ));
+    }
+    Ok(Track {
+        table,
+        time,
+        angle,
+        pivot: Some(pivot),
+        track_radius: radius,
+    })
+}

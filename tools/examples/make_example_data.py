@@ -58,7 +58,57 @@ def beats(path):
             f.write(f"{t:.6f}\n")
 
 
+def tracker(path):
+    """A Tracker export of a 1.2 m pendulum swinging in air, released at
+    15.5 degrees and tracked at 30 frames a second for two minutes: viscous
+    damping (zeta = 5.5e-4) and quadratic air drag (b = 0.025 per radian,
+    theta'' = -w^2 sin theta - 2 zeta w theta' - b theta'|theta'|), the bob's
+    x and y in metres about the pivot (Tracker's origin), 2 mm of tracking
+    noise, a few frames where tracking was lost (blank cells), a title line,
+    tab separators and CRLF line ends, as Tracker writes them."""
+    length, w = 1.2, math.sqrt(9.80665 / 1.2)
+    zeta, b = 5.5e-4, 0.025
+    def acc(th, v):
+        return -w * w * math.sin(th) - 2 * zeta * w * v - b * v * abs(v)
+    th, v, sub = math.radians(15.5), 0.0, 40
+    h = 1 / 30 / sub
+    lost = {200, 201, 1777, 2950}
+    with open(path, "w", newline="") as f:
+        f.write("mass_A\r\nt\tx\ty\r\n")
+        for frame in range(3601):
+            t = frame / 30
+            x = length * math.sin(th) + 0.002 * rng.gauss(0, 1)
+            y = -length * math.cos(th) + 0.002 * rng.gauss(0, 1)
+            if frame in lost:
+                f.write(f"{t!r}\t\t\r\n")
+            else:
+                f.write(f"{t!r}\t{x!r}\t{y!r}\r\n")
+            for _ in range(sub):
+                k1 = (v, acc(th, v))
+                k2 = (v + h / 2 * k1[1], acc(th + h / 2 * k1[0], v + h / 2 * k1[1]))
+                k3 = (v + h / 2 * k2[1], acc(th + h / 2 * k2[0], v + h / 2 * k2[1]))
+                k4 = (v + h * k3[1], acc(th + h * k3[0], v + h * k3[1]))
+                th += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+                v += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+
+
+def semicolon(path):
+    """The run-down of rundown() as a spreadsheet in much of Europe saves
+    it: a title, semicolons, decimal commas, units in parentheses."""
+    omega = math.sqrt(9.80665 / 0.99362)
+    lam = omega / (2 * 10000.0)
+    with open(path, "w") as f:
+        f.write("Messung Pendeluhr, Ablesung jede Minute\nZeit (s);Amplitude (°)\n")
+        for i in range(121):
+            t = 60.0 * i
+            a = math.degrees(math.radians(3.0) * math.exp(-lam * t)) + 0.01 * rng.gauss(0, 1)
+            f.write(f"{t:.0f};{a:.4f}".replace(".", ",") + "\n")
+
+
 rundown("examples/rundown.csv")
 video("examples/video.csv")
 beats("examples/beats.csv")
-print("wrote examples/rundown.csv, examples/video.csv, examples/beats.csv")
+tracker("examples/tracker.txt")
+semicolon("examples/rundown-semicolon.csv")
+print("wrote examples/rundown.csv, examples/video.csv, examples/beats.csv, "
+      "examples/tracker.txt, examples/rundown-semicolon.csv")

@@ -158,7 +158,7 @@ pub struct FitDecayArgs {
     #[command(flatten)]
     pub read: MeasurementArgs,
     /// Which decay law to fit.
-    #[arg(long, default_value = "all", value_parser = ["viscous", "coulomb", "quadratic", "viscous+coulomb", "all"])]
+    #[arg(long, default_value = "all", value_parser = ["viscous", "coulomb", "quadratic", "viscous+coulomb", "viscous+quadratic", "full", "all"])]
     pub model: String,
     /// Pendulum length: turns rates into ζ, Q, friction angle and drag (needed for a swing column).
     #[arg(long, value_name = "L", allow_hyphen_values = true)]

@@ -57,10 +57,15 @@ impl Role {
     /// The role of a base name (lower case, unit removed).
     fn of(base: &str) -> Option<Role> {
         Some(match base {
-            "t" | "time" | "timestamp" | "times" => Role::Time,
+            // English, and the words of the spreadsheets of much of Europe.
+            "t" | "time" | "timestamp" | "times" | "zeit" | "temps" | "tiempo" | "tempo"
+            | "tijd" => Role::Time,
             "swing" | "swings" | "half_swing" | "halfswing" => Role::Swing,
-            "angle" | "theta" | "θ" | "phi" | "φ" | "angular_position" => Role::Angle,
-            "amplitude" | "amp" | "peak" | "peaks" => Role::Amplitude,
+            "angle" | "theta" | "θ" | "phi" | "φ" | "angular_position" | "winkel" | "ángulo"
+            | "angulo" | "angolo" | "hoek" => Role::Angle,
+            "amplitude" | "amp" | "peak" | "peaks" | "amplitud" | "ampiezza" | "amplitudine" => {
+                Role::Amplitude
+            }
             "x" => Role::X,
             "y" => Role::Y,
             _ => return None,

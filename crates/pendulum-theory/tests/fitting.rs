@@ -33,6 +33,9 @@ fn truth(model: DecayModel) -> Vec<f64> {
         DecayModel::Coulomb => vec![0.05, 1.5e-5],
         DecayModel::Quadratic => vec![0.05, 0.02],
         DecayModel::ViscousCoulomb => vec![0.05, 3e-4, 8e-6],
+        // A pendulum in air: drag about as strong as the viscous part at A0.
+        DecayModel::ViscousQuadratic => vec![0.05, 3e-4, 0.01],
+        DecayModel::Full => vec![0.05, 3e-4, 5e-6, 0.01],
     }
 }
 
@@ -90,12 +93,99 @@ fn one_sigma_coverage_over_100_seeds() {
     }
 }
 
+/// Data from a law without some damping: the laws that have it put it at
+/// its bound 0 or within two standard errors of 0, never negative, and a
+/// fit with a rate at its bound is never preferred.
+#[test]
+fn absent_damping_is_never_negative_nor_preferred_at_its_bound() {
+    for generator in [
+        DecayModel::Viscous,
+        DecayModel::Quadratic,
+        DecayModel::ViscousQuadratic,
+    ] {
+        let (mut at_bound, mut checked, mut beyond) = (0, 0, 0);
+        for seed in 0..20 {
+            let (t, a) = synthetic(generator, 7000 + seed);
+            let fits: Vec<_> = DecayModel::ALL
+                .iter()
+                .filter_map(|&m| fit_decay(m, &t, &a, Some(3.0)).ok())
+                .collect();
+            for f in &fits {
+                for e in &f.parameters {
+                    assert!(
+                        e.value >= 0.0 || e.name == "amplitude0_rad",
+                        "{} from {}: {} = {}",
+                        f.model.name(),
+                        generator.name(),
+                        e.name,
+                        e.value
+                    );
+                }
+                at_bound += usize::from(!f.at_bound.is_empty());
+                // Only a law that nests the generator's can say a rate is absent.
+                let nests = generator
+                    .rate_names()
+                    .iter()
+                    .all(|r| f.model.rate_names().contains(r));
+                if !nests {
+                    continue;
+                }
+                // A rate the generator lacks: at 0, or within 2σ of it.
+                for (rate, present) in [
+                    (
+                        "decay_rate_per_s",
+                        generator.rate_names().contains(&"decay_rate_per_s"),
+                    ),
+                    (
+                        "amplitude_fall_rad_per_s",
+                        generator.rate_names().contains(&"amplitude_fall_rad_per_s"),
+                    ),
+                    (
+                        "quadratic_decay_per_rad_s",
+                        generator
+                            .rate_names()
+                            .contains(&"quadratic_decay_per_rad_s"),
+                    ),
+                ] {
+                    if present {
+                        continue;
+                    }
+                    if let Some(e) = f.parameters.iter().find(|e| e.name == rate) {
+                        checked += 1;
+                        if !(e.value == 0.0 || e.value <= 2.0 * e.standard_error) {
+                            beyond += 1;
+                            eprintln!(
+                                "{} from {}: {rate} = {} ± {}",
+                                f.model.name(),
+                                generator.name(),
+                                e.value,
+                                e.standard_error
+                            );
+                        }
+                    }
+                }
+            }
+            let best = preferred(&fits).unwrap();
+            let chosen = fits.iter().find(|f| f.model == best).unwrap();
+            assert!(chosen.at_bound.is_empty());
+        }
+        eprintln!(
+            "{}: {at_bound} fits with a rate at its bound; absent rates beyond 2σ: {beyond} of {checked}",
+            generator.name()
+        );
+        // A true zero is beyond 2σ in about 2.3% of fits (a one-sided
+        // Gaussian tail; the bound takes the other half): allow up to 10%.
+        assert!(beyond * 10 <= checked, "{beyond} of {checked} beyond 2σ");
+    }
+}
+
 #[test]
 fn model_selection_picks_the_generating_model() {
     for model in [
         DecayModel::Viscous,
         DecayModel::Coulomb,
         DecayModel::ViscousCoulomb,
+        DecayModel::ViscousQuadratic,
     ] {
         let mut right = 0;
         for seed in 0..20 {

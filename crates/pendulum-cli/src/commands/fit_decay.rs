@@ -11,8 +11,8 @@ use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::Dimension;
 use pendulum_theory::energy::energy_budget;
 use pendulum_theory::fitting::decay::{
-    effective_angular_frequency, fit_decay, half_swing_loss, preferred, swings_to_time, DecayFit,
-    DecayModel,
+    akaike_weights, effective_angular_frequency, fit_decay, half_swing_loss, preferred,
+    swings_to_time, DecayFit, DecayModel,
 };
 use pendulum_theory::fitting::turning::{turning_points, Turns};
 use pendulum_theory::fitting::FitError;
@@ -42,15 +42,31 @@ struct DecayJson {
 #[derive(Serialize)]
 struct ModelJson {
     model: &'static str,
+    /// Why the law could not be fitted (then no other key).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    failed: Option<String>,
+    #[serde(flatten)]
+    fitted: Option<FittedJson>,
+}
+
+#[derive(Serialize)]
+struct FittedJson {
     parameters: BTreeMap<&'static str, f64>,
     standard_errors: BTreeMap<&'static str, f64>,
     q_factor: Option<f64>,
     /// With no measurable viscous decay: the two-sigma lower bound on Q.
     #[serde(skip_serializing_if = "Option::is_none")]
     q_factor_lower_bound: Option<f64>,
+    /// The Q of the exponential that decays as much over the record: what
+    /// a trajectory fit reports, for any law.
+    q_factor_mean: Option<f64>,
+    /// Damping coefficients held at their bound 0 (the law is then a
+    /// simpler one, never preferred).
+    at_bound: Vec<&'static str>,
     residual_rms: f64,
     aic: f64,
     bic: f64,
+    akaike_weight: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     energy_loss_per_period_j: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -168,21 +184,24 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         Some(m) => vec![m],
         None => DecayModel::ALL.to_vec(),
     };
+    // Every law is listed: fitted, or failed with the reason.
     let mut fits = Vec::new();
-    let mut first_error = None;
+    let mut failures: Vec<(DecayModel, FitError)> = Vec::new();
     for model in models {
         match fit_decay(model, &time, &amplitude, omega) {
             Ok(fit) => fits.push(fit),
-            Err(e) => {
-                first_error.get_or_insert(e);
-            }
+            Err(e) => failures.push((model, e)),
         }
     }
     if fits.is_empty() {
-        let e = first_error.unwrap_or(FitError::Singular);
+        let e = failures
+            .into_iter()
+            .next()
+            .map_or(FitError::Singular, |(_, e)| e);
         return Err(CliError::other(format!("{file}: {e}")));
     }
     let best = preferred(&fits);
+    let weights = akaike_weights(&fits);
     if let Some(target) = &plot {
         render(target, &figure(&time, &amplitude, &fits, best))?;
     }
@@ -194,9 +213,22 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         omega_source,
         zero_offset_rad: turns_found.as_ref().map(|t| t.offset),
         turning_points_file,
-        models: fits
+        models: DecayModel::ALL
             .iter()
-            .map(|f| model_json(f, pendulum.as_ref(), mass))
+            .filter_map(|&m| {
+                if let Some(i) = fits.iter().position(|f| f.model == m) {
+                    Some(model_json(&fits[i], weights[i], pendulum.as_ref(), mass))
+                } else {
+                    failures
+                        .iter()
+                        .find(|(f, _)| *f == m)
+                        .map(|(_, e)| ModelJson {
+                            model: m.name(),
+                            failed: Some(e.to_string()),
+                            fitted: None,
+                        })
+                }
+            })
             .collect(),
         preferred: best.map(DecayModel::name),
     };
@@ -205,6 +237,18 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     } else {
         Ok(text(&result))
     }
+}
+
+/// Whether the parameter `name` is the one the bound name `bound` (a
+/// physical or a rate name) refers to.
+fn bound_of(bound: &str, name: &str) -> bool {
+    let rate_of = |n: &str| match n {
+        "zeta" | "decay_rate_per_s" => "viscous",
+        "friction_angle_rad" | "amplitude_fall_rad_per_s" => "dry",
+        "quadratic_drag" | "quadratic_decay_per_rad_s" => "drag",
+        _ => "",
+    };
+    !rate_of(name).is_empty() && rate_of(name) == rate_of(bound)
 }
 
 /// Writes the turning points found (time_s,amplitude_rad,side).
@@ -219,7 +263,12 @@ fn write_turns(path: &std::path::Path, found: &Turns) -> Result<String, CliError
     file.commit()
 }
 
-fn model_json(f: &DecayFit, pendulum: Option<&Pendulum>, mass: Option<f64>) -> ModelJson {
+fn model_json(
+    f: &DecayFit,
+    weight: f64,
+    pendulum: Option<&Pendulum>,
+    mass: Option<f64>,
+) -> ModelJson {
     let parameters = f.parameters.iter().map(|e| (e.name, e.value)).collect();
     let standard_errors = f
         .parameters
@@ -240,45 +289,106 @@ fn model_json(f: &DecayFit, pendulum: Option<&Pendulum>, mass: Option<f64>) -> M
     };
     ModelJson {
         model: f.model.name(),
-        parameters,
-        standard_errors,
-        q_factor: f.q_factor.and_then(finite),
-        q_factor_lower_bound: f.q_factor_lower_bound.and_then(finite),
-        residual_rms: f.fit.residual_rms,
-        aic: f.fit.aic,
-        bic: f.fit.bic,
-        energy_loss_per_period_j: budget.map(|b| b.loss_per_period),
-        power_w: budget.map(|b| b.power),
+        failed: None,
+        fitted: Some(FittedJson {
+            parameters,
+            standard_errors,
+            q_factor: f.q_factor.and_then(finite),
+            q_factor_lower_bound: f.q_factor_lower_bound.and_then(finite),
+            q_factor_mean: f.q_factor_mean.and_then(finite),
+            at_bound: f.at_bound.clone(),
+            residual_rms: f.fit.residual_rms,
+            aic: f.fit.aic,
+            bic: f.fit.bic,
+            akaike_weight: weight,
+            energy_loss_per_period_j: budget.map(|b| b.loss_per_period),
+            power_w: budget.map(|b| b.power),
+        }),
     }
 }
 
 fn text(r: &DecayJson) -> String {
-    let mut out = format!("{}: {} points\n", r.file, r.points);
-    for m in &r.models {
-        let mark = if Some(m.model) == r.preferred {
-            "  <- preferred (lowest BIC)"
+    let mut out = format!(
+        "{}: {} points ({}-separated{})\n",
+        r.file,
+        r.points,
+        r.format.separator,
+        if r.format.skipped_rows > 0 {
+            format!(", {} rows with blank cells skipped", r.format.skipped_rows)
         } else {
-            ""
+            String::new()
+        }
+    );
+    if let Some(offset) = r.zero_offset_rad {
+        out.push_str(&format!(
+            "turning points of the track, zero offset {}° removed\n",
+            num(offset.to_degrees(), 3)
+        ));
+    }
+    if let (Some(w), Some(source)) = (r.omega_rad_s, r.omega_source) {
+        let from = match source {
+            "period" => "--period",
+            "turning_points" => "the turning points' times",
+            _ => "--length and g",
+        };
+        out.push_str(&format!(
+            "ω = {} rad/s (period {} s), from {from}\n",
+            num(w, 6),
+            num(std::f64::consts::TAU / w, 6)
+        ));
+    }
+    for m in &r.models {
+        let Some(fitted) = &m.fitted else {
+            out.push_str(&format!(
+                "\n{}: failed ({})\n",
+                m.model,
+                m.failed.as_deref().unwrap_or("?")
+            ));
+            continue;
+        };
+        let mark = if Some(m.model) == r.preferred {
+            "  <- preferred (lowest BIC)".to_string()
+        } else if !fitted.at_bound.is_empty() {
+            format!(
+                "  ({} at 0: the simpler law, not preferred)",
+                fitted.at_bound.join(", ")
+            )
+        } else {
+            String::new()
         };
         out.push_str(&format!("\n{}{mark}\n", m.model));
-        for (name, value) in &m.parameters {
-            let se = m.standard_errors.get(name).copied().unwrap_or(f64::NAN);
-            out.push_str(&format!(
-                "  {name:<28} {} ± {}\n",
-                num(*value, 6),
-                num(se, 2)
-            ));
+        for (name, value) in &fitted.parameters {
+            let se = fitted.standard_errors.get(name).copied().unwrap_or(0.0);
+            if *value == 0.0 && fitted.at_bound.iter().any(|b| bound_of(b, name)) {
+                out.push_str(&format!(
+                    "  {name:<28} 0 (at its bound; ± {})\n",
+                    num(se, 2)
+                ));
+            } else {
+                out.push_str(&format!(
+                    "  {name:<28} {} ± {}\n",
+                    num(*value, 6),
+                    num(se, 2)
+                ));
+            }
         }
-        if let Some(q) = m.q_factor {
-            out.push_str(&format!("  {:<28} {}\n", "Q", num(q, 5)));
-        } else if let Some(q) = m.q_factor_lower_bound {
+        if let Some(q) = fitted.q_factor {
+            out.push_str(&format!("  {:<28} {}\n", "Q (viscous part)", num(q, 5)));
+        } else if let Some(q) = fitted.q_factor_lower_bound {
             out.push_str(&format!(
                 "  {:<28} no measurable decay: Q > {} (two standard errors)\n",
                 "Q",
                 num(q, 3)
             ));
         }
-        if let (Some(e), Some(p)) = (m.energy_loss_per_period_j, m.power_w) {
+        if let Some(q) = fitted.q_factor_mean {
+            out.push_str(&format!(
+                "  {:<28} {} (the exponential that decays as much over the record)\n",
+                "Q over the record",
+                num(q, 5)
+            ));
+        }
+        if let (Some(e), Some(p)) = (fitted.energy_loss_per_period_j, fitted.power_w) {
             out.push_str(&format!(
                 "  {:<28} {} J per period, {} W\n",
                 "energy lost",
@@ -287,11 +397,12 @@ fn text(r: &DecayJson) -> String {
             ));
         }
         out.push_str(&format!(
-            "  {:<28} {} rad;  AIC {}  BIC {}\n",
+            "  {:<28} {} rad;  AIC {}  BIC {}  Akaike weight {}\n",
             "residual rms",
-            num(m.residual_rms, 3),
-            num(m.aic, 6),
-            num(m.bic, 6)
+            num(fitted.residual_rms, 3),
+            num(fitted.aic, 6),
+            num(fitted.bic, 6),
+            num(fitted.akaike_weight, 3)
         ));
     }
     out

@@ -43,14 +43,21 @@ fn decay_prefers_the_generating_model_and_reports_physics() {
     assert_eq!(v["points"], 100);
     assert_eq!(v["preferred"], "viscous+coulomb");
     let models = v["models"].as_array().unwrap();
-    assert_eq!(models.len(), 4);
+    assert_eq!(models.len(), 6);
     let names: Vec<&str> = models
         .iter()
         .map(|m| m["model"].as_str().unwrap())
         .collect();
     assert_eq!(
         names,
-        ["viscous", "coulomb", "quadratic", "viscous+coulomb"]
+        [
+            "viscous",
+            "coulomb",
+            "quadratic",
+            "viscous+coulomb",
+            "viscous+quadratic",
+            "full"
+        ]
     );
     let best = &models[3];
     for key in ["zeta", "friction_angle_rad", "amplitude0_rad"] {

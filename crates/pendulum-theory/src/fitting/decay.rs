@@ -1,20 +1,36 @@
 //! Which damping a pendulum has, from how its amplitude falls.
 //!
-//! Four laws of amplitude against time, each the solution of an averaged
-//! equation for the amplitude `A(t)`:
+//! Six laws of amplitude against time, each the solution of an averaged
+//! equation for the amplitude `A(t)`, `dA/dt = -(μ + λA + κA²)` with some
+//! of the rates zero:
 //!
-//! | model | law | averaged equation | source |
+//! | model | rates | law | source |
 //! |---|---|---|---|
-//! | `viscous` | `A0 e^{-λt}`, `λ = ζω` | `dA/dt = -λA` | seed section 1-4 |
-//! | `coulomb` | `A0 - μt`, `μ = 2rω/π` | `dA/dt = -μ` (2r per half swing) | book section 2-4 |
-//! | `quadratic` | `A0 / (1 + κA0t)`, `κ = 4bω/(3π)` | `dA/dt = -κA²` | energy balance with `⟨|sin|³⟩ = 4/(3π)` |
-//! | `viscous+coulomb` | `A0 e^{-λt} + μ expm1(-λt)/λ` | `dA/dt = -λA - μ` | the recursion `|A_{n+1}| = (|A_n| - r)/Λ - r` at half swings |
+//! | `viscous` | λ | `A0 e^{-λt}`, `λ = ζω` | section 1-4 |
+//! | `coulomb` | μ | `A0 - μt`, `μ = 2rω/π` (2r per half swing) | book section 2-4 |
+//! | `quadratic` | κ | `A0 / (1 + κA0t)`, `κ = 4bω/(3π)` | energy balance with `⟨|sin|³⟩ = 4/(3π)` |
+//! | `viscous+coulomb` | λ, μ | `A0 e^{-λt} + μ expm1(-λt)/λ` | the half-swing recursion's interpolant |
+//! | `viscous+quadratic` | λ, κ | `λA0 e^{-λt} / (λ + κA0(1 - e^{-λt}))` | a Bernoulli equation: the usual pendulum in air |
+//! | `full` | λ, μ, κ | the Riccati solution below | all three |
 //!
-//! The rates (`λ`, `μ`, `κ`) are fitted; with the pendulum's angular
-//! frequency `ω` they become the physical `ζ`, friction angle `r` and
-//! quadratic drag `b`. At large amplitude the frequency depends on the
-//! amplitude, so `ω = 2π/T(A)` is taken at the data's median amplitude
-//! (the exact period, [`crate::period`]).
+//! The full law is solved by shifting to the equilibrium `a* = -2μ/(λ + √D)`
+//! (`D = λ² - 4κμ`, a root of `κa² + λa + μ`), which turns it into the
+//! viscous+quadratic law for `A - a*` with rate `√D`: stable as κ or μ
+//! vanish, with no division by a small rate. When `D < 0` the solution is
+//! `A = (s tan(atan((2κA0 + λ)/s) - st/2) - λ)/(2κ)`, `s = √(-D)`.
+//!
+//! Every rate is constrained to be at least 0 (damping never feeds
+//! energy): the fit is the unconstrained least squares when all rates come
+//! out non-negative, else the most negative is fixed at 0 and the rest
+//! refitted (an active set; the result is the bounded least squares, as
+//! SciPy's `curve_fit(..., bounds=(0, inf))` finds it). A rate fixed at 0
+//! is listed in [`DecayFit::at_bound`]; such a fit is the simpler law
+//! already in the list, and is never preferred.
+//!
+//! The rates become the physical `ζ`, friction angle `r` and quadratic
+//! drag `b` with the pendulum's angular frequency `ω` (given, or from the
+//! turning points' times, or `2π/T(A)` at the data's median amplitude with
+//! the exact period, [`crate::period`]).
 
 use super::{fit_curve, straight_line, Fit, FitError};
 use crate::pendulum::{Amplitude, Pendulum};
@@ -30,6 +46,10 @@ pub enum DecayModel {
     Quadratic,
     /// Viscous damping and dry friction together.
     ViscousCoulomb,
+    /// Viscous damping and air drag together: the usual pendulum in air.
+    ViscousQuadratic,
+    /// Viscous damping, dry friction and air drag.
+    Full,
 }
 
 /// A fitted quantity with its standard error.
@@ -60,15 +80,25 @@ pub struct DecayFit {
     /// errors of 0, or below): the two-sigma lower bound on Q,
     /// `1/(2 (ζ + 2σ_ζ))`, what the data can still say.
     pub q_factor_lower_bound: Option<f64>,
+    /// The rates held at their bound 0 (physical names when `ω` is known,
+    /// else the rate names): the fit is then a simpler law's.
+    pub at_bound: Vec<&'static str>,
+    /// The Q of the exponential decay that falls as much over the record as
+    /// the fitted law does, `ω (t_n - t_0) / (2 ln(A(t_0)/A(t_n)))`: what a
+    /// fit of a purely viscous motion (a trajectory fit) reports for the
+    /// same record, whatever the law; `None` without `ω` or without decay.
+    pub q_factor_mean: Option<f64>,
 }
 
 impl DecayModel {
     /// Every model, simplest first.
-    pub const ALL: [DecayModel; 4] = [
+    pub const ALL: [DecayModel; 6] = [
         DecayModel::Viscous,
         DecayModel::Coulomb,
         DecayModel::Quadratic,
         DecayModel::ViscousCoulomb,
+        DecayModel::ViscousQuadratic,
+        DecayModel::Full,
     ];
 
     /// The name on the command line and in JSON.
@@ -78,6 +108,8 @@ impl DecayModel {
             DecayModel::Coulomb => "coulomb",
             DecayModel::Quadratic => "quadratic",
             DecayModel::ViscousCoulomb => "viscous+coulomb",
+            DecayModel::ViscousQuadratic => "viscous+quadratic",
+            DecayModel::Full => "full",
         }
     }
 
@@ -86,62 +118,118 @@ impl DecayModel {
         Self::ALL.into_iter().find(|m| m.name() == name)
     }
 
-    /// Names of the fitted rate parameters.
-    pub fn rate_names(self) -> &'static [&'static str] {
+    /// Which of the rates λ (viscous), μ (dry), κ (quadratic) the law has.
+    fn rates(self) -> [bool; 3] {
         match self {
-            DecayModel::Viscous => &["amplitude0_rad", "decay_rate_per_s"],
-            DecayModel::Coulomb => &["amplitude0_rad", "amplitude_fall_rad_per_s"],
-            DecayModel::Quadratic => &["amplitude0_rad", "quadratic_decay_per_rad_s"],
-            DecayModel::ViscousCoulomb => &[
-                "amplitude0_rad",
-                "decay_rate_per_s",
-                "amplitude_fall_rad_per_s",
-            ],
+            DecayModel::Viscous => [true, false, false],
+            DecayModel::Coulomb => [false, true, false],
+            DecayModel::Quadratic => [false, false, true],
+            DecayModel::ViscousCoulomb => [true, true, false],
+            DecayModel::ViscousQuadratic => [true, false, true],
+            DecayModel::Full => [true, true, true],
         }
     }
 
-    /// The amplitude at `t` for rates `p` (in the order of [`Self::rate_names`]).
+    /// Names of the fitted parameters: `amplitude0_rad`, then the rates.
+    pub fn rate_names(self) -> Vec<&'static str> {
+        let mut names = vec!["amplitude0_rad"];
+        names.extend(
+            RATE_NAMES
+                .iter()
+                .zip(self.rates())
+                .filter(|(_, used)| *used)
+                .map(|(n, _)| *n),
+        );
+        names
+    }
+
+    /// `[A0, λ, μ, κ]` from the parameters `p` (in the order of
+    /// [`Self::rate_names`]), the rates the law lacks set to 0.
+    fn full_rates(self, p: &[f64]) -> [f64; 4] {
+        let mut out = [p[0], 0.0, 0.0, 0.0];
+        let mut next = 1;
+        for (k, used) in self.rates().into_iter().enumerate() {
+            if used {
+                out[k + 1] = p[next];
+                next += 1;
+            }
+        }
+        out
+    }
+
+    /// The amplitude at `t` for parameters `p` (in the order of [`Self::rate_names`]).
     pub fn amplitude(self, t: f64, p: &[f64]) -> f64 {
-        match self {
-            DecayModel::Viscous => p[0] * (-p[1] * t).exp(),
-            DecayModel::Coulomb => p[0] - p[1] * t,
-            DecayModel::Quadratic => p[0] / (1.0 + p[1] * p[0] * t),
-            DecayModel::ViscousCoulomb => {
-                let (a0, lambda, mu) = (p[0], p[1], p[2]);
-                // μ expm1(-λt)/λ tends to -μt as λ -> 0: no division by a
-                // vanishing rate, no cancellation.
-                let x = -lambda * t;
-                let ratio = if x.abs() < 1e-8 {
-                    -t * (1.0 + 0.5 * x)
-                } else {
-                    x.exp_m1() / lambda
-                };
-                a0 * x.exp() + mu * ratio
-            }
-        }
+        let [a0, lambda, mu, kappa] = self.full_rates(p);
+        decay_law(t, a0, lambda, mu, kappa)
     }
 
-    /// Starting rates from straight-line fits of ln A, A and 1/A against t.
+    /// Starting parameters from straight-line fits of ln A, A and 1/A
+    /// against t, each rate of a combined law starting at half its own
+    /// law's value (and never below a small positive one).
     fn initial(self, t: &[f64], a: &[f64]) -> Vec<f64> {
-        let viscous = {
-            let ln: Vec<f64> = a.iter().map(|v| v.ln()).collect();
-            let (c, s) = straight_line(t, &ln);
-            [c.exp(), -s]
+        let ln: Vec<f64> = a.iter().map(|v| v.max(f64::MIN_POSITIVE).ln()).collect();
+        let (c_ln, s_ln) = straight_line(t, &ln);
+        let (c_lin, s_lin) = straight_line(t, a);
+        let inv: Vec<f64> = a.iter().map(|v| 1.0 / v.max(f64::MIN_POSITIVE)).collect();
+        let (c_inv, s_inv) = straight_line(t, &inv);
+        let single = [-s_ln, -s_lin, s_inv];
+        let used = self.rates();
+        let combined = used.iter().filter(|u| **u).count() > 1;
+        let a0 = match used {
+            [false, true, false] => c_lin,
+            [false, false, true] => 1.0 / c_inv,
+            _ => c_ln.exp(),
         };
-        let coulomb = {
-            let (c, s) = straight_line(t, a);
-            [c, -s]
-        };
-        match self {
-            DecayModel::Viscous => viscous.to_vec(),
-            DecayModel::Coulomb => coulomb.to_vec(),
-            DecayModel::Quadratic => {
-                let inv: Vec<f64> = a.iter().map(|v| 1.0 / v).collect();
-                let (c, s) = straight_line(t, &inv);
-                vec![1.0 / c, s]
+        let mut p = vec![a0];
+        for (k, u) in used.into_iter().enumerate() {
+            if u {
+                let v = single[k].abs().max(1e-12);
+                p.push(if combined { 0.5 * v } else { single[k] });
             }
-            DecayModel::ViscousCoulomb => vec![viscous[0], 0.5 * viscous[1], 0.5 * coulomb[1]],
         }
+        p
+    }
+}
+
+/// The names of the rates λ, μ, κ.
+const RATE_NAMES: [&str; 3] = [
+    "decay_rate_per_s",
+    "amplitude_fall_rad_per_s",
+    "quadratic_decay_per_rad_s",
+];
+
+/// `(1 - e^{-λt})/λ`, which is `t` as λ -> 0, without cancellation.
+fn decay_integral(lambda: f64, t: f64) -> f64 {
+    let x = -lambda * t;
+    if x.abs() < 1e-8 {
+        t * (1.0 - 0.5 * lambda * t)
+    } else {
+        -x.exp_m1() / lambda
+    }
+}
+
+/// The solution of `dA/dt = -(μ + λA + κA²)`, `A(0) = a0` (see the module
+/// notes for the forms and their stability).
+pub fn decay_law(t: f64, a0: f64, lambda: f64, mu: f64, kappa: f64) -> f64 {
+    if kappa == 0.0 {
+        // Viscous and dry: A0 e^{-λt} - μ (1 - e^{-λt})/λ.
+        return a0 * (-lambda * t).exp() - mu * decay_integral(lambda, t);
+    }
+    let d = lambda * lambda - 4.0 * kappa * mu;
+    if d >= 0.0 {
+        let root = d.sqrt();
+        let equilibrium = if mu == 0.0 {
+            0.0
+        } else {
+            -2.0 * mu / (lambda + root)
+        };
+        let b0 = a0 - equilibrium;
+        let b = b0 * (-root * t).exp() / (1.0 + kappa * b0 * decay_integral(root, t));
+        equilibrium + b
+    } else {
+        let s = (-d).sqrt();
+        let phase = ((2.0 * kappa * a0 + lambda) / s).atan() - 0.5 * s * t;
+        (s * phase.tan() - lambda) / (2.0 * kappa)
     }
 }
 
@@ -175,24 +263,67 @@ pub fn swings_to_time(pendulum: &Pendulum, swings: &[f64], amplitudes: &[f64]) -
     out
 }
 
-/// Fits `model` to amplitudes `amplitude` (rad) at times `time` (s); with
-/// `omega` (rad/s) the physical parameters are added.
+/// Fits `model` to amplitudes `amplitude` (rad) at times `time` (s), every
+/// rate at least 0 (see the module notes); with `omega` (rad/s) the
+/// physical parameters are added.
 pub fn fit_decay(
     model: DecayModel,
     time: &[f64],
     amplitude: &[f64],
     omega: Option<f64>,
 ) -> Result<DecayFit, FitError> {
-    let curve = |t: f64, p: &[f64]| model.amplitude(t, p);
-    let fit = fit_curve(
-        &curve,
-        time,
-        amplitude,
-        None,
-        &model.initial(time, amplitude),
-    )?;
-    let mut parameters: Vec<Estimate> = model
-        .rate_names()
+    let names = model.rate_names();
+    let k = names.len();
+    let mut free = vec![true; k];
+    // The standard error each rate had when it was fixed at its bound: what
+    // the data can say about it there (a bound on Q, say).
+    let mut bound_errors = vec![0.0; k];
+    let mut start = model.initial(time, amplitude);
+    let (fit, full) = loop {
+        let index: Vec<usize> = (0..k).filter(|&j| free[j]).collect();
+        let expand = |q: &[f64]| {
+            let mut p = vec![0.0; k];
+            for (&j, &v) in index.iter().zip(q) {
+                p[j] = v;
+            }
+            p
+        };
+        let curve = |t: f64, q: &[f64]| model.amplitude(t, &expand(q));
+        let initial: Vec<f64> = index.iter().map(|&j| start[j]).collect();
+        let fit = fit_curve(&curve, time, amplitude, None, &initial)?;
+        let p = expand(&fit.parameters);
+        // The most negative rate (index 0 is the amplitude) goes to its bound.
+        let worst = (1..k)
+            .filter(|&j| free[j] && p[j] < 0.0)
+            .min_by(|&a, &b| p[a].total_cmp(&p[b]));
+        match worst {
+            Some(j) => {
+                let position = index.iter().position(|&i| i == j).unwrap_or(0);
+                bound_errors[j] = fit.standard_errors.get(position).copied().unwrap_or(0.0);
+                free[j] = false;
+                start = p.iter().map(|v| v.max(0.0)).collect();
+                start[j] = 0.0;
+            }
+            None => break (fit, p),
+        }
+    };
+    // Standard errors in the full order; a rate at its bound keeps the one
+    // it had when it was fixed.
+    let mut errors = bound_errors;
+    for (&j, &e) in (0..k)
+        .filter(|&j| free[j])
+        .collect::<Vec<_>>()
+        .iter()
+        .zip(&fit.standard_errors)
+    {
+        errors[j] = e;
+    }
+    let fit = Fit {
+        parameters: full.clone(),
+        standard_errors: errors,
+        ..fit
+    };
+    let mut parameters: Vec<Estimate> = names
         .iter()
         .zip(fit.parameters.iter().zip(&fit.standard_errors))
         .map(|(&name, (&value, &standard_error))| Estimate {
@@ -201,23 +332,34 @@ pub fn fit_decay(
             standard_error,
         })
         .collect();
+    let physical_name = |rate: &str| match rate {
+        "decay_rate_per_s" => "zeta",
+        "amplitude_fall_rad_per_s" => "friction_angle_rad",
+        _ => "quadratic_drag",
+    };
+    let at_bound: Vec<&'static str> = (1..k)
+        .filter(|&j| !free[j])
+        .map(|j| {
+            if omega.is_some() {
+                physical_name(names[j])
+            } else {
+                names[j]
+            }
+        })
+        .collect();
     let (mut q_factor, mut q_factor_lower_bound) = (None, None);
     if let Some(w) = omega {
         let physical: Vec<Estimate> = parameters
             .iter()
             .filter_map(|e| {
-                let (name, factor) = match e.name {
-                    "decay_rate_per_s" => ("zeta", 1.0 / w),
-                    "amplitude_fall_rad_per_s" => {
-                        ("friction_angle_rad", std::f64::consts::PI / (2.0 * w))
-                    }
-                    "quadratic_decay_per_rad_s" => {
-                        ("quadratic_drag", 3.0 * std::f64::consts::PI / (4.0 * w))
-                    }
+                let factor = match e.name {
+                    "decay_rate_per_s" => 1.0 / w,
+                    "amplitude_fall_rad_per_s" => std::f64::consts::PI / (2.0 * w),
+                    "quadratic_decay_per_rad_s" => 3.0 * std::f64::consts::PI / (4.0 * w),
                     _ => return None,
                 };
                 Some(Estimate {
-                    name,
+                    name: physical_name(e.name),
                     value: e.value * factor,
                     standard_error: e.standard_error * factor,
                 })
@@ -233,18 +375,55 @@ pub fn fit_decay(
         }
         parameters.extend(physical);
     }
+    let q_factor_mean = match (omega, time.first(), time.last()) {
+        (Some(w), Some(&t0), Some(&t1)) if t1 > t0 => {
+            let ratio = model.amplitude(t0, &fit.parameters) / model.amplitude(t1, &fit.parameters);
+            (ratio > 1.0 && ratio.is_finite()).then(|| w * (t1 - t0) / (2.0 * ratio.ln()))
+        }
+        _ => None,
+    };
     Ok(DecayFit {
         model,
         fit,
         parameters,
         q_factor,
         q_factor_lower_bound,
+        at_bound,
+        q_factor_mean,
     })
 }
 
-/// The model the data prefer: the lowest BIC among those that fitted.
+/// Akaike weights of `fits` (Burnham & Anderson, *Model selection and
+/// multimodel inference*, 2nd ed., §2.9): `exp(-Δ_i/2) / Σ exp(-Δ_j/2)`,
+/// `Δ_i = AIC_i - min AIC`, over the fits with no rate at its bound (those
+/// are simpler laws counted already, weight 0).
+pub fn akaike_weights(fits: &[DecayFit]) -> Vec<f64> {
+    let best = fits
+        .iter()
+        .filter(|f| f.at_bound.is_empty())
+        .map(|f| f.fit.aic)
+        .fold(f64::INFINITY, f64::min);
+    let raw: Vec<f64> = fits
+        .iter()
+        .map(|f| {
+            if f.at_bound.is_empty() {
+                (-0.5 * (f.fit.aic - best)).exp()
+            } else {
+                0.0
+            }
+        })
+        .collect();
+    let total: f64 = raw.iter().sum();
+    raw.iter()
+        .map(|w| if total > 0.0 { w / total } else { 0.0 })
+        .collect()
+}
+
+/// The model the data prefer: the lowest BIC among the fits with no rate
+/// at its bound.
 pub fn preferred(fits: &[DecayFit]) -> Option<DecayModel> {
     fits.iter()
+        .filter(|f| f.at_bound.is_empty())
         .min_by(|a, b| a.fit.bic.total_cmp(&b.fit.bic))
         .map(|f| f.model)
 }
@@ -252,14 +431,8 @@ pub fn preferred(fits: &[DecayFit]) -> Option<DecayModel> {
 /// The amplitude lost per half swing at `amplitude` according to a fit:
 /// `-dA/dt · T/2`, for the energy budget.
 pub fn half_swing_loss(fit: &DecayFit, amplitude: f64, half_period: f64) -> f64 {
-    let p = &fit.fit.parameters;
-    let rate = match fit.model {
-        DecayModel::Viscous => p[1] * amplitude,
-        DecayModel::Coulomb => p[1],
-        DecayModel::Quadratic => p[1] * amplitude * amplitude,
-        DecayModel::ViscousCoulomb => p[1] * amplitude + p[2],
-    };
-    rate * half_period
+    let [_, lambda, mu, kappa] = fit.model.full_rates(&fit.fit.parameters);
+    (mu + lambda * amplitude + kappa * amplitude * amplitude) * half_period
 }
 
 #[cfg(test)]
@@ -276,6 +449,41 @@ mod tests {
         assert!((c - DecayModel::Coulomb.amplitude(t, &[0.05, 1e-4])).abs() < 1e-17);
     }
 
+    /// The closed forms against a fine RK4 integration of
+    /// `dA/dt = -(μ + λA + κA²)` (an independent route), in every regime:
+    /// D > 0, D < 0, D = 0, tiny κ and tiny μ.
+    #[test]
+    fn the_general_law_solves_its_equation() {
+        let cases = [
+            (0.05, 3e-4, 5e-6, 0.01),  // D > 0
+            (0.05, 1e-5, 5e-6, 0.01),  // D < 0
+            (0.05, 2e-4, 1e-6, 0.01),  // D = 0 exactly
+            (0.05, 3e-4, 5e-6, 1e-13), // κ tiny
+            (0.05, 3e-4, 1e-15, 0.01), // μ tiny
+            (0.05, 0.0, 5e-6, 0.01),   // no viscous part
+            (0.3, 6e-3, 0.0, 0.03),    // a pendulum in air
+        ];
+        for (a0, lambda, mu, kappa) in cases {
+            let rhs = |a: f64| -(mu + lambda * a + kappa * a * a);
+            let (mut a, h) = (a0, 0.01);
+            for step in 1..=200_000 {
+                let k1 = rhs(a);
+                let k2 = rhs(a + 0.5 * h * k1);
+                let k3 = rhs(a + 0.5 * h * k2);
+                let k4 = rhs(a + h * k3);
+                a += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+                if step % 20_000 == 0 {
+                    let t = step as f64 * h;
+                    let law = decay_law(t, a0, lambda, mu, kappa);
+                    assert!(
+                        (law - a).abs() < 1e-12 * a0,
+                        "({a0}, {lambda}, {mu}, {kappa}) at {t}: {law} vs {a}"
+                    );
+                }
+            }
+        }
+    }
+
     #[test]
     fn recovers_noiseless_parameters() {
         let t: Vec<f64> = (0..50).map(|i| f64::from(i) * 20.0).collect();
@@ -284,6 +492,8 @@ mod tests {
             (DecayModel::Coulomb, vec![0.05, 2e-5]),
             (DecayModel::Quadratic, vec![0.05, 0.02]),
             (DecayModel::ViscousCoulomb, vec![0.05, 5e-4, 1e-5]),
+            (DecayModel::ViscousQuadratic, vec![0.05, 5e-4, 0.01]),
+            (DecayModel::Full, vec![0.05, 5e-4, 3e-6, 0.01]),
         ] {
             let a: Vec<f64> = t.iter().map(|&x| model.amplitude(x, &truth)).collect();
             let fit = fit_decay(model, &t, &a, Some(3.0)).unwrap();

@@ -7,8 +7,10 @@
 //!   parameters `A, ω_d, ζ, φ, θ_off`;
 //! * nonlinear, the full equation `θ'' + 2ζω_n θ' + ω_n² sin θ = 0`
 //!   integrated inside the fit ([`crate::simulation`], DOP853 at 1e-12),
-//!   released from rest at amplitude `A` a time `|φ|/ω_n` before the first
-//!   sample; parameters `A, ω_n, ζ, φ, θ_off`. It is started from the
+//!   released from rest at amplitude `A` at the last crest at or before the
+//!   first sample; parameters `A, ω_n, ζ, φ, θ_off`, the phase reported as
+//!   the fraction of the true (finite-amplitude) period, `φ ∈ [0, 2π)`, by
+//!   which the release precedes the first sample. It is started from the
 //!   linear fit.
 //!
 //! With the length, `g = l ω_0²` where `ω_0` is the small-angle natural
@@ -139,14 +141,74 @@ pub fn fit_trajectory(
         times: &t,
         cache: RefCell::new(Simulated::default()),
     };
-    let fit = fit_curve(&curve, &t, theta, None, &initial)?;
-    let (w, e) = (fit.parameters[1], fit.standard_errors[1]);
+    let mut fit = fit_curve(&curve, &t, theta, None, &initial)?;
+    // The release is the last crest at or before the first sample: a
+    // release a whole period (or more) earlier fits the same curve with a
+    // larger amplitude, so move it one period later, to the crest the
+    // fitted motion reaches there, and fit again from that start.
+    for _ in 0..3 {
+        let p = &fit.parameters;
+        let ratio = release_period_ratio(p[0]);
+        if p[3].abs() < std::f64::consts::TAU * ratio {
+            break;
+        }
+        let Some((time, angle)) = crest_after_one_period(p) else {
+            break;
+        };
+        let start = [angle, p[1], p[2], p[3].abs() - p[1].abs() * time, p[4]];
+        fit = fit_curve(&curve, &t, theta, None, &start)?;
+    }
+    // Report the phase as a fraction of the true (finite-amplitude) period:
+    // the release lies phase/2π of a period before the first sample.
+    let ratio = release_period_ratio(fit.parameters[0]);
+    fit.parameters[3] = fit.parameters[3].abs() / ratio;
+    fit.standard_errors[3] /= ratio;
+    fit.parameters[0] = fit.parameters[0].abs();
+    let (w, e) = (fit.parameters[1].abs(), fit.standard_errors[1]);
     Ok(TrajectoryFit {
         model,
         fit,
         natural_angular_frequency: w,
         natural_angular_frequency_error: e,
     })
+}
+
+/// `T(A)/T0` at the release amplitude `a` (rad).
+fn release_period_ratio(a: f64) -> f64 {
+    Amplitude::from_radians(a.abs().min(3.1))
+        .map(period_ratio)
+        .unwrap_or(1.0)
+}
+
+/// The time after release (s) and angle (rad) of the crest one period after
+/// the release, for nonlinear parameters `[A, ω_n, ζ, φ, θ_off]`.
+fn crest_after_one_period(p: &[f64]) -> Option<(f64, f64)> {
+    let wn = p[1].abs();
+    let pendulum = Pendulum::with_standard_gravity(9.806_65 / (wn * wn)).ok()?;
+    let model = Model::new(pendulum, Damping::from_zeta(p[2].max(0.0)).ok()?, 0.0, 0.0).ok()?;
+    let amplitude = Amplitude::from_radians(p[0].abs().min(3.1)).ok()?;
+    struct Second(Option<(f64, f64)>);
+    impl Observer for Second {
+        fn turning_point(
+            &mut self,
+            tp: &crate::simulation::TurningPoint,
+        ) -> crate::simulation::Action {
+            if tp.index == 2 {
+                self.0 = Some((tp.time, tp.angle));
+                return crate::simulation::Action::Stop;
+            }
+            crate::simulation::Action::Continue
+        }
+    }
+    let options = Options {
+        duration: 1.5 * pendulum.period(amplitude),
+        tolerance: 1e-12,
+        method: Method::Dop853,
+        sample_interval: None,
+    };
+    let mut second = Second(None);
+    simulate(&model, amplitude, &options, &mut second).ok()?;
+    second.0
 }
 
 /// Starting values from the record itself: the offset is the mean, the

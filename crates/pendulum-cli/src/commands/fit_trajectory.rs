@@ -38,6 +38,8 @@ struct TrajectoryJson {
     length_m: Option<f64>,
     /// `given` (--length) or `track_radius`.
     length_source: Option<&'static str>,
+    /// What a person must know about these results.
+    warnings: Vec<String>,
 }
 
 /// `--model auto` fits the nonlinear equation above this swing, degrees.
@@ -106,10 +108,23 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     if let Some(a) = parameters.get_mut("amplitude_rad") {
         *a = a.abs();
     }
+    // The linear model's g carries a finite-amplitude bias larger than its
+    // standard error above a few degrees (the correction takes the amplitude
+    // at mid-record, but the swing decays through it): not reported there.
+    let swing = largest_swing(theta);
+    let mut warnings = Vec::new();
     if let Some(l) = length {
-        let (g, se) = fit.gravity(l);
-        parameters.insert("g_m_s2", g);
-        standard_errors.insert("g_m_s2", se);
+        if model == TrajectoryModel::Linear && swing > AUTO_NONLINEAR_ABOVE_DEG.to_radians() {
+            warnings.push(format!(
+                "g is not reported from the linear model at a {}° swing: its finite-amplitude \
+                 correction leaves a bias beyond the standard error; use --model nonlinear",
+                num(swing.to_degrees(), 3)
+            ));
+        } else {
+            let (g, se) = fit.gravity(l);
+            parameters.insert("g_m_s2", g);
+            standard_errors.insert("g_m_s2", se);
+        }
     }
     let residuals_file = match &args.residuals {
         Some(path) => {
@@ -139,6 +154,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         track_radius: track.track_radius,
         length_m: length,
         length_source,
+        warnings,
     };
     if args.json {
         return output::json(&result);
@@ -179,6 +195,9 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             "  g differs from standard gravity by {} ppm\n",
             num((g / STANDARD_GRAVITY - 1.0) * 1e6, 3)
         ));
+    }
+    for w in &result.warnings {
+        out.push_str(&format!("  WARNING: {w}\n"));
     }
     out.push_str(&format!(
         "  residual rms     {} rad ({}°)\n",

@@ -4,6 +4,7 @@
 mod damped;
 mod extremes;
 mod fit;
+mod formats;
 mod hardening;
 mod period;
 mod plot;

@@ -1,0 +1,233 @@
+//! The measurement files people have (issue 10), through the real binary:
+//! Tracker exports, spreadsheets with semicolons and decimal commas,
+//! space-aligned tables, headers with units, headerless files, rounded and
+//! absolute times.
+
+use super::util::{f, json, refuses};
+use std::path::{Path, PathBuf};
+
+fn examples() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> String {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+/// A 1 m pendulum, 4° from rest, ζ = 0.003, at 30 frames a second for
+/// `seconds`: the linear motion, in degrees (no noise: formats only; below
+/// 5°, so `--model auto` fits the linear law).
+fn swing(seconds: usize) -> Vec<(f64, f64)> {
+    let w = (9.80665f64).sqrt();
+    (0..seconds * 30)
+        .map(|i| {
+            let t = i as f64 / 30.0;
+            (t, 4.0 * (-0.003 * w * t).exp() * (w * t).cos())
+        })
+        .collect()
+}
+
+#[test]
+fn a_tracker_export_is_read_as_it_is() {
+    // examples/tracker.txt: title line, tab-separated t x y, CRLF, blank cells.
+    let file = examples().join("tracker.txt");
+    let file = file.to_str().unwrap();
+    let t = json(&["fit", "trajectory", file, "--model", "nonlinear"]);
+    assert_eq!(t["format"]["separator"], "tab");
+    assert_eq!(t["format"]["skipped_rows"], 4);
+    assert_eq!(
+        t["format"]["columns_used"],
+        serde_json::json!(["t", "x", "y"])
+    );
+    assert_eq!(t["pivot"]["source"], "default");
+    // The generator's truth: 15.5° release, ζ = 5.5e-4 plus drag; ω_n = sqrt(g/1.2).
+    let wn = (9.80665f64 / 1.2).sqrt();
+    assert!((f(&t["parameters"], "omega_n_rad_s") / wn - 1.0).abs() < 1e-3);
+    let phase = f(&t["parameters"], "phase_rad");
+    assert!((0.0..std::f64::consts::TAU).contains(&phase), "{phase}");
+    // fit decay on the same file: the turning points, a physical law
+    // preferred (air drag, no negative coefficient), Q as the trajectory's.
+    let d = json(&["fit", "decay", file]);
+    assert_eq!(d["omega_source"], "turning_points");
+    assert_eq!(d["preferred"], "viscous+quadratic");
+    let models = d["models"].as_array().unwrap();
+    for m in models {
+        for (name, value) in m["parameters"].as_object().unwrap() {
+            assert!(value.as_f64().unwrap() >= 0.0, "{}: {name}", m["model"]);
+        }
+    }
+    let best = models
+        .iter()
+        .find(|m| m["model"] == "viscous+quadratic")
+        .unwrap();
+    assert!(best["at_bound"].as_array().unwrap().is_empty());
+    let weights: f64 = models.iter().map(|m| f(m, "akaike_weight")).sum();
+    assert!((weights - 1.0).abs() < 1e-9);
+    let q_trajectory = 0.5 / f(&t["parameters"], "zeta");
+    let q_decay = f(best, "q_factor_mean");
+    assert!(
+        (q_decay / q_trajectory - 1.0).abs() < 0.03,
+        "decay {q_decay} vs trajectory {q_trajectory}"
+    );
+    // The drag the generator put in (b = 0.025 per radian), within 3σ.
+    let b = f(&best["parameters"], "quadratic_drag");
+    let se = f(&best["standard_errors"], "quadratic_drag");
+    assert!((b - 0.025).abs() < 3.0 * se, "{b} ± {se}");
+    // --pivot fit: the circle's radius is the length.
+    let c = json(&["fit", "trajectory", file, "--pivot", "fit"]);
+    assert!((f(&c, "track_radius") - 1.2).abs() < 0.01);
+    assert_eq!(c["length_source"], "track_radius");
+    assert!(c["parameters"]["g_m_s2"].is_number());
+}
+
+#[test]
+fn turning_points_are_written_when_asked() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("turns.csv");
+    let file = examples().join("tracker.txt");
+    json(&[
+        "fit",
+        "decay",
+        file.to_str().unwrap(),
+        "--turning-points",
+        out.to_str().unwrap(),
+    ]);
+    let text = std::fs::read_to_string(&out).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("time_s,amplitude_rad,side"));
+    assert!(lines.count() > 100);
+}
+
+#[test]
+fn semicolons_and_decimal_commas() {
+    let file = examples().join("rundown-semicolon.csv");
+    let v = json(&[
+        "fit",
+        "decay",
+        file.to_str().unwrap(),
+        "--length",
+        "0.99362m",
+        "--model",
+        "viscous",
+    ]);
+    assert_eq!(v["format"]["separator"], "semicolon");
+    assert_eq!(v["format"]["decimal"], "comma");
+    assert_eq!(v["points"], 121);
+    let q = f(&v["models"][0], "q_factor");
+    assert!((q / 10_000.0 - 1.0).abs() < 0.05, "{q}");
+    // A bad cell: file, line, column and the separator detected.
+    let dir = tempfile::tempdir().unwrap();
+    let bad = write(
+        dir.path(),
+        "bad.csv",
+        "Zeit (s);Amplitude (°)\n0;3,0\n60;2,9x\n120;2,8\n",
+    );
+    let e = refuses(&["fit", "decay", &bad], "line 3");
+    for word in ["Amplitude (°)", "2,9x", "semicolon", "bad.csv"] {
+        assert!(e.contains(word), "{e} should name {word}");
+    }
+}
+
+#[test]
+fn spaces_units_in_parentheses_and_no_header() {
+    let dir = tempfile::tempdir().unwrap();
+    let rows = swing(20);
+    let spaces: String = rows
+        .iter()
+        .map(|(t, a)| format!("  {t:>10.5}   {a:>12.6}\n"))
+        .collect();
+    let aligned = write(
+        dir.path(),
+        "aligned.txt",
+        &format!("     t        angle_deg\n{spaces}"),
+    );
+    let v = json(&["fit", "trajectory", &aligned]);
+    assert_eq!(v["format"]["separator"], "spaces");
+    assert_eq!(v["model"], "linear");
+    let w = (9.80665f64).sqrt();
+    assert!((f(&v["parameters"], "omega_d_rad_s") / w - 1.0).abs() < 1e-4);
+    let parens: String = rows
+        .iter()
+        .map(|(t, a)| format!("{t},{}\n", a.to_radians()))
+        .collect();
+    let lab = write(
+        dir.path(),
+        "lab.csv",
+        &format!("Time (s),Angle (rad)\n{parens}"),
+    );
+    assert_eq!(
+        json(&["fit", "trajectory", &lab])["format"]["columns_used"],
+        serde_json::json!(["Time (s)", "Angle (rad)"])
+    );
+    let bare: String = rows.iter().map(|(t, a)| format!("{t},{a}\n")).collect();
+    let headerless = write(dir.path(), "bare.csv", &bare);
+    refuses(&["fit", "trajectory", &headerless], "--columns");
+    let v = json(&[
+        "fit",
+        "trajectory",
+        &headerless,
+        "--columns",
+        "time_s,angle_deg",
+    ]);
+    assert_eq!(v["points"], 600);
+    // An angle column with no unit needs --angle-unit.
+    let unitless = write(dir.path(), "theta.csv", &format!("t,theta\n{bare}"));
+    refuses(&["fit", "trajectory", &unitless], "--angle-unit");
+    let v = json(&["fit", "trajectory", &unitless, "--angle-unit", "deg"]);
+    assert!((f(&v["parameters"], "amplitude_rad") - 4f64.to_radians()).abs() < 1e-3);
+}
+
+#[test]
+fn rounded_times_are_named_and_rebuilt_from_the_frame_rate() {
+    let dir = tempfile::tempdir().unwrap();
+    // Times at 30 frames/s exported to 4 significant figures: 100.0, 100.0, 100.1...
+    let rows = swing(120);
+    let text: String = rows
+        .iter()
+        .map(|(t, a)| format!("{},{a}\n", format_4(*t)))
+        .collect();
+    let file = write(
+        dir.path(),
+        "rounded.csv",
+        &format!("time_s,angle_deg\n{text}"),
+    );
+    let e = refuses(&["fit", "trajectory", &file], "--frame-rate");
+    assert!(e.contains("rounded"), "{e}");
+    let v = json(&["fit", "trajectory", &file, "--frame-rate", "30"]);
+    assert_eq!(v["format"]["frame_rate"], 30.0);
+    let w = (9.80665f64).sqrt();
+    assert!((f(&v["parameters"], "omega_d_rad_s") / w - 1.0).abs() < 1e-4);
+}
+
+/// `x` to 4 significant figures, as a spreadsheet exports it.
+fn format_4(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let digits = 3 - x.abs().log10().floor() as i32;
+    let scale = 10f64.powi(digits);
+    format!("{}", (x * scale).round() / scale)
+}
+
+#[test]
+fn absolute_times_are_measured_from_the_first_row() {
+    // A data logger's Unix times: both viscous laws are fitted, none dropped.
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("time_s,amplitude_deg\n");
+    for i in 0..100 {
+        let t = 1.7e9 + 20.0 * f64::from(i);
+        let a = 3.0 * (-3e-4 * 20.0 * f64::from(i)).exp();
+        text.push_str(&format!("{t},{a}\n"));
+    }
+    let file = write(dir.path(), "logger.csv", &text);
+    let v = json(&["fit", "decay", &file, "--length", "0.99362m"]);
+    assert_eq!(f(&v["format"], "time_origin_s"), 1.7e9);
+    let models = v["models"].as_array().unwrap();
+    assert_eq!(models.len(), 6);
+    let viscous = &models[0];
+    assert!(viscous["failed"].is_null(), "{viscous}");
+    assert!((f(&viscous["parameters"], "decay_rate_per_s") / 3e-4 - 1.0).abs() < 1e-6);
+    assert!((f(&viscous["parameters"], "amplitude0_rad") - 3f64.to_radians()).abs() < 1e-9);
+}

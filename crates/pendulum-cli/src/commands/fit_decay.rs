@@ -360,10 +360,12 @@ fn text(r: &DecayJson) -> String {
         for (name, value) in &fitted.parameters {
             let se = fitted.standard_errors.get(name).copied().unwrap_or(0.0);
             if *value == 0.0 && fitted.at_bound.iter().any(|b| bound_of(b, name)) {
-                out.push_str(&format!(
-                    "  {name:<28} 0 (at its bound; ± {})\n",
-                    num(se, 2)
-                ));
+                let spread = if se > 0.0 {
+                    format!("; ± {}", num(se, 2))
+                } else {
+                    String::new()
+                };
+                out.push_str(&format!("  {name:<28} 0 (at its bound{spread})\n"));
             } else {
                 out.push_str(&format!(
                     "  {name:<28} {} ± {}\n",

@@ -274,38 +274,27 @@ pub fn fit_decay(
 ) -> Result<DecayFit, FitError> {
     let names = model.rate_names();
     let k = names.len();
-    let mut free = vec![true; k];
-    // The standard error each rate had when it was fixed at its bound: what
-    // the data can say about it there (a bound on Q, say).
-    let mut bound_errors = vec![0.0; k];
-    let mut start = model.initial(time, amplitude);
-    let (fit, full) = loop {
-        let index: Vec<usize> = (0..k).filter(|&j| free[j]).collect();
-        let expand = |q: &[f64]| {
-            let mut p = vec![0.0; k];
-            for (&j, &v) in index.iter().zip(q) {
-                p[j] = v;
-            }
-            p
-        };
-        let curve = |t: f64, q: &[f64]| model.amplitude(t, &expand(q));
-        let initial: Vec<f64> = index.iter().map(|&j| start[j]).collect();
-        let fit = fit_curve(&curve, time, amplitude, None, &initial)?;
-        let p = expand(&fit.parameters);
-        // The most negative rate (index 0 is the amplitude) goes to its bound.
-        let worst = (1..k)
-            .filter(|&j| free[j] && p[j] < 0.0)
-            .min_by(|&a, &b| p[a].total_cmp(&p[b]));
-        match worst {
-            Some(j) => {
-                let position = index.iter().position(|&i| i == j).unwrap_or(0);
-                bound_errors[j] = fit.standard_errors.get(position).copied().unwrap_or(0.0);
+    let start = model.initial(time, amplitude);
+    // From all rates free; if that fit fails (a combined law whose rate
+    // wanders negative can overflow), from each rate held at 0 in turn,
+    // keeping the best: the bounded optimum is then on that face.
+    let all_free = vec![true; k];
+    let (fit, full, free, bound_errors) = match active_set(model, time, amplitude, all_free, &start)
+    {
+        Ok(found) => found,
+        // Too few points stays an error; only a combined law falls back.
+        Err(first @ FitError::TooFewPoints { .. }) => return Err(first),
+        Err(first) if k < 3 => return Err(first),
+        Err(first) => (1..k)
+            .filter_map(|j| {
+                let mut free = vec![true; k];
                 free[j] = false;
-                start = p.iter().map(|v| v.max(0.0)).collect();
-                start[j] = 0.0;
-            }
-            None => break (fit, p),
-        }
+                let mut from = start.clone();
+                from[j] = 0.0;
+                active_set(model, time, amplitude, free, &from).ok()
+            })
+            .min_by(|a, b| rss(&a.0).total_cmp(&rss(&b.0)))
+            .ok_or(first)?,
     };
     // Standard errors in the full order; a rate at its bound keeps the one
     // it had when it was fixed.
@@ -391,6 +380,61 @@ pub fn fit_decay(
         at_bound,
         q_factor_mean,
     })
+}
+
+/// The residual sum of squares of a fit.
+fn rss(fit: &Fit) -> f64 {
+    fit.residuals.iter().map(|r| r * r).sum()
+}
+
+/// What the active set returns: the fit of the free parameters, all the
+/// parameters (rates at their bound 0), which are free, and the standard
+/// error each fixed rate had when it was fixed.
+type Active = (Fit, Vec<f64>, Vec<bool>, Vec<f64>);
+
+/// The least squares of `model` with the rates not `free` held at 0, from
+/// `start`; a free rate that comes out negative is fixed at 0 (the most
+/// negative first) and the rest fitted again.
+fn active_set(
+    model: DecayModel,
+    time: &[f64],
+    amplitude: &[f64],
+    mut free: Vec<bool>,
+    start: &[f64],
+) -> Result<Active, FitError> {
+    let k = free.len();
+    // The standard error each rate had when it was fixed at its bound: what
+    // the data can say about it there (a bound on Q, say).
+    let mut bound_errors = vec![0.0; k];
+    let mut start = start.to_vec();
+    loop {
+        let index: Vec<usize> = (0..k).filter(|&j| free[j]).collect();
+        let expand = |q: &[f64]| {
+            let mut p = vec![0.0; k];
+            for (&j, &v) in index.iter().zip(q) {
+                p[j] = v;
+            }
+            p
+        };
+        let curve = |t: f64, q: &[f64]| model.amplitude(t, &expand(q));
+        let initial: Vec<f64> = index.iter().map(|&j| start[j]).collect();
+        let fit = fit_curve(&curve, time, amplitude, None, &initial)?;
+        let p = expand(&fit.parameters);
+        // The most negative rate (index 0 is the amplitude) goes to its bound.
+        let worst = (1..k)
+            .filter(|&j| free[j] && p[j] < 0.0)
+            .min_by(|&a, &b| p[a].total_cmp(&p[b]));
+        match worst {
+            Some(j) => {
+                let position = index.iter().position(|&i| i == j).unwrap_or(0);
+                bound_errors[j] = fit.standard_errors.get(position).copied().unwrap_or(0.0);
+                free[j] = false;
+                start = p.iter().map(|v| v.max(0.0)).collect();
+                start[j] = 0.0;
+            }
+            None => return Ok((fit, p, free, bound_errors)),
+        }
+    }
 }
 
 /// Akaike weights of `fits` (Burnham & Anderson, *Model selection and

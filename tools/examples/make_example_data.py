@@ -8,6 +8,18 @@ import random
 rng = random.Random(20261122)
 
 
+def rk4(acc, th, v, h, steps):
+    """`steps` classical Runge-Kutta steps of h for theta'' = acc(theta, theta')."""
+    for _ in range(steps):
+        k1 = (v, acc(th, v))
+        k2 = (v + h / 2 * k1[1], acc(th + h / 2 * k1[0], v + h / 2 * k1[1]))
+        k3 = (v + h / 2 * k2[1], acc(th + h / 2 * k2[0], v + h / 2 * k2[1]))
+        k4 = (v + h * k3[1], acc(th + h * k3[0], v + h * k3[1]))
+        th += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+        v += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+    return th, v
+
+
 def rundown(path):
     """A seconds pendulum running down from 3 degrees, read every minute for
     two hours to 0.01 degree: viscous damping (Q = 10,000) with a little dry
@@ -36,13 +48,7 @@ def video(path):
         f.write("# angle from video tracking, 60 frames per second\ntime_s,angle_deg\n")
         for frame in range(481):
             f.write(f"{frame / 60:.5f},{math.degrees(th) + 0.3 + 0.15 * rng.gauss(0, 1):.3f}\n")
-            for _ in range(200):
-                k1 = (v, acc(th, v))
-                k2 = (v + h / 2 * k1[1], acc(th + h / 2 * k1[0], v + h / 2 * k1[1]))
-                k3 = (v + h / 2 * k2[1], acc(th + h / 2 * k2[0], v + h / 2 * k2[1]))
-                k4 = (v + h * k3[1], acc(th + h * k3[0], v + h * k3[1]))
-                th += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
-                v += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+            th, v = rk4(acc, th, v, h, 200)
 
 
 def beats(path):
@@ -83,13 +89,7 @@ def tracker(path):
                 f.write(f"{t!r}\t\t\r\n")
             else:
                 f.write(f"{t!r}\t{x!r}\t{y!r}\r\n")
-            for _ in range(sub):
-                k1 = (v, acc(th, v))
-                k2 = (v + h / 2 * k1[1], acc(th + h / 2 * k1[0], v + h / 2 * k1[1]))
-                k3 = (v + h / 2 * k2[1], acc(th + h / 2 * k2[0], v + h / 2 * k2[1]))
-                k4 = (v + h * k3[1], acc(th + h * k3[0], v + h * k3[1]))
-                th += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
-                v += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+            th, v = rk4(acc, th, v, h, sub)
 
 
 def semicolon(path):

@@ -114,6 +114,23 @@ pub struct Format {
     pub time_origin_s: Option<f64>,
 }
 
+impl Format {
+    /// For people: "tab-separated, decimal commas, 4 rows with blank cells skipped".
+    pub fn describe(&self) -> String {
+        let mut out = format!("{}-separated", self.separator);
+        if self.decimal == "comma" {
+            out.push_str(", decimal commas");
+        }
+        if self.skipped_rows > 0 {
+            out.push_str(&format!(
+                ", {} rows with blank cells skipped",
+                self.skipped_rows
+            ));
+        }
+        out
+    }
+}
+
 /// A column found in the header.
 #[derive(Clone, Debug)]
 pub struct Found {

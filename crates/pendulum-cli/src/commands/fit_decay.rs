@@ -309,15 +309,10 @@ fn model_json(
 
 fn text(r: &DecayJson) -> String {
     let mut out = format!(
-        "{}: {} points ({}-separated{})\n",
+        "{}: {} points ({})\n",
         r.file,
         r.points,
-        r.format.separator,
-        if r.format.skipped_rows > 0 {
-            format!(", {} rows with blank cells skipped", r.format.skipped_rows)
-        } else {
-            String::new()
-        }
+        r.format.describe()
     );
     if let Some(offset) = r.zero_offset_rad {
         out.push_str(&format!(

@@ -160,18 +160,10 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         return output::json(&result);
     }
     let mut out = format!(
-        "{}: {} points ({}-separated{}), {} model\n",
+        "{}: {} points ({}), {} model\n",
         result.file,
         result.points,
-        result.format.separator,
-        if result.format.skipped_rows > 0 {
-            format!(
-                ", {} rows with blank cells skipped",
-                result.format.skipped_rows
-            )
-        } else {
-            String::new()
-        },
+        result.format.describe(),
         result.model
     );
     for (name, value) in &result.parameters {

@@ -75,6 +75,17 @@ Ctrl-C stops a run with its files complete (exit status 130).")]
   pendulum fit trajectory examples/video.csv --length 0.5m --model nonlinear
   pendulum fit beats examples/beats.csv --bph 3600")]
     Fit(FitArgs),
+    /// Listen to a clock: rate, beat error and jitter from a sound recording.
+    #[command(after_help = "Examples:
+  pendulum synth ticks clock.wav --bph 3600 --rate 12 --beat-error 1.5 --duration 10min
+  pendulum listen clock.wav
+  pendulum listen phone.m4a --bph 3600 --ticks ticks.csv --json
+
+Formats: WAV, FLAC, Ogg Vorbis, MP3, AAC in M4A (symphonia). The louder channel is used
+unless --channel says otherwise.")]
+    Listen(ListenArgs),
+    /// Synthetic data with known truth, to check a setup.
+    Synth(SynthArgs),
     /// The one-command analysis of a pendulum, as an HTML page with figures
     /// (default: a seconds pendulum at 3° with Q = 10,000).
     #[command(after_help = "Examples:
@@ -84,6 +95,133 @@ Ctrl-C stops a run with its files complete (exit status 130).")]
 
 The folder is written whole or not at all; the simulated run-down is at most 10^5 periods.")]
     Report(ReportArgs),
+}
+
+/// `pendulum listen`.
+#[derive(Debug, Args)]
+pub struct ListenArgs {
+    /// The recording (WAV, FLAC, Ogg, MP3, M4A).
+    #[arg(value_name = "FILE")]
+    pub file: std::path::PathBuf,
+    /// The nominal beat rate, beats per hour [default: found from the recording].
+    #[arg(
+        long,
+        value_name = "B",
+        allow_hyphen_values = true,
+        conflicts_with = "period"
+    )]
+    pub bph: Option<String>,
+    /// The nominal period (two beats).
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub period: Option<String>,
+    /// The channel to listen to, from 1 [default: the louder].
+    #[arg(long, value_name = "N")]
+    pub channel: Option<usize>,
+    /// The sound card's clock error, ppm (positive: its clock runs fast).
+    #[arg(long, value_name = "P", allow_hyphen_values = true)]
+    pub sample_rate_error_ppm: Option<String>,
+    /// Write every tick to this CSV file (time_s,side,amplitude).
+    #[arg(long, value_name = "FILE.csv")]
+    pub ticks: Option<std::path::PathBuf>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum synth`.
+#[derive(Debug, Args)]
+pub struct SynthArgs {
+    /// What to make.
+    #[command(subcommand)]
+    pub what: SynthCommand,
+}
+
+/// The kinds of synthetic data.
+#[derive(Debug, Subcommand)]
+pub enum SynthCommand {
+    /// A recording of a ticking clock (16-bit mono WAV) with known tick times.
+    Ticks(SynthTicksArgs),
+}
+
+/// `pendulum synth ticks`.
+#[derive(Debug, Args)]
+pub struct SynthTicksArgs {
+    /// The WAV file to write.
+    #[arg(value_name = "OUT.wav")]
+    pub output: std::path::PathBuf,
+    /// Beats per hour.
+    #[arg(
+        long,
+        value_name = "B",
+        default_value = "3600",
+        allow_hyphen_values = true
+    )]
+    pub bph: String,
+    /// The clock's rate, s/day (positive: gaining).
+    #[arg(
+        long,
+        value_name = "R",
+        default_value = "0",
+        allow_hyphen_values = true
+    )]
+    pub rate: String,
+    /// Beat error, ms (half the difference of the tick and tock intervals).
+    #[arg(
+        long,
+        value_name = "E",
+        default_value = "0",
+        allow_hyphen_values = true
+    )]
+    pub beat_error: String,
+    /// Length of the recording.
+    #[arg(
+        long,
+        value_name = "D",
+        default_value = "60s",
+        allow_hyphen_values = true
+    )]
+    pub duration: String,
+    /// A tick's peak over the noise, dB.
+    #[arg(
+        long,
+        value_name = "S",
+        default_value = "30",
+        allow_hyphen_values = true
+    )]
+    pub snr_db: String,
+    /// Samples per second.
+    #[arg(long, value_name = "HZ", default_value_t = 44_100)]
+    pub sample_rate: u32,
+    /// Room reverberation time.
+    #[arg(
+        long,
+        value_name = "T",
+        default_value = "0.3s",
+        allow_hyphen_values = true
+    )]
+    pub reverb: String,
+    /// Mains hum against a tick's peak, dB.
+    #[arg(
+        long,
+        value_name = "DB",
+        default_value = "-30",
+        allow_hyphen_values = true
+    )]
+    pub hum_db: String,
+    /// Fraction of ticks left out.
+    #[arg(
+        long,
+        value_name = "F",
+        default_value = "0",
+        allow_hyphen_values = true
+    )]
+    pub missing: String,
+    /// Seed of every random choice (the tick's sound too).
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub seed: u64,
+    /// Write the true tick times to this CSV file (time_s).
+    #[arg(long, value_name = "FILE.csv")]
+    pub truth: Option<std::path::PathBuf>,
 }
 
 /// `pendulum report`.

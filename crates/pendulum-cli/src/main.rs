@@ -6,6 +6,7 @@
 //! Ctrl-C.
 
 mod args;
+mod audio;
 mod commands;
 mod data;
 mod error;

@@ -17,6 +17,7 @@
 //! * [`energy`]: stored energy, losses, power, and the impulse per beat an
 //!   escapement must give.
 //! * [`gravity`]: WGS 84 normal gravity with the free-air correction.
+//! * [`listening`]: the ticks of a sound recording, and a synthetic one.
 //! * [`pendulum`]: the types that say what a number is: a [`Pendulum`]
 //!   (length and g) and an [`Amplitude`].
 //!
@@ -46,6 +47,7 @@ pub mod fitting;
 pub mod friction;
 pub mod gravity;
 pub mod integrate;
+pub mod listening;
 pub mod pendulum;
 pub mod period;
 pub mod simulation;

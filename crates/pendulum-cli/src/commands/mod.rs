@@ -9,10 +9,12 @@ mod fit_decay;
 mod fit_trajectory;
 mod gravity;
 mod length;
+mod listen;
 mod measured;
 pub(crate) mod period;
 mod report;
 pub(crate) mod simulate;
+mod synth;
 
 use crate::args::{Command, FitCommand};
 use crate::error::CliError;
@@ -61,6 +63,16 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
             ),
             FitCommand::Beats(a) => (vec![("--plot", a.plot.as_deref())], a.json),
         },
+        Command::Listen(a) => (vec![("--ticks", a.ticks.as_deref())], a.json),
+        Command::Synth(s) => match &s.what {
+            crate::args::SynthCommand::Ticks(a) => (
+                vec![
+                    ("OUT.wav", Some(a.output.as_path())),
+                    ("--truth", a.truth.as_deref()),
+                ],
+                false,
+            ),
+        },
         Command::Length(_) | Command::Amplitude(_) | Command::Gravity(_) | Command::Report(_) => {
             (Vec::new(), false)
         }
@@ -98,6 +110,10 @@ fn run_command(command: &Command) -> Result<Output, CliError> {
         Command::Simulate(args) => return simulate::run(args),
         Command::Damped(args) => damped::run(args),
         Command::Report(args) => report::run(args),
+        Command::Listen(args) => listen::run(args),
+        Command::Synth(args) => match &args.what {
+            crate::args::SynthCommand::Ticks(a) => synth::run(a),
+        },
         Command::Fit(args) => match &args.what {
             FitCommand::Decay(a) => fit_decay::run(a),
             FitCommand::Trajectory(a) => fit_trajectory::run(a),

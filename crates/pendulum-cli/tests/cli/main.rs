@@ -6,6 +6,7 @@ mod extremes;
 mod fit;
 mod formats;
 mod hardening;
+mod listen;
 mod period;
 mod plot;
 mod simulate;

@@ -1,0 +1,170 @@
+//! Sound files: decoding any recording with symphonia (WAV, FLAC, Ogg
+//! Vorbis, MP3, AAC in MP4/M4A), streamed in blocks of one channel, and
+//! writing a WAV with hound.
+
+use crate::error::CliError;
+use std::path::Path;
+use symphonia::core::audio::SampleBuffer;
+use symphonia::core::codecs::{DecoderOptions, CODEC_TYPE_NULL};
+use symphonia::core::errors::Error as AudioError;
+use symphonia::core::formats::FormatOptions;
+use symphonia::core::io::MediaSourceStream;
+use symphonia::core::meta::MetadataOptions;
+use symphonia::core::probe::Hint;
+
+/// What a recording is.
+#[derive(Clone, Copy, Debug)]
+pub struct Info {
+    /// Samples per second.
+    pub sample_rate: u32,
+    /// Channels.
+    pub channels: usize,
+}
+
+/// What `path` is (sample rate and channels), from its header alone.
+pub fn info(path: &Path) -> Result<Info, CliError> {
+    let mut found = None;
+    decode_some(path, 0, |_| {}, Some(&mut found))?;
+    found.ok_or_else(|| CliError::other(format!("{}: no audio track in it", path.display())))
+}
+
+/// Decodes `path`, giving `each` the samples of `channel` (0-based) in
+/// blocks. Returns what the recording is.
+pub fn decode(path: &Path, channel: usize, each: impl FnMut(&[f32])) -> Result<Info, CliError> {
+    decode_some(path, channel, each, None)
+}
+
+/// [`decode`], or with `header_only` just what the header says.
+fn decode_some(
+    path: &Path,
+    channel: usize,
+    mut each: impl FnMut(&[f32]),
+    header_only: Option<&mut Option<Info>>,
+) -> Result<Info, CliError> {
+    let file_name = path.display().to_string();
+    let fail = |what: String| CliError::other(format!("{file_name}: {what}"));
+    let file = std::fs::File::open(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+    let stream = MediaSourceStream::new(Box::new(file), Default::default());
+    let mut hint = Hint::new();
+    if let Some(ext) = path.extension().and_then(|e| e.to_str()) {
+        hint.with_extension(ext);
+    }
+    let probed = symphonia::default::get_probe()
+        .format(
+            &hint,
+            stream,
+            &FormatOptions::default(),
+            &MetadataOptions::default(),
+        )
+        .map_err(|e| fail(format!("not a sound file symphonia can read ({e})")))?;
+    let mut format = probed.format;
+    let track = format
+        .tracks()
+        .iter()
+        .find(|t| t.codec_params.codec != CODEC_TYPE_NULL)
+        .ok_or_else(|| fail("no audio track in it".into()))?;
+    let track_id = track.id;
+    let sample_rate = track
+        .codec_params
+        .sample_rate
+        .ok_or_else(|| fail("its sample rate is not stated".into()))?;
+    let channels = track.codec_params.channels.map_or(1, |c| c.count());
+    if let Some(slot) = header_only {
+        let info = Info {
+            sample_rate,
+            channels,
+        };
+        *slot = Some(info);
+        return Ok(info);
+    }
+    if channel >= channels {
+        return Err(CliError::flag(
+            "--channel",
+            format!("{file_name} has {channels} channel(s); give 1 to {channels}"),
+        ));
+    }
+    let mut decoder = symphonia::default::get_codecs()
+        .make(&track.codec_params, &DecoderOptions::default())
+        .map_err(|e| fail(format!("its codec is not supported ({e})")))?;
+    let mut buffer: Option<SampleBuffer<f32>> = None;
+    let mut mono: Vec<f32> = Vec::new();
+    loop {
+        let packet = match format.next_packet() {
+            Ok(p) => p,
+            Err(AudioError::IoError(e)) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
+            Err(AudioError::ResetRequired) => break,
+            Err(e) => return Err(fail(format!("cannot be read to the end ({e})"))),
+        };
+        if packet.track_id() != track_id {
+            continue;
+        }
+        let decoded = match decoder.decode(&packet) {
+            Ok(d) => d,
+            // A damaged packet is skipped, as players do.
+            Err(AudioError::DecodeError(_)) => continue,
+            Err(e) => return Err(fail(format!("cannot be decoded ({e})"))),
+        };
+        let spec = *decoded.spec();
+        let needed = decoded.capacity() as u64;
+        let buf = match &mut buffer {
+            Some(b) if b.capacity() as u64 >= needed * spec.channels.count() as u64 => b,
+            _ => buffer.insert(SampleBuffer::<f32>::new(needed, spec)),
+        };
+        buf.copy_interleaved_ref(decoded);
+        let count = spec.channels.count().max(1);
+        mono.clear();
+        mono.extend(buf.samples().iter().skip(channel).step_by(count));
+        each(&mono);
+    }
+    Ok(Info {
+        sample_rate,
+        channels,
+    })
+}
+
+/// The louder channel of `path` over its first ten seconds (0-based).
+pub fn louder_channel(path: &Path) -> Result<usize, CliError> {
+    let info = info(path)?;
+    if info.channels < 2 {
+        return Ok(0);
+    }
+    let mut energy = vec![0.0_f64; info.channels];
+    for (c, e) in energy.iter_mut().enumerate() {
+        let mut seen = 0usize;
+        let limit = 10 * info.sample_rate as usize;
+        decode(path, c, |block| {
+            for &x in block {
+                if seen < limit {
+                    *e += f64::from(x) * f64::from(x);
+                    seen += 1;
+                }
+            }
+        })?;
+    }
+    Ok(energy
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(b.1))
+        .map_or(0, |(i, _)| i))
+}
+
+/// The bytes of a 16-bit mono WAV file of `samples` at `sample_rate`.
+pub fn wav_bytes(samples: &[f32], sample_rate: u32) -> Result<Vec<u8>, CliError> {
+    let spec = hound::WavSpec {
+        channels: 1,
+        sample_rate,
+        bits_per_sample: 16,
+        sample_format: hound::SampleFormat::Int,
+    };
+    let fail = |e: hound::Error| CliError::other(format!("could not encode the WAV: {e}"));
+    let mut cursor = std::io::Cursor::new(Vec::with_capacity(44 + 2 * samples.len()));
+    {
+        let mut writer = hound::WavWriter::new(&mut cursor, spec).map_err(fail)?;
+        for &x in samples {
+            let v = (f64::from(x) * 32767.0).round().clamp(-32768.0, 32767.0) as i16;
+            writer.write_sample(v).map_err(fail)?;
+        }
+        writer.finalize().map_err(fail)?;
+    }
+    Ok(cursor.into_inner())
+}

@@ -1,0 +1,205 @@
+//! `pendulum listen`: a clock's rate, beat error and jitter from a sound
+//! recording, as a timegrapher shows them.
+
+use super::common;
+use crate::args::ListenArgs;
+use crate::audio::{decode, info, louder_channel};
+use crate::error::CliError;
+use crate::file::CsvFile;
+use crate::output::{self, num, Summary};
+use crate::units::parse_number;
+use pendulum_theory::fitting::beats::BeatStream;
+use pendulum_theory::listening::detect::{
+    beat_period, coarse_onsets, envelope_rate, Envelope, Refiner,
+};
+use pendulum_theory::period::beats_per_hour;
+use serde::Serialize;
+
+#[derive(Serialize)]
+struct ListenJson {
+    file: String,
+    sample_rate_hz: u32,
+    channel: usize,
+    duration_s: f64,
+    beats: usize,
+    mean_beat_s: f64,
+    beats_per_hour: f64,
+    nominal_beat_s: Option<f64>,
+    rate_s_per_day: Option<f64>,
+    beat_error_ms: f64,
+    /// The split of the two intervals, % (50/50 is in beat).
+    in_beat_percent: [f64; 2],
+    jitter_ms: f64,
+    missed: usize,
+    extra: usize,
+    /// Tick envelope peak over the envelope's median, dB.
+    snr_db: f64,
+    allan_deviation: Vec<AllanJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    ticks_file: Option<String>,
+}
+
+#[derive(Serialize)]
+struct AllanJson {
+    tau_s: f64,
+    beats: usize,
+    deviation: f64,
+}
+
+pub fn run(args: &ListenArgs) -> Result<String, CliError> {
+    let file = args.file.display().to_string();
+    let nominal_period = common::period_or_beat_rate(args.period.as_deref(), args.bph.as_deref())?;
+    let ppm = match &args.sample_rate_error_ppm {
+        Some(t) => {
+            let p = parse_number(t).map_err(|e| CliError::flag("--sample-rate-error-ppm", e))?;
+            if p.abs() > 1e4 {
+                return Err(CliError::flag(
+                    "--sample-rate-error-ppm",
+                    format!("must be within ±10000 ppm, got {t}"),
+                ));
+            }
+            p
+        }
+        None => 0.0,
+    };
+    let channel = match args.channel {
+        Some(0) => return Err(CliError::flag("--channel", "channels count from 1")),
+        Some(c) => c - 1,
+        None => louder_channel(&args.file)?,
+    };
+    // Pass 1: the envelope.
+    let info = info(&args.file)?;
+    let rate = f64::from(info.sample_rate);
+    let mut env = Envelope::new(rate);
+    decode(&args.file, channel, |block| env.push(block))?;
+    let duration = env.samples as f64 / rate;
+    let env_rate = envelope_rate(&env, rate);
+    let beat = match nominal_period {
+        Some(p) => 0.5 * p,
+        None => beat_period(&env.values, env_rate, 0.05, 2.0).ok_or_else(|| {
+            CliError::other(format!(
+                "{file}: no regular ticking found (silence, noise, or fewer than a few beats); \
+                 give --bph if the clock is there"
+            ))
+        })?,
+    };
+    let coarse = coarse_onsets(&env.values, env_rate, beat);
+    if coarse.onsets.len() < 4 {
+        return Err(CliError::other(format!(
+            "{file}: {} ticks found; at least 4 beats are needed",
+            coarse.onsets.len()
+        )));
+    }
+    // Pass 2: each tick refined on the samples.
+    let mut refiner = Refiner::new(rate, &coarse);
+    decode(&args.file, channel, |block| refiner.push(block))?;
+    let (ticks, rejected) = refiner.finish();
+    let scale = 1.0 / (1.0 + ppm * 1e-6);
+    let mut stream = BeatStream::new();
+    for t in &ticks {
+        stream
+            .push(t.time * scale)
+            .map_err(|e| CliError::other(format!("{file}: {e}")))?;
+    }
+    let a = stream
+        .finish(nominal_period.map(|p| 0.5 * p))
+        .map_err(|e| CliError::other(format!("{file}: {e}")))?;
+    let ticks_file = match &args.ticks {
+        Some(path) => {
+            let mut out = CsvFile::create(path, "--ticks", "time_s,side,amplitude")?;
+            for t in &ticks {
+                out.number(Some(t.time * scale))
+                    .integer(u64::from(t.side))
+                    .number(Some(t.amplitude))
+                    .end_row()?;
+            }
+            Some(out.commit()?)
+        }
+        None => None,
+    };
+    let half = 50.0 * a.beat_error_ms * 1e-3 / a.mean_beat;
+    let result = ListenJson {
+        file,
+        sample_rate_hz: info.sample_rate,
+        channel: channel + 1,
+        duration_s: duration,
+        beats: a.beats,
+        mean_beat_s: a.mean_beat,
+        beats_per_hour: a.beats_per_hour,
+        nominal_beat_s: a.nominal_beat,
+        rate_s_per_day: a.rate_s_per_day,
+        beat_error_ms: a.beat_error_ms,
+        in_beat_percent: [50.0 + half, 50.0 - half],
+        jitter_ms: a.jitter_ms,
+        missed: coarse.missed + rejected + a.repaired.missed,
+        extra: a.repaired.doubled,
+        snr_db: 20.0 * (coarse.peak / coarse.floor.max(f64::MIN_POSITIVE)).log10(),
+        allan_deviation: a
+            .allan_deviation
+            .iter()
+            .map(|p| AllanJson {
+                tau_s: p.tau,
+                beats: p.beats,
+                deviation: p.deviation,
+            })
+            .collect(),
+        ticks_file,
+    };
+    if args.json {
+        return output::json(&result);
+    }
+    let mut s = Summary::default();
+    s.row(
+        "Recording",
+        format!(
+            "{} s at {} Hz, channel {} of {}",
+            num(result.duration_s, 6),
+            result.sample_rate_hz,
+            result.channel,
+            info.channels
+        ),
+    )
+    .row(
+        "Beats",
+        format!(
+            "{} ({} missed, {} extra), {} beats/hour",
+            result.beats,
+            result.missed,
+            result.extra,
+            num(result.beats_per_hour, 7)
+        ),
+    )
+    .row(
+        "Rate",
+        match (result.rate_s_per_day, result.nominal_beat_s) {
+            (Some(r), Some(n)) => format!(
+                "{} s/day ({}) against {} beats/hour",
+                num(r, 4),
+                if r > 0.0 {
+                    "gaining"
+                } else if r < 0.0 {
+                    "losing"
+                } else {
+                    "keeping time"
+                },
+                num(beats_per_hour(2.0 * n), 6)
+            ),
+            _ => "unknown: give --bph or --period (no standard rate within 2%)".into(),
+        },
+    )
+    .row(
+        "Beat error",
+        format!(
+            "{} ms (in beat {}/{} %)",
+            num(result.beat_error_ms, 3),
+            num(result.in_beat_percent[0], 3),
+            num(result.in_beat_percent[1], 3)
+        ),
+    )
+    .row("Jitter", format!("{} ms", num(result.jitter_ms, 3)))
+    .row("Signal to noise", format!("{} dB", num(result.snr_db, 3)));
+    if let Some(f) = &result.ticks_file {
+        s.row("Ticks file", f.clone());
+    }
+    Ok(s.render())
+}

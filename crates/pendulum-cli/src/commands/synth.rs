@@ -1,0 +1,91 @@
+//! `pendulum synth ticks`: a recording of a ticking clock with known truth.
+
+use super::common;
+use crate::args::SynthTicksArgs;
+use crate::audio::wav_bytes;
+use crate::error::CliError;
+use crate::file::{AtomicFile, CsvFile};
+use crate::output::num;
+use crate::units::{parse_number, Dimension};
+use pendulum_theory::listening::synth::{synthesize, TickRecording};
+
+/// Longer recordings are refused: the samples are made in memory.
+const MAX_DURATION_S: f64 = 4.0 * 3600.0;
+
+pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
+    let number = |flag: &str, text: &str| parse_number(text).map_err(|e| CliError::flag(flag, e));
+    let bph = number("--bph", &args.bph)?;
+    if !(1800.0..=72_000.0).contains(&bph) {
+        return Err(CliError::flag(
+            "--bph",
+            format!(
+                "must be between 1800 and 72000 beats/hour, got {}",
+                num(bph, 6)
+            ),
+        ));
+    }
+    let duration = common::quantity("--duration", &args.duration, Dimension::Time)?;
+    if !(duration > 0.0 && duration <= MAX_DURATION_S) {
+        return Err(CliError::flag(
+            "--duration",
+            format!("must be between 0 and 4 hours, got {} s", num(duration, 6)),
+        ));
+    }
+    if !(8000..=192_000).contains(&args.sample_rate) {
+        return Err(CliError::flag(
+            "--sample-rate",
+            format!(
+                "must be between 8000 and 192000 Hz, got {}",
+                args.sample_rate
+            ),
+        ));
+    }
+    let reverb = common::quantity("--reverb", &args.reverb, Dimension::Time)?;
+    if !(0.0..=3.0).contains(&reverb) {
+        return Err(CliError::flag("--reverb", "must be between 0 and 3 s"));
+    }
+    let missing = number("--missing", &args.missing)?;
+    if !(0.0..=0.5).contains(&missing) {
+        return Err(CliError::flag("--missing", "must be between 0 and 0.5"));
+    }
+    let spec = TickRecording {
+        sample_rate: args.sample_rate,
+        duration,
+        beats_per_hour: bph,
+        rate_s_per_day: number("--rate", &args.rate)?,
+        beat_error_ms: number("--beat-error", &args.beat_error)?,
+        snr_db: number("--snr-db", &args.snr_db)?,
+        reverb_s: reverb,
+        hum_db: number("--hum-db", &args.hum_db)?,
+        missing,
+        seed: args.seed,
+    };
+    if spec.rate_s_per_day.abs() > 3600.0 {
+        return Err(CliError::flag("--rate", "must be within ±3600 s/day"));
+    }
+    if spec.beat_error_ms.abs() > 0.2 * 1800.0 / bph * 1e3 {
+        return Err(CliError::flag(
+            "--beat-error",
+            "must be less than a fifth of the beat",
+        ));
+    }
+    let recording = synthesize(&spec);
+    let bytes = wav_bytes(&recording.samples, args.sample_rate)?;
+    let mut file = AtomicFile::create(&args.output, "OUT.wav")?;
+    std::io::Write::write_all(file.writer(), &bytes).map_err(|e| file.write_error(e))?;
+    let written = file.commit()?;
+    if let Some(path) = &args.truth {
+        let mut truth = CsvFile::create(path, "--truth", "time_s")?;
+        for &t in &recording.ticks {
+            truth.number(Some(t)).end_row()?;
+        }
+        truth.commit()?;
+    }
+    Ok(format!(
+        "{written}: {} s at {} Hz, {} ticks ({} left out)\n",
+        num(duration, 6),
+        args.sample_rate,
+        recording.ticks.len(),
+        recording.missing.len()
+    ))
+}

@@ -111,3 +111,49 @@ fn what_is_not_a_clock_recording_is_refused_in_one_line() {
         "--bph",
     );
 }
+
+#[test]
+fn stereo_takes_the_louder_channel_unless_told() {
+    let dir = tempfile::tempdir().unwrap();
+    let mono = dir.path().join("mono.wav");
+    pendulum()
+        .args([
+            "synth",
+            "ticks",
+            mono.to_str().unwrap(),
+            "--bph",
+            "5400",
+            "--rate",
+            "-8",
+        ])
+        .args(["--duration", "2min", "--seed", "9"])
+        .assert()
+        .success();
+    // Left: the clock 26 dB down; right: the clock.
+    let mut reader = hound::WavReader::open(&mono).unwrap();
+    let spec = reader.spec();
+    let samples: Vec<i16> = reader.samples::<i16>().map(|s| s.unwrap()).collect();
+    let stereo = dir.path().join("stereo.wav");
+    let mut writer = hound::WavWriter::create(
+        &stereo,
+        hound::WavSpec {
+            channels: 2,
+            ..spec
+        },
+    )
+    .unwrap();
+    for &s in &samples {
+        writer.write_sample(s / 20).unwrap();
+        writer.write_sample(s).unwrap();
+    }
+    writer.finalize().unwrap();
+    let v = json(&["listen", stereo.to_str().unwrap()]);
+    assert_eq!(v["channel"], 2);
+    assert!((f(&v, "rate_s_per_day") + 8.0).abs() < 0.05, "{v}");
+    let left = json(&["listen", stereo.to_str().unwrap(), "--channel", "1"]);
+    assert_eq!(left["channel"], 1);
+    refuses(
+        &["listen", stereo.to_str().unwrap(), "--channel", "3"],
+        "--channel",
+    );
+}

@@ -10,7 +10,7 @@ use crate::output::{self, num, Summary};
 use crate::units::parse_number;
 use pendulum_theory::fitting::beats::BeatStream;
 use pendulum_theory::listening::detect::{
-    beat_period, coarse_onsets, envelope_rate, Envelope, Refiner,
+    beat_period, coarse_onsets, drop_outliers, envelope_rate, Envelope, Refiner,
 };
 use pendulum_theory::period::beats_per_hour;
 use serde::Serialize;
@@ -94,6 +94,8 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     let mut refiner = Refiner::new(rate, &coarse);
     decode(&args.file, channel, |block| refiner.push(block))?;
     let (ticks, rejected) = refiner.finish();
+    let (ticks, dropped) = drop_outliers(ticks);
+    let rejected = rejected + dropped;
     let scale = 1.0 / (1.0 + ppm * 1e-6);
     let mut stream = BeatStream::new();
     for t in &ticks {

@@ -18,6 +18,8 @@
 //!    (the first crossing of a fifth of its peak) is the tick's time. A
 //!    window whose correlation is below a third of the median correlation
 //!    is noise, not a tick: it is dropped and counted as missed.
+//! 3. [`drop_outliers`]: a tick 2 ms off the line its neighbours of the
+//!    same side draw is a drop sound or a noise burst: dropped, counted.
 
 use super::filter::BandPass;
 use realfft::RealFftPlanner;
@@ -574,6 +576,54 @@ fn best_lag(window: &[f32], template: &[f32], search: usize) -> Option<(f64, f64
         0.0
     };
     Some((best as f64 + shift, peak))
+}
+
+/// Drops the ticks that sit off the clockwork: a tick more than 2 ms from
+/// where the ticks of its side around it (the ten before and after) put
+/// it, at the beat of all of them, is a drop sound or a noise burst taken
+/// for the tick. Returns the ticks kept and how many were dropped. A
+/// clock's beats wander by far less than 2 ms from one to the next (the
+/// jitter of a good clock is tens of µs), so no real tick is lost.
+pub fn drop_outliers(ticks: Vec<Tick>) -> (Vec<Tick>, usize) {
+    if ticks.len() < 8 {
+        return (ticks, 0);
+    }
+    // The beat from all ticks: least squares of time on beat number.
+    let n = ticks.len() as f64;
+    let (mk, mt) = ticks.iter().fold((0.0, 0.0), |(a, b), t| {
+        (a + t.beat as f64 / n, b + t.time / n)
+    });
+    let (sxy, sxx) = ticks.iter().fold((0.0, 0.0), |(a, b), t| {
+        let dk = t.beat as f64 - mk;
+        (a + dk * (t.time - mt), b + dk * dk)
+    });
+    let beat = if sxx > 0.0 {
+        sxy / sxx
+    } else {
+        return (ticks, 0);
+    };
+    let keep: Vec<bool> = (0..ticks.len())
+        .map(|i| {
+            let t = &ticks[i];
+            let mut predictions: Vec<f64> = ticks
+                .iter()
+                .enumerate()
+                .filter(|(j, o)| *j != i && o.side == t.side && o.beat.abs_diff(t.beat) <= 20)
+                .map(|(_, o)| o.time + (t.beat as f64 - o.beat as f64) * beat)
+                .collect();
+            if predictions.len() < 3 {
+                return true;
+            }
+            (t.time - median(&mut predictions)).abs() <= 2e-3
+        })
+        .collect();
+    let dropped = keep.iter().filter(|k| !**k).count();
+    let kept = ticks
+        .into_iter()
+        .zip(keep)
+        .filter_map(|(t, k)| k.then_some(t))
+        .collect();
+    (kept, dropped)
 }
 
 /// Times the envelope's values to seconds for `sample_rate`.

@@ -9,7 +9,7 @@ use crate::plot::{render, Figure, Panel, Series, Target};
 
 /// Intervals kept for the plot, at most.
 const PLOT_LIMIT: usize = 8192;
-use pendulum_theory::fitting::beats::BeatStream;
+use pendulum_theory::fitting::beats::{AllanPoint, BeatStream};
 use pendulum_theory::period::{beat_of_period, beats_per_hour, SECONDS_PER_DAY};
 use serde::Serialize;
 
@@ -35,11 +35,43 @@ struct RepairedJson {
 }
 
 #[derive(Serialize)]
-struct AllanJson {
+pub(crate) struct AllanJson {
     tau_s: f64,
     beats: usize,
     deviation: f64,
     deviation_s_per_day: f64,
+}
+
+/// The Allan deviation of an analysis, for JSON.
+pub(crate) fn allan_json(points: &[AllanPoint]) -> Vec<AllanJson> {
+    points
+        .iter()
+        .map(|p| AllanJson {
+            tau_s: p.tau,
+            beats: p.beats,
+            deviation: p.deviation,
+            deviation_s_per_day: SECONDS_PER_DAY * p.deviation,
+        })
+        .collect()
+}
+
+/// The rate for people: "12 s/day (gaining) against 3600 beats/hour".
+pub(crate) fn rate_text(rate_s_per_day: Option<f64>, nominal_beat: Option<f64>) -> String {
+    match (rate_s_per_day, nominal_beat) {
+        (Some(r), Some(n)) => format!(
+            "{} s/day ({}) against {} beats/hour",
+            num(r, 4),
+            if r > 0.0 {
+                "gaining"
+            } else if r < 0.0 {
+                "losing"
+            } else {
+                "keeping time"
+            },
+            num(beats_per_hour(2.0 * n), 6)
+        ),
+        _ => "unknown: give --bph or --period (no standard rate within 2%)".into(),
+    }
 }
 
 pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
@@ -165,16 +197,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
             missed: a.repaired.missed,
             doubled: a.repaired.doubled,
         },
-        allan_deviation: a
-            .allan_deviation
-            .iter()
-            .map(|p| AllanJson {
-                tau_s: p.tau,
-                beats: p.beats,
-                deviation: p.deviation,
-                deviation_s_per_day: SECONDS_PER_DAY * p.deviation,
-            })
-            .collect(),
+        allan_deviation: allan_json(&a.allan_deviation),
     };
     if args.json {
         return output::json(&result);
@@ -195,24 +218,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
             num(a.beats_per_hour, 8)
         ),
     )
-    .row(
-        "Rate",
-        match (a.rate_s_per_day, a.nominal_beat) {
-            (Some(r), Some(n)) => format!(
-                "{} s/day ({}) against {} beats/hour",
-                num(r, 4),
-                if r > 0.0 {
-                    "gaining"
-                } else if r < 0.0 {
-                    "losing"
-                } else {
-                    "keeping time"
-                },
-                num(beats_per_hour(2.0 * n), 6)
-            ),
-            _ => "unknown: give --bph or --period (no standard rate within 2%)".into(),
-        },
-    )
+    .row("Rate", rate_text(a.rate_s_per_day, a.nominal_beat))
     .row("Beat error", format!("{} ms", num(a.beat_error_ms, 3)))
     .row("Jitter", format!("{} ms", num(a.jitter_ms, 3)));
     let mut out = s.render();

@@ -2,6 +2,7 @@
 //! recording, as a timegrapher shows them.
 
 use super::common;
+use super::fit_beats::{allan_json, rate_text, AllanJson};
 use crate::args::ListenArgs;
 use crate::audio::{decode, info, louder_channel};
 use crate::error::CliError;
@@ -12,7 +13,6 @@ use pendulum_theory::fitting::beats::BeatStream;
 use pendulum_theory::listening::detect::{
     beat_period, coarse_onsets, drop_outliers, envelope_rate, Envelope, Refiner,
 };
-use pendulum_theory::period::beats_per_hour;
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -37,13 +37,6 @@ struct ListenJson {
     allan_deviation: Vec<AllanJson>,
     #[serde(skip_serializing_if = "Option::is_none")]
     ticks_file: Option<String>,
-}
-
-#[derive(Serialize)]
-struct AllanJson {
-    tau_s: f64,
-    beats: usize,
-    deviation: f64,
 }
 
 pub fn run(args: &ListenArgs) -> Result<String, CliError> {
@@ -136,15 +129,7 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         missed: coarse.missed + rejected + a.repaired.missed,
         extra: a.repaired.doubled,
         snr_db: 20.0 * (coarse.peak / coarse.floor.max(f64::MIN_POSITIVE)).log10(),
-        allan_deviation: a
-            .allan_deviation
-            .iter()
-            .map(|p| AllanJson {
-                tau_s: p.tau,
-                beats: p.beats,
-                deviation: p.deviation,
-            })
-            .collect(),
+        allan_deviation: allan_json(&a.allan_deviation),
         ticks_file,
     };
     if args.json {
@@ -173,21 +158,7 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     )
     .row(
         "Rate",
-        match (result.rate_s_per_day, result.nominal_beat_s) {
-            (Some(r), Some(n)) => format!(
-                "{} s/day ({}) against {} beats/hour",
-                num(r, 4),
-                if r > 0.0 {
-                    "gaining"
-                } else if r < 0.0 {
-                    "losing"
-                } else {
-                    "keeping time"
-                },
-                num(beats_per_hour(2.0 * n), 6)
-            ),
-            _ => "unknown: give --bph or --period (no standard rate within 2%)".into(),
-        },
+        rate_text(result.rate_s_per_day, result.nominal_beat_s),
     )
     .row(
         "Beat error",

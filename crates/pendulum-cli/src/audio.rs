@@ -21,25 +21,50 @@ pub struct Info {
     pub channels: usize,
 }
 
+/// How much of a file to decode.
+enum Extent {
+    /// The header only.
+    Header,
+    /// The first frames (samples per channel).
+    Frames(u64),
+    /// All of it.
+    Whole,
+}
+
 /// What `path` is (sample rate and channels), from its header alone.
 pub fn info(path: &Path) -> Result<Info, CliError> {
-    let mut found = None;
-    decode_some(path, 0, |_| {}, Some(&mut found))?;
-    found.ok_or_else(|| CliError::other(format!("{}: no audio track in it", path.display())))
+    decode_frames(path, Extent::Header, |_, _| {})
 }
 
 /// Decodes `path`, giving `each` the samples of `channel` (0-based) in
 /// blocks. Returns what the recording is.
-pub fn decode(path: &Path, channel: usize, each: impl FnMut(&[f32])) -> Result<Info, CliError> {
-    decode_some(path, channel, each, None)
+pub fn decode(path: &Path, channel: usize, mut each: impl FnMut(&[f32])) -> Result<Info, CliError> {
+    let header = info(path)?;
+    if channel >= header.channels {
+        return Err(CliError::flag(
+            "--channel",
+            format!(
+                "{} has {} channel(s); give 1 to {}",
+                path.display(),
+                header.channels,
+                header.channels
+            ),
+        ));
+    }
+    let mut mono: Vec<f32> = Vec::new();
+    decode_frames(path, Extent::Whole, |frames, count| {
+        mono.clear();
+        mono.extend(frames.iter().skip(channel).step_by(count));
+        each(&mono);
+    })
 }
 
-/// [`decode`], or with `header_only` just what the header says.
-fn decode_some(
+/// Decodes `extent` of `path`, giving `each` interleaved frames and the
+/// number of channels.
+fn decode_frames(
     path: &Path,
-    channel: usize,
-    mut each: impl FnMut(&[f32]),
-    header_only: Option<&mut Option<Info>>,
+    extent: Extent,
+    mut each: impl FnMut(&[f32], usize),
 ) -> Result<Info, CliError> {
     let file_name = path.display().to_string();
     let fail = |what: String| CliError::other(format!("{file_name}: {what}"));
@@ -69,26 +94,21 @@ fn decode_some(
         .sample_rate
         .ok_or_else(|| fail("its sample rate is not stated".into()))?;
     let channels = track.codec_params.channels.map_or(1, |c| c.count());
-    if let Some(slot) = header_only {
-        let info = Info {
-            sample_rate,
-            channels,
-        };
-        *slot = Some(info);
-        return Ok(info);
-    }
-    if channel >= channels {
-        return Err(CliError::flag(
-            "--channel",
-            format!("{file_name} has {channels} channel(s); give 1 to {channels}"),
-        ));
-    }
+    let info = Info {
+        sample_rate,
+        channels,
+    };
+    let limit = match extent {
+        Extent::Header => return Ok(info),
+        Extent::Frames(n) => n,
+        Extent::Whole => u64::MAX,
+    };
     let mut decoder = symphonia::default::get_codecs()
         .make(&track.codec_params, &DecoderOptions::default())
         .map_err(|e| fail(format!("its codec is not supported ({e})")))?;
     let mut buffer: Option<SampleBuffer<f32>> = None;
-    let mut mono: Vec<f32> = Vec::new();
-    loop {
+    let mut frames = 0_u64;
+    while frames < limit {
         let packet = match format.next_packet() {
             Ok(p) => p,
             Err(AudioError::IoError(e)) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
@@ -112,35 +132,28 @@ fn decode_some(
         };
         buf.copy_interleaved_ref(decoded);
         let count = spec.channels.count().max(1);
-        mono.clear();
-        mono.extend(buf.samples().iter().skip(channel).step_by(count));
-        each(&mono);
+        each(buf.samples(), count);
+        frames += (buf.samples().len() / count) as u64;
     }
-    Ok(Info {
-        sample_rate,
-        channels,
-    })
+    Ok(info)
 }
 
-/// The louder channel of `path` over its first ten seconds (0-based).
+/// The louder channel of `path` over its first ten seconds (0-based),
+/// from one decoding of those seconds.
 pub fn louder_channel(path: &Path) -> Result<usize, CliError> {
-    let info = info(path)?;
-    if info.channels < 2 {
+    let header = info(path)?;
+    if header.channels < 2 {
         return Ok(0);
     }
-    let mut energy = vec![0.0_f64; info.channels];
-    for (c, e) in energy.iter_mut().enumerate() {
-        let mut seen = 0usize;
-        let limit = 10 * info.sample_rate as usize;
-        decode(path, c, |block| {
-            for &x in block {
-                if seen < limit {
-                    *e += f64::from(x) * f64::from(x);
-                    seen += 1;
-                }
+    let mut energy = vec![0.0_f64; header.channels];
+    let ten_seconds = 10 * u64::from(header.sample_rate);
+    decode_frames(path, Extent::Frames(ten_seconds), |frames, count| {
+        for frame in frames.chunks_exact(count) {
+            for (e, &x) in energy.iter_mut().zip(frame) {
+                *e += f64::from(x) * f64::from(x);
             }
-        })?;
-    }
+        }
+    })?;
     Ok(energy
         .iter()
         .enumerate()

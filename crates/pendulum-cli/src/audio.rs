@@ -1,6 +1,6 @@
 //! Sound files: decoding any recording with symphonia (WAV, FLAC, Ogg
 //! Vorbis, MP3, AAC in MP4/M4A), streamed in blocks of one channel, and
-//! writing a WAV with hound.
+//! writing a 16-bit WAV as a stream.
 
 use crate::error::CliError;
 use std::path::Path;
@@ -37,8 +37,14 @@ pub fn info(path: &Path) -> Result<Info, CliError> {
 }
 
 /// Decodes `path`, giving `each` the samples of `channel` (0-based) in
-/// blocks. Returns what the recording is.
-pub fn decode(path: &Path, channel: usize, mut each: impl FnMut(&[f32])) -> Result<Info, CliError> {
+/// blocks: all of them, or about the first `seconds` (whole packets).
+/// Returns what the recording is.
+pub fn decode(
+    path: &Path,
+    channel: usize,
+    seconds: Option<f64>,
+    mut each: impl FnMut(&[f32]),
+) -> Result<Info, CliError> {
     let header = info(path)?;
     if channel >= header.channels {
         return Err(CliError::flag(
@@ -51,8 +57,12 @@ pub fn decode(path: &Path, channel: usize, mut each: impl FnMut(&[f32])) -> Resu
             ),
         ));
     }
+    let extent = match seconds {
+        Some(s) => Extent::Frames((s * f64::from(header.sample_rate)).ceil() as u64),
+        None => Extent::Whole,
+    };
     let mut mono: Vec<f32> = Vec::new();
-    decode_frames(path, Extent::Whole, |frames, count| {
+    decode_frames(path, extent, |frames, count| {
         mono.clear();
         mono.extend(frames.iter().skip(channel).step_by(count));
         each(&mono);
@@ -161,23 +171,36 @@ pub fn louder_channel(path: &Path) -> Result<usize, CliError> {
         .map_or(0, |(i, _)| i))
 }
 
-/// The bytes of a 16-bit mono WAV file of `samples` at `sample_rate`.
-pub fn wav_bytes(samples: &[f32], sample_rate: u32) -> Result<Vec<u8>, CliError> {
-    let spec = hound::WavSpec {
-        channels: 1,
-        sample_rate,
-        bits_per_sample: 16,
-        sample_format: hound::SampleFormat::Int,
-    };
-    let fail = |e: hound::Error| CliError::other(format!("could not encode the WAV: {e}"));
-    let mut cursor = std::io::Cursor::new(Vec::with_capacity(44 + 2 * samples.len()));
-    {
-        let mut writer = hound::WavWriter::new(&mut cursor, spec).map_err(fail)?;
-        for &x in samples {
-            let v = (f64::from(x) * 32767.0).round().clamp(-32768.0, 32767.0) as i16;
-            writer.write_sample(v).map_err(fail)?;
-        }
-        writer.finalize().map_err(fail)?;
+/// The 44-byte header of a 16-bit mono PCM WAV file of `samples` samples
+/// at `sample_rate` (the canonical RIFF/WAVE layout: "RIFF" chunk, "fmt "
+/// chunk of 16 bytes, "data" chunk). Written directly rather than with
+/// hound, whose writer must seek back to fill in the lengths: the length
+/// is known beforehand here, and the samples can then stream to a file or
+/// to standard output. `None` if the data would pass the format's 4 GiB.
+pub fn wav_header(samples: u64, sample_rate: u32) -> Option<[u8; 44]> {
+    let data = u32::try_from(samples.checked_mul(2)?).ok()?;
+    let riff = data.checked_add(36)?;
+    let mut h = [0_u8; 44];
+    h[0..4].copy_from_slice(b"RIFF");
+    h[4..8].copy_from_slice(&riff.to_le_bytes());
+    h[8..12].copy_from_slice(b"WAVE");
+    h[12..16].copy_from_slice(b"fmt ");
+    h[16..20].copy_from_slice(&16_u32.to_le_bytes());
+    h[20..22].copy_from_slice(&1_u16.to_le_bytes()); // PCM
+    h[22..24].copy_from_slice(&1_u16.to_le_bytes()); // mono
+    h[24..28].copy_from_slice(&sample_rate.to_le_bytes());
+    h[28..32].copy_from_slice(&(2 * sample_rate).to_le_bytes()); // bytes/s
+    h[32..34].copy_from_slice(&2_u16.to_le_bytes()); // bytes per frame
+    h[34..36].copy_from_slice(&16_u16.to_le_bytes()); // bits per sample
+    h[36..40].copy_from_slice(b"data");
+    h[40..44].copy_from_slice(&data.to_le_bytes());
+    Some(h)
+}
+
+/// `samples` in [-1, 1] as 16-bit little-endian PCM, appended to `bytes`.
+pub fn pcm16(samples: &[f32], bytes: &mut Vec<u8>) {
+    for &x in samples {
+        let v = (f64::from(x) * 32767.0).round().clamp(-32768.0, 32767.0) as i16;
+        bytes.extend_from_slice(&v.to_le_bytes());
     }
-    Ok(cursor.into_inner())
 }

@@ -1,37 +1,60 @@
-//! Ticks found in synthetic recordings (the library's own generator, seeds
-//! fixed, tick shapes drawn per seed) against the true tick times.
+//! Ticks found in synthetic recordings against the true tick times: the
+//! library's generator (seeds fixed, tick shapes drawn per seed), and a
+//! second generator written here (noise-burst ticks, a drop louder than
+//! the tick) so that the detector is not tuned to one shape.
 
 use pendulum_theory::fitting::beats::analyse_beats;
 use pendulum_theory::listening::detect::{
-    beat_period, coarse_onsets, drop_outliers, envelope_rate, Envelope, Refiner, Tick,
+    beat_period, clean, envelope_rate, Envelope, OnsetTracker, Refiner, Tick,
 };
 use pendulum_theory::listening::synth::{synthesize, TickRecording};
 
-/// Runs the detector over `samples` in blocks of 4096, as a decoder feeds it.
-fn detect(samples: &[f32], rate: f64, beat: Option<f64>) -> (Vec<Tick>, usize) {
+/// What the detector found.
+struct Found {
+    ticks: Vec<Tick>,
+    /// Beats reported missed (no tick found, or one dropped as noise).
+    reported: usize,
+}
+
+/// Runs the detector as `pendulum listen` does: the beat from the first
+/// five minutes' envelope, the onsets streamed in blocks of 4096 samples
+/// (as a decoder feeds them), then the refinement and the clean-up.
+fn detect(samples: &[f32], rate: f64, nominal_beat: Option<f64>) -> Option<Found> {
     let mut envelope = Envelope::new(rate);
-    for block in samples.chunks(4096) {
+    for block in samples[..samples.len().min((300.0 * rate) as usize)].chunks(4096) {
         envelope.push(block);
     }
     let env_rate = envelope_rate(&envelope, rate);
-    let beat = beat
-        .or_else(|| beat_period(&envelope.values, env_rate, 0.05, 2.0))
-        .expect("a beat");
-    let coarse = coarse_onsets(&envelope.values, env_rate, beat);
+    let beat = match nominal_beat {
+        Some(b) => beat_period(&envelope.values, env_rate, 0.97 * b, 1.03 * b).unwrap_or(b),
+        None => beat_period(&envelope.values, env_rate, 0.05, 2.0)?,
+    };
+    let mut envelope = Envelope::new(rate);
+    let mut tracker = OnsetTracker::new(env_rate, beat);
+    for block in samples.chunks(4096) {
+        envelope.push(block);
+        tracker.push(&envelope.values);
+        envelope.values.clear();
+    }
+    let coarse = tracker.finish();
     let mut refiner = Refiner::new(rate, &coarse);
     for block in samples.chunks(4096) {
         refiner.push(block);
     }
     let (ticks, rejected) = refiner.finish();
-    let (ticks, dropped) = drop_outliers(ticks);
-    (ticks, coarse.missed + rejected + dropped)
+    let (ticks, dropped, _) = clean(ticks);
+    Some(Found {
+        ticks,
+        reported: coarse.missed + rejected + dropped,
+    })
 }
 
 struct Score {
     rms_ms: f64,
-    mean_ms: f64,
     matched: usize,
+    /// Ticks more than 5 ms from every true tick.
     invented: usize,
+    /// True ticks with no tick found within 0.5 ms.
     missed: usize,
 }
 
@@ -39,21 +62,21 @@ fn score(ticks: &[Tick], truth: &[f64]) -> Score {
     let mut errors = Vec::new();
     let mut invented = 0;
     for t in ticks {
-        match truth
+        let e = truth
             .iter()
             .map(|&x| t.time - x)
             .min_by(|a, b| a.abs().total_cmp(&b.abs()))
-        {
-            Some(e) if e.abs() < 5e-3 => errors.push(e),
-            _ => invented += 1,
+            .unwrap_or(f64::INFINITY);
+        if e.abs() < 0.5e-3 {
+            errors.push(e);
+        } else if e.abs() > 5e-3 {
+            invented += 1;
         }
     }
-    let n = errors.len() as f64;
-    let mean = errors.iter().sum::<f64>() / n;
+    let n = errors.len().max(1) as f64;
     let rms = (errors.iter().map(|e| e * e).sum::<f64>() / n).sqrt();
     Score {
         rms_ms: rms * 1e3,
-        mean_ms: mean * 1e3,
         matched: errors.len(),
         invented,
         missed: truth.len() - errors.len(),
@@ -75,77 +98,204 @@ fn spec(bph: f64, sample_rate: u32, snr_db: f64, seed: u64) -> TickRecording {
     }
 }
 
+/// The acceptance bounds: tick times within 0.1 ms RMS, no tick invented
+/// or missed, rate within 0.05 s/day, beat error within 0.1 ms.
+fn check_exact(label: &str, found: &Found, truth: &[f64], nominal_beat: f64, rate: f64) {
+    let sc = score(&found.ticks, truth);
+    let times: Vec<f64> = found.ticks.iter().map(|t| t.time).collect();
+    let a = analyse_beats(&times, Some(nominal_beat)).unwrap();
+    eprintln!(
+        "{label}: rms {:.4} ms, matched {} of {}, invented {}, missed {} (reported {}), rate {:.4}, beat error {:.4}",
+        sc.rms_ms,
+        sc.matched,
+        truth.len(),
+        sc.invented,
+        sc.missed,
+        found.reported,
+        a.rate_s_per_day.unwrap(),
+        a.beat_error_ms
+    );
+    assert!(sc.rms_ms < 0.1, "{label}");
+    assert_eq!((sc.invented, sc.missed), (0, 0), "{label}");
+    assert!((a.rate_s_per_day.unwrap() - rate).abs() < 0.05, "{label}");
+    assert!((a.beat_error_ms - 1.5).abs() < 0.1, "{label}");
+}
+
 #[test]
 fn ten_minutes_at_3600_bph() {
-    let s = spec(3600.0, 44_100, 20.0, 11);
-    let rec = synthesize(&s);
-    let (ticks, missed) = detect(&rec.samples, 44_100.0, None);
-    let sc = score(&ticks, &rec.ticks);
-    eprintln!(
-        "3600 bph: rms {:.4} ms (mean {:.4}), matched {}, invented {}, missed {} (reported {missed})",
-        sc.rms_ms, sc.mean_ms, sc.matched, sc.invented, sc.missed
-    );
-    let times: Vec<f64> = ticks.iter().map(|t| t.time).collect();
-    let a = analyse_beats(&times, Some(1.0)).unwrap();
-    eprintln!("rate {:?} beat error {}", a.rate_s_per_day, a.beat_error_ms);
-    assert!(sc.rms_ms < 0.1);
-    assert_eq!(sc.invented, 0);
-    assert_eq!(sc.missed, 0);
-    assert!((a.rate_s_per_day.unwrap() - 12.0).abs() < 0.05);
-    assert!((a.beat_error_ms - 1.5).abs() < 0.1);
+    let rec = synthesize(&spec(3600.0, 44_100, 20.0, 11));
+    let found = detect(&rec.samples, 44_100.0, None).expect("a beat");
+    check_exact("3600 bph", &found, &rec.ticks, 1.0, 12.0);
 }
 
-/// Every rate of the issue at 44.1 kHz, each with its own tick shape
-/// (seed): tick times within 0.1 ms RMS, rate within 0.05
-/// s/day, beat error within 0.1 ms, no invented or missed beats.
+/// Every rate of the issue, at 44.1 kHz and at a phone's 8 kHz, each with
+/// its own tick shape (seed).
 #[test]
-fn other_rates_and_phone_sampling() {
-    for (bph, sample_rate, seed) in [
-        (1800.0, 44_100, 21),
-        (2880.0, 44_100, 22),
-        (5400.0, 44_100, 23),
-        (18_000.0, 44_100, 24),
-        (28_800.0, 44_100, 25),
+fn every_rate_at_44_and_8_khz() {
+    for (bph, seed) in [
+        (1800.0, 21),
+        (2880.0, 22),
+        (5400.0, 23),
+        (18_000.0, 24),
+        (28_800.0, 25),
     ] {
-        let mut s = spec(bph, sample_rate, 20.0, seed);
-        s.duration = 300.0;
-        let rec = synthesize(&s);
-        let (ticks, _) = detect(&rec.samples, f64::from(sample_rate), None);
-        let sc = score(&ticks, &rec.ticks);
-        let times: Vec<f64> = ticks.iter().map(|t| t.time).collect();
-        let nominal = 3600.0 / bph;
-        let a = analyse_beats(&times, Some(nominal)).unwrap();
-        eprintln!(
-            "{bph} bph at {sample_rate} Hz: rms {:.4} ms (mean {:.4}), invented {}, missed {}, rate {:.4}, beat error {:.4}",
-            sc.rms_ms, sc.mean_ms, sc.invented, sc.missed, a.rate_s_per_day.unwrap(), a.beat_error_ms
-        );
-        assert!(sc.rms_ms < 0.1, "{bph} at {sample_rate}");
-        assert_eq!((sc.invented, sc.missed), (0, 0), "{bph} at {sample_rate}");
-        assert!((a.rate_s_per_day.unwrap() - 12.0).abs() < 0.05, "{bph}");
-        assert!((a.beat_error_ms - 1.5).abs() < 0.1, "{bph}");
+        for sample_rate in [44_100, 8000] {
+            let mut s = spec(bph, sample_rate, 20.0, seed);
+            s.duration = 300.0;
+            let rec = synthesize(&s);
+            let found = detect(&rec.samples, f64::from(sample_rate), None).expect("a beat");
+            let label = format!("{bph} bph at {sample_rate} Hz");
+            check_exact(&label, &found, &rec.ticks, 3600.0 / bph, 12.0);
+        }
+    }
+    let mut s = spec(3600.0, 8000, 20.0, 26);
+    s.duration = 300.0;
+    let rec = synthesize(&s);
+    let found = detect(&rec.samples, 8000.0, None).expect("a beat");
+    check_exact("3600 bph at 8000 Hz", &found, &rec.ticks, 1.0, 12.0);
+}
+
+/// In strong noise the ticks that do not stand out are reported missed,
+/// and nothing is taken for a tick: at 6 dB (a tick's peak twice the
+/// noise's RMS) and 8 dB, with and without the nominal rate given.
+#[test]
+fn strong_noise_reports_missed_beats_and_invents_none() {
+    for (snr, bph, seed) in [
+        (6.0, 3600.0, 31),
+        (6.0, 18_000.0, 32),
+        (8.0, 3600.0, 33),
+        (8.0, 28_800.0, 34),
+    ] {
+        let rec = synthesize(&spec(bph, 44_100, snr, seed));
+        for nominal in [None, Some(3600.0 / bph)] {
+            let label = format!("{snr} dB, {bph} bph, nominal {nominal:?}");
+            let Some(found) = detect(&rec.samples, 44_100.0, nominal) else {
+                eprintln!("{label}: no beat found");
+                assert!(nominal.is_none(), "{label}");
+                continue;
+            };
+            let sc = score(&found.ticks, &rec.ticks);
+            eprintln!(
+                "{label}: matched {} of {}, invented {}, missed {} (reported {})",
+                sc.matched,
+                rec.ticks.len(),
+                sc.invented,
+                sc.missed,
+                found.reported
+            );
+            assert_eq!(sc.invented, 0, "{label}");
+            // Every beat of the record is accounted for: found, or reported.
+            assert!(
+                found.ticks.len() + found.reported + 2 >= rec.ticks.len() || found.ticks.is_empty(),
+                "{label}"
+            );
+        }
     }
 }
 
-/// Phone sampling (8 kHz): no tick time is wrong; a tick whose first sound
-/// is lost under the noise is reported missed, never timed on its drop.
+/// Ticks left out (a knock covered them, or the clock hesitated) are
+/// reported missed, never filled in.
 #[test]
-fn phone_sampling_times_no_tick_wrongly() {
-    for (bph, seed) in [(3600.0, 26), (18_000.0, 27)] {
-        let mut s = spec(bph, 8000, 20.0, seed);
-        s.duration = 300.0;
-        let rec = synthesize(&s);
-        let (ticks, reported) = detect(&rec.samples, 8000.0, None);
-        let sc = score(&ticks, &rec.ticks);
-        let times: Vec<f64> = ticks.iter().map(|t| t.time).collect();
-        let a = analyse_beats(&times, Some(3600.0 / bph)).unwrap();
-        eprintln!(
-            "{bph} bph at 8 kHz: rms {:.4} ms, invented {}, missed {} (reported {reported}) of {}, rate {:.4}, beat error {:.4}",
-            sc.rms_ms, sc.invented, sc.missed, rec.ticks.len(), a.rate_s_per_day.unwrap(), a.beat_error_ms
-        );
-        assert!(sc.rms_ms < 0.1);
-        assert_eq!(sc.invented, 0, "{bph}");
-        assert!(reported >= sc.missed, "{bph}");
-        assert!((a.rate_s_per_day.unwrap() - 12.0).abs() < 0.05, "{bph}");
-        assert!((a.beat_error_ms - 1.5).abs() < 0.1, "{bph}");
+fn missing_ticks_are_reported() {
+    let mut s = spec(5400.0, 44_100, 20.0, 41);
+    s.duration = 300.0;
+    s.missing = 0.03;
+    let rec = synthesize(&s);
+    let found = detect(&rec.samples, 44_100.0, None).expect("a beat");
+    let sc = score(&found.ticks, &rec.ticks);
+    eprintln!(
+        "3% left out: matched {} of {}, {} left out, invented {}, reported {}",
+        sc.matched,
+        rec.ticks.len(),
+        rec.missing.len(),
+        sc.invented,
+        found.reported
+    );
+    assert!(rec.missing.len() > 5);
+    assert_eq!((sc.invented, sc.missed), (0, 0));
+    assert_eq!(found.reported, rec.missing.len());
+}
+
+/// A second generator, independent of the library's: each sound a burst
+/// of band-limited noise (not resonances), the drop 1.6 times louder than
+/// the unlocking and 12 ms after it, a slow fade of the level (the phone
+/// moved), no room. The first sound is the tick.
+#[test]
+fn another_generator_with_a_louder_drop() {
+    let rate: f64 = 22_050.0;
+    let beat = 3600.0 / 4320.0 / (1.0 - 30.0 / 86_400.0); // 4320 bph losing 30 s/day
+    let duration = 240.0;
+    let n = (duration * rate) as usize;
+    let mut state = 0x2545_F491_4F6C_DD1D_u64;
+    let mut noise = move || {
+        // xorshift64*, uniform in [-1, 1).
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        (state.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    };
+    let burst: Vec<f64> = {
+        // Noise through a two-pole resonator at 2.7 kHz, decaying in 0.8 ms.
+        let (f, r) = (2700.0 / rate, (-1.0 / (0.8e-3 * rate)).exp());
+        let (a1, a2) = (2.0 * r * (std::f64::consts::TAU * f).cos(), -r * r);
+        let (mut y1, mut y2) = (0.0, 0.0);
+        let raw: Vec<f64> = (0..(0.01 * rate) as usize)
+            .map(|i| {
+                let x = if i < 12 { noise() } else { 0.0 };
+                let y = x + a1 * y1 + a2 * y2;
+                y2 = y1;
+                y1 = y;
+                y
+            })
+            .collect();
+        let peak = raw.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        raw.iter().map(|v| v / peak).collect()
+    };
+    let mut samples = vec![0.0_f64; n];
+    let mut truth = Vec::new();
+    let mut t: f64 = 0.3;
+    let mut k = 0;
+    while t + 0.05 < duration {
+        let shift = if k % 2 == 1 { 2.0e-3 } else { 0.0 };
+        let onset = t + shift;
+        truth.push(onset);
+        let level = 0.3 * (1.0 - 0.5 * onset / duration);
+        for (gain, at) in [(level, onset), (1.6 * level, onset + 0.012)] {
+            let first = (at * rate).ceil() as usize;
+            // Linear interpolation of the burst at the exact onset.
+            let frac = first as f64 - at * rate;
+            for (j, s) in samples
+                .iter_mut()
+                .skip(first)
+                .take(burst.len() - 1)
+                .enumerate()
+            {
+                let v = burst[j] * (1.0 - frac) + burst[j + 1] * frac;
+                *s += gain * v;
+            }
+        }
+        t += beat;
+        k += 1;
     }
+    let samples: Vec<f32> = samples
+        .iter()
+        .map(|&v| (v + 0.01 * noise()) as f32)
+        .collect();
+    let found = detect(&samples, rate, None).expect("a beat");
+    let sc = score(&found.ticks, &truth);
+    let times: Vec<f64> = found.ticks.iter().map(|t| t.time).collect();
+    let a = analyse_beats(&times, Some(3600.0 / 4320.0)).unwrap();
+    eprintln!(
+        "second generator: rms {:.4} ms, matched {} of {}, invented {}, rate {:.3}, beat error {:.3}",
+        sc.rms_ms,
+        sc.matched,
+        truth.len(),
+        sc.invented,
+        a.rate_s_per_day.unwrap(),
+        a.beat_error_ms
+    );
+    assert_eq!((sc.invented, sc.missed), (0, 0));
+    assert!(sc.rms_ms < 0.1);
+    assert!((a.rate_s_per_day.unwrap() + 30.0).abs() < 0.05);
+    assert!((a.beat_error_ms - 2.0).abs() < 0.1);
 }

@@ -11,8 +11,11 @@ use crate::output::{self, num, Summary};
 use crate::units::parse_number;
 use pendulum_theory::fitting::beats::BeatStream;
 use pendulum_theory::listening::detect::{
-    beat_period, coarse_onsets, drop_outliers, envelope_rate, Envelope, Refiner,
+    beat_period, clean, envelope_rate, Envelope, OnsetTracker, Refiner,
 };
+
+/// Seconds of the recording the beat period is found from.
+const PERIOD_SPAN_S: f64 = 300.0;
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -60,35 +63,60 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         Some(c) => c - 1,
         None => louder_channel(&args.file)?,
     };
-    // Pass 1: the envelope.
+    // Pass 1: the beat, from the envelope of the first five minutes.
     let info = info(&args.file)?;
     let rate = f64::from(info.sample_rate);
     let mut env = Envelope::new(rate);
-    decode(&args.file, channel, |block| env.push(block))?;
-    let duration = env.samples as f64 / rate;
+    decode(&args.file, channel, Some(PERIOD_SPAN_S), |block| {
+        env.push(block)
+    })?;
     let env_rate = envelope_rate(&env, rate);
     let beat = match nominal_period {
-        Some(p) => 0.5 * p,
+        // Near the nominal beat (a clock 3% off is 43 minutes a day off).
+        Some(p) => {
+            beat_period(&env.values, env_rate, 0.97 * 0.5 * p, 1.03 * 0.5 * p).unwrap_or(0.5 * p)
+        }
         None => beat_period(&env.values, env_rate, 0.05, 2.0).ok_or_else(|| {
             CliError::other(format!(
-                "{file}: no regular ticking found (silence, noise, or fewer than a few beats); \
+                "{file}: no regular ticking found (silence, noise, or fewer than four beats); \
                  give --bph if the clock is there"
             ))
         })?,
     };
-    let coarse = coarse_onsets(&env.values, env_rate, beat);
-    if coarse.onsets.len() < 4 {
+    // Pass 2: each beat's onset on the envelope, streamed (a recording
+    // within the first pass is not decoded again).
+    let mut tracker = OnsetTracker::new(env_rate, beat);
+    let whole = (env.samples as f64) < PERIOD_SPAN_S * rate;
+    let samples = if whole {
+        tracker.push(&env.values);
+        env.samples
+    } else {
+        let mut env = Envelope::new(rate);
+        decode(&args.file, channel, None, |block| {
+            env.push(block);
+            tracker.push(&env.values);
+            env.values.clear();
+        })?;
+        env.samples
+    };
+    let duration = samples as f64 / rate;
+    let coarse = tracker.finish();
+    let snr_db = 20.0 * (coarse.peak / coarse.floor.max(f64::MIN_POSITIVE)).log10();
+    // Pass 3: each tick refined on the samples.
+    let mut refiner = Refiner::new(rate, &coarse);
+    decode(&args.file, channel, None, |block| refiner.push(block))?;
+    let (ticks, rejected) = refiner.finish();
+    let (ticks, dropped, _) = clean(ticks);
+    let rejected = rejected + dropped;
+    if ticks.len() < 4 {
         return Err(CliError::other(format!(
-            "{file}: {} ticks found; at least 4 beats are needed",
-            coarse.onsets.len()
+            "{file}: {} of about {} beats stand out of the noise (signal to noise {} dB); \
+             record nearer the clock, or in a quieter room",
+            ticks.len(),
+            (duration / beat).round(),
+            num(snr_db, 2)
         )));
     }
-    // Pass 2: each tick refined on the samples.
-    let mut refiner = Refiner::new(rate, &coarse);
-    decode(&args.file, channel, |block| refiner.push(block))?;
-    let (ticks, rejected) = refiner.finish();
-    let (ticks, dropped) = drop_outliers(ticks);
-    let rejected = rejected + dropped;
     let scale = 1.0 / (1.0 + ppm * 1e-6);
     let mut stream = BeatStream::new();
     for t in &ticks {
@@ -128,7 +156,7 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         jitter_ms: a.jitter_ms,
         missed: coarse.missed + rejected + a.repaired.missed,
         extra: a.repaired.doubled,
-        snr_db: 20.0 * (coarse.peak / coarse.floor.max(f64::MIN_POSITIVE)).log10(),
+        snr_db,
         allan_deviation: allan_json(&a.allan_deviation),
         ticks_file,
     };

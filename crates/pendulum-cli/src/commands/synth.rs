@@ -2,14 +2,14 @@
 
 use super::common;
 use crate::args::SynthTicksArgs;
-use crate::audio::wav_bytes;
+use crate::audio::{pcm16, wav_header};
 use crate::error::CliError;
 use crate::file::{AtomicFile, CsvFile};
 use crate::output::num;
 use crate::units::{parse_number, Dimension};
-use pendulum_theory::listening::synth::{synthesize, TickRecording};
+use pendulum_theory::listening::synth::{Synthesizer, TickRecording};
 
-/// Longer recordings are refused: the samples are made in memory.
+/// Longer recordings are refused (a WAV file holds at most 4 GiB).
 const MAX_DURATION_S: f64 = 4.0 * 3600.0;
 
 pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
@@ -69,10 +69,39 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
             "must be less than a fifth of the beat",
         ));
     }
-    let recording = synthesize(&spec);
-    let bytes = wav_bytes(&recording.samples, args.sample_rate)?;
+    // The samples are made and written a block at a time: an hour at
+    // 48 kHz is 345 MB of WAV but a few MB of memory.
+    let mut recording = Synthesizer::new(&spec);
+    let header = wav_header(recording.len() as u64, args.sample_rate).ok_or_else(|| {
+        CliError::flag(
+            "--duration",
+            format!(
+                "{} s at {} Hz passes the 4 GiB a WAV file can hold",
+                num(duration, 6),
+                args.sample_rate
+            ),
+        )
+    })?;
     let mut file = AtomicFile::create(&args.output, "OUT.wav")?;
-    std::io::Write::write_all(file.writer(), &bytes).map_err(|e| file.write_error(e))?;
+    file.writer()
+        .write_all(&header)
+        .map_err(|e| file.write_error(e))?;
+    let mut block = vec![0.0_f32; 1 << 16];
+    let mut bytes = Vec::with_capacity(2 * block.len());
+    loop {
+        if crate::interrupt::requested() {
+            return Err(crate::interrupt::error());
+        }
+        let n = recording.fill(&mut block);
+        if n == 0 {
+            break;
+        }
+        bytes.clear();
+        pcm16(&block[..n], &mut bytes);
+        file.writer()
+            .write_all(&bytes)
+            .map_err(|e| file.write_error(e))?;
+    }
     let written = file.commit()?;
     if let Some(path) = &args.truth {
         let mut truth = CsvFile::create(path, "--truth", "time_s")?;

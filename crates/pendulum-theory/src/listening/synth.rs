@@ -52,6 +52,7 @@ pub struct Synthesized {
 }
 
 /// splitmix64 with Box-Muller: small, seeded, reproducible everywhere.
+#[derive(Clone, Debug)]
 struct Random(u64);
 
 impl Random {
@@ -117,87 +118,208 @@ impl Sound {
     }
 }
 
-/// Synthesises the recording of `spec`.
-pub fn synthesize(spec: &TickRecording) -> Synthesized {
-    let mut random = Random(spec.seed);
-    let rate = f64::from(spec.sample_rate);
-    let n = (spec.duration * rate).max(0.0) as usize;
-    let mut out = vec![0.0_f64; n];
-    let tick = Sound::random(&mut random, rate, 3);
-    let drop = Sound::random(&mut random, rate, 3);
-    let drop_delay = random.between(8e-3, 20e-3);
-    let drop_gain = random.between(0.4, 0.8);
-    let echoes: Vec<(f64, f64)> = if spec.reverb_s > 0.0 {
-        (0..40)
-            .map(|_| {
-                let delay = random.between(3e-3, spec.reverb_s);
-                let gain = 0.3 * 10f64.powf(-3.0 * delay / spec.reverb_s);
-                (delay, if random.uniform() < 0.5 { -gain } else { gain })
-            })
-            .collect()
-    } else {
-        Vec::new()
-    };
-    let beat = 1800.0 / (spec.beats_per_hour / 2.0) / (1.0 + spec.rate_s_per_day / 86_400.0);
-    // The first tick a little after the start, as a recording begins.
-    let start = random.between(0.05, 0.05 + beat);
-    let (mut ticks, mut missing) = (Vec::new(), Vec::new());
-    let mut k = 0_u64;
-    loop {
-        let shift = if k % 2 == 1 {
-            spec.beat_error_ms * 1e-3
+/// A recording being synthesised block by block, in fixed memory (but for
+/// the list of tick times): for recordings of hours.
+#[derive(Clone, Debug)]
+pub struct Synthesizer {
+    rate: f64,
+    length: usize,
+    position: usize,
+    tick: Sound,
+    drop: Sound,
+    drop_delay: f64,
+    drop_gain: f64,
+    /// Room echoes: delay s, gain.
+    echoes: Vec<(f64, f64)>,
+    /// Every tick present: onset s, gain.
+    events: Vec<(f64, f64)>,
+    /// The first event that can still sound.
+    first_live: usize,
+    /// How long after its onset an event's sounds last, s.
+    span: f64,
+    noise_level: f64,
+    hum_level: f64,
+    hum_phase: f64,
+    noise: Random,
+    /// The true onset of every tick present, s.
+    pub ticks: Vec<f64>,
+    /// The times of the ticks left out, s.
+    pub missing: Vec<f64>,
+}
+
+impl Synthesizer {
+    /// A synthesiser of `spec`; the tick times are drawn at once.
+    pub fn new(spec: &TickRecording) -> Self {
+        let mut random = Random(spec.seed);
+        let rate = f64::from(spec.sample_rate);
+        let length = (spec.duration * rate).max(0.0) as usize;
+        let tick = Sound::random(&mut random, rate, 3);
+        let drop = Sound::random(&mut random, rate, 3);
+        let drop_delay = random.between(8e-3, 20e-3);
+        let drop_gain = random.between(0.4, 0.8);
+        let echoes: Vec<(f64, f64)> = if spec.reverb_s > 0.0 {
+            (0..40)
+                .map(|_| {
+                    let delay = random.between(3e-3, spec.reverb_s);
+                    let gain = 0.3 * 10f64.powf(-3.0 * delay / spec.reverb_s);
+                    (delay, if random.uniform() < 0.5 { -gain } else { gain })
+                })
+                .collect()
         } else {
-            0.0
+            Vec::new()
         };
-        let t = start + k as f64 * beat + shift;
-        if t + drop_delay + drop.length() >= spec.duration {
-            break;
+        let beat = 1800.0 / (spec.beats_per_hour / 2.0) / (1.0 + spec.rate_s_per_day / 86_400.0);
+        // The first tick a little after the start, as a recording begins.
+        let start = random.between(0.05, 0.05 + beat);
+        let (mut ticks, mut missing, mut events) = (Vec::new(), Vec::new(), Vec::new());
+        let mut k = 0_u64;
+        loop {
+            let shift = if k % 2 == 1 {
+                spec.beat_error_ms * 1e-3
+            } else {
+                0.0
+            };
+            let t = start + k as f64 * beat + shift;
+            if t + drop_delay + drop.length() >= spec.duration {
+                break;
+            }
+            k += 1;
+            if random.uniform() < spec.missing {
+                missing.push(t);
+                continue;
+            }
+            ticks.push(t);
+            events.push((t, random.between(0.9, 1.1)));
         }
-        k += 1;
-        if random.uniform() < spec.missing {
-            missing.push(t);
-            continue;
+        let longest_echo = echoes.iter().map(|e| e.0).fold(0.0, f64::max);
+        let span = drop_delay + tick.length().max(drop.length()) + longest_echo;
+        let hum_phase = random.between(0.0, std::f64::consts::TAU);
+        Self {
+            rate,
+            length,
+            position: 0,
+            tick,
+            drop,
+            drop_delay,
+            drop_gain,
+            echoes,
+            events,
+            first_live: 0,
+            span,
+            noise_level: 10f64.powf(-spec.snr_db / 20.0),
+            hum_level: 10f64.powf(spec.hum_db / 20.0),
+            hum_phase,
+            // The noise from its own stream, so that blocks of any size
+            // give the same recording.
+            noise: Random(spec.seed ^ 0x5DEE_CE66_D1CE_4E5B),
+            ticks,
+            missing,
         }
-        ticks.push(t);
-        let gain = random.between(0.9, 1.1);
-        let mut events: Vec<(f64, f64, &Sound)> =
-            vec![(t, gain, &tick), (t + drop_delay, gain * drop_gain, &drop)];
-        for &(delay, g) in &echoes {
-            events.push((t + delay, gain * g, &tick));
-            events.push((t + drop_delay + delay, gain * drop_gain * g, &drop));
+    }
+
+    /// Samples in the whole recording.
+    pub fn len(&self) -> usize {
+        self.length
+    }
+
+    /// Whether the recording has no samples.
+    pub fn is_empty(&self) -> bool {
+        self.length == 0
+    }
+
+    /// Writes the next samples (in [-1, 1], the tick's peak at half of full
+    /// scale) into `out`; returns how many (fewer than `out.len()` only at
+    /// the end, 0 after it).
+    pub fn fill(&mut self, out: &mut [f32]) -> usize {
+        let count = out.len().min(self.length - self.position);
+        let (first, last) = (self.position, self.position + count);
+        let mut block = vec![0.0_f64; count];
+        let end_time = last as f64 / self.rate;
+        while self.first_live < self.events.len()
+            && self.events[self.first_live].0 + self.span < first as f64 / self.rate
+        {
+            self.first_live += 1;
         }
-        for (onset, g, sound) in events {
-            let first = (onset * rate).ceil().max(0.0) as usize;
-            let last = (((onset + sound.length()) * rate) as usize).min(n);
-            for (i, sample) in out.iter_mut().enumerate().take(last).skip(first) {
-                *sample += g * sound.value(i as f64 / rate - onset);
+        for &(t, gain) in self.events[self.first_live..]
+            .iter()
+            .take_while(|e| e.0 <= end_time)
+        {
+            let mut sounds: Vec<(f64, f64, &Sound)> = vec![
+                (t, gain, &self.tick),
+                (t + self.drop_delay, gain * self.drop_gain, &self.drop),
+            ];
+            for &(delay, g) in &self.echoes {
+                sounds.push((t + delay, gain * g, &self.tick));
+                sounds.push((
+                    t + self.drop_delay + delay,
+                    gain * self.drop_gain * g,
+                    &self.drop,
+                ));
+            }
+            for (onset, g, sound) in sounds {
+                let from = ((onset * self.rate).ceil().max(0.0) as usize).max(first);
+                let to = (((onset + sound.length()) * self.rate) as usize).min(last);
+                for i in from..to {
+                    block[i - first] += g * sound.value(i as f64 / self.rate - onset);
+                }
             }
         }
+        for (j, (slot, value)) in out.iter_mut().zip(&block).enumerate() {
+            let t = (first + j) as f64 / self.rate;
+            let phase = std::f64::consts::TAU * 50.0 * t + self.hum_phase;
+            let mains = phase.sin() + 0.3 * (3.0 * phase).sin();
+            let v = value + self.hum_level * mains + self.noise_level * self.noise.gaussian();
+            // Leave head room: the tick's peak at half of full scale.
+            *slot = (0.5 * v).clamp(-1.0, 1.0) as f32;
+        }
+        self.position = last;
+        count
     }
-    let noise = 10f64.powf(-spec.snr_db / 20.0);
-    let hum = 10f64.powf(spec.hum_db / 20.0);
-    let phase = random.between(0.0, std::f64::consts::TAU);
-    for (i, sample) in out.iter_mut().enumerate() {
-        let t = i as f64 / rate;
-        let mains = (std::f64::consts::TAU * 50.0 * t + phase).sin()
-            + 0.3 * (std::f64::consts::TAU * 150.0 * t + phase).sin();
-        *sample += hum * mains + noise * random.gaussian();
-    }
-    // Leave head room: the tick's peak at half of full scale.
-    let samples = out
-        .iter()
-        .map(|v| (0.5 * v).clamp(-1.0, 1.0) as f32)
-        .collect();
+}
+
+/// Synthesises the whole recording of `spec` in memory.
+pub fn synthesize(spec: &TickRecording) -> Synthesized {
+    let mut synth = Synthesizer::new(spec);
+    let mut samples = vec![0.0_f32; synth.len()];
+    synth.fill(&mut samples);
     Synthesized {
         samples,
-        ticks,
-        missing,
+        ticks: synth.ticks,
+        missing: synth.missing,
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn blocks_of_any_size_give_the_same_recording() {
+        let spec = TickRecording {
+            sample_rate: 8000,
+            duration: 3.0,
+            beats_per_hour: 18_000.0,
+            rate_s_per_day: 0.0,
+            beat_error_ms: 1.0,
+            snr_db: 20.0,
+            reverb_s: 0.3,
+            hum_db: -30.0,
+            missing: 0.1,
+            seed: 7,
+        };
+        let whole = synthesize(&spec).samples;
+        let mut synth = Synthesizer::new(&spec);
+        let mut pieces = Vec::new();
+        let mut block = vec![0.0_f32; 777];
+        loop {
+            let n = synth.fill(&mut block);
+            if n == 0 {
+                break;
+            }
+            pieces.extend_from_slice(&block[..n]);
+        }
+        assert_eq!(pieces, whole);
+    }
 
     #[test]
     fn ticks_follow_rate_and_beat_error() {

@@ -5,10 +5,10 @@
 //! radian, dry friction angle `r` as in the book's section 2-4).
 //!
 //! The drivers wire the pieces of [`crate::integrate`]: DOP853 (or Verner
-//! 9(8)) steps under the step-size controller ([`adaptive`]), or Yoshida's
-//! symplectic composition at a fixed step ([`symplectic`]); on each
+//! 9(8)) steps under the step-size controller (`adaptive.rs`), or Yoshida's
+//! symplectic composition at a fixed step (`symplectic.rs`); on each
 //! accepted step, a sign change of `θ'` in the direction of motion is a
-//! turning point, located on the step's interpolant ([`run`]). The drivers
+//! turning point, located on the step's interpolant (`run.rs`). The drivers
 //! work in scaled time `τ = ω_n t`, so a pendulum of any length takes the
 //! same steps, and the error control follows the swing's size as it decays. With dry friction the sign of `θ'` is held fixed through each
 //! half swing (the equation is smooth there) and the integration restarts

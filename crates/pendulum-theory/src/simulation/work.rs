@@ -28,7 +28,7 @@ pub struct WorkEstimate {
     /// Integration steps (quarter periods for the closed form).
     pub steps: f64,
     /// Seconds of computing on one core of the reference machine (see
-    /// [`NANOSECONDS_PER_STEP`]).
+    /// `NANOSECONDS_PER_STEP`).
     pub seconds: f64,
     /// What sets the number of steps.
     pub limit: Limit,

@@ -1,0 +1,400 @@
+//! Each beat's onset on the envelope, streamed.
+
+use super::{median, Coarse};
+
+/// Fraction of the typical tick's rise above the floor at which a sound
+/// begins (the envelope's level that separates sounds from the noise).
+const SOUND_LEVEL: f64 = 0.3;
+/// Fraction of the typical tick's rise a sound must reach to be a tick,
+/// in a wide window (before the beat is known, or after a gap) and in the
+/// narrow window of a tracked beat (where a noise crest is unlikely, and a
+/// weak tick is better refined than lost).
+const TICK_LEVEL: [f64; 2] = [0.5, 0.35];
+/// The band-pass's settling at the start of a recording, s: no tick is
+/// looked for before it.
+const SETTLE: f64 = 0.01;
+/// Onsets over which the local beat is fitted.
+const LOCAL_BEATS: usize = 32;
+/// Tick peaks over which the typical peak is the median.
+const TYPICAL_PEAKS: usize = 32;
+
+/// Each beat's onset on the envelope, streamed: envelope values go in as
+/// the decoder produces them; a beat is decided as soon as the envelope
+/// covers its window, and what no later beat can need is let go, so the
+/// memory is a few beats of envelope whatever the recording's length.
+///
+/// Method: the first tick is found on the envelope folded at the beat (the mean
+/// of up to 16 beats: its loudest sound, or the earliest sound before it
+/// that reaches half its rise; the unlocking comes before the drop, whichever
+/// is louder). Each following beat is predicted from the
+/// last onset of the same side (tick or tock: the beat error shifts one
+/// side) at the local beat (the least-squares slope of the last 32 onsets
+/// on their beat numbers, so that a clock far off its nominal rate stays
+/// locked). The envelope around the prediction is cut into sounds (runs
+/// above the floor plus 30% of the typical tick's rise); a sound is a tick
+/// candidate when its peak reaches half that rise (35% in the narrow
+/// window of a tracked beat); the candidate whose
+/// onset (the crossing of 30% of its own rise, interpolated) is nearest the
+/// prediction is the beat's onset. A beat with no candidate is missed.
+/// The floor is the median envelope of the last ten seconds, the typical
+/// peak of each side the median of its last 32 ticks: both follow a
+/// recording whose level changes.
+#[derive(Clone, Debug)]
+pub struct OnsetTracker {
+    rate: f64,
+    beat: f64,
+    values: Vec<f32>,
+    /// Index of `values[0]` in the whole envelope.
+    offset: usize,
+    /// Every 8th envelope value of the last ten seconds, for the floor.
+    floor_sample: std::collections::VecDeque<f32>,
+    floor: f64,
+    floor_updated: usize,
+    locked: Option<f64>,
+    onsets: Vec<(u64, f64)>,
+    /// The last tick peaks of each side.
+    peaks: [std::collections::VecDeque<f64>; 2],
+    /// The typical peak of each side (a clock out of beat, or with
+    /// unequal pallets, ticks louder on one side).
+    typical: [f64; 2],
+    missed: usize,
+    run_of_misses: usize,
+    k: u64,
+    done: bool,
+    /// Floors seen at each update, for the reported floor.
+    floors: Vec<f64>,
+    total: usize,
+}
+
+/// A sound in the envelope: its onset (s) and peak.
+#[derive(Clone, Copy, Debug)]
+struct Sound {
+    onset: f64,
+    peak: f64,
+}
+
+impl OnsetTracker {
+    /// A tracker for an envelope of `rate` values per second and a beat of
+    /// `beat` s (from [`super::beat_period`], or the nominal one).
+    pub fn new(rate: f64, beat: f64) -> Self {
+        Self {
+            rate,
+            beat,
+            values: Vec::new(),
+            offset: 0,
+            floor_sample: std::collections::VecDeque::new(),
+            floor: 0.0,
+            floor_updated: 0,
+            locked: None,
+            onsets: Vec::new(),
+            peaks: Default::default(),
+            typical: [0.0; 2],
+            missed: 0,
+            run_of_misses: 0,
+            k: 0,
+            done: false,
+            floors: Vec::new(),
+            total: 0,
+        }
+    }
+
+    /// Feeds envelope values.
+    pub fn push(&mut self, values: &[f32]) {
+        for (i, &v) in values.iter().enumerate() {
+            if (self.total + i) % 8 == 0 {
+                self.floor_sample.push_back(v);
+                if self.floor_sample.len() as f64 > 10.0 * self.rate / 8.0 {
+                    self.floor_sample.pop_front();
+                }
+            }
+        }
+        self.values.extend_from_slice(values);
+        self.total += values.len();
+        self.advance(false);
+    }
+
+    /// Ends the stream: the onsets found.
+    pub fn finish(mut self) -> Coarse {
+        self.advance(true);
+        let mut floors = self.floors.clone();
+        let floor = if floors.is_empty() {
+            self.current_floor()
+        } else {
+            median(&mut floors)
+        };
+        Coarse {
+            onsets: self.onsets,
+            missed: self.missed,
+            floor,
+            peak: if self.typical[0] > 0.0 {
+                0.5 * (self.typical[0] + self.typical[1])
+            } else {
+                floor
+            },
+        }
+    }
+
+    fn current_floor(&self) -> f64 {
+        let mut s: Vec<f64> = self.floor_sample.iter().map(|&v| f64::from(v)).collect();
+        median(&mut s)
+    }
+
+    fn refresh_floor(&mut self) {
+        if self.floors.is_empty() || self.total >= self.floor_updated + self.rate as usize {
+            self.floor = self.current_floor();
+            self.floors.push(self.floor);
+            self.floor_updated = self.total;
+        }
+    }
+
+    /// The envelope value at whole-envelope index `i`.
+    fn at(&self, i: usize) -> f64 {
+        f64::from(self.values[i - self.offset])
+    }
+
+    /// Index of time `t` s, clamped to what is buffered.
+    fn index(&self, t: f64) -> usize {
+        let i = (t * self.rate).round().max(0.0) as usize;
+        i.clamp(self.offset, self.offset + self.values.len())
+    }
+
+    /// The sounds whose peaks lie in `[from, to)` s, the envelope above
+    /// `floor + SOUND_LEVEL (reference - floor)`.
+    fn sounds(&self, from: f64, to: f64, reference: f64) -> Vec<Sound> {
+        let (a, b) = (self.index(from), self.index(to));
+        let floor = self.floor;
+        let level = floor + SOUND_LEVEL * (reference - floor);
+        let mut out = Vec::new();
+        let mut i = a;
+        while i < b {
+            if self.at(i) < level {
+                i += 1;
+                continue;
+            }
+            // A run above the level: its peak.
+            let mut peak_at = i;
+            while i < b && self.at(i) >= level {
+                if self.at(i) > self.at(peak_at) {
+                    peak_at = i;
+                }
+                i += 1;
+            }
+            let peak = self.at(peak_at);
+            // Its onset: back from the peak to 30% of its own rise (at
+            // most 25 ms, never before the buffer).
+            let own = floor + SOUND_LEVEL * (peak - floor);
+            let earliest = peak_at
+                .saturating_sub((0.025 * self.rate) as usize)
+                .max(self.offset);
+            let mut j = peak_at;
+            while j > earliest && self.at(j - 1) >= own {
+                j -= 1;
+            }
+            let before = if j > self.offset {
+                self.at(j - 1)
+            } else {
+                floor
+            };
+            let now = self.at(j);
+            let fraction = if now > before && before < own {
+                ((own - before) / (now - before)).clamp(0.0, 1.0)
+            } else {
+                1.0
+            };
+            out.push(Sound {
+                onset: (j as f64 - 1.0 + fraction) / self.rate,
+                peak,
+            });
+        }
+        out
+    }
+
+    /// The first beat's onset, s, from the envelope folded at the beat
+    /// (the mean of up to 16 beats, so that one loud noise or a missing
+    /// tick does not decide): its loudest sound, or the earliest sound
+    /// before it (within 25 ms, and a third of a beat) that reaches half
+    /// its rise: the unlocking before a louder drop. Also sets the typical
+    /// tick peak (the median of the beats' maxima at that phase).
+    fn lock(&mut self, buffered: f64) -> Option<f64> {
+        let width = (self.beat * self.rate).round() as usize;
+        let cycles = ((buffered - SETTLE) / self.beat).floor().min(16.0) as usize;
+        if width < 4 || cycles == 0 {
+            return None;
+        }
+        let first = self.index(SETTLE);
+        let at = |c: usize, j: usize| -> usize {
+            first + (c as f64 * self.beat * self.rate).round() as usize + j
+        };
+        let last = self.offset + self.values.len();
+        let mut profile = vec![0.0_f64; width];
+        for (j, p) in profile.iter_mut().enumerate() {
+            let cells: Vec<f64> = (0..cycles)
+                .map(|c| at(c, j))
+                .filter(|&i| i < last)
+                .map(|i| self.at(i))
+                .collect();
+            *p = cells.iter().sum::<f64>() / cells.len().max(1) as f64;
+        }
+        let (loudest, &max) = profile
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(b.1))?;
+        let floor = self.floor;
+        if max <= floor {
+            return None;
+        }
+        // Back from the loudest, cyclically, for an earlier sound.
+        let back = ((0.025_f64).min(self.beat / 3.0) * self.rate) as usize;
+        let half = floor + 0.5 * (max - floor);
+        let cyclic = |j: isize| profile[j.rem_euclid(width as isize) as usize];
+        let loudest = loudest as isize;
+        let mut onset = loudest;
+        for j in (loudest - back as isize)..=loudest {
+            if cyclic(j) >= half && cyclic(j - 1) < half {
+                onset = j;
+                break;
+            }
+        }
+        // The onset proper: back to 30% of the rise.
+        let level = floor + SOUND_LEVEL * (max - floor);
+        while onset > loudest - back as isize - 5 && cyclic(onset - 1) >= level {
+            onset -= 1;
+        }
+        let phase = onset.rem_euclid(width as isize) as usize;
+        // The typical tick: the median of each beat's maximum near it.
+        let near = (0.003 * self.rate) as usize;
+        let mut maxima: Vec<f64> = (0..cycles)
+            .filter_map(|c| {
+                let centre = at(c, phase);
+                let (a, b) = (
+                    centre.saturating_sub(near).max(self.offset),
+                    (centre + near).min(last),
+                );
+                (a..b).map(|i| self.at(i)).max_by(f64::total_cmp)
+            })
+            .collect();
+        self.typical = [median(&mut maxima); 2];
+        Some(SETTLE + phase as f64 / self.rate)
+    }
+
+    /// The local beat: the least-squares slope of the last onsets.
+    fn local_beat(&self) -> f64 {
+        let recent = &self.onsets[self.onsets.len().saturating_sub(LOCAL_BEATS)..];
+        if recent.len() < 8 {
+            return self.beat;
+        }
+        let n = recent.len() as f64;
+        let (mk, mt) = recent
+            .iter()
+            .fold((0.0, 0.0), |(a, b), &(k, t)| (a + k as f64 / n, b + t / n));
+        let (sxy, sxx) = recent.iter().fold((0.0, 0.0), |(a, b), &(k, t)| {
+            let dk = k as f64 - mk;
+            (a + dk * (t - mt), b + dk * dk)
+        });
+        let slope = sxy / sxx;
+        // A wild slope (a run of wrong onsets) is not trusted.
+        if sxx > 0.0 && (slope / self.beat - 1.0).abs() < 0.05 {
+            slope
+        } else {
+            self.beat
+        }
+    }
+
+    fn advance(&mut self, end: bool) {
+        if self.done {
+            return;
+        }
+        let buffered = (self.offset + self.values.len()) as f64 / self.rate;
+        if self.locked.is_none() {
+            let span = (8.0 * self.beat).max(2.0).min(16.0 * self.beat);
+            if buffered < span + SETTLE && !end {
+                return;
+            }
+            self.refresh_floor();
+            match self.lock(buffered) {
+                Some(start) => self.locked = Some(start),
+                None => {
+                    self.done = true;
+                    return;
+                }
+            }
+        }
+        let start = self.locked.unwrap_or(0.0);
+        loop {
+            let beat = self.local_beat();
+            let k = self.k;
+            let same = self.onsets.iter().rev().find(|(j, _)| (k - j) % 2 == 0);
+            let predicted = match (same, self.onsets.last()) {
+                (Some(&(j, t)), _) | (None, Some(&(j, t))) => t + (k - j) as f64 * beat,
+                (None, None) => start + k as f64 * beat,
+            };
+            // The window: wide until the beat is known from the onsets
+            // themselves, then a few ms (a clock's beat does not wander
+            // more), wide again after a run of misses (the clock was
+            // stopped or touched, or the recording has a gap).
+            let gap = same.map_or(1, |&(j, _)| k - j) as f64;
+            let half = if self.onsets.len() < 4 || self.run_of_misses >= 4 {
+                0.4 * self.beat
+            } else if self.onsets.len() < 8 {
+                (0.004 + 0.02 * self.beat).min(0.4 * self.beat)
+            } else {
+                (0.003 + 5e-4 * gap * self.beat).min(0.4 * self.beat)
+            };
+            // The window, and 25 ms before it for a sound's rise.
+            if predicted + half + 0.03 > buffered {
+                if end {
+                    if predicted <= buffered - 0.02 {
+                        self.decide(predicted, half, buffered, half < 0.3 * self.beat);
+                    }
+                    self.done = true;
+                }
+                break;
+            }
+            self.decide(predicted, half, buffered, half < 0.3 * self.beat);
+            // Let go of what no later beat needs.
+            let keep = ((predicted - 0.05).max(0.0) * self.rate) as usize;
+            if keep > self.offset + 8192 {
+                let drop = (keep - self.offset).min(self.values.len());
+                self.values.drain(..drop);
+                self.offset += drop;
+            }
+        }
+    }
+
+    /// Decides beat `self.k`, predicted at `predicted` s.
+    fn decide(&mut self, predicted: f64, half: f64, buffered: f64, narrow: bool) {
+        self.refresh_floor();
+        let side = (self.k % 2) as usize;
+        let typical = self.typical[side];
+        let tick = self.floor + TICK_LEVEL[usize::from(narrow)] * (typical - self.floor);
+        let best = self
+            .sounds(predicted - half, (predicted + half).min(buffered), typical)
+            .into_iter()
+            .filter(|s| s.peak >= tick && (s.onset - predicted).abs() <= half && s.onset >= SETTLE)
+            .min_by(|a, b| {
+                (a.onset - predicted)
+                    .abs()
+                    .total_cmp(&(b.onset - predicted).abs())
+            });
+        match best {
+            Some(s) => {
+                self.run_of_misses = 0;
+                self.onsets.push((self.k, s.onset));
+                let peaks = &mut self.peaks[side];
+                peaks.push_back(s.peak);
+                if peaks.len() > TYPICAL_PEAKS {
+                    peaks.pop_front();
+                }
+                let mut p: Vec<f64> = peaks.iter().copied().collect();
+                self.typical[side] = median(&mut p);
+            }
+            None => {
+                if !self.onsets.is_empty() {
+                    self.missed += 1;
+                    self.run_of_misses += 1;
+                }
+            }
+        }
+        self.k += 1;
+    }
+}

@@ -61,11 +61,20 @@ pub fn decode(
         Some(s) => Extent::Frames((s * f64::from(header.sample_rate)).ceil() as u64),
         None => Extent::Whole,
     };
+    // The encoder's priming samples of an MP4 (AAC) file, which symphonia
+    // 0.5 reads from the edit list but does not trim.
+    let mut skip = mp4_priming(path).map_or(0, |(time, scale)| {
+        (time as f64 * f64::from(header.sample_rate) / f64::from(scale)).round() as u64
+    });
     let mut mono: Vec<f32> = Vec::new();
     decode_frames(path, extent, |frames, count| {
         mono.clear();
         mono.extend(frames.iter().skip(channel).step_by(count));
-        each(&mono);
+        let drop = skip.min(mono.len() as u64) as usize;
+        skip -= drop as u64;
+        if drop < mono.len() {
+            each(&mono[drop..]);
+        }
     })
 }
 
@@ -88,7 +97,12 @@ fn decode_frames(
         .format(
             &hint,
             stream,
-            &FormatOptions::default(),
+            &FormatOptions {
+                // Trim the encoder's delay and padding (MP3 LAME/Xing headers, MP4
+                // edit lists) so that times are the recording's own.
+                enable_gapless: true,
+                ..Default::default()
+            },
             &MetadataOptions::default(),
         )
         .map_err(|e| fail(format!("not a sound file symphonia can read ({e})")))?;
@@ -104,6 +118,7 @@ fn decode_frames(
         .sample_rate
         .ok_or_else(|| fail("its sample rate is not stated".into()))?;
     let channels = track.codec_params.channels.map_or(1, |c| c.count());
+    let stated = track.codec_params.n_frames;
     let info = Info {
         sample_rate,
         channels,
@@ -145,7 +160,135 @@ fn decode_frames(
         each(buf.samples(), count);
         frames += (buf.samples().len() / count) as u64;
     }
+    // A file that ends well before the length its header states was cut
+    // short (a copy or an upload that stopped): say so rather than analyse
+    // a part of it as if it were all.
+    if let (Extent::Whole, Some(stated)) = (extent, stated) {
+        let slack = (0.1 * f64::from(sample_rate)).max(0.001 * stated as f64) as u64;
+        if frames + slack < stated {
+            let rate = f64::from(sample_rate);
+            return Err(fail(format!(
+                "ends after {:.1} s of the {:.1} s its header states: the file is truncated",
+                frames as f64 / rate,
+                stated as f64 / rate
+            )));
+        }
+    }
     Ok(info)
+}
+
+/// The samples an MP4 file's audio track starts with before its content
+/// (an AAC encoder's priming: 1,024 samples from ffmpeg, 2,112 from Apple's
+/// encoders): the media time of the first edit of its edit list, in the
+/// track's own timescale (ISO/IEC 14496-12, boxes `moov/trak/edts/elst`
+/// and `moov/trak/mdia/mdhd`): `(media time, timescale)`. `None` for
+/// other files, or an MP4 without an edit list.
+fn mp4_priming(path: &Path) -> Option<(u64, u32)> {
+    use std::io::Read;
+    let mut head = [0_u8; 8];
+    let mut file = std::fs::File::open(path).ok()?;
+    file.read_exact(&mut head).ok()?;
+    if &head[4..8] != b"ftyp" {
+        return None;
+    }
+    // The moov box is small (kilobytes) but may sit after the media data:
+    // read the file's boxes one by one, keeping only moov.
+    let moov = {
+        use std::io::{Seek, SeekFrom};
+        let mut offset = 0_u64;
+        loop {
+            file.seek(SeekFrom::Start(offset)).ok()?;
+            let mut h = [0_u8; 16];
+            file.read_exact(&mut h[..8]).ok()?;
+            let mut size = u64::from(u32::from_be_bytes(h[0..4].try_into().ok()?));
+            if size == 1 {
+                file.read_exact(&mut h[8..16]).ok()?;
+                size = u64::from_be_bytes(h[8..16].try_into().ok()?);
+            }
+            if size < 8 {
+                return None;
+            }
+            if &h[4..8] == b"moov" {
+                if size > 64 << 20 {
+                    return None;
+                }
+                file.seek(SeekFrom::Start(offset)).ok()?;
+                let mut moov = vec![0_u8; usize::try_from(size).ok()?];
+                file.read_exact(&mut moov).ok()?;
+                break moov;
+            }
+            offset = offset.checked_add(size)?;
+        }
+    };
+    // The boxes inside `data`: (type, contents).
+    fn boxes(data: &[u8]) -> Vec<(&[u8], &[u8])> {
+        let mut out = Vec::new();
+        let mut at = 0_usize;
+        while at + 8 <= data.len() {
+            let size = u32::from_be_bytes([data[at], data[at + 1], data[at + 2], data[at + 3]]);
+            let (size, header) = match size {
+                0 => (data.len() - at, 8),
+                1 if at + 16 <= data.len() => {
+                    let big =
+                        u64::from_be_bytes(data[at + 8..at + 16].try_into().unwrap_or([0; 8]));
+                    (usize::try_from(big).unwrap_or(0), 16)
+                }
+                n => (n as usize, 8),
+            };
+            if size < header || at + size > data.len() {
+                break;
+            }
+            out.push((&data[at + 4..at + 8], &data[at + header..at + size]));
+            at += size;
+        }
+        out
+    }
+    let be32 = |b: &[u8], at: usize| -> Option<u32> {
+        Some(u32::from_be_bytes(b.get(at..at + 4)?.try_into().ok()?))
+    };
+    let moov_boxes = boxes(&moov);
+    let moov_body = moov_boxes.iter().find(|b| b.0 == b"moov")?.1;
+    for (kind, trak) in boxes(moov_body) {
+        if kind != b"trak" {
+            continue;
+        }
+        let inner = boxes(trak);
+        let Some(mdia) = inner.iter().find(|b| b.0 == b"mdia") else {
+            continue;
+        };
+        let mdia = boxes(mdia.1);
+        // Only the sound track.
+        let is_sound = mdia
+            .iter()
+            .any(|b| b.0 == b"hdlr" && b.1.get(8..12) == Some(b"soun"));
+        if !is_sound {
+            continue;
+        }
+        let mdhd = mdia.iter().find(|b| b.0 == b"mdhd")?.1;
+        let timescale = match mdhd.first()? {
+            0 => be32(mdhd, 12)?,
+            _ => be32(mdhd, 20)?,
+        };
+        let edts = inner.iter().find(|b| b.0 == b"edts")?.1;
+        let elst = boxes(edts).into_iter().find(|b| b.0 == b"elst")?.1;
+        let version = *elst.first()?;
+        let entries = be32(elst, 4)? as usize;
+        let width = if version == 1 { 20 } else { 12 };
+        for e in 0..entries.min(16) {
+            let at = 8 + e * width;
+            let media_time = if version == 1 {
+                i64::from_be_bytes(elst.get(at + 8..at + 16)?.try_into().ok()?)
+            } else {
+                i64::from(be32(elst, at + 4)? as i32)
+            };
+            // An empty edit (media time -1) delays the start; skip it.
+            if media_time >= 0 {
+                return (timescale > 0).then_some((media_time as u64, timescale));
+            }
+        }
+        return None;
+    }
+    None
 }
 
 /// The louder channel of `path` over its first ten seconds (0-based),

@@ -157,3 +157,126 @@ fn stereo_takes_the_louder_channel_unless_told() {
         "--channel",
     );
 }
+
+/// Debian's ffmpeg, which encodes the test recordings in each format; CI
+/// must have it (`.ci/run` installs it), elsewhere the test says it skipped.
+fn ffmpeg() -> Option<&'static str> {
+    let found = std::process::Command::new("ffmpeg")
+        .arg("-version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI must run the sound-format tests: install Debian's ffmpeg (.ci/run does)"
+        );
+        eprintln!("SKIPPED: no ffmpeg installed");
+    }
+    found.then_some("ffmpeg")
+}
+
+fn encode(ffmpeg: &str, from: &std::path::Path, to: &std::path::Path, codec: &[&str]) {
+    let status = std::process::Command::new(ffmpeg)
+        .args(["-loglevel", "error", "-y", "-i"])
+        .arg(from)
+        .args(codec)
+        .arg(to)
+        .status()
+        .unwrap();
+    assert!(status.success(), "ffmpeg {codec:?}");
+}
+
+/// The same recording in every format a phone or a sound editor writes:
+/// WAV as 8-, 24- and 32-bit integers and 32-bit floats, FLAC, Ogg Vorbis,
+/// MP3 and AAC in M4A. Each is heard back to the acceptance bounds, with
+/// absolute times: the MP3 encoder's delay (1,105 samples) is trimmed by
+/// its LAME header, the AAC priming (1,024 samples) by the MP4 edit list.
+#[test]
+fn every_format_is_heard_back() {
+    let Some(ffmpeg) = ffmpeg() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let wav = dir.path().join("clock.wav");
+    let truth = dir.path().join("truth.csv");
+    pendulum()
+        .args(["synth", "ticks", wav.to_str().unwrap(), "--bph", "3600"])
+        .args(["--rate", "12", "--beat-error", "1.5", "--duration", "3min"])
+        .args(["--reverb", "0.3s", "--seed", "13", "--truth"])
+        .arg(&truth)
+        .assert()
+        .success();
+    let truth = read_times(&truth);
+    for (name, codec) in [
+        ("u8.wav", &["-c:a", "pcm_u8"][..]),
+        ("s24.wav", &["-c:a", "pcm_s24le"]),
+        ("s32.wav", &["-c:a", "pcm_s32le"]),
+        ("f32.wav", &["-c:a", "pcm_f32le"]),
+        ("clock.flac", &["-c:a", "flac"]),
+        ("clock.ogg", &["-c:a", "libvorbis", "-q:a", "4"]),
+        ("clock.mp3", &["-c:a", "libmp3lame", "-b:a", "128k"]),
+        ("clock.m4a", &["-c:a", "aac", "-b:a", "128k"]),
+    ] {
+        let file = dir.path().join(name);
+        encode(ffmpeg, &wav, &file, codec);
+        let ticks = dir.path().join(format!("{name}.csv"));
+        let v = json(&[
+            "listen",
+            file.to_str().unwrap(),
+            "--ticks",
+            ticks.to_str().unwrap(),
+        ]);
+        let found = read_times(&ticks);
+        assert_eq!(
+            (found.len(), &v["missed"], &v["extra"]),
+            (truth.len(), &0.into(), &0.into()),
+            "{name}: {v}"
+        );
+        let errors: Vec<f64> = found.iter().zip(&truth).map(|(a, b)| a - b).collect();
+        let rms = (errors.iter().map(|e| e * e).sum::<f64>() / errors.len() as f64).sqrt();
+        eprintln!(
+            "{name}: rms {:.4} ms, rate {}, beat error {}",
+            rms * 1e3,
+            v["rate_s_per_day"],
+            v["beat_error_ms"]
+        );
+        assert!(rms < 1e-4, "{name}: rms {rms} s");
+        assert!((f(&v, "rate_s_per_day") - 12.0).abs() < 0.05, "{name}: {v}");
+        assert!((f(&v, "beat_error_ms") - 1.5).abs() < 0.1, "{name}: {v}");
+    }
+}
+
+/// A file cut short, a silent one and a codec symphonia lacks (Opus) are
+/// refused in one line naming the file.
+#[test]
+fn truncated_silent_and_unsupported_files_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let wav = dir.path().join("clock.wav");
+    pendulum()
+        .args(["synth", "ticks", wav.to_str().unwrap(), "--duration", "40s"])
+        .assert()
+        .success();
+    let bytes = std::fs::read(&wav).unwrap();
+    let cut = dir.path().join("cut.wav");
+    std::fs::write(&cut, &bytes[..bytes.len() / 3]).unwrap();
+    refuses(&["listen", cut.to_str().unwrap()], "truncated");
+    let silent = dir.path().join("silent.wav");
+    let mut quiet = bytes[..44].to_vec();
+    quiet.resize(bytes.len(), 0);
+    std::fs::write(&silent, quiet).unwrap();
+    refuses(&["listen", silent.to_str().unwrap()], "silent.wav");
+    if let Some(ffmpeg) = ffmpeg() {
+        let opus = dir.path().join("clock.opus");
+        encode(ffmpeg, &wav, &opus, &["-c:a", "libopus"]);
+        refuses(
+            &["listen", opus.to_str().unwrap()],
+            "codec is not supported",
+        );
+        let flac = dir.path().join("clock.flac");
+        encode(ffmpeg, &wav, &flac, &["-c:a", "flac"]);
+        let bytes = std::fs::read(&flac).unwrap();
+        let cut = dir.path().join("cut.flac");
+        std::fs::write(&cut, &bytes[..bytes.len() / 2]).unwrap();
+        refuses(&["listen", cut.to_str().unwrap()], "truncated");
+    }
+}

@@ -195,6 +195,32 @@ def exact_motion():
     write("exact.csv", ["amplitude_rad", "length_m", "t_s", "theta_hi", "theta_lo", "v_hi", "v_lo"], rows)
 
 
+def incomplete_and_lift():
+    """F(phi|m) (DLMF 19.2.4) on [0, pi/2] x [0, 1), and the lift crossing:
+    the fraction of a period a pendulum of amplitude A takes to cross
+    [-L/2, L/2], F(psi|k^2) / (2 K(k^2)) with k = sin(A/2) and
+    sin(psi) = sin(L/4) / k."""
+    rows = []
+    for _ in range(400):
+        phi = RNG.uniform(0.0, math.pi / 2)
+        m = RNG.random() if RNG.random() < 0.7 else 1.0 - 10.0 ** -RNG.uniform(1, 12)
+        f = mp.ellipf(mp.mpf(phi), mp.mpf(m))
+        rows.append((repr(phi), repr(m)) + split(f))
+    for phi in (0.0, 1e-300, 1e-8, math.pi / 2):
+        for m in (0.0, 0.5, 0.999999):
+            rows.append((repr(phi), repr(m)) + split(mp.ellipf(mp.mpf(phi), mp.mpf(m))))
+    write("ellipf.csv", ["phi_rad", "m", "f_hi", "f_lo"], rows)
+    rows = []
+    for _ in range(300):
+        lift = math.radians(RNG.uniform(0.5, 12.0))
+        amplitude = RNG.uniform(lift / 2 * 1.001, math.radians(RNG.choice([5.0, 20.0, 90.0, 170.0])) + lift)
+        k = mp.sin(mp.mpf(amplitude) / 2)
+        psi = mp.asin(mp.sin(mp.mpf(lift) / 4) / k)
+        ratio = mp.ellipf(psi, k * k) / (2 * mp.ellipk(k * k))
+        rows.append((repr(lift), repr(amplitude)) + split(ratio))
+    write("lift.csv", ["lift_rad", "amplitude_rad", "ratio_hi", "ratio_lo"], rows)
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
     complete(parameters())
@@ -205,6 +231,7 @@ def main():
     damped()
     conversions()
     exact_motion()
+    incomplete_and_lift()
 
 
 if __name__ == "__main__":

@@ -123,6 +123,15 @@ pub struct ListenArgs {
     /// Write every tick to this CSV file (time_s,side,amplitude).
     #[arg(long, value_name = "FILE.csv")]
     pub ticks: Option<std::path::PathBuf>,
+    /// The escapement's lift angle (degrees unless a unit is given): the
+    /// pendulum's amplitude is found from the time between each beat's
+    /// unlocking and drop sounds.
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub lift_angle: Option<String>,
+    /// Draw the timegrapher's paper strip and the averaged tick and tock
+    /// sounds (SVG or PNG by the extension; - for SVG on standard output).
+    #[arg(long, value_name = "FILE.svg|FILE.png")]
+    pub plot: Option<std::path::PathBuf>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,

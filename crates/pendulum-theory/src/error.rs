@@ -47,6 +47,11 @@ pub enum Quantity {
     Tolerance,
     /// Time between samples (s).
     SampleInterval,
+    /// An escapement's lift: the angle over which it impulses the
+    /// pendulum (rad).
+    LiftAngle,
+    /// The time the pendulum takes to cross the lift (s).
+    LiftTime,
 }
 
 impl Quantity {
@@ -72,6 +77,8 @@ impl Quantity {
             Quantity::Duration => "duration",
             Quantity::Tolerance => "tolerance",
             Quantity::SampleInterval => "sample interval",
+            Quantity::LiftAngle => "lift angle",
+            Quantity::LiftTime => "lift time",
         }
     }
 
@@ -81,13 +88,14 @@ impl Quantity {
         match self {
             Quantity::Length | Quantity::Height => format!("{} m", significant(value)),
             Quantity::Gravity => format!("{} m/s^2", significant(value)),
-            Quantity::Amplitude | Quantity::FrictionAngle => {
+            Quantity::Amplitude | Quantity::FrictionAngle | Quantity::LiftAngle => {
                 format!("{}°", significant(value.to_degrees()))
             }
             Quantity::Period
             | Quantity::DecayTime
             | Quantity::Duration
-            | Quantity::SampleInterval => {
+            | Quantity::SampleInterval
+            | Quantity::LiftTime => {
                 format!("{} s", significant(value))
             }
             Quantity::DampingCoefficient => format!("{} N s", significant(value)),

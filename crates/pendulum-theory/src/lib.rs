@@ -47,6 +47,7 @@ pub mod fitting;
 pub mod friction;
 pub mod gravity;
 pub mod integrate;
+pub mod lift;
 pub mod listening;
 pub mod pendulum;
 pub mod period;

@@ -8,8 +8,9 @@
 //! (`cargo test --test reference -- --nocapture`).
 
 use pendulum_theory::elliptic::{
-    ellip_e_minus_complement_k, ellipe, ellipe_modulus, ellipk, ellipk_modulus, jacobi,
+    ellip_e_minus_complement_k, ellipe, ellipe_modulus, ellipf, ellipk, ellipk_modulus, jacobi,
 };
+use pendulum_theory::lift::{amplitude_from_lift, crossing_fraction};
 use pendulum_theory::period::{circular_error, circular_error_slope, period_ratio};
 use pendulum_theory::{Amplitude, Pendulum};
 
@@ -34,6 +35,11 @@ mod allowed {
     pub const CIRCULAR_ERROR_SLOPE: f64 = 5.0;
     /// sn, cn, dn: in units of ε (|f| + |u f'(u)|) (see the jacobi module docs).
     pub const JACOBI: f64 = 4.0;
+    /// F(φ|m), the incomplete integral of the first kind.
+    pub const ELLIPF: f64 = 4.0;
+    /// The lift crossing fraction F(ψ|k²) / (2K(k²)), a quotient of two
+    /// values of up to 4 ulp each (measured: 4.2).
+    pub const LIFT_FRACTION: f64 = 8.0;
 }
 use allowed as ALLOWED_ULP;
 
@@ -114,4 +120,34 @@ fn jacobi_functions() {
     }
     let results: Vec<(&Worst, f64)> = worst.iter().map(|w| (w, ALLOWED_ULP::JACOBI)).collect();
     check_all(&results);
+}
+
+#[test]
+fn incomplete_integral_of_the_first_kind() {
+    let mut w = Worst::new("F(phi|m)");
+    for r in Reference::load("ellipf.csv", 4).rows {
+        w.see(ulp_error(ellipf(r[0], r[1]), r[2], r[3]), r[0]);
+    }
+    check_all(&[(&w, ALLOWED_ULP::ELLIPF)]);
+}
+
+/// The lift crossing fraction against mpmath, and the amplitude recovered
+/// from it (the inversion `pendulum listen --lift-angle` uses).
+#[test]
+fn amplitude_from_the_lift_crossing() {
+    let mut w = Worst::new("lift fraction");
+    let mut worst_amplitude: f64 = 0.0;
+    for r in Reference::load("lift.csv", 4).rows {
+        let (lift, amplitude) = (r[0], r[1]);
+        w.see(
+            ulp_error(crossing_fraction(lift, amplitude), r[2], r[3]),
+            amplitude,
+        );
+        let period = 2.0;
+        let found = amplitude_from_lift(lift, (r[2] + r[3]) * period, period).unwrap();
+        worst_amplitude = worst_amplitude.max((found.amplitude - amplitude).abs() / amplitude);
+    }
+    eprintln!("amplitude from the exact fraction: worst relative error {worst_amplitude:.2e}");
+    assert!(worst_amplitude < 1e-12);
+    check_all(&[(&w, ALLOWED_ULP::LIFT_FRACTION)]);
 }

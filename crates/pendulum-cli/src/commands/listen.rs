@@ -8,8 +8,9 @@ use crate::audio::{decode, info, louder_channel};
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
-use crate::units::parse_number;
+use crate::units::{parse_number, Dimension};
 use pendulum_theory::fitting::beats::BeatStream;
+use pendulum_theory::lift::amplitude_from_lift;
 use pendulum_theory::listening::detect::{
     beat_period, clean, envelope_rate, Envelope, OnsetTracker, Refiner,
 };
@@ -38,8 +39,21 @@ struct ListenJson {
     /// Tick envelope peak over the envelope's median, dB.
     snr_db: f64,
     allan_deviation: Vec<AllanJson>,
+    /// From each beat's unlocking to its drop, ms: ticks, tocks (null when
+    /// no second sound stands out).
+    drop_ms: [Option<f64>; 2],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lift_angle_deg: Option<f64>,
+    /// From the exact motion; null when no drop was heard.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    amplitude_deg: Option<Option<f64>>,
+    /// From the first-order formula lift / (2 sin(π Δt / T)).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    amplitude_first_order_deg: Option<Option<f64>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     ticks_file: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    plot_file: Option<String>,
 }
 
 pub fn run(args: &ListenArgs) -> Result<String, CliError> {
@@ -141,6 +155,30 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         None => None,
     };
     let half = 50.0 * a.beat_error_ms * 1e-3 / a.mean_beat;
+    // The drop: the mean of the two sides' (a clock's pallets may differ).
+    let drops = coarse.drops.map(|d| d.map(|d| d * scale));
+    let heard: Vec<f64> = drops.iter().flatten().copied().collect();
+    let crossing = (!heard.is_empty()).then(|| heard.iter().sum::<f64>() / heard.len() as f64);
+    let lift = match &args.lift_angle {
+        Some(text) => {
+            let lift = common::quantity("--lift-angle", text, Dimension::Angle)?;
+            if !(lift > 0.0 && lift < std::f64::consts::PI) {
+                return Err(CliError::flag(
+                    "--lift-angle",
+                    format!("must be between 0 and 180°, got {text}"),
+                ));
+            }
+            let amplitude = match crossing {
+                Some(dt) => Some(
+                    amplitude_from_lift(lift, dt, 2.0 * a.mean_beat)
+                        .map_err(|e| CliError::flag("--lift-angle", e.detail()))?,
+                ),
+                None => None,
+            };
+            Some((lift, amplitude))
+        }
+        None => None,
+    };
     let result = ListenJson {
         file,
         sample_rate_hz: info.sample_rate,
@@ -158,7 +196,12 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         extra: a.repaired.doubled,
         snr_db,
         allan_deviation: allan_json(&a.allan_deviation),
+        drop_ms: drops.map(|d| d.map(|d| d * 1e3)),
+        lift_angle_deg: lift.map(|l| l.0.to_degrees()),
+        amplitude_deg: lift.map(|l| l.1.map(|a| a.amplitude.to_degrees())),
+        amplitude_first_order_deg: lift.map(|l| l.1.map(|a| a.first_order.to_degrees())),
         ticks_file,
+        plot_file: None,
     };
     if args.json {
         return output::json(&result);
@@ -198,7 +241,35 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         ),
     )
     .row("Jitter", format!("{} ms", num(result.jitter_ms, 3)))
-    .row("Signal to noise", format!("{} dB", num(result.snr_db, 3)));
+    .row(
+        "Drop",
+        match result.drop_ms {
+            [Some(t), Some(u)] => format!(
+                "{} ms after the unlocking (ticks), {} ms (tocks)",
+                num(t, 3),
+                num(u, 3)
+            ),
+            [Some(t), None] | [None, Some(t)] => {
+                format!("{} ms after the unlocking (one side only)", num(t, 3))
+            }
+            [None, None] => "not determined (no second sound stands out)".to_string(),
+        },
+    );
+    if let (Some(lift), Some(amplitude)) = (result.lift_angle_deg, result.amplitude_deg) {
+        s.row(
+            "Amplitude",
+            match (amplitude, result.amplitude_first_order_deg.flatten()) {
+                (Some(exact), Some(first)) => format!(
+                    "{}° from the {}° lift (first order: {}°)",
+                    num(exact, 4),
+                    num(lift, 4),
+                    num(first, 4)
+                ),
+                _ => "not determined (no drop sound to time the lift by)".to_string(),
+            },
+        );
+    }
+    s.row("Signal to noise", format!("{} dB", num(result.snr_db, 3)));
     if let Some(f) = &result.ticks_file {
         s.row("Ticks file", f.clone());
     }

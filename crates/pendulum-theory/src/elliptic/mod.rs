@@ -15,16 +15,19 @@
 //! | [`ellipe`] | AGM sum for `m <= 1/2`, Legendre's relation above | DLMF 19.8.6, 19.7.1 |
 //! | [`ellip_e_minus_complement_k`] | same sums, cancellation-free | DLMF 19.8.6, 19.4.1 |
 //! | [`jacobi`] | descending Landen / AGM transformation | DLMF 22.20(ii) |
+//! | [`ellipf`] | Carlson's `R_F` by duplication | DLMF 19.25.5, 19.36.1 |
 //!
 //! Accuracy, measured by `tests/reference.rs` against mpmath at 40 digits
 //! (see `tools/reference/`), is stated on each function.
 
 mod agm;
 mod complete;
+mod incomplete;
 mod jacobi;
 
 pub(crate) use agm::{agm_deficit, agm_with_derivative};
 pub use complete::{ellip_e_minus_complement_k, ellipe, ellipe_modulus, ellipk, ellipk_modulus};
+pub use incomplete::{carlson_rf, ellipf};
 pub use jacobi::{jacobi, jacobi_modulus, JacobiValues};
 
 /// An elliptic modulus `k` held together with its complement `k' = sqrt(1 - k²)`.

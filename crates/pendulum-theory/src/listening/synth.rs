@@ -49,6 +49,8 @@ pub struct Synthesized {
     pub ticks: Vec<f64>,
     /// The times of the ticks left out, s.
     pub missing: Vec<f64>,
+    /// The time from each tick's onset to its drop's, s.
+    pub drop_delay: f64,
 }
 
 /// splitmix64 with Box-Muller: small, seeded, reproducible everywhere.
@@ -127,7 +129,8 @@ pub struct Synthesizer {
     position: usize,
     tick: Sound,
     drop: Sound,
-    drop_delay: f64,
+    /// The time from each tick's onset to its drop's, s.
+    pub drop_delay: f64,
     drop_gain: f64,
     /// Room echoes: delay s, gain.
     echoes: Vec<(f64, f64)>,
@@ -286,6 +289,7 @@ pub fn synthesize(spec: &TickRecording) -> Synthesized {
         samples,
         ticks: synth.ticks,
         missing: synth.missing,
+        drop_delay: synth.drop_delay,
     }
 }
 

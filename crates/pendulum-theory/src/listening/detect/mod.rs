@@ -40,7 +40,7 @@ pub mod period;
 pub mod refine;
 
 pub use envelope::{envelope_rate, Envelope, ENVELOPE_RATE};
-pub use onsets::OnsetTracker;
+pub use onsets::{second_sound, OnsetTracker};
 pub use outliers::clean;
 pub use period::beat_period;
 pub use refine::{Refiner, Tick};
@@ -56,6 +56,9 @@ pub struct Coarse {
     pub floor: f64,
     /// The typical tick peak of the envelope (median over ticks).
     pub peak: f64,
+    /// The time from the tick's onset to the beat's second sound (the
+    /// drop), s, for ticks and for tocks: see [`onsets::second_sound`].
+    pub drops: [Option<f64>; 2],
 }
 
 /// The median of `values` (sorted in place; the upper one of an even

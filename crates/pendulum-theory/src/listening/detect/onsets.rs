@@ -10,6 +10,8 @@ const SOUND_LEVEL: f64 = 0.3;
 /// narrow window of a tracked beat (where a noise crest is unlikely, and a
 /// weak tick is better refined than lost).
 const TICK_LEVEL: [f64; 2] = [0.5, 0.35];
+/// The envelope kept before each onset in the drop profile, s.
+const PROFILE_BEFORE: f64 = 0.005;
 /// The band-pass's settling at the start of a recording, s: no tick is
 /// looked for before it.
 const SETTLE: f64 = 0.01;
@@ -63,6 +65,11 @@ pub struct OnsetTracker {
     done: bool,
     /// Floors seen at each update, for the reported floor.
     floors: Vec<f64>,
+    /// The envelope around each side's onsets, summed (for the drop).
+    profiles: [Vec<f64>; 2],
+    profile_counts: [usize; 2],
+    /// The last onset, waiting for the envelope after it: (side, onset s).
+    pending: Option<(usize, f64)>,
     total: usize,
 }
 
@@ -95,6 +102,9 @@ impl OnsetTracker {
             done: false,
             floors: Vec::new(),
             total: 0,
+            profiles: Default::default(),
+            profile_counts: [0; 2],
+            pending: None,
         }
     }
 
@@ -116,6 +126,21 @@ impl OnsetTracker {
     /// Ends the stream: the onsets found.
     pub fn finish(mut self) -> Coarse {
         self.advance(true);
+        self.profile_pending();
+        let drops = [0, 1].map(|side| {
+            let n = self.profile_counts[side];
+            (n >= 4)
+                .then(|| {
+                    let mean: Vec<f64> = self.profiles[side].iter().map(|v| v / n as f64).collect();
+                    second_sound(
+                        &mean,
+                        self.floor,
+                        self.rate,
+                        (PROFILE_BEFORE * self.rate).round() as usize,
+                    )
+                })
+                .flatten()
+        });
         let mut floors = self.floors.clone();
         let floor = if floors.is_empty() {
             self.current_floor()
@@ -131,6 +156,7 @@ impl OnsetTracker {
             } else {
                 floor
             },
+            drops,
         }
     }
 
@@ -277,6 +303,38 @@ impl OnsetTracker {
         Some(SETTLE + phase as f64 / self.rate)
     }
 
+    /// How long after an onset the drop is looked for, s: up to nearly
+    /// half a beat (a seconds pendulum with a small lift crosses it in a
+    /// few tenths of a second).
+    fn profile_span(&self) -> f64 {
+        0.45 * self.beat
+    }
+
+    /// Adds the envelope around the pending onset to its side's profile,
+    /// once the envelope after it has come (or drops it at the end).
+    fn profile_pending(&mut self) {
+        let Some((side, onset)) = self.pending else {
+            return;
+        };
+        let first = ((onset - PROFILE_BEFORE) * self.rate).round();
+        let length = ((PROFILE_BEFORE + self.profile_span()) * self.rate).round() as usize;
+        if first < self.offset as f64 {
+            self.pending = None;
+            return;
+        }
+        let first = first as usize;
+        if first + length > self.offset + self.values.len() {
+            return;
+        }
+        let profile = &mut self.profiles[side];
+        profile.resize(length, 0.0);
+        for (j, p) in profile.iter_mut().enumerate() {
+            *p += f64::from(self.values[first + j - self.offset]);
+        }
+        self.profile_counts[side] += 1;
+        self.pending = None;
+    }
+
     /// The local beat: the least-squares slope of the last onsets.
     fn local_beat(&self) -> f64 {
         let recent = &self.onsets[self.onsets.len().saturating_sub(LOCAL_BEATS)..];
@@ -351,8 +409,12 @@ impl OnsetTracker {
                 break;
             }
             self.decide(predicted, half, buffered, half < 0.3 * self.beat);
-            // Let go of what no later beat needs.
-            let keep = ((predicted - 0.05).max(0.0) * self.rate) as usize;
+            // Let go of what no later beat needs (nor the drop profile).
+            self.profile_pending();
+            let mut keep = ((predicted - 0.05).max(0.0) * self.rate) as usize;
+            if let Some((_, t)) = self.pending {
+                keep = keep.min(((t - PROFILE_BEFORE).max(0.0) * self.rate) as usize);
+            }
             if keep > self.offset + 8192 {
                 let drop = (keep - self.offset).min(self.values.len());
                 self.values.drain(..drop);
@@ -379,6 +441,8 @@ impl OnsetTracker {
         match best {
             Some(s) => {
                 self.run_of_misses = 0;
+                self.profile_pending();
+                self.pending = Some((side, s.onset));
                 self.onsets.push((self.k, s.onset));
                 let peaks = &mut self.peaks[side];
                 peaks.push_back(s.peak);
@@ -397,4 +461,76 @@ impl OnsetTracker {
         }
         self.k += 1;
     }
+}
+
+/// The time from the tick's onset to the second sound of the beat (the
+/// drop of the escapement onto its next tooth), s, on `profile`: the mean
+/// envelope around a side's onsets, `before` values before the onset, at
+/// `rate` values per second, over a noise `floor`. The second sound is the
+/// most prominent peak after the tick's own (prominence: its height over
+/// the lowest envelope between the two, at least a quarter of the tick's
+/// rise); each sound's onset is where the envelope crosses 10% of its rise,
+/// interpolated. `None` when no second sound stands out.
+pub fn second_sound(profile: &[f64], floor: f64, rate: f64, before: usize) -> Option<f64> {
+    let n = profile.len();
+    let near = (0.006 * rate) as usize;
+    let (tick_at, &tick) = profile
+        .iter()
+        .enumerate()
+        .skip(before)
+        .take(near)
+        .max_by(|a, b| a.1.total_cmp(b.1))?;
+    let rise = tick - floor;
+    if rise <= 0.0 {
+        return None;
+    }
+    // The crossing of `low + 0.1 (peak - low)` before index `peak` (low
+    // on the mean of many beats, where the noise is averaged away; nearer
+    // the sound's start than a higher level, whatever the sound's rise).
+    let onset = |peak: usize, low: f64, stop: usize| -> f64 {
+        let level = low + 0.1 * (profile[peak] - low);
+        let mut j = peak;
+        while j > stop && profile[j - 1] >= level {
+            j -= 1;
+        }
+        if j == 0 {
+            return 0.0;
+        }
+        let (a, b) = (profile[j - 1], profile[j]);
+        let f = if b > a {
+            ((level - a) / (b - a)).clamp(0.0, 1.0)
+        } else {
+            1.0
+        };
+        j as f64 - 1.0 + f
+    };
+    // The tick rises from the lowest envelope before it (the tail of the
+    // beat before may keep it above the floor).
+    let quiet_at = (0..tick_at)
+        .min_by(|&a, &b| profile[a].total_cmp(&profile[b]))
+        .unwrap_or(0);
+    let tick_onset = onset(tick_at, profile[quiet_at].min(tick), quiet_at);
+    let reach = ((0.001 * rate) as usize).max(1);
+    let gap = ((0.002 * rate) as usize).max(2);
+    let mut best: Option<(f64, usize, f64)> = None;
+    for j in tick_at + gap..n.saturating_sub(reach) {
+        let around = &profile[j.saturating_sub(reach)..=j + reach];
+        if around.iter().any(|&v| v > profile[j]) {
+            continue;
+        }
+        let valley = profile[tick_at..j]
+            .iter()
+            .copied()
+            .fold(f64::INFINITY, f64::min);
+        let prominence = profile[j] - valley;
+        if prominence >= 0.25 * rise && best.is_none_or(|b| prominence > b.0) {
+            best = Some((prominence, j, valley));
+        }
+    }
+    let (_, drop_at, valley) = best?;
+    let valley_at = (tick_at..drop_at)
+        .min_by(|&a, &b| profile[a].total_cmp(&profile[b]))
+        .unwrap_or(tick_at);
+    let drop_onset = onset(drop_at, valley, valley_at);
+    Some((drop_onset - tick_onset) / rate)
 }

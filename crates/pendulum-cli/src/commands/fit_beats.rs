@@ -60,10 +60,11 @@ pub(crate) fn rate_text(rate_s_per_day: Option<f64>, nominal_beat: Option<f64>) 
     match (rate_s_per_day, nominal_beat) {
         (Some(r), Some(n)) => format!(
             "{} s/day ({}) against {} beats/hour",
-            num(r, 4),
-            if r > 0.0 {
+            // Below a microsecond a day the sign is rounding, not the clock.
+            num(if r.abs() < 1e-6 { 0.0 } else { r }, 4),
+            if r >= 1e-6 {
                 "gaining"
-            } else if r < 0.0 {
+            } else if r <= -1e-6 {
                 "losing"
             } else {
                 "keeping time"

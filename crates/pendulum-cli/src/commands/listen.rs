@@ -8,11 +8,12 @@ use crate::audio::{decode, info, louder_channel};
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
+use crate::plot::{render, thin, Figure, Panel, Series, Target};
 use crate::units::{parse_number, Dimension};
-use pendulum_theory::fitting::beats::BeatStream;
+use pendulum_theory::fitting::beats::{BeatAnalysis, BeatStream};
 use pendulum_theory::lift::amplitude_from_lift;
 use pendulum_theory::listening::detect::{
-    beat_period, clean, envelope_rate, Envelope, OnsetTracker, Refiner,
+    beat_period, clean, envelope_rate, Envelope, MedianSound, OnsetTracker, Refiner, Tick,
 };
 
 /// Seconds of the recording the beat period is found from.
@@ -59,6 +60,11 @@ struct ListenJson {
 pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     let file = args.file.display().to_string();
     let nominal_period = common::period_or_beat_rate(args.period.as_deref(), args.bph.as_deref())?;
+    let plot = args
+        .plot
+        .as_deref()
+        .map(|p| Target::new(p, "--plot"))
+        .transpose()?;
     let ppm = match &args.sample_rate_error_ppm {
         Some(t) => {
             let p = parse_number(t).map_err(|e| CliError::flag("--sample-rate-error-ppm", e))?;
@@ -119,9 +125,9 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     // Pass 3: each tick refined on the samples.
     let mut refiner = Refiner::new(rate, &coarse);
     decode(&args.file, channel, None, |block| refiner.push(block))?;
-    let (ticks, rejected) = refiner.finish();
-    let (ticks, dropped, _) = clean(ticks);
-    let rejected = rejected + dropped;
+    // (What the refiner and the clean-up drop is counted below as missed.)
+    let (ticks, _, sounds) = refiner.finish_with_sounds();
+    let (ticks, _, _) = clean(ticks);
     if ticks.len() < 4 {
         return Err(CliError::other(format!(
             "{file}: {} of about {} beats stand out of the noise (signal to noise {} dB); \
@@ -132,7 +138,9 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         )));
     }
     let scale = 1.0 / (1.0 + ppm * 1e-6);
-    let mut stream = BeatStream::new();
+    // The ticks were followed beat by beat, through any stretch the noise
+    // covered: gaps up to a thousand beats are missed beats, not pauses.
+    let mut stream = BeatStream::filling_up_to(1000);
     for t in &ticks {
         stream
             .push(t.time * scale)
@@ -141,6 +149,10 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     let a = stream
         .finish(nominal_period.map(|p| 0.5 * p))
         .map_err(|e| CliError::other(format!("{file}: {e}")))?;
+    let plot_file = match &plot {
+        Some(target) => Some(draw(target, &ticks, scale, &a, sounds.as_ref(), rate)?),
+        None => None,
+    };
     let ticks_file = match &args.ticks {
         Some(path) => {
             let mut out = CsvFile::create(path, "--ticks", "time_s,side,amplitude")?;
@@ -192,7 +204,10 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         beat_error_ms: a.beat_error_ms,
         in_beat_percent: [50.0 + half, 50.0 - half],
         jitter_ms: a.jitter_ms,
-        missed: coarse.missed + rejected + a.repaired.missed,
+        // Every beat the tracker followed, less the ticks kept: missed,
+        // whether no sound was there or it was dropped as noise (counted
+        // once, though the analysis fills the same gaps).
+        missed: (coarse.onsets.len() + coarse.missed).saturating_sub(ticks.len()),
         extra: a.repaired.doubled,
         snr_db,
         allan_deviation: allan_json(&a.allan_deviation),
@@ -201,7 +216,7 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         amplitude_deg: lift.map(|l| l.1.map(|a| a.amplitude.to_degrees())),
         amplitude_first_order_deg: lift.map(|l| l.1.map(|a| a.first_order.to_degrees())),
         ticks_file,
-        plot_file: None,
+        plot_file,
     };
     if args.json {
         return output::json(&result);
@@ -273,5 +288,79 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     if let Some(f) = &result.ticks_file {
         s.row("Ticks file", f.clone());
     }
+    if let Some(f) = &result.plot_file {
+        s.row("Plot", f.clone());
+    }
     Ok(s.render())
+}
+
+/// Points of the paper strip kept, at most.
+const STRIP_LIMIT: usize = 8192;
+
+/// The timegrapher's picture: the paper strip (each beat's offset from the
+/// nominal beat against time, ticks and tocks apart: the rate is the
+/// slope, the beat error the gap between the two traces) and the median
+/// tick and tock sounds overlaid.
+fn draw(
+    target: &Target,
+    ticks: &[Tick],
+    scale: f64,
+    a: &BeatAnalysis,
+    sounds: Option<&[MedianSound; 2]>,
+    rate: f64,
+) -> Result<String, CliError> {
+    let beat = a.nominal_beat.unwrap_or(a.mean_beat);
+    let (first_beat, first_time) = ticks.first().map_or((0, 0.0), |t| (t.beat, t.time * scale));
+    let strip = |side: u8| -> Vec<(f64, f64)> {
+        let points = ticks
+            .iter()
+            .filter(|t| t.side == side)
+            .map(|t| {
+                let time = t.time * scale;
+                let expected = first_time + (t.beat - first_beat) as f64 * beat;
+                (time, 1e3 * (time - expected))
+            })
+            .collect();
+        thin(points, STRIP_LIMIT)
+    };
+    let against = match a.nominal_beat {
+        Some(_) => format!("{} beats/hour", num(3600.0 / beat, 6)),
+        None => "the mean beat".to_string(),
+    };
+    let strip = Panel::new(
+        format!("Paper strip: each beat against {against}"),
+        "time (s)",
+        "offset (ms)",
+        vec![
+            Series::dots("ticks", strip(0)),
+            Series::dots("tocks", strip(1)),
+        ],
+    );
+    // The legend in the corner the traces leave free: a losing clock's
+    // traces rise to the upper right.
+    let losing = a.rate_s_per_day.is_some_and(|r| r < 0.0);
+    let mut panels = vec![if losing {
+        strip.legend_upper_left()
+    } else {
+        strip
+    }];
+    if let Some(sounds) = sounds {
+        let wave = |s: &MedianSound| -> Vec<(f64, f64)> {
+            s.samples
+                .iter()
+                .enumerate()
+                .map(|(i, &v)| (1e3 * (i as f64 - s.onset) / rate, f64::from(v)))
+                .collect()
+        };
+        panels.push(Panel::new(
+            "Median tick and tock sounds (band-passed)",
+            "time from the onset (ms)",
+            "sound (full scale)",
+            vec![
+                Series::line("tick", wave(&sounds[0])),
+                Series::line("tock", wave(&sounds[1])),
+            ],
+        ));
+    }
+    render(target, &Figure { panels })
 }

@@ -63,7 +63,13 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
             ),
             FitCommand::Beats(a) => (vec![("--plot", a.plot.as_deref())], a.json),
         },
-        Command::Listen(a) => (vec![("--ticks", a.ticks.as_deref())], a.json),
+        Command::Listen(a) => (
+            vec![
+                ("--ticks", a.ticks.as_deref()),
+                ("--plot", a.plot.as_deref()),
+            ],
+            a.json,
+        ),
         Command::Synth(s) => match &s.what {
             crate::args::SynthCommand::Ticks(a) => (
                 vec![

@@ -280,3 +280,62 @@ fn truncated_silent_and_unsupported_files_are_refused() {
         refuses(&["listen", cut.to_str().unwrap()], "truncated");
     }
 }
+
+/// `--lift-angle` gives the amplitude from the drop's time, beside the
+/// first-order formula computed here from the printed drop and beat; and
+/// `--plot` draws the paper strip and the median sounds with their axes.
+#[test]
+fn lift_angle_amplitude_and_the_paper_strip() {
+    let dir = tempfile::tempdir().unwrap();
+    let wav = dir.path().join("clock.wav");
+    pendulum()
+        .args(["synth", "ticks", wav.to_str().unwrap(), "--bph", "7200"])
+        .args(["--rate", "-20", "--duration", "2min", "--seed", "5"])
+        .assert()
+        .success();
+    let svg = dir.path().join("strip.svg");
+    let v = json(&[
+        "listen",
+        wav.to_str().unwrap(),
+        "--lift-angle",
+        "1.5",
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    let drops: Vec<f64> = v["drop_ms"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d.as_f64().expect("both drops heard"))
+        .collect();
+    let dt = 0.5 * (drops[0] + drops[1]) * 1e-3;
+    let period = 2.0 * f(&v, "mean_beat_s");
+    let lift = 1.5_f64.to_radians();
+    let first = (lift / (2.0 * (std::f64::consts::PI * dt / period).sin())).to_degrees();
+    assert!(
+        (f(&v, "amplitude_first_order_deg") - first).abs() < 1e-9 * first,
+        "{v}"
+    );
+    let exact = f(&v, "amplitude_deg").to_radians();
+    // The two differ by the circular terms, of order A²/16.
+    let relative = (f(&v, "amplitude_first_order_deg").to_radians() - exact) / exact;
+    assert!(relative.abs() < exact * exact / 8.0, "{v}");
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for label in [
+        "offset (ms)",
+        "time (s)",
+        "time from the onset (ms)",
+        "ticks",
+        "tocks",
+    ] {
+        assert!(text.contains(label), "the plot lacks '{label}'");
+    }
+    refuses(
+        &["listen", wav.to_str().unwrap(), "--lift-angle", "-2"],
+        "--lift-angle",
+    );
+    refuses(
+        &["listen", wav.to_str().unwrap(), "--plot", "strip.txt"],
+        "--plot",
+    );
+}

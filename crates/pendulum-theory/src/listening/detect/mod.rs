@@ -43,7 +43,7 @@ pub use envelope::{envelope_rate, Envelope, ENVELOPE_RATE};
 pub use onsets::{second_sound, OnsetTracker};
 pub use outliers::clean;
 pub use period::beat_period;
-pub use refine::{Refiner, Tick};
+pub use refine::{MedianSound, Refiner, Tick};
 
 /// Coarse onsets, s, with the beat numbers they belong to.
 #[derive(Clone, Debug, PartialEq)]

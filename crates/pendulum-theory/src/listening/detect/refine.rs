@@ -449,12 +449,35 @@ impl Refiner {
     /// Ends the pass: the ticks, and how many coarse onsets were dropped as
     /// noise. Short records (fewer than 128 ticks a side) build the
     /// templates from what they have.
-    pub fn finish(mut self) -> (Vec<Tick>, usize) {
+    pub fn finish(self) -> (Vec<Tick>, usize) {
+        let refined = self.finish_with_sounds();
+        (refined.0, refined.1)
+    }
+
+    /// [`Refiner::finish`], with the median tick and tock sounds (for a
+    /// picture of them).
+    pub fn finish_with_sounds(mut self) -> (Vec<Tick>, usize, Option<[MedianSound; 2]>) {
         if self.templates.is_none() && !self.waiting.is_empty() {
             self.build();
         }
-        (self.ticks, self.rejected)
+        let sounds = self.templates.as_ref().map(|t| {
+            t.clone().map(|t| MedianSound {
+                samples: t.samples,
+                onset: t.onset,
+            })
+        });
+        (self.ticks, self.rejected, sounds)
     }
+}
+
+/// The median sound of one side (band-passed), as the ticks were matched
+/// against.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MedianSound {
+    /// The samples, at the recording's rate.
+    pub samples: Vec<f32>,
+    /// Where the tick's onset falls in them, samples.
+    pub onset: f64,
 }
 
 /// The lag (samples, from 0 to `2 search`, to a fraction by a parabola) at

@@ -86,6 +86,19 @@ unless --channel says otherwise.")]
     Listen(ListenArgs),
     /// Synthetic data with known truth, to check a setup.
     Synth(SynthArgs),
+    /// A going train: beats per hour and the pendulum it needs, or the
+    /// wheel and pinion counts that give a beat rate.
+    #[command(after_help = "Examples:
+  pendulum train --wheels 64,60,30 --pinions 8,8
+  pendulum train --wheels 64,60,30 --pinions 8,8 --design examples/invar-lens.toml
+  pendulum train --bph 4800 --escape-teeth 30")]
+    Train(TrainArgs),
+    /// How far to move the bob (and how many turns of the nut) to correct a
+    /// rate, or what weight to add on a tray.
+    #[command(after_help = "Examples:
+  pendulum regulate --length 0.994m --rate +12s/day --nut-pitch 0.7mm
+  pendulum regulate --design examples/seconds-steel-brass.toml --rate -30 --nut-tpi 36")]
+    Regulate(RegulateArgs),
     /// The one-command analysis of a pendulum, as an HTML page with figures
     /// (default: a seconds pendulum at 3° with Q = 10,000).
     #[command(after_help = "Examples:
@@ -239,6 +252,10 @@ pub struct ReportArgs {
     /// Pendulum length [default: 0.99362 m, a seconds pendulum].
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub length: Option<String>,
+    /// A pendulum designed as parts (TOML; see examples/*.toml): its
+    /// equivalent simple length is used.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<std::path::PathBuf>,
     /// Working amplitude [default: 3°].
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: Option<String>,
@@ -430,8 +447,17 @@ pub struct FormatArgs {
 #[derive(Debug, Args)]
 pub struct PeriodArgs {
     /// Pendulum length (e.g. 0.99362m, 994mm, 39.1in).
-    #[arg(long, value_name = "L", allow_hyphen_values = true)]
-    pub length: String,
+    #[arg(
+        long,
+        value_name = "L",
+        allow_hyphen_values = true,
+        required_unless_present = "design"
+    )]
+    pub length: Option<String>,
+    /// A pendulum designed as parts (TOML; see examples/*.toml): its
+    /// equivalent simple length is used.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<std::path::PathBuf>,
     /// Amplitude (e.g. 3deg, 0.05rad), or a range 1deg..10deg for a table.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: String,
@@ -483,8 +509,17 @@ pub struct AmplitudeArgs {
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub period: String,
     /// Pendulum length.
-    #[arg(long, value_name = "L", allow_hyphen_values = true)]
-    pub length: String,
+    #[arg(
+        long,
+        value_name = "L",
+        allow_hyphen_values = true,
+        required_unless_present = "design"
+    )]
+    pub length: Option<String>,
+    /// A pendulum designed as parts (TOML; see examples/*.toml): its
+    /// equivalent simple length is used.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<std::path::PathBuf>,
     /// Uncertainty of the measured period, to report the amplitude's.
     #[arg(long, value_name = "DT", allow_hyphen_values = true)]
     pub period_uncertainty: Option<String>,
@@ -535,8 +570,17 @@ pub struct DampingArgs {
 #[derive(Debug, Args)]
 pub struct SwingArgs {
     /// Pendulum length.
-    #[arg(long, value_name = "L", allow_hyphen_values = true)]
-    pub length: String,
+    #[arg(
+        long,
+        value_name = "L",
+        allow_hyphen_values = true,
+        required_unless_present = "design"
+    )]
+    pub length: Option<String>,
+    /// A pendulum designed as parts (TOML; see examples/*.toml): its
+    /// equivalent simple length is used.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<std::path::PathBuf>,
     /// Amplitude it is released from, at rest.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: String,
@@ -666,4 +710,83 @@ mod tests {
     fn command_definition_is_consistent() {
         Cli::command().debug_assert();
     }
+}
+
+/// `pendulum train`.
+#[derive(Debug, Args)]
+pub struct TrainArgs {
+    /// Wheel counts, the first on the arbor of --arbor-turns-per-hour, the
+    /// last the escape wheel (e.g. 64,60,30).
+    #[arg(
+        long,
+        value_name = "W,W,…",
+        value_delimiter = ',',
+        requires = "pinions"
+    )]
+    pub wheels: Vec<u32>,
+    /// Pinion counts, one fewer than the wheels (e.g. 8,8).
+    #[arg(long, value_name = "P,P,…", value_delimiter = ',')]
+    pub pinions: Vec<u32>,
+    /// Turns an hour of the first wheel's arbor.
+    #[arg(long, value_name = "N", default_value = "1")]
+    pub arbor_turns_per_hour: f64,
+    /// Find trains for this beat rate instead (beats per hour).
+    #[arg(
+        long,
+        value_name = "B",
+        conflicts_with = "wheels",
+        requires = "escape_teeth"
+    )]
+    pub bph: Option<f64>,
+    /// The escape wheel's teeth, for --bph.
+    #[arg(long, value_name = "N")]
+    pub escape_teeth: Option<u32>,
+    /// Relative tolerance on --bph.
+    #[arg(long, value_name = "X", default_value = "0.001")]
+    pub tolerance: f64,
+    /// A pendulum design: say where its bob must sit for the train's beat.
+    #[arg(long, value_name = "FILE.toml")]
+    pub design: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum regulate`.
+#[derive(Debug, Args)]
+pub struct RegulateArgs {
+    /// The clock's rate now (positive: gaining), e.g. +12s/day or -30.
+    #[arg(long, value_name = "R", allow_hyphen_values = true)]
+    pub rate: String,
+    /// Pendulum length (a simple pendulum).
+    #[arg(
+        long,
+        value_name = "L",
+        allow_hyphen_values = true,
+        required_unless_present = "design"
+    )]
+    pub length: Option<String>,
+    /// A pendulum design (TOML); the part moved is --part.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<std::path::PathBuf>,
+    /// The part the nut moves (with what rests on it).
+    #[arg(long, value_name = "NAME", default_value = "nut")]
+    pub part: String,
+    /// The rating nut's thread pitch (e.g. 0.7mm).
+    #[arg(long, value_name = "P", conflicts_with = "nut_tpi")]
+    pub nut_pitch: Option<String>,
+    /// The rating nut's threads per inch.
+    #[arg(long, value_name = "N")]
+    pub nut_tpi: Option<f64>,
+    /// Divisions engraved round the nut.
+    #[arg(long, value_name = "N")]
+    pub nut_divisions: Option<u32>,
+    /// Where a regulating tray sits below the pivot [default: a third of the length].
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
+    pub tray: Option<String>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
 }

@@ -9,6 +9,7 @@ mod args;
 mod audio;
 mod commands;
 mod data;
+mod design;
 mod error;
 mod file;
 mod interrupt;

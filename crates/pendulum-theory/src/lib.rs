@@ -37,6 +37,8 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod air;
+pub mod compound;
 pub mod damped;
 pub mod damping;
 pub mod elliptic;
@@ -52,6 +54,7 @@ pub mod listening;
 pub mod pendulum;
 pub mod period;
 pub mod simulation;
+pub mod train;
 
 pub use error::{InputError, Problem, Quantity};
 pub use pendulum::{Amplitude, Pendulum, STANDARD_GRAVITY};

@@ -36,7 +36,7 @@ struct AmplitudeJson {
 
 pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let pendulum = common::pendulum(&args.length, &gravity)?;
+    let pendulum = common::pendulum_of(args.length.as_deref(), args.design.as_deref(), &gravity)?;
     let period = common::quantity("--period", &args.period, Dimension::Time)?;
     let estimate = solve(&pendulum, period)?;
     let uncertainty = match &args.period_uncertainty {

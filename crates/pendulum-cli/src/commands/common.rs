@@ -98,6 +98,28 @@ pub fn height_metres(text: Option<&str>) -> Result<f64, CliError> {
 }
 
 /// The pendulum of `--length` under `gravity`.
+/// The pendulum of `--length`, or of `--design` (its equivalent simple
+/// length, `I / (m d)`: the same equation of motion).
+pub fn pendulum_of(
+    length_text: Option<&str>,
+    design: Option<&std::path::Path>,
+    gravity: &ResolvedGravity,
+) -> Result<Pendulum, CliError> {
+    match (length_text, design) {
+        (_, Some(path)) => {
+            let design = crate::design::read(path)?;
+            let length = design.properties().equivalent_length;
+            Pendulum::new(length, gravity.g_m_s2).map_err(|e| match e.quantity {
+                Quantity::Gravity => CliError::input("--g", &e),
+                _ => CliError::input("--design", &e),
+            })
+        }
+        (Some(text), None) => pendulum(text, gravity),
+        (None, None) => Err(CliError::flag("--length", "give --length or --design")),
+    }
+}
+
+/// The pendulum of `--length`.
 pub fn pendulum(length_text: &str, gravity: &ResolvedGravity) -> Result<Pendulum, CliError> {
     let length = quantity("--length", length_text, Dimension::Length)?;
     Pendulum::new(length, gravity.g_m_s2).map_err(|e| match e.quantity {
@@ -223,7 +245,7 @@ pub struct Swing {
 /// Reads the pendulum, its release and its losses.
 pub fn swing(args: &SwingArgs) -> Result<Swing, CliError> {
     let gravity = gravity(&args.gravity)?;
-    let pendulum = pendulum(&args.length, &gravity)?;
+    let pendulum = pendulum_of(args.length.as_deref(), args.design.as_deref(), &gravity)?;
     let amplitude = amplitude("--amplitude", &args.amplitude)?;
     let mass = args
         .mass

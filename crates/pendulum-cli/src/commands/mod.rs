@@ -12,9 +12,11 @@ mod length;
 mod listen;
 mod measured;
 pub(crate) mod period;
+mod regulate;
 mod report;
 pub(crate) mod simulate;
 mod synth;
+mod train;
 
 use crate::args::{Command, FitCommand};
 use crate::error::CliError;
@@ -79,6 +81,8 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
                 false,
             ),
         },
+        Command::Train(a) => (Vec::new(), a.json),
+        Command::Regulate(a) => (Vec::new(), a.json),
         Command::Length(_) | Command::Amplitude(_) | Command::Gravity(_) | Command::Report(_) => {
             (Vec::new(), false)
         }
@@ -117,6 +121,8 @@ fn run_command(command: &Command) -> Result<Output, CliError> {
         Command::Damped(args) => damped::run(args),
         Command::Report(args) => report::run(args),
         Command::Listen(args) => listen::run(args),
+        Command::Train(args) => train::run(args),
+        Command::Regulate(args) => regulate::run(args),
         Command::Synth(args) => match &args.what {
             crate::args::SynthCommand::Ticks(a) => synth::run(a),
         },

@@ -66,7 +66,7 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
     let gravity = common::gravity(&args.gravity)?;
-    let pendulum = common::pendulum(&args.length, &gravity)?;
+    let pendulum = common::pendulum_of(args.length.as_deref(), args.design.as_deref(), &gravity)?;
     let amplitudes = amplitudes(args)?;
     if let Some(target) = &plot {
         let first = amplitudes[0].degrees();

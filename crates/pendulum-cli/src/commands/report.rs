@@ -62,7 +62,11 @@ struct Row(&'static str, String, &'static str);
 
 pub fn run(args: &ReportArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let pendulum = common::pendulum(args.length.as_deref().unwrap_or(DEFAULT_LENGTH), &gravity)?;
+    let pendulum = common::pendulum_of(
+        Some(args.length.as_deref().unwrap_or(DEFAULT_LENGTH)),
+        args.design.as_deref(),
+        &gravity,
+    )?;
     let amplitude = common::amplitude(
         "--amplitude",
         args.amplitude.as_deref().unwrap_or(DEFAULT_AMPLITUDE),

@@ -2,6 +2,7 @@
 //! one module per command family.
 
 mod damped;
+mod design;
 mod extremes;
 mod fit;
 mod formats;

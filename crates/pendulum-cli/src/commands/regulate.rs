@@ -1,0 +1,171 @@
+//! `pendulum regulate`: from a clock's rate to the turns of its rating nut,
+//! or the weight on a regulating tray.
+
+use super::common;
+use crate::args::RegulateArgs;
+use crate::error::CliError;
+use crate::output::{self, num, Summary};
+use crate::units::{parse_number, Dimension};
+use serde::Serialize;
+
+#[derive(Serialize)]
+struct RegulateJson {
+    rate_s_per_day: f64,
+    equivalent_length_m: f64,
+    /// How far to move the bob, m: positive down (lengthening: for a
+    /// gaining clock), negative up.
+    shift_m: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    nut_turns: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    nut_divisions: Option<f64>,
+    /// With --design: the tray's place below the pivot and the mass to add
+    /// there (negative: to take off).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tray_position_m: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tray_mass_kg: Option<f64>,
+}
+
+/// `+12s/day`, `-30 s/d`, `4`: s/day.
+fn rate(text: &str) -> Result<f64, CliError> {
+    let t = text.trim();
+    let number = ["s/day", "s/d", "sec/day"]
+        .iter()
+        .find_map(|u| t.strip_suffix(u))
+        .unwrap_or(t)
+        .trim();
+    let r = parse_number(number).map_err(|e| CliError::flag("--rate", e))?;
+    if r.is_nan() || r.abs() >= 86_400.0 {
+        return Err(CliError::flag(
+            "--rate",
+            format!("must be less than a day a day, got {text}"),
+        ));
+    }
+    Ok(r)
+}
+
+pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
+    let r = rate(&args.rate)?;
+    let pitch = match (&args.nut_pitch, args.nut_tpi) {
+        (Some(p), _) => {
+            let p = common::quantity("--nut-pitch", p, Dimension::Length)?;
+            if p.is_nan() || p <= 0.0 {
+                return Err(CliError::flag("--nut-pitch", "must be positive"));
+            }
+            Some(p)
+        }
+        (None, Some(tpi)) => {
+            if !(tpi > 0.0 && tpi.is_finite()) {
+                return Err(CliError::flag("--nut-tpi", "must be positive"));
+            }
+            Some(0.0254 / tpi)
+        }
+        (None, None) => None,
+    };
+    let (length, shift, tray) = match &args.design {
+        Some(path) => {
+            let design = crate::design::read(path)?;
+            let p = design.properties();
+            let index = design
+                .parts()
+                .iter()
+                .position(|q| q.name == args.part)
+                .ok_or_else(|| {
+                    CliError::flag(
+                        "--part",
+                        format!("{} has no part named '{}'", path.display(), args.part),
+                    )
+                })?;
+            let shift = design.regulation(index, r).ok_or_else(|| {
+                CliError::flag(
+                    "--part",
+                    format!(
+                        "'{}' rests on another part; name the part it rests on",
+                        args.part
+                    ),
+                )
+            })?;
+            // A tray at `at` below the pivot: adding μ there makes the
+            // equivalent length (I + μ at²) / (m d + μ at).
+            let at = match &args.tray {
+                Some(t) => common::quantity("--tray", t, Dimension::Length)?,
+                None => p.equivalent_length / 3.0,
+            };
+            if !(at > 0.0 && at < p.equivalent_length) {
+                return Err(CliError::flag(
+                    "--tray",
+                    "must lie between the pivot and the centre of oscillation",
+                ));
+            }
+            let target = p.equivalent_length * (1.0 + r / 86_400.0).powi(2);
+            let moment = p.mass * p.centre_of_mass;
+            let mu = (p.inertia - target * moment) / (target * at - at * at);
+            (p.equivalent_length, shift, Some((at, mu)))
+        }
+        None => {
+            let gravity = common::gravity_default();
+            let pendulum = common::pendulum(args.length.as_deref().unwrap_or(""), &gravity)?;
+            let l = pendulum.length_m();
+            (l, l * ((1.0 + r / 86_400.0).powi(2) - 1.0), None)
+        }
+    };
+    let turns = pitch.map(|p| shift / p);
+    let divisions = match (turns, args.nut_divisions) {
+        (Some(t), Some(d)) if d > 0 => Some(t * f64::from(d)),
+        _ => None,
+    };
+    let result = RegulateJson {
+        rate_s_per_day: r,
+        equivalent_length_m: length,
+        shift_m: shift,
+        nut_turns: turns,
+        nut_divisions: divisions,
+        tray_position_m: tray.map(|t| t.0),
+        tray_mass_kg: tray.map(|t| t.1),
+    };
+    if args.json {
+        return output::json(&result);
+    }
+    let way = if shift >= 0.0 { "lower" } else { "raise" };
+    let mut s = Summary::default();
+    s.row(
+        "Rate",
+        format!(
+            "{} s/day ({})",
+            num(r, 6),
+            if r > 0.0 {
+                "gaining"
+            } else if r < 0.0 {
+                "losing"
+            } else {
+                "on time"
+            }
+        ),
+    )
+    .row("Bob", format!("{way} it {} mm", num(shift.abs() * 1e3, 4)));
+    if let Some(t) = turns {
+        let mut nut = format!(
+            "{} turns {} ({} the bob)",
+            num(t.abs(), 4),
+            if shift >= 0.0 { "down" } else { "up" },
+            if shift >= 0.0 { "lowering" } else { "raising" }
+        );
+        if let Some(d) = divisions {
+            nut.push_str(&format!(", {} divisions", num(d.abs(), 4)));
+        }
+        s.row("Nut", nut);
+    }
+    if let Some((at, mu)) = tray {
+        s.row(
+            "Or a tray",
+            format!(
+                "{} {} g at {} mm below the pivot",
+                if mu >= 0.0 { "add" } else { "take off" },
+                num(mu.abs() * 1e3, 4),
+                num(at * 1e3, 5)
+            ),
+        );
+    }
+    Ok(s.render())
+}

@@ -1,0 +1,157 @@
+//! `--design FILE.toml`: a pendulum of parts, through the binary.
+
+use super::util::{f, json, refuses};
+use std::path::PathBuf;
+
+fn example(name: &str) -> String {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    root.join(name).to_str().unwrap().to_string()
+}
+
+/// The steel-rod, brass-bob example's equivalent length, computed here by
+/// the parallel-axis theorem from the sizes in the file.
+#[test]
+fn the_seconds_pendulum_example_by_hand() {
+    let pi = std::f64::consts::PI;
+    // rod: 1100 x 8 mm steel, centre 550 mm.
+    let (lr, dr, cr) = (1.1, 0.008, 0.55);
+    let mr = 7850.0 * pi / 4.0 * dr * dr * lr;
+    let ir = mr * (lr * lr / 12.0 + dr * dr / 16.0 + cr * cr);
+    // nut: 12 x 16 mm steel, centre 1077 mm.
+    let (ln, dn, cn) = (0.012, 0.016, 1.077);
+    let mn = 7850.0 * pi / 4.0 * dn * dn * ln;
+    let i_n = mn * (ln * ln / 12.0 + dn * dn / 16.0 + cn * cn);
+    // bob: brass tube 140 x 80 mm, bore 8.5 mm, resting on the nut's top.
+    let (lb, db, bb) = (0.14, 0.08, 0.0085);
+    let cb = cn - ln / 2.0 - lb / 2.0;
+    let mb = 8500.0 * pi / 4.0 * (db * db - bb * bb) * lb;
+    let ib = mb * (lb * lb / 12.0 + (db * db + bb * bb) / 16.0 + cb * cb);
+    let expected = (ir + i_n + ib) / (mr * cr + mn * cn + mb * cb);
+    let v = json(&[
+        "period",
+        "--design",
+        &example("seconds-steel-brass.toml"),
+        "--amplitude",
+        "2",
+    ]);
+    let l = f(&v, "length_m");
+    assert!((l - expected).abs() < 1e-14, "{l} against {expected}");
+    // The same design through the other commands that take a length.
+    let d = json(&[
+        "damped",
+        "--design",
+        &example("seconds-steel-brass.toml"),
+        "--amplitude",
+        "2",
+        "--q",
+        "5000",
+    ]);
+    assert!((f(&d, "length_m") - expected).abs() < 1e-14);
+    for file in ["invar-lens.toml", "longcase-wood.toml"] {
+        let v = json(&["period", "--design", &example(file), "--amplitude", "2"]);
+        assert!((f(&v, "period_s") - 2.0).abs() < 0.01, "{file}: {v}");
+    }
+}
+
+#[test]
+fn bad_designs_are_refused_naming_file_part_and_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let rod = "[[part]]\nname = \"rod\"\nshape = \"rod\"\nmaterial = \"steel\"\nlength = \"1 m\"\ndiameter = \"8 mm\"\ncentre = \"0.5 m\"\n";
+    let cases = [
+        (
+            "massless.toml",
+            "[[part]]\nname = \"rod\"\nshape = \"rod\"\nmaterial = \"steel\"\nlength = 1\ndiameter = 0.01\ncentre = 0.5\nmassless = true\n".to_string(),
+            "no mass",
+        ),
+        (
+            "negative.toml",
+            format!("{rod}[[part]]\nname = \"bob\"\nshape = \"sphere\"\nmaterial = \"brass\"\ndiameter = \"-100 mm\"\ncentre = \"0.9 m\"\n"),
+            "part 'bob': diameter",
+        ),
+        (
+            "above.toml",
+            format!("{rod}[[part]]\nname = \"bob\"\nshape = \"sphere\"\nmaterial = \"brass\"\ndiameter = \"100 mm\"\ncentre = \"-0.2 m\"\n"),
+            "part 'bob': centre",
+        ),
+        (
+            "through.toml",
+            format!("{rod}[[part]]\nname = \"bob\"\nshape = \"sphere\"\nmaterial = \"brass\"\ndiameter = \"100 mm\"\ncentre = \"20 mm\"\n"),
+            "part 'bob': centre",
+        ),
+        (
+            "unknown.toml",
+            format!("{rod}[[part]]\nname = \"bob\"\nshape = \"sphere\"\nmaterial = \"unobtainium\"\ndiameter = \"100 mm\"\ncentre = \"0.9 m\"\n"),
+            "part 'bob': material",
+        ),
+        ("syntax.toml", "[[part]\nname = \"rod\"\n".to_string(), "line 1"),
+    ];
+    for (name, text, says) in cases {
+        let path = write(name, &text);
+        let message = refuses(&["period", "--design", &path, "--amplitude", "2"], name);
+        assert!(message.contains(says), "{name}: {message}");
+    }
+    refuses(
+        &[
+            "period",
+            "--design",
+            &example("invar-lens.toml"),
+            "--length",
+            "1",
+        ],
+        "--design",
+    );
+}
+
+/// The seconds train through the binary (the long-case figures: 64/8 x
+/// 60/8 into a 30-tooth escape wheel beats 3,600 times an hour and needs
+/// 0.99362 m at standard gravity), trains found for a beat, and the nut.
+#[test]
+fn train_and_regulate() {
+    let v = json(&["train", "--wheels", "64,60,30", "--pinions", "8,8"]);
+    assert_eq!(f(&v, "beats_per_hour"), 3600.0);
+    assert!((f(&v, "length_m") - 0.99362).abs() < 5e-6, "{v}");
+    let found = json(&["train", "--bph", "3600", "--escape-teeth", "30"]);
+    let list = found.as_array().unwrap();
+    assert!(list.iter().any(|c| c["wheels"][0] == 64
+        && c["wheels"][1] == 60
+        && c["pinions"][0] == 8
+        && c["pinions"][1] == 8));
+    for c in list {
+        assert!((f(c, "beats_per_hour") / 3600.0 - 1.0).abs() <= 1e-3);
+    }
+    refuses(
+        &["train", "--wheels", "64,60", "--pinions", "8,8"],
+        "--pinions",
+    );
+    // A simple pendulum gaining 12 s/day: l ((1 + 12/86400)² - 1) lower,
+    // in turns of a 0.7 mm thread.
+    let r = json(&[
+        "regulate",
+        "--length",
+        "0.994m",
+        "--rate",
+        "+12s/day",
+        "--nut-pitch",
+        "0.7mm",
+    ]);
+    let shift = 0.994 * ((1.0 + 12.0 / 86_400.0_f64).powi(2) - 1.0);
+    assert!((f(&r, "shift_m") - shift).abs() < 1e-12);
+    assert!((f(&r, "nut_turns") - shift / 0.7e-3).abs() < 1e-9);
+    // The design: a losing clock's nut goes up, and the tray takes weight.
+    let d = json(&[
+        "regulate",
+        "--design",
+        &example("seconds-steel-brass.toml"),
+        "--rate",
+        "-30",
+        "--nut-tpi",
+        "36",
+    ]);
+    assert!(f(&d, "shift_m") < 0.0 && f(&d, "tray_mass_kg") > 0.0, "{d}");
+    refuses(&["regulate", "--length", "1", "--rate", "fast"], "--rate");
+}

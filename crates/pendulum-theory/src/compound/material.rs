@@ -1,0 +1,75 @@
+//! Materials: density and linear thermal expansion.
+//!
+//! Values at room temperature (about 20 °C). Sources: densities and
+//! expansion coefficients of metals from the CRC Handbook of Chemistry and
+//! Physics (97th ed., 2016, "Thermal expansion of metals and alloys" and
+//! "Density of ... elements"); Invar 36 from the NIST Cryogenic Materials
+//! Properties tables and Carpenter Technology's Invar 36 datasheet
+//! (1.2-1.6e-6/K at 20-100 °C; 1.3e-6 taken); mercury's *volume*
+//! expansion 1.82e-4/K (CRC), which is what a mercury jar uses; fused
+//! silica from Heraeus's datasheet (0.55e-6/K); wood along the grain from
+//! the USDA Wood Handbook (FPL-GTR-190, 2010, ch. 4: 3.1e-6 to 4.5e-6/K for
+//! dry wood parallel to the grain; 3.5e-6 taken, density 600 kg/m³ as for
+//! dry oak or hard maple); carbon-fibre epoxy (unidirectional, along the
+//! fibres) from typical manufacturers' data (-0.5e-6 to 0.5e-6/K; 0.0
+//! taken, density 1600 kg/m³). Clock steel (a plain carbon steel rod):
+//! 11.5e-6/K, the figure the horological literature uses (Rawlings, "The
+//! Science of Clocks and Watches", 3rd ed., 1993).
+
+/// A material of a pendulum part.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    /// Its name.
+    pub name: String,
+    /// Density, kg/m³.
+    pub density: f64,
+    /// Linear thermal expansion coefficient, 1/K (for mercury, the volume
+    /// coefficient, as it rises in its jar).
+    pub expansion: f64,
+}
+
+/// The built-in table: (name, density kg/m³, expansion 1/K).
+pub const TABLE: [(&str, f64, f64); 12] = [
+    ("steel", 7850.0, 11.5e-6),
+    ("invar", 8050.0, 1.3e-6),
+    ("brass", 8500.0, 19.0e-6),
+    ("aluminium", 2700.0, 23.1e-6),
+    ("zinc", 7140.0, 30.2e-6),
+    ("lead", 11_340.0, 28.9e-6),
+    ("mercury", 13_534.0, 182.0e-6),
+    ("cast iron", 7200.0, 10.5e-6),
+    ("fused silica", 2200.0, 0.55e-6),
+    ("wood", 600.0, 3.5e-6),
+    ("carbon fibre", 1600.0, 0.0),
+    ("copper", 8960.0, 16.5e-6),
+];
+
+impl Material {
+    /// A material from the built-in table, by name (case and spaces or
+    /// hyphens ignored; "aluminum" and "carbon fiber" accepted).
+    pub fn named(name: &str) -> Option<Self> {
+        let key: String = name
+            .to_ascii_lowercase()
+            .chars()
+            .filter(|c| c.is_ascii_alphanumeric())
+            .collect();
+        let key = match key.as_str() {
+            "aluminum" => "aluminium".to_string(),
+            "carbonfiber" => "carbonfibre".to_string(),
+            _ => key,
+        };
+        TABLE
+            .iter()
+            .find(|(n, _, _)| n.replace(' ', "") == key)
+            .map(|&(n, density, expansion)| Self {
+                name: n.to_string(),
+                density,
+                expansion,
+            })
+    }
+
+    /// The names in the table, for messages.
+    pub fn names() -> Vec<&'static str> {
+        TABLE.iter().map(|t| t.0).collect()
+    }
+}

@@ -1,0 +1,196 @@
+//! The shapes of pendulum parts: volume, vertical extent, and moment of
+//! inertia about the part's own centre for the swing's axis (horizontal,
+//! perpendicular to the plane of swing).
+//!
+//! Formulas (standard rigid-body results, e.g. Goldstein, Classical
+//! Mechanics, 3rd ed., 2002, §5.3; Meriam & Kraige, Engineering Mechanics:
+//! Dynamics, table D/4):
+//! - a cylinder standing upright (a rod, a cylindrical bob, a tube) of
+//!   length `L`, outer radius `R`, bore radius `r`, turning about a
+//!   transverse axis: `I = m (L²/12 + (R² + r²)/4)`;
+//! - a disc in the plane of swing, radius `R`, turning about its own axis:
+//!   `I = m R²/2`;
+//! - a lens bob: taken as paraboloidal faces (thickness `t (1 - ρ²/R²)` at
+//!   radius `ρ`, which a spherical lens whose thickness is small against
+//!   its diameter follows to within (t/D)²): volume `π R² t / 2`,
+//!   `I = m R²/3`;
+//! - a sphere: `I = 2 m R²/5`;
+//! - a ring (annulus in the plane of swing, radii `R` and `r`):
+//!   `I = m (R² + r²)/2`;
+//! - a point mass: `I = 0`.
+
+use std::f64::consts::PI;
+
+/// A part's shape, dimensions in metres.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Shape {
+    /// An upright cylinder (a rod, a cylindrical bob, a tube, a rating
+    /// nut): length along the rod, outer diameter, bore diameter (0 for a
+    /// solid one).
+    Cylinder {
+        /// Length along the rod, m.
+        length: f64,
+        /// Outer diameter, m.
+        diameter: f64,
+        /// Bore diameter, m.
+        bore: f64,
+    },
+    /// A flat disc in the plane of swing.
+    Disc {
+        /// Diameter, m.
+        diameter: f64,
+        /// Thickness, m.
+        thickness: f64,
+    },
+    /// A lens bob in the plane of swing (see the module notes).
+    Lens {
+        /// Diameter, m.
+        diameter: f64,
+        /// Thickness at the centre, m.
+        thickness: f64,
+    },
+    /// A sphere.
+    Sphere {
+        /// Diameter, m.
+        diameter: f64,
+    },
+    /// A flat ring in the plane of swing.
+    Ring {
+        /// Outer diameter, m.
+        outer: f64,
+        /// Inner diameter, m.
+        inner: f64,
+        /// Thickness, m.
+        thickness: f64,
+    },
+    /// A point mass (its mass is given, not a material's).
+    Point,
+}
+
+impl Shape {
+    /// Volume, m³ (0 for a point).
+    pub fn volume(&self) -> f64 {
+        match *self {
+            Shape::Cylinder {
+                length,
+                diameter,
+                bore,
+            } => 0.25 * PI * (diameter * diameter - bore * bore) * length,
+            Shape::Disc {
+                diameter,
+                thickness,
+            } => 0.25 * PI * diameter * diameter * thickness,
+            Shape::Lens {
+                diameter,
+                thickness,
+            } => 0.125 * PI * diameter * diameter * thickness,
+            Shape::Sphere { diameter } => PI * diameter.powi(3) / 6.0,
+            Shape::Ring {
+                outer,
+                inner,
+                thickness,
+            } => 0.25 * PI * (outer * outer - inner * inner) * thickness,
+            Shape::Point => 0.0,
+        }
+    }
+
+    /// Vertical extent, m: from the part's top to its bottom.
+    pub fn height(&self) -> f64 {
+        match *self {
+            Shape::Cylinder { length, .. } => length,
+            Shape::Disc { diameter, .. } | Shape::Lens { diameter, .. } => diameter,
+            Shape::Sphere { diameter } => diameter,
+            Shape::Ring { outer, .. } => outer,
+            Shape::Point => 0.0,
+        }
+    }
+
+    /// Moment of inertia about the part's own centre per unit mass, m²
+    /// (see the module notes).
+    pub fn inertia_per_mass(&self) -> f64 {
+        match *self {
+            Shape::Cylinder {
+                length,
+                diameter,
+                bore,
+            } => length * length / 12.0 + (diameter * diameter + bore * bore) / 16.0,
+            Shape::Disc { diameter, .. } => diameter * diameter / 8.0,
+            Shape::Lens { diameter, .. } => diameter * diameter / 12.0,
+            Shape::Sphere { diameter } => 0.1 * diameter * diameter,
+            Shape::Ring { outer, inner, .. } => (outer * outer + inner * inner) / 8.0,
+            Shape::Point => 0.0,
+        }
+    }
+
+    /// The same shape with every dimension multiplied by `factor` (thermal
+    /// expansion).
+    pub fn scaled(&self, factor: f64) -> Self {
+        match *self {
+            Shape::Cylinder {
+                length,
+                diameter,
+                bore,
+            } => Shape::Cylinder {
+                length: length * factor,
+                diameter: diameter * factor,
+                bore: bore * factor,
+            },
+            Shape::Disc {
+                diameter,
+                thickness,
+            } => Shape::Disc {
+                diameter: diameter * factor,
+                thickness: thickness * factor,
+            },
+            Shape::Lens {
+                diameter,
+                thickness,
+            } => Shape::Lens {
+                diameter: diameter * factor,
+                thickness: thickness * factor,
+            },
+            Shape::Sphere { diameter } => Shape::Sphere {
+                diameter: diameter * factor,
+            },
+            Shape::Ring {
+                outer,
+                inner,
+                thickness,
+            } => Shape::Ring {
+                outer: outer * factor,
+                inner: inner * factor,
+                thickness: thickness * factor,
+            },
+            Shape::Point => Shape::Point,
+        }
+    }
+
+    /// The potential-flow added-mass coefficient for the part moving
+    /// sideways in the plane of swing: the entrained air's mass over the
+    /// displaced air's. A sphere: 1/2, exact (Lamb, Hydrodynamics, 6th ed.,
+    /// 1932, §92). An upright cylinder moving across its axis: 1, the
+    /// two-dimensional value (Lamb §68), an upper bound for a short one. A
+    /// disc, lens or ring moving edgewise in its own plane: its thickness
+    /// over its diameter, the leading term for a thin oblate body moving
+    /// along its equator (Lamb §114). The air's viscosity entrains more
+    /// than potential flow (Stokes's boundary layer), so these are lower
+    /// bounds of the real effect.
+    pub fn added_mass_coefficient(&self) -> f64 {
+        match *self {
+            Shape::Sphere { .. } => 0.5,
+            Shape::Cylinder { .. } => 1.0,
+            Shape::Disc {
+                diameter,
+                thickness,
+            }
+            | Shape::Lens {
+                diameter,
+                thickness,
+            } => thickness / diameter,
+            Shape::Ring {
+                outer, thickness, ..
+            } => thickness / outer,
+            Shape::Point => 0.0,
+        }
+    }
+}

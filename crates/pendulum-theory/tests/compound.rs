@@ -1,0 +1,193 @@
+//! The real pendulum against closed forms computed here and published
+//! figures (each test names its source).
+
+use pendulum_theory::air::air_density;
+use pendulum_theory::compound::{CompoundPendulum, Material, Part, Placement, Shape};
+use pendulum_theory::train::beats_per_hour;
+
+fn part(name: &str, shape: Shape, material: &str, placement: Placement) -> Part {
+    Part {
+        name: name.into(),
+        shape,
+        material: Material::named(material).expect("a built-in material"),
+        point_mass: 0.0,
+        placement,
+        massless: false,
+    }
+}
+
+fn rod(length: f64, diameter: f64, material: &str) -> Part {
+    part(
+        "rod",
+        Shape::Cylinder {
+            length,
+            diameter,
+            bore: 0.0,
+        },
+        material,
+        Placement::Centre(0.5 * length),
+    )
+}
+
+#[test]
+fn a_uniform_rod_alone() {
+    // I = m (L²/3 + D²/16) about its end, d = L/2: l = 2L/3 + D²/(8L).
+    let (l, d) = (1.2, 0.006);
+    let p = CompoundPendulum::new(vec![rod(l, d, "steel")])
+        .unwrap()
+        .properties();
+    let expected = 2.0 * l / 3.0 + d * d / (8.0 * l);
+    assert!((p.equivalent_length - expected).abs() < 4.0 * f64::EPSILON * expected);
+    let mass = 7850.0 * std::f64::consts::PI / 4.0 * d * d * l;
+    assert!((p.mass - mass).abs() < 4.0 * f64::EPSILON * mass);
+}
+
+#[test]
+fn rod_and_disc_by_the_parallel_axis_theorem() {
+    let (l, d) = (1.0, 0.008);
+    let (dd, t, c) = (0.2, 0.01, 0.95);
+    let p = CompoundPendulum::new(vec![
+        rod(l, d, "steel"),
+        part(
+            "bob",
+            Shape::Disc {
+                diameter: dd,
+                thickness: t,
+            },
+            "brass",
+            Placement::Centre(c),
+        ),
+    ])
+    .unwrap()
+    .properties();
+    let pi = std::f64::consts::PI;
+    let m_rod = 7850.0 * pi * d * d / 4.0 * l;
+    let m_disc = 8500.0 * pi * dd * dd / 4.0 * t;
+    let i = m_rod * (l * l / 3.0 + d * d / 16.0) + m_disc * (dd * dd / 8.0 + c * c);
+    let moment = m_rod * l / 2.0 + m_disc * c;
+    let expected = i / moment;
+    assert!((p.equivalent_length - expected).abs() < 8.0 * f64::EPSILON * expected);
+}
+
+#[test]
+fn a_point_bob_on_a_massless_rod_is_the_simple_pendulum() {
+    let mut r = rod(1.0, 0.005, "steel");
+    r.massless = true;
+    let bob = Part {
+        name: "bob".into(),
+        shape: Shape::Point,
+        material: Material::named("brass").unwrap(),
+        point_mass: 1.0,
+        placement: Placement::Centre(0.99362),
+        massless: false,
+    };
+    let p = CompoundPendulum::new(vec![r, bob]).unwrap();
+    let props = p.properties();
+    assert!((props.equivalent_length - 0.99362).abs() <= f64::EPSILON * 0.99362);
+    // The figure horological texts quote (e.g. Rawlings, The Science of
+    // Clocks and Watches): a steel rod (α = 11.5e-6/°C) loses about half a second a day per °C,
+    // 86400 α / 2 = 0.497 s/day.
+    let c = p.temperature_coefficient();
+    assert!((c + 0.497).abs() < 0.001, "{c}");
+}
+
+#[test]
+fn the_seconds_train() {
+    // The long-case going train (as in Rawlings, The Science of Clocks and
+    // Watches): centre wheel 64 into an
+    // 8-leaf pinion, third wheel 60 into 8, a 30-tooth escape wheel, the
+    // centre arbor turning once an hour: 3,600 beats an hour, a 2 s
+    // period, a seconds pendulum 0.99362 m long at standard gravity.
+    let bph = beats_per_hour(&[64, 60, 30], &[8, 8], 1.0).unwrap();
+    assert_eq!(bph, 3600.0);
+    let period = 2.0 * 3600.0 / bph;
+    let g = 9.80665;
+    let length = g * period * period / (4.0 * std::f64::consts::PI * std::f64::consts::PI);
+    assert!((length - 0.99362).abs() < 5e-6, "{length}");
+}
+
+/// A seconds pendulum: steel rod, brass cylinder bob on a steel nut.
+fn regulator() -> CompoundPendulum {
+    CompoundPendulum::new(vec![
+        rod(1.0, 0.008, "steel"),
+        part(
+            "nut",
+            Shape::Cylinder {
+                length: 0.01,
+                diameter: 0.015,
+                bore: 0.0,
+            },
+            "steel",
+            Placement::Centre(0.995),
+        ),
+        part(
+            "bob",
+            Shape::Cylinder {
+                length: 0.15,
+                diameter: 0.08,
+                bore: 0.008,
+            },
+            "brass",
+            Placement::RestsOn(1),
+        ),
+    ])
+    .unwrap()
+}
+
+#[test]
+fn buoyancy_and_the_barometer() {
+    // Buoyancy of a brass bob (8,500 kg/m³) in air of 1.2 kg/m³: the
+    // restoring weight falls by 1.2/8500, the clock slows by
+    // 86400 × 1.2/8500 / 2 = 6.1 s/day (the figure quoted with Matthys,
+    // Accurate Clock Pendulums, 2004).
+    let bob = CompoundPendulum::new(vec![part(
+        "bob",
+        Shape::Sphere { diameter: 0.1 },
+        "brass",
+        Placement::Centre(0.99),
+    )])
+    .unwrap();
+    let b = bob.rate_in_air(1.2).buoyancy;
+    assert!((b + 6.1).abs() < 0.05, "{b}");
+    // The barometric coefficient of a brass-bob seconds pendulum, per inch
+    // of mercury (3386.39 Pa) at 20 °C and 50%: Matthys measured 0.2 to
+    // 0.4 s/day per inHg on real regulators; buoyancy alone is 0.20.
+    let clock = regulator();
+    let inhg = 3386.39;
+    let rho = |p: f64| air_density(p, 20.0, 0.5);
+    let (low, high) = (101_325.0 - inhg / 2.0, 101_325.0 + inhg / 2.0);
+    let total = clock.rate_in_air(rho(high)).total - clock.rate_in_air(rho(low)).total;
+    let buoyancy = clock.rate_in_air(rho(high)).buoyancy - clock.rate_in_air(rho(low)).buoyancy;
+    eprintln!("per inHg: total {total:.3}, buoyancy {buoyancy:.3} s/day");
+    assert!((-0.5..=-0.2).contains(&total), "{total}");
+    assert!((buoyancy + 0.20).abs() < 0.02, "{buoyancy}");
+}
+
+#[test]
+fn regulation_by_the_nut() {
+    let clock = regulator();
+    let l = clock.properties().equivalent_length;
+    // Gaining 12 s/day: lengthen by l ((1 + 12/86400)² - 1) ≈ 0.276 mm
+    // for a simple pendulum; the bob moves by about that.
+    let shift = clock.regulation(1, 12.0).unwrap();
+    let simple = l * ((1.0 + 12.0 / 86_400.0_f64).powi(2) - 1.0);
+    assert!(
+        shift > 0.0 && (shift / simple - 1.0).abs() < 0.1,
+        "{shift} {simple}"
+    );
+}
+
+#[test]
+fn bad_designs_are_refused_naming_the_part_and_field() {
+    let e = CompoundPendulum::new(vec![rod(-1.0, 0.01, "steel")]).unwrap_err();
+    assert_eq!((e.part.as_str(), e.field), ("rod", "length"));
+    let e = CompoundPendulum::new(vec![part(
+        "bob",
+        Shape::Sphere { diameter: 0.1 },
+        "brass",
+        Placement::Centre(0.02),
+    )])
+    .unwrap_err();
+    assert_eq!((e.part.as_str(), e.field), ("bob", "centre"));
+    assert!(Material::named("unobtainium").is_none());
+}

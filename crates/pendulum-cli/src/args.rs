@@ -99,6 +99,11 @@ unless --channel says otherwise.")]
   pendulum regulate --length 0.994m --rate +12s/day --nut-pitch 0.7mm
   pendulum regulate --design examples/seconds-steel-brass.toml --rate -30 --nut-tpi 36")]
     Regulate(RegulateArgs),
+    /// A design's temperature coefficient, and the compensating tube that
+    /// makes it vanish.
+    #[command(after_help = "Example:
+  pendulum compensate --design examples/seconds-steel-brass.toml --compensator zinc")]
+    Compensate(CompensateArgs),
     /// The one-command analysis of a pendulum, as an HTML page with figures
     /// (default: a seconds pendulum at 3° with Q = 10,000).
     #[command(after_help = "Examples:
@@ -786,6 +791,30 @@ pub struct RegulateArgs {
     /// Where a regulating tray sits below the pivot [default: a third of the length].
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub tray: Option<String>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum compensate`.
+#[derive(Debug, Args)]
+pub struct CompensateArgs {
+    /// The pendulum design (TOML).
+    #[arg(long, value_name = "FILE.toml")]
+    pub design: std::path::PathBuf,
+    /// The tube's material (zinc, aluminium, brass, ...), to size a tube
+    /// under the bob.
+    #[arg(long, value_name = "MATERIAL")]
+    pub compensator: Option<String>,
+    /// The part the tube goes under (it must rest on the nut).
+    #[arg(long, value_name = "NAME", default_value = "bob")]
+    pub part: String,
+    /// The tube's outer diameter [default: the bore and 3 mm, a 1.5 mm wall].
+    #[arg(long, value_name = "D")]
+    pub tube_diameter: Option<String>,
+    /// The tube's bore [default: the rod's diameter and 1 mm].
+    #[arg(long, value_name = "D")]
+    pub tube_bore: Option<String>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,

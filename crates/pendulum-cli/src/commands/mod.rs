@@ -3,6 +3,7 @@
 
 mod amplitude;
 mod common;
+mod compensate;
 pub(crate) mod damped;
 mod fit_beats;
 mod fit_decay;
@@ -83,6 +84,7 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
         },
         Command::Train(a) => (Vec::new(), a.json),
         Command::Regulate(a) => (Vec::new(), a.json),
+        Command::Compensate(a) => (Vec::new(), a.json),
         Command::Length(_) | Command::Amplitude(_) | Command::Gravity(_) | Command::Report(_) => {
             (Vec::new(), false)
         }
@@ -123,6 +125,7 @@ fn run_command(command: &Command) -> Result<Output, CliError> {
         Command::Listen(args) => listen::run(args),
         Command::Train(args) => train::run(args),
         Command::Regulate(args) => regulate::run(args),
+        Command::Compensate(args) => compensate::run(args),
         Command::Synth(args) => match &args.what {
             crate::args::SynthCommand::Ticks(a) => synth::run(a),
         },

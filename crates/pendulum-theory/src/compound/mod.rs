@@ -310,6 +310,88 @@ impl CompoundPendulum {
     }
 }
 
+impl CompoundPendulum {
+    /// The index of the rod (see the module notes), if any.
+    pub fn rod_index(&self) -> Option<usize> {
+        self.rod()
+    }
+
+    /// The same pendulum with a compensating tube of `material` (outer
+    /// diameter `diameter`, bore `bore`, m) put under the part `bob`, which
+    /// must rest on a part placed on the rod (its nut); the rod is made
+    /// longer and the nut moved down by the tube's length, so that the bob
+    /// stays where it was. The tube's length is chosen so that the
+    /// first-order temperature coefficient vanishes: the tube grows upward
+    /// from the nut as much as the rod and the bob's own expansion carry
+    /// the centre of oscillation down. Found by bisection between 0.1 mm
+    /// and 1.5 m on the exact model's coefficient. Returns the design and
+    /// the tube's length, m; `None` when no length in that range does it
+    /// (a compensator that expands less than the rod).
+    pub fn with_compensating_tube(
+        &self,
+        bob: usize,
+        material: Material,
+        diameter: f64,
+        bore: f64,
+    ) -> Option<(Self, f64)> {
+        let Placement::RestsOn(nut) = self.parts.get(bob)?.placement else {
+            return None;
+        };
+        let Placement::Centre(nut_centre) = self.parts[nut].placement else {
+            return None;
+        };
+        let rod = self.rod()?;
+        let build = |length: f64| -> Option<Self> {
+            let mut parts = self.parts.clone();
+            if let Shape::Cylinder {
+                length: l,
+                diameter,
+                bore,
+            } = parts[rod].shape
+            {
+                parts[rod].shape = Shape::Cylinder {
+                    length: l + length,
+                    diameter,
+                    bore,
+                };
+                parts[rod].placement = Placement::Centre(0.5 * (l + length));
+            }
+            parts[nut].placement = Placement::Centre(nut_centre + length);
+            parts.push(Part {
+                name: "compensator".into(),
+                shape: Shape::Cylinder {
+                    length,
+                    diameter,
+                    bore,
+                },
+                material: material.clone(),
+                point_mass: 0.0,
+                placement: Placement::RestsOn(nut),
+                massless: false,
+            });
+            let tube = parts.len() - 1;
+            parts[bob].placement = Placement::RestsOn(tube);
+            Self::new(parts).ok()
+        };
+        let coefficient = |length: f64| build(length).map(|p| p.temperature_coefficient());
+        let (mut low, mut high) = (1e-4, 1.5);
+        let (f_low, f_high) = (coefficient(low)?, coefficient(high)?);
+        if f_low.signum() == f_high.signum() {
+            return None;
+        }
+        for _ in 0..80 {
+            let middle = 0.5 * (low + high);
+            if coefficient(middle)?.signum() == f_low.signum() {
+                low = middle;
+            } else {
+                high = middle;
+            }
+        }
+        let length = 0.5 * (low + high);
+        Some((build(length)?, length))
+    }
+}
+
 /// A clock's rate in air against a vacuum.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AirRates {

@@ -104,6 +104,11 @@ unless --channel says otherwise.")]
     #[command(after_help = "Example:
   pendulum compensate --design examples/seconds-steel-brass.toml --compensator zinc")]
     Compensate(CompensateArgs),
+    /// A design's datasheet: parts, mass, inertia, equivalent length,
+    /// period, temperature and barometric coefficients.
+    #[command(after_help = "Example:
+  pendulum design examples/seconds-steel-brass.toml --pressure 1000hPa --temperature 25 --humidity 60")]
+    Design(DesignArgs),
     /// The one-command analysis of a pendulum, as an HTML page with figures
     /// (default: a seconds pendulum at 3° with Q = 10,000).
     #[command(after_help = "Examples:
@@ -815,6 +820,41 @@ pub struct CompensateArgs {
     /// The tube's bore [default: the rod's diameter and 1 mm].
     #[arg(long, value_name = "D")]
     pub tube_bore: Option<String>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum design`.
+#[derive(Debug, Args)]
+pub struct DesignArgs {
+    /// The pendulum design (TOML).
+    #[arg(value_name = "FILE.toml")]
+    pub file: std::path::PathBuf,
+    /// Air pressure, hPa [default: 1013.25].
+    #[arg(long, value_name = "P", default_value = "1013.25")]
+    pub pressure: f64,
+    /// Air temperature, °C [default: 20].
+    #[arg(
+        long,
+        value_name = "T",
+        default_value = "20",
+        allow_hyphen_values = true
+    )]
+    pub temperature: f64,
+    /// The temperature the clock was regulated at, °C [default: 20].
+    #[arg(
+        long,
+        value_name = "T",
+        default_value = "20",
+        allow_hyphen_values = true
+    )]
+    pub regulated_at: f64,
+    /// Relative humidity, % [default: 50].
+    #[arg(long, value_name = "H", default_value = "50")]
+    pub humidity: f64,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,

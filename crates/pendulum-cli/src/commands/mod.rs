@@ -5,6 +5,7 @@ mod amplitude;
 mod common;
 mod compensate;
 pub(crate) mod damped;
+mod design;
 mod fit_beats;
 mod fit_decay;
 mod fit_trajectory;
@@ -85,6 +86,7 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
         Command::Train(a) => (Vec::new(), a.json),
         Command::Regulate(a) => (Vec::new(), a.json),
         Command::Compensate(a) => (Vec::new(), a.json),
+        Command::Design(a) => (Vec::new(), a.json),
         Command::Length(_) | Command::Amplitude(_) | Command::Gravity(_) | Command::Report(_) => {
             (Vec::new(), false)
         }
@@ -126,6 +128,7 @@ fn run_command(command: &Command) -> Result<Output, CliError> {
         Command::Train(args) => train::run(args),
         Command::Regulate(args) => regulate::run(args),
         Command::Compensate(args) => compensate::run(args),
+        Command::Design(args) => design::run(args),
         Command::Synth(args) => match &args.what {
             crate::args::SynthCommand::Ticks(a) => synth::run(a),
         },

@@ -198,3 +198,39 @@ fn a_zinc_tube_compensator_put_back_into_the_design() {
     let c = f(&after, "temperature_coefficient_s_per_day_per_c");
     assert!(c.abs() < 1e-3, "{after}");
 }
+
+/// The datasheet: the barometric coefficient of the brass-bob seconds
+/// pendulum within the 0.2 to 0.5 s/day per inHg the issue quotes from
+/// Matthys, the rate 10 °C warm ten times the coefficient, the period
+/// 2π sqrt(l/g).
+#[test]
+fn the_datasheet() {
+    let v = json(&[
+        "design",
+        &example("seconds-steel-brass.toml"),
+        "--temperature",
+        "30",
+        "--regulated-at",
+        "20",
+    ]);
+    let per_inhg = f(&v, "pressure_coefficient_s_per_day_per_hpa") * 33.8639;
+    assert!((-0.5..=-0.2).contains(&per_inhg), "{v}");
+    let c = f(&v, "temperature_coefficient_s_per_day_per_c");
+    assert!(
+        (f(&v, "temperature_rate_s_per_day") / (10.0 * c) - 1.0).abs() < 1e-3,
+        "{v}"
+    );
+    let l = f(&v, "equivalent_length_m");
+    let period = 2.0 * std::f64::consts::PI * (l / 9.80665_f64).sqrt();
+    assert!((f(&v, "period_s") - period).abs() < 1e-12);
+    assert!(f(&v, "air_rate_s_per_day") < f(&v, "air_buoyancy_rate_s_per_day"));
+    refuses(
+        &[
+            "design",
+            &example("seconds-steel-brass.toml"),
+            "--pressure",
+            "5",
+        ],
+        "--pressure",
+    );
+}

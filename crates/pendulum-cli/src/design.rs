@@ -60,7 +60,7 @@ pub fn read(path: &Path) -> Result<CompoundPendulum, CliError> {
         let t = p
             .as_table()
             .ok_or_else(|| bad("part", "must be a table".into()))?;
-        const KNOWN: [&str; 14] = [
+        const KNOWN: [&str; 17] = [
             "name",
             "shape",
             "material",
@@ -75,6 +75,9 @@ pub fn read(path: &Path) -> Result<CompoundPendulum, CliError> {
             "rests_on",
             "massless",
             "center",
+            "brass_length",
+            "steel",
+            "brass",
         ];
         for key in t.keys() {
             if !KNOWN.contains(&key.as_str()) {
@@ -105,7 +108,7 @@ pub fn read(path: &Path) -> Result<CompoundPendulum, CliError> {
             )
         })?;
         let shape = match shape_name {
-            "rod" | "cylinder" | "tube" => Shape::Cylinder {
+            "rod" | "cylinder" | "tube" | "gridiron" => Shape::Cylinder {
                 length: need("length")?,
                 diameter: need("diameter")?,
                 bore: size("bore", Dimension::Length)?.unwrap_or(0.0),
@@ -136,6 +139,45 @@ pub fn read(path: &Path) -> Result<CompoundPendulum, CliError> {
                 ))
             }
         };
+        // A gridiron: its drop is `length`, its rods `diameter` thick, of
+        // `steel` and `brass` (default steel and brass), `brass_length` of
+        // brass in the series.
+        if shape_name == "gridiron" {
+            let metal = |key: &'static str, default: &str| -> Result<Material, CliError> {
+                let name = t.get(key).and_then(|v| v.as_str()).unwrap_or(default);
+                Material::named(name)
+                    .ok_or_else(|| bad(key, format!("'{name}' is not in the table")))
+            };
+            let (steel, brass) = (metal("steel", "steel")?, metal("brass", "brass")?);
+            let Shape::Cylinder {
+                length, diameter, ..
+            } = shape
+            else {
+                unreachable!("a gridiron is read as a cylinder");
+            };
+            let brass_length = need("brass_length")?;
+            let centre = size("centre", Dimension::Length)?.ok_or_else(|| {
+                bad(
+                    "centre",
+                    "missing (half the drop, for a gridiron hanging from the pivot)".into(),
+                )
+            })?;
+            out.push(Part {
+                name: name.clone(),
+                shape,
+                material: pendulum_theory::compound::gridiron(
+                    length,
+                    brass_length,
+                    diameter,
+                    &steel,
+                    &brass,
+                ),
+                point_mass: 0.0,
+                placement: Placement::Centre(centre),
+                massless: false,
+            });
+            continue;
+        }
         let material = match t.get("material") {
             Some(toml::Value::String(m)) => Material::named(m).ok_or_else(|| {
                 bad(

@@ -191,3 +191,44 @@ fn bad_designs_are_refused_naming_the_part_and_field() {
     assert_eq!((e.part.as_str(), e.field), ("bob", "centre"));
     assert!(Material::named("unobtainium").is_none());
 }
+
+/// Warming changes sizes, never mass; a bob resting on a nut that does not
+/// move rises as it grows, so the clock gains (a positive coefficient).
+#[test]
+fn warming_keeps_the_mass_and_a_rising_bob_gains() {
+    let zero = Material {
+        name: "zero".into(),
+        density: 7850.0,
+        expansion: 0.0,
+    };
+    let mut r = rod(1.1, 0.008, "steel");
+    r.material = zero.clone();
+    let mut nut = part(
+        "nut",
+        Shape::Cylinder {
+            length: 0.012,
+            diameter: 0.016,
+            bore: 0.0,
+        },
+        "steel",
+        Placement::Centre(1.077),
+    );
+    nut.material = zero;
+    let bob = part(
+        "bob",
+        Shape::Cylinder {
+            length: 0.14,
+            diameter: 0.08,
+            bore: 0.0085,
+        },
+        "brass",
+        Placement::RestsOn(1),
+    );
+    let p = CompoundPendulum::new(vec![r, nut, bob]).unwrap();
+    let (m0, m1) = (
+        p.properties().mass,
+        p.at_temperature(10.0).properties().mass,
+    );
+    assert!((m1 / m0 - 1.0).abs() < 1e-14, "{m0} {m1}");
+    assert!(p.temperature_coefficient() > 0.0);
+}

@@ -21,6 +21,10 @@ struct CompensateJson {
     tube_diameter_m: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     tube_bore_m: Option<f64>,
+    /// For a gridiron: the brass in its series, m (the steel is the drop
+    /// and this).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    brass_length_m: Option<f64>,
     /// With the tube, the rod lengthened and the nut lowered by its length.
     #[serde(skip_serializing_if = "Option::is_none")]
     compensated_coefficient_s_per_day_per_c: Option<f64>,
@@ -35,9 +39,25 @@ pub fn run(args: &CompensateArgs) -> Result<String, CliError> {
         tube_length_m: None,
         tube_diameter_m: None,
         tube_bore_m: None,
+        brass_length_m: None,
         compensated_coefficient_s_per_day_per_c: None,
     };
-    if let Some(name) = &args.compensator {
+    if args.compensator.as_deref() == Some("gridiron") {
+        let (steel, brass) = (
+            Material::named("steel").expect("in the table"),
+            Material::named("brass").expect("in the table"),
+        );
+        let (compensated, brass_length) = design.with_gridiron(&steel, &brass).ok_or_else(|| {
+            CliError::flag(
+                "--compensator",
+                "no steel and brass gridiron of this rod's drop cancels the coefficient (the design needs a rod hanging from the pivot)",
+            )
+        })?;
+        result.compensator = Some("gridiron".into());
+        result.brass_length_m = Some(brass_length);
+        result.compensated_coefficient_s_per_day_per_c =
+            Some(compensated.temperature_coefficient());
+    } else if let Some(name) = &args.compensator {
         let material = Material::named(name).ok_or_else(|| {
             CliError::flag(
                 "--compensator",
@@ -122,6 +142,19 @@ pub fn run(args: &CompensateArgs) -> Result<String, CliError> {
                 num(result.tube_bore_m.unwrap_or(0.0) * 1e3, 4),
                 args.part,
                 num(l * 1e3, 5)
+            ),
+        )
+        .row("Then", format!("{} s/day per °C", num(after, 3)));
+    }
+    if let (Some(b), Some(after)) = (
+        result.brass_length_m,
+        result.compensated_coefficient_s_per_day_per_c,
+    ) {
+        s.row(
+            "Gridiron",
+            format!(
+                "steel and brass rods in series, {} mm of brass against the drop's steel and as much again",
+                num(b * 1e3, 5)
             ),
         )
         .row("Then", format!("{} s/day per °C", num(after, 3)));

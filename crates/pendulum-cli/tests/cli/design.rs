@@ -234,3 +234,32 @@ fn the_datasheet() {
         "--pressure",
     );
 }
+
+/// A gridiron sized by `compensate`, written into a design file with its
+/// own sizes (`shape = "gridiron"`, its brass length), leaves a
+/// temperature coefficient below 1e-3 s/day per °C. The brass in series
+/// is near D α_s / (α_b - α_s) = 1.1 × 11.5 / 7.5 = 1.69 m for the
+/// 1.1 m drop (less the bob's own rise from its nut).
+#[test]
+fn a_gridiron_put_back_into_the_design() {
+    let v = json(&[
+        "compensate",
+        "--design",
+        &example("seconds-steel-brass.toml"),
+        "--compensator",
+        "gridiron",
+    ]);
+    let brass = f(&v, "brass_length_m");
+    assert!(brass > 1.0 && brass < 2.5, "{v}");
+    let text = format!(
+        "[[part]]\nname = \"gridiron\"\nshape = \"gridiron\"\nlength = 1.1\ndiameter = 0.008\nbrass_length = {brass}\ncentre = 0.55\n\n\
+         [[part]]\nname = \"nut\"\nshape = \"cylinder\"\nmaterial = \"steel\"\nlength = 0.012\ndiameter = 0.016\ncentre = 1.077\n\n\
+         [[part]]\nname = \"bob\"\nshape = \"cylinder\"\nmaterial = \"brass\"\nlength = 0.14\ndiameter = 0.08\nbore = 0.0085\nrests_on = \"nut\"\n"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("gridiron.toml");
+    std::fs::write(&path, text).unwrap();
+    let after = json(&["compensate", "--design", path.to_str().unwrap()]);
+    let c = f(&after, "temperature_coefficient_s_per_day_per_c");
+    assert!(c.abs() < 1e-3, "{after}");
+}

@@ -235,9 +235,17 @@ impl CompoundPendulum {
         let parts: Vec<Part> = self
             .parts
             .iter()
-            .map(|p| Part {
-                shape: p.shape.scaled(1.0 + p.material.expansion * delta),
-                ..p.clone()
+            .map(|p| {
+                // Every dimension grows; the mass does not (the density
+                // falls by the cube of the growth).
+                let factor = 1.0 + p.material.expansion * delta;
+                let mut material = p.material.clone();
+                material.density /= factor.powi(3);
+                Part {
+                    shape: p.shape.scaled(factor),
+                    material,
+                    ..p.clone()
+                }
             })
             .collect();
         let rod = self.rod().map(|i| self.parts[i].material.expansion);
@@ -389,6 +397,77 @@ impl CompoundPendulum {
         }
         let length = 0.5 * (low + high);
         Some((build(length)?, length))
+    }
+}
+
+/// A gridiron (Harrison's: steel rods hanging down, brass rods standing up,
+/// in series, so that the drop `D` from the pivot to the bob's support is
+/// `L_s - L_b`) as the rod it replaces: an upright cylinder of length `D`
+/// and the rods' diameter, of a material whose expansion is the series'
+/// net `(L_s α_s - L_b α_b) / D` and whose density carries the rods' mass:
+/// each length of the series as a symmetric pair of rods but the central
+/// steel rod alone, `m = A (ρ_s (2 L_s - D) + 2 ρ_b L_b)`, spread evenly
+/// over the drop (the frame's crossbars are left out). Returns that
+/// material.
+pub fn gridiron(
+    drop: f64,
+    brass_length: f64,
+    rod_diameter: f64,
+    steel: &Material,
+    brass: &Material,
+) -> Material {
+    let steel_length = drop + brass_length;
+    let area = 0.25 * std::f64::consts::PI * rod_diameter * rod_diameter;
+    let mass =
+        area * (steel.density * (2.0 * steel_length - drop) + 2.0 * brass.density * brass_length);
+    Material {
+        name: format!(
+            "gridiron ({} {:.1} mm, {} {:.1} mm)",
+            steel.name,
+            steel_length * 1e3,
+            brass.name,
+            brass_length * 1e3
+        ),
+        density: mass / (area * drop),
+        expansion: (steel_length * steel.expansion - brass_length * brass.expansion) / drop,
+    }
+}
+
+impl CompoundPendulum {
+    /// The same pendulum with its rod replaced by a gridiron of `steel` and
+    /// `brass` of the same drop and rod diameter (see [`gridiron`]), the
+    /// brass length chosen by bisection (0 to three drops) so that the
+    /// first-order temperature coefficient vanishes. Returns the design and
+    /// the brass length, m.
+    pub fn with_gridiron(&self, steel: &Material, brass: &Material) -> Option<(Self, f64)> {
+        let rod = self.rod()?;
+        let Shape::Cylinder {
+            length, diameter, ..
+        } = self.parts[rod].shape
+        else {
+            return None;
+        };
+        let build = |brass_length: f64| -> Option<Self> {
+            let mut parts = self.parts.clone();
+            parts[rod].material = gridiron(length, brass_length, diameter, steel, brass);
+            Self::new(parts).ok()
+        };
+        let coefficient = |b: f64| build(b).map(|p| p.temperature_coefficient());
+        let (mut low, mut high) = (0.0, 3.0 * length);
+        let f_low = coefficient(low)?;
+        if f_low.signum() == coefficient(high)?.signum() {
+            return None;
+        }
+        for _ in 0..80 {
+            let middle = 0.5 * (low + high);
+            if coefficient(middle)?.signum() == f_low.signum() {
+                low = middle;
+            } else {
+                high = middle;
+            }
+        }
+        let b = 0.5 * (low + high);
+        Some((build(b)?, b))
     }
 }
 

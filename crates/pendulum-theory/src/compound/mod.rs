@@ -381,21 +381,7 @@ impl CompoundPendulum {
             parts[bob].placement = Placement::RestsOn(tube);
             Self::new(parts).ok()
         };
-        let coefficient = |length: f64| build(length).map(|p| p.temperature_coefficient());
-        let (mut low, mut high) = (1e-4, 1.5);
-        let (f_low, f_high) = (coefficient(low)?, coefficient(high)?);
-        if f_low.signum() == f_high.signum() {
-            return None;
-        }
-        for _ in 0..80 {
-            let middle = 0.5 * (low + high);
-            if coefficient(middle)?.signum() == f_low.signum() {
-                low = middle;
-            } else {
-                high = middle;
-            }
-        }
-        let length = 0.5 * (low + high);
+        let length = zero_coefficient(build, 1e-4, 1.5)?;
         Some((build(length)?, length))
     }
 }
@@ -452,23 +438,34 @@ impl CompoundPendulum {
             parts[rod].material = gridiron(length, brass_length, diameter, steel, brass);
             Self::new(parts).ok()
         };
-        let coefficient = |b: f64| build(b).map(|p| p.temperature_coefficient());
-        let (mut low, mut high) = (0.0, 3.0 * length);
-        let f_low = coefficient(low)?;
-        if f_low.signum() == coefficient(high)?.signum() {
-            return None;
-        }
-        for _ in 0..80 {
-            let middle = 0.5 * (low + high);
-            if coefficient(middle)?.signum() == f_low.signum() {
-                low = middle;
-            } else {
-                high = middle;
-            }
-        }
-        let b = 0.5 * (low + high);
+        let b = zero_coefficient(build, 0.0, 3.0 * length)?;
         Some((build(b)?, b))
     }
+}
+
+/// The size in `[low, high]` at which the design `build` makes has no
+/// first-order temperature coefficient, by bisection (80 halvings, to the
+/// last bit); `None` when the coefficient keeps its sign over the range.
+fn zero_coefficient(
+    build: impl Fn(f64) -> Option<CompoundPendulum>,
+    low: f64,
+    high: f64,
+) -> Option<f64> {
+    let coefficient = |x: f64| build(x).map(|p| p.temperature_coefficient());
+    let (mut low, mut high) = (low, high);
+    let f_low = coefficient(low)?;
+    if f_low.signum() == coefficient(high)?.signum() {
+        return None;
+    }
+    for _ in 0..80 {
+        let middle = 0.5 * (low + high);
+        if coefficient(middle)?.signum() == f_low.signum() {
+            low = middle;
+        } else {
+            high = middle;
+        }
+    }
+    Some(0.5 * (low + high))
 }
 
 /// A clock's rate in air against a vacuum.

@@ -831,10 +831,10 @@ pub struct DesignArgs {
     /// The pendulum design (TOML).
     #[arg(value_name = "FILE.toml")]
     pub file: std::path::PathBuf,
-    /// Air pressure, hPa [default: 1013.25].
+    /// Air pressure, hPa.
     #[arg(long, value_name = "P", default_value = "1013.25")]
     pub pressure: f64,
-    /// Air temperature, °C [default: 20].
+    /// Air temperature, °C.
     #[arg(
         long,
         value_name = "T",
@@ -842,7 +842,7 @@ pub struct DesignArgs {
         allow_hyphen_values = true
     )]
     pub temperature: f64,
-    /// The temperature the clock was regulated at, °C [default: 20].
+    /// The temperature the clock was regulated at, °C.
     #[arg(
         long,
         value_name = "T",
@@ -850,7 +850,7 @@ pub struct DesignArgs {
         allow_hyphen_values = true
     )]
     pub regulated_at: f64,
-    /// Relative humidity, % [default: 50].
+    /// Relative humidity, %.
     #[arg(long, value_name = "H", default_value = "50")]
     pub humidity: f64,
     #[command(flatten)]

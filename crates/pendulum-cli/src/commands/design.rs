@@ -6,6 +6,7 @@ use crate::error::CliError;
 use crate::output::{self, num, Summary};
 use pendulum_theory::air::air_density;
 use pendulum_theory::compound::rate_of_length_ratio;
+use pendulum_theory::Pendulum;
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -48,13 +49,26 @@ pub fn run(args: &DesignArgs) -> Result<String, CliError> {
         args.temperature,
         args.humidity / 100.0,
     );
-    let rho = air_density(p, t, h);
-    if !rho.is_finite() {
+    // The air formula's range, each flag on its own.
+    if !(600.0..=1100.0).contains(&args.pressure) {
         return Err(CliError::flag(
             "--pressure",
-            "pressure 600-1100 hPa, temperature -20-60 °C and humidity 0-100% are the air formula's range",
+            format!("must lie between 600 and 1100 hPa, got {}", args.pressure),
         ));
     }
+    if !(-20.0..=60.0).contains(&t) {
+        return Err(CliError::flag(
+            "--temperature",
+            format!("must lie between -20 and 60 °C, got {t}"),
+        ));
+    }
+    if !(0.0..=100.0).contains(&args.humidity) {
+        return Err(CliError::flag(
+            "--humidity",
+            format!("must lie between 0 and 100 %, got {}", args.humidity),
+        ));
+    }
+    let rho = air_density(p, t, h);
     if !(-50.0..=100.0).contains(&args.regulated_at) {
         return Err(CliError::flag(
             "--regulated-at",
@@ -62,16 +76,15 @@ pub fn run(args: &DesignArgs) -> Result<String, CliError> {
         ));
     }
     let props = design.properties();
-    let period = 2.0 * std::f64::consts::PI * (props.equivalent_length / gravity.g_m_s2).sqrt();
+    let period = Pendulum::new(props.equivalent_length, gravity.g_m_s2)
+        .map_err(|e| CliError::input("--design", &e))?
+        .small_angle_period();
     let warmer = design
         .at_temperature(t - args.regulated_at)
         .properties()
         .equivalent_length;
     let air = design.rate_in_air(rho);
-    let step = 100.0;
-    let per_hpa = 0.5
-        * (design.rate_in_air(air_density(p + step, t, h)).total
-            - design.rate_in_air(air_density(p - step, t, h)).total);
+    let per_hpa = design.pressure_coefficient(p, t, h);
     let result = DesignJson {
         file: args.file.display().to_string(),
         parts: design

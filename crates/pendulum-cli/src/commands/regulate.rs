@@ -6,6 +6,7 @@ use crate::args::RegulateArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
 use crate::units::{parse_number, Dimension};
+use pendulum_theory::compound::length_change_for_rate;
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -86,8 +87,6 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
                     ),
                 )
             })?;
-            // A tray at `at` below the pivot: adding μ there makes the
-            // equivalent length (I + μ at²) / (m d + μ at).
             let at = match &args.tray {
                 Some(t) => common::quantity("--tray", t, Dimension::Length)?,
                 None => p.equivalent_length / 3.0,
@@ -98,16 +97,17 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
                     "must lie between the pivot and the centre of oscillation",
                 ));
             }
-            let target = p.equivalent_length * (1.0 + r / 86_400.0).powi(2);
-            let moment = p.mass * p.centre_of_mass;
-            let mu = (p.inertia - target * moment) / (target * at - at * at);
-            (p.equivalent_length, shift, Some((at, mu)))
+            (
+                p.equivalent_length,
+                shift,
+                Some((at, design.tray_mass(at, r))),
+            )
         }
         None => {
             let gravity = common::gravity_default();
             let pendulum = common::pendulum(args.length.as_deref().unwrap_or(""), &gravity)?;
             let l = pendulum.length_m();
-            (l, l * ((1.0 + r / 86_400.0).powi(2) - 1.0), None)
+            (l, length_change_for_rate(l, r), None)
         }
     };
     let turns = pitch.map(|p| shift / p);

@@ -5,7 +5,9 @@ use super::common;
 use crate::args::TrainArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
+use pendulum_theory::period::length_for_period;
 use pendulum_theory::train::{beats_per_hour, trains_for};
+use pendulum_theory::Amplitude;
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -97,8 +99,20 @@ pub fn run(args: &TrainArgs) -> Result<String, CliError> {
             ),
         )
     })?;
+    // No clock beats faster than 100 a second (a typing error otherwise).
+    if bph > 360_000.0 {
+        return Err(CliError::flag(
+            "--wheels",
+            format!(
+                "give {} beats/hour: no clock beats faster than 100 a second",
+                num(bph, 6)
+            ),
+        ));
+    }
     let period = 7200.0 / bph;
-    let length = gravity.g_m_s2 * period * period / (4.0 * std::f64::consts::PI.powi(2));
+    let small = Amplitude::from_radians(0.0).map_err(|e| CliError::input("--wheels", &e))?;
+    let length = length_for_period(period, small, gravity.g_m_s2)
+        .map_err(|e| CliError::input("--wheels", &e))?;
     let design_shift = match &args.design {
         Some(path) => {
             let design = crate::design::read(path)?;

@@ -285,13 +285,37 @@ impl CompoundPendulum {
         }
     }
 
+    /// The mass, kg, to add on a regulating tray `at` m below the pivot
+    /// (negative: to take off) to correct a clock gaining `rate` s/day:
+    /// with `μ` there the equivalent length becomes `(I + μ at²) /
+    /// (m d + μ at)`, set to `l (1 + rate/86400)²` and solved for `μ`.
+    pub fn tray_mass(&self, at: f64, rate: f64) -> f64 {
+        let p = self.properties();
+        let target = p.equivalent_length + length_change_for_rate(p.equivalent_length, rate);
+        (p.inertia - target * p.mass * p.centre_of_mass) / (target * at - at * at)
+    }
+
+    /// The rate change per hPa of air pressure, s/day, at `pressure` Pa,
+    /// `temperature` °C and relative humidity `humidity` (0-1): a central
+    /// difference of ±1 hPa of [`CompoundPendulum::rate_in_air`] with the
+    /// air's density from [`crate::air::air_density`]. NaN outside that
+    /// formula's range.
+    pub fn pressure_coefficient(&self, pressure: f64, temperature: f64, humidity: f64) -> f64 {
+        let rate = |p: f64| {
+            self.rate_in_air(crate::air::air_density(p, temperature, humidity))
+                .total
+        };
+        0.5 * (rate(pressure + 100.0) - rate(pressure - 100.0))
+    }
+
     /// How far to move part `index` (and what rests on it) down, m
     /// (negative: up), to change the rate by `-rate` s/day: a clock gaining
     /// `rate` s/day is brought to time. The equivalent length must become
     /// `l (1 + rate/86400)²`; the move is found by Newton's method on the
     /// exact model (derivative by central differences of ±0.1 mm).
     pub fn regulation(&self, index: usize, rate: f64) -> Option<f64> {
-        let target = self.properties().equivalent_length * (1.0 + rate / DAY).powi(2);
+        let l = self.properties().equivalent_length;
+        let target = l + length_change_for_rate(l, rate);
         let length_at = |shift: f64| -> Option<f64> {
             let mut parts = self.parts.clone();
             let Placement::Centre(c) = parts.get(index)?.placement else {
@@ -475,6 +499,13 @@ pub struct AirRates {
     pub total: f64,
     /// Buoyancy alone, s/day.
     pub buoyancy: f64,
+}
+
+/// The change of length, m, that corrects a clock of equivalent length
+/// `length` m gaining `rate` s/day: `l ((1 + rate/86400)² - 1)` (positive:
+/// lengthen), since the period goes as the square root of the length.
+pub fn length_change_for_rate(length: f64, rate: f64) -> f64 {
+    length * ((1.0 + rate / DAY).powi(2) - 1.0)
 }
 
 /// The rate change, s/day, of a clock whose equivalent length is

@@ -99,10 +99,12 @@ unless --channel says otherwise.")]
   pendulum regulate --length 0.994m --rate +12s/day --nut-pitch 0.7mm
   pendulum regulate --design examples/seconds-steel-brass.toml --rate -30 --nut-tpi 36")]
     Regulate(RegulateArgs),
-    /// A design's temperature coefficient, and the compensating tube that
-    /// makes it vanish.
-    #[command(after_help = "Example:
-  pendulum compensate --design examples/seconds-steel-brass.toml --compensator zinc")]
+    /// A design's temperature coefficient, and the compensator that makes it
+    /// vanish: a tube or collar, a gridiron, or a jar of mercury.
+    #[command(after_help = "Examples:
+  pendulum compensate --design examples/seconds-steel-brass.toml --compensator zinc
+  pendulum compensate --design examples/invar-lens.toml --compensator collar
+  pendulum compensate --design examples/seconds-steel-brass.toml --compensator mercury --write jar.toml")]
     Compensate(CompensateArgs),
     /// A design's datasheet: parts, mass, inertia, equivalent length,
     /// period, temperature and barometric coefficients.
@@ -337,13 +339,13 @@ pub struct FitDecayArgs {
     /// Pendulum length: turns rates into ζ, Q, friction angle and drag (needed for a swing column).
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub length: Option<String>,
-    /// Bob mass, for the energy lost per period and the power.
-    #[arg(
-        long,
-        value_name = "M",
-        allow_hyphen_values = true,
-        requires = "length"
-    )]
+    /// A pendulum designed as parts (TOML; see examples/*.toml), in place
+    /// of --length: its equivalent length, and its effective mass M d / l
+    /// for the energy budget.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<std::path::PathBuf>,
+    /// Bob mass, for the energy lost per period and the power (with --length).
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
     pub mass: Option<String>,
     /// The period, to turn rates into ζ, Q, friction angle and drag
     /// [default: from the turning points of a track, else from --length].
@@ -375,6 +377,10 @@ pub struct FitTrajectoryArgs {
     /// Pendulum length, to give g.
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub length: Option<String>,
+    /// A pendulum designed as parts (TOML), in place of --length: g from
+    /// its equivalent length.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<std::path::PathBuf>,
     /// Section 1-4's closed form, the nonlinear equation integrated inside
     /// the fit, or auto: nonlinear when the largest swing exceeds 5°.
     #[arg(long, default_value = "auto", value_parser = ["auto", "linear", "nonlinear"])]
@@ -807,18 +813,33 @@ pub struct CompensateArgs {
     /// The pendulum design (TOML).
     #[arg(long, value_name = "FILE.toml")]
     pub design: std::path::PathBuf,
-    /// The tube's material (zinc, aluminium, brass, ...), to size a tube
-    /// under the bob.
-    #[arg(long, value_name = "MATERIAL")]
+    /// What to size: a tube of a material under the bob (zinc, aluminium,
+    /// brass, ...; `collar`: a brass collar), `gridiron` (steel and brass
+    /// rods in place of the rod), or `mercury` (a jar of mercury in place
+    /// of the bob).
+    #[arg(long, value_name = "KIND")]
     pub compensator: Option<String>,
-    /// The part the tube goes under (it must rest on the nut).
+    /// The part the tube goes under, or the jar replaces (it must rest on
+    /// the nut).
     #[arg(long, value_name = "NAME", default_value = "bob")]
     pub part: String,
+    /// The mercury jar's material [default: glass].
+    #[arg(long, value_name = "MATERIAL")]
+    pub jar_material: Option<String>,
+    /// The mercury jar's outer diameter [default: the bob's, or 60 mm].
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
+    pub jar_diameter: Option<String>,
+    /// The mercury jar's wall (and bottom) thickness [default: 4 mm].
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub jar_wall: Option<String>,
+    /// Write the compensated design to this TOML file (`-`: standard output).
+    #[arg(long, value_name = "FILE.toml")]
+    pub write: Option<std::path::PathBuf>,
     /// The tube's outer diameter [default: the bore and 3 mm, a 1.5 mm wall].
-    #[arg(long, value_name = "D")]
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub tube_diameter: Option<String>,
     /// The tube's bore [default: the rod's diameter and 1 mm].
-    #[arg(long, value_name = "D")]
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub tube_bore: Option<String>,
     /// Print one JSON object.
     #[arg(long)]

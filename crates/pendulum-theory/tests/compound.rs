@@ -200,6 +200,7 @@ fn warming_keeps_the_mass_and_a_rising_bob_gains() {
         name: "zero".into(),
         density: 7850.0,
         expansion: 0.0,
+        liquid: false,
     };
     let mut r = rod(1.1, 0.008, "steel");
     r.material = zero.clone();
@@ -231,4 +232,140 @@ fn warming_keeps_the_mass_and_a_rising_bob_gains() {
     );
     assert!((m1 / m0 - 1.0).abs() < 1e-14, "{m0} {m1}");
     assert!(p.temperature_coefficient() > 0.0);
+}
+
+/// Graham's mercury jar against the first-order condition derived here
+/// by hand. Everything but the mercury is massless (the jar of a density
+/// 1e-9 kg/m³); the rod of steel (α_s) carries the stirrup down, the jar's
+/// bottom (thickness w, α_j) and the mercury's height H = h (1 + βΔ) /
+/// (1 + α_j Δ)² (β its volume expansion, the width following the jar) and
+/// diameter d = (D - 2w)(1 + α_j Δ) rise from it. With the mercury's
+/// centre c and k² = H²/12 + d²/16, l = c + k²/c, and dl/dΔ = dc (1 -
+/// k²/c²) + dk²/c with dc = (R - s) α_s - w α_j - h (β - 2α_j)/2 and dk² =
+/// h² (β - 2α_j)/6 + (D - 2w)² α_j/8; its zero in h is found here by
+/// bisection and must match the library's height.
+#[test]
+fn the_mercury_jar_against_the_first_order_condition() {
+    let (r, s_len, big_d, w) = (1.0, 0.01, 0.06, 0.003);
+    let steel = Material::named("steel").unwrap();
+    let beta = Material::named("mercury").unwrap().expansion;
+    let jar = Material {
+        name: "light glass".into(),
+        density: 1e-9,
+        expansion: 9e-6,
+        liquid: false,
+    };
+    let mut rod_part = rod(r, 0.008, "steel");
+    rod_part.massless = true;
+    let mut stirrup = part(
+        "stirrup",
+        Shape::Cylinder {
+            length: s_len,
+            diameter: 0.02,
+            bore: 0.0,
+        },
+        "steel",
+        Placement::Centre(r - 0.5 * s_len),
+    );
+    stirrup.massless = true;
+    let bob = part(
+        "bob",
+        Shape::Cylinder {
+            length: 0.1,
+            diameter: big_d,
+            bore: 0.0,
+        },
+        "brass",
+        Placement::RestsOn(1),
+    );
+    let design = CompoundPendulum::new(vec![rod_part, stirrup, bob]).unwrap();
+    let (compensated, h) = design.with_mercury_jar(2, &jar, big_d, w).unwrap();
+
+    let (a_s, a_j) = (steel.expansion, jar.expansion);
+    let slope = |h: f64| {
+        let top = (r - s_len) - w;
+        let c = top - 0.5 * h;
+        let inner = big_d - 2.0 * w;
+        let k2 = h * h / 12.0 + inner * inner / 16.0;
+        let dc = (r - s_len) * a_s - w * a_j - 0.5 * h * (beta - 2.0 * a_j);
+        let dk2 = h * h * (beta - 2.0 * a_j) / 6.0 + inner * inner * a_j / 8.0;
+        dc * (1.0 - k2 / (c * c)) + dk2 / c
+    };
+    let (mut lo, mut hi) = (1e-3, 0.5);
+    assert!(slope(lo) > 0.0 && slope(hi) < 0.0);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if slope(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let expected = 0.5 * (lo + hi);
+    assert!(
+        (h / expected - 1.0).abs() < 1e-8,
+        "library {h}, by hand {expected}"
+    );
+    assert!(compensated.temperature_coefficient().abs() < 1e-6);
+    // The mercury's mass stays put as it warms; its level rises.
+    let warm = compensated.at_temperature(10.0);
+    let mass = |p: &CompoundPendulum| p.parts()[4].mass();
+    assert!((mass(&warm) / mass(&compensated) - 1.0).abs() < 1e-12);
+    let Shape::Cylinder { length, .. } = warm.parts()[4].shape else {
+        panic!("the mercury is a cylinder");
+    };
+    let rise = h * ((1.0 + 10.0 * beta) / (1.0 + 10.0 * a_j).powi(2));
+    assert!((length / rise - 1.0).abs() < 1e-14);
+}
+
+/// A liquid placed by its centre, or as a disc, is refused: it rests on
+/// its jar's bottom.
+#[test]
+fn a_liquid_must_rest_in_its_jar() {
+    let mercury = part(
+        "mercury",
+        Shape::Cylinder {
+            length: 0.1,
+            diameter: 0.05,
+            bore: 0.0,
+        },
+        "mercury",
+        Placement::Centre(0.9),
+    );
+    let e = CompoundPendulum::new(vec![rod(1.0, 0.008, "steel"), mercury]).unwrap_err();
+    assert_eq!((e.part.as_str(), e.field), ("mercury", "rests_on"));
+}
+
+/// A point bob of mass m at x on a uniform rod (mass M_r, length L,
+/// diameter D): l(x) = (M_r (L²/3 + D²/16) + m x²) / (M_r L/2 + m x), so
+/// moving the bob down changes the rate by -43200 l'(x) / l s/day per
+/// metre, with l'(x) by the quotient rule; and the effective mass M d / l
+/// gives the swing's energy M g d (1 - cos A) as m_eff g l (1 - cos A).
+#[test]
+fn the_nut_rate_and_the_effective_mass_by_hand() {
+    let (big_l, dia, x, m) = (1.1, 0.008, 0.99, 4.0);
+    let bob = Part {
+        name: "bob".into(),
+        shape: Shape::Point,
+        material: Material::named("brass").unwrap(),
+        point_mass: m,
+        placement: Placement::Centre(x),
+        massless: false,
+    };
+    let p = CompoundPendulum::new(vec![rod(big_l, dia, "steel"), bob]).unwrap();
+    let m_r = 7850.0 * std::f64::consts::PI / 4.0 * dia * dia * big_l;
+    let num = m_r * (big_l * big_l / 3.0 + dia * dia / 16.0) + m * x * x;
+    let den = m_r * big_l / 2.0 + m * x;
+    let l = num / den;
+    let slope = (2.0 * m * x * den - m * num) / (den * den);
+    let expected = -43_200.0 * slope / l;
+    let got = p.rate_per_metre(1).unwrap();
+    assert!(
+        (got / expected - 1.0).abs() < 1e-7,
+        "{got} against {expected}"
+    );
+    let props = p.properties();
+    let energy = (m_r + m) * 9.80665 * (den / (m_r + m)) * (1.0 - 0.05_f64.cos());
+    let simple = props.effective_mass() * 9.80665 * l * (1.0 - 0.05_f64.cos());
+    assert!((simple / energy - 1.0).abs() < 1e-13);
 }

@@ -97,7 +97,6 @@ pub fn height_metres(text: Option<&str>) -> Result<f64, CliError> {
     text.map_or(Ok(0.0), |t| quantity("--height", t, Dimension::Length))
 }
 
-/// The pendulum of `--length` under `gravity`.
 /// The pendulum of `--length`, or of `--design` (its equivalent simple
 /// length, `I / (m d)`: the same equation of motion).
 pub fn pendulum_of(

@@ -1,7 +1,9 @@
-//! `pendulum design`: a design's datasheet.
+//! `pendulum design`: a design's datasheet (also a section of `report
+//! --design`).
 
-use super::common;
+use super::common::{self, ResolvedGravity};
 use crate::args::DesignArgs;
+use crate::design::Design;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
 use pendulum_theory::air::air_density;
@@ -10,7 +12,7 @@ use pendulum_theory::Pendulum;
 use serde::Serialize;
 
 #[derive(Serialize)]
-struct PartJson {
+pub struct PartJson {
     name: String,
     material: String,
     mass_kg: f64,
@@ -18,7 +20,7 @@ struct PartJson {
 }
 
 #[derive(Serialize)]
-struct DesignJson {
+pub struct DesignJson {
     file: String,
     parts: Vec<PartJson>,
     mass_kg: f64,
@@ -39,58 +41,103 @@ struct DesignJson {
     air_buoyancy_rate_s_per_day: f64,
     /// The change per hPa of pressure at that temperature and humidity.
     pressure_coefficient_s_per_day_per_hpa: f64,
+    /// The rating nut: the part with a thread, or the part named `nut`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    nut: Option<String>,
+    /// The rate change as the nut (and the bob on it) moves 1 mm down,
+    /// s/day (negative: slower).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    nut_rate_s_per_day_per_mm: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    nut_pitch_m: Option<f64>,
+    /// ... per turn of the nut lowering the bob.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    nut_rate_s_per_day_per_turn: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    nut_rate_s_per_day_per_division: Option<f64>,
 }
 
-pub fn run(args: &DesignArgs) -> Result<String, CliError> {
-    let design = crate::design::read(&args.file)?;
-    let gravity = common::gravity(&args.gravity)?;
+/// The air a datasheet is given for, checked against the range of the
+/// air-density formula.
+pub struct Air {
+    /// hPa.
+    pub pressure_hpa: f64,
+    /// °C.
+    pub temperature_c: f64,
+    /// %.
+    pub humidity_pct: f64,
+    /// The temperature the clock was regulated at, °C.
+    pub regulated_at_c: f64,
+}
+
+impl Air {
+    /// Standard air at 20 °C and 50 %, regulated at 20 °C.
+    pub fn standard() -> Self {
+        Self {
+            pressure_hpa: 1013.25,
+            temperature_c: 20.0,
+            humidity_pct: 50.0,
+            regulated_at_c: 20.0,
+        }
+    }
+
+    fn check(&self) -> Result<(), CliError> {
+        let ranges = [
+            ("--pressure", self.pressure_hpa, 600.0, 1100.0, "hPa"),
+            ("--temperature", self.temperature_c, -20.0, 60.0, "°C"),
+            ("--humidity", self.humidity_pct, 0.0, 100.0, "%"),
+            ("--regulated-at", self.regulated_at_c, -50.0, 100.0, "°C"),
+        ];
+        for (flag, value, low, high, unit) in ranges {
+            if !(low..=high).contains(&value) {
+                return Err(CliError::flag(
+                    flag,
+                    format!("must lie between {low} and {high} {unit}, got {value}"),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The datasheet of `design` (read from `file`) under `gravity` in `air`.
+pub fn datasheet(
+    design: &Design,
+    file: &str,
+    gravity: &ResolvedGravity,
+    air: &Air,
+) -> Result<DesignJson, CliError> {
+    air.check()?;
+    let pendulum = &design.pendulum;
     let (p, t, h) = (
-        args.pressure * 100.0,
-        args.temperature,
-        args.humidity / 100.0,
+        air.pressure_hpa * 100.0,
+        air.temperature_c,
+        air.humidity_pct / 100.0,
     );
-    // The air formula's range, each flag on its own.
-    if !(600.0..=1100.0).contains(&args.pressure) {
-        return Err(CliError::flag(
-            "--pressure",
-            format!("must lie between 600 and 1100 hPa, got {}", args.pressure),
-        ));
-    }
-    if !(-20.0..=60.0).contains(&t) {
-        return Err(CliError::flag(
-            "--temperature",
-            format!("must lie between -20 and 60 °C, got {t}"),
-        ));
-    }
-    if !(0.0..=100.0).contains(&args.humidity) {
-        return Err(CliError::flag(
-            "--humidity",
-            format!("must lie between 0 and 100 %, got {}", args.humidity),
-        ));
-    }
     let rho = air_density(p, t, h);
-    if !(-50.0..=100.0).contains(&args.regulated_at) {
-        return Err(CliError::flag(
-            "--regulated-at",
-            "must lie between -50 and 100 °C",
-        ));
-    }
-    let props = design.properties();
+    let props = pendulum.properties();
     let period = Pendulum::new(props.equivalent_length, gravity.g_m_s2)
         .map_err(|e| CliError::input("--design", &e))?
         .small_angle_period();
-    let warmer = design
-        .at_temperature(t - args.regulated_at)
+    let warmer = pendulum
+        .at_temperature(t - air.regulated_at_c)
         .properties()
         .equivalent_length;
-    let air = design.rate_in_air(rho);
-    let per_hpa = design.pressure_coefficient(p, t, h);
-    let result = DesignJson {
-        file: args.file.display().to_string(),
-        parts: design
+    let rates = pendulum.rate_in_air(rho);
+    let nut = design
+        .thread
+        .map(|th| th.part)
+        .or_else(|| pendulum.parts().iter().position(|q| q.name == "nut"));
+    let per_metre = nut.and_then(|i| pendulum.rate_per_metre(i));
+    let pitch = design.thread.map(|th| th.pitch);
+    let per_turn = per_metre.zip(pitch).map(|(r, p)| r * p);
+    let per_division = per_turn.zip(design.thread.and_then(|th| th.divisions));
+    Ok(DesignJson {
+        file: file.to_string(),
+        parts: pendulum
             .parts()
             .iter()
-            .zip(design.centres())
+            .zip(pendulum.centres())
             .map(|(q, &c)| PartJson {
                 name: q.name.clone(),
                 material: q.material.name.clone(),
@@ -104,83 +151,120 @@ pub fn run(args: &DesignArgs) -> Result<String, CliError> {
         equivalent_length_m: props.equivalent_length,
         period_s: period,
         g_m_s2: gravity.g_m_s2,
-        temperature_coefficient_s_per_day_per_c: design.temperature_coefficient(),
+        temperature_coefficient_s_per_day_per_c: pendulum.temperature_coefficient(),
         temperature_rate_s_per_day: rate_of_length_ratio(warmer / props.equivalent_length),
         temperature_c: t,
-        regulated_at_c: args.regulated_at,
+        regulated_at_c: air.regulated_at_c,
         air_density_kg_m3: rho,
-        air_rate_s_per_day: air.total,
-        air_buoyancy_rate_s_per_day: air.buoyancy,
-        pressure_coefficient_s_per_day_per_hpa: per_hpa,
-    };
-    if args.json {
-        return output::json(&result);
-    }
-    let mut s = Summary::default();
-    for q in &result.parts {
-        s.row(
-            &format!("Part {}", q.name),
+        air_rate_s_per_day: rates.total,
+        air_buoyancy_rate_s_per_day: rates.buoyancy,
+        pressure_coefficient_s_per_day_per_hpa: pendulum.pressure_coefficient(p, t, h),
+        nut: per_metre.and(nut).map(|i| pendulum.parts()[i].name.clone()),
+        nut_rate_s_per_day_per_mm: per_metre.map(|r| r * 1e-3),
+        nut_pitch_m: per_metre.and(pitch),
+        nut_rate_s_per_day_per_turn: per_turn,
+        nut_rate_s_per_day_per_division: per_division.map(|(r, d)| r / f64::from(d)),
+    })
+}
+
+/// The datasheet for people: (quantity, value) rows.
+pub fn rows(d: &DesignJson, air: &Air, gravity: &ResolvedGravity) -> Vec<(String, String)> {
+    let mut rows = Vec::new();
+    for q in &d.parts {
+        rows.push((
+            format!("Part {}", q.name),
             format!(
                 "{}, {} kg, centre {} mm below the pivot",
                 q.material,
                 num(q.mass_kg, 4),
                 num(q.centre_m * 1e3, 5)
             ),
-        );
+        ));
     }
-    s.row("Mass", format!("{} kg", num(result.mass_kg, 5)))
-        .row(
-            "Centre of mass",
-            format!(
-                "{} mm below the pivot",
-                num(result.centre_of_mass_m * 1e3, 6)
-            ),
-        )
-        .row(
-            "Inertia",
-            format!("{} kg m² about the pivot", num(result.inertia_kg_m2, 6)),
-        )
-        .row(
-            "Equivalent length",
-            format!("{} m (I / m d)", num(result.equivalent_length_m, 7)),
-        )
-        .row(
-            "Period",
-            format!(
-                "{} s (small swings, {})",
-                num(period, 7),
-                gravity.describe()
-            ),
-        )
-        .row(
-            "Temperature",
-            format!(
-                "{} s/day per °C; at {} °C against {} °C: {} s/day",
-                num(result.temperature_coefficient_s_per_day_per_c, 4),
-                num(t, 4),
-                num(args.regulated_at, 4),
-                num(result.temperature_rate_s_per_day, 4)
-            ),
-        )
-        .row(
-            "Air",
-            format!(
-                "{} kg/m³ ({} hPa, {} °C, {} %): {} s/day against a vacuum ({} from buoyancy)",
-                num(rho, 5),
-                num(args.pressure, 6),
-                num(t, 4),
-                num(args.humidity, 3),
-                num(result.air_rate_s_per_day, 4),
-                num(result.air_buoyancy_rate_s_per_day, 4)
-            ),
-        )
-        .row(
-            "Barometer",
-            format!(
-                "{} s/day per hPa ({} per inHg)",
-                num(per_hpa, 4),
-                num(per_hpa * 33.8639, 4)
-            ),
-        );
+    rows.push(("Mass".into(), format!("{} kg", num(d.mass_kg, 5))));
+    rows.push((
+        "Centre of mass".into(),
+        format!("{} mm below the pivot", num(d.centre_of_mass_m * 1e3, 6)),
+    ));
+    rows.push((
+        "Inertia".into(),
+        format!("{} kg m² about the pivot", num(d.inertia_kg_m2, 6)),
+    ));
+    rows.push((
+        "Equivalent length".into(),
+        format!("{} m (I / m d)", num(d.equivalent_length_m, 7)),
+    ));
+    rows.push((
+        "Period".into(),
+        format!(
+            "{} s (small swings, {})",
+            num(d.period_s, 7),
+            gravity.describe()
+        ),
+    ));
+    rows.push((
+        "Temperature".into(),
+        format!(
+            "{} s/day per °C; at {} °C against {} °C: {} s/day",
+            num(d.temperature_coefficient_s_per_day_per_c, 4),
+            num(d.temperature_c, 4),
+            num(d.regulated_at_c, 4),
+            num(d.temperature_rate_s_per_day, 4)
+        ),
+    ));
+    rows.push((
+        "Air".into(),
+        format!(
+            "{} kg/m³ ({} hPa, {} °C, {} %): {} s/day against a vacuum ({} from buoyancy)",
+            num(d.air_density_kg_m3, 5),
+            num(air.pressure_hpa, 6),
+            num(d.temperature_c, 4),
+            num(air.humidity_pct, 3),
+            num(d.air_rate_s_per_day, 4),
+            num(d.air_buoyancy_rate_s_per_day, 4)
+        ),
+    ));
+    rows.push((
+        "Barometer".into(),
+        format!(
+            "{} s/day per hPa ({} per inHg)",
+            num(d.pressure_coefficient_s_per_day_per_hpa, 4),
+            num(d.pressure_coefficient_s_per_day_per_hpa * 33.8639, 4)
+        ),
+    ));
+    if let (Some(name), Some(per_mm)) = (&d.nut, d.nut_rate_s_per_day_per_mm) {
+        let mut text = format!("{} s/day per mm the {name} moves down", num(per_mm, 4));
+        if let (Some(p), Some(turn)) = (d.nut_pitch_m, d.nut_rate_s_per_day_per_turn) {
+            text.push_str(&format!(
+                "; {} s/day per turn ({} mm pitch)",
+                num(turn, 4),
+                num(p * 1e3, 4)
+            ));
+        }
+        if let Some(div) = d.nut_rate_s_per_day_per_division {
+            text.push_str(&format!("; {} s/day per division", num(div, 4)));
+        }
+        rows.push(("Nut".into(), text));
+    }
+    rows
+}
+
+pub fn run(args: &DesignArgs) -> Result<String, CliError> {
+    let design = crate::design::read_design(&args.file)?;
+    let gravity = common::gravity(&args.gravity)?;
+    let air = Air {
+        pressure_hpa: args.pressure,
+        temperature_c: args.temperature,
+        humidity_pct: args.humidity,
+        regulated_at_c: args.regulated_at,
+    };
+    let result = datasheet(&design, &args.file.display().to_string(), &gravity, &air)?;
+    if args.json {
+        return output::json(&result);
+    }
+    let mut s = Summary::default();
+    for (k, v) in rows(&result, &air, &gravity) {
+        s.row(&k, v);
+    }
     Ok(s.render())
 }

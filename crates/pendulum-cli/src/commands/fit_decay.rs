@@ -79,15 +79,27 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let pendulum = match &args.length {
-        Some(l) => Some(common::pendulum(l, &common::gravity(&args.gravity)?)?),
-        None => None,
+    let pendulum = match (&args.length, &args.design) {
+        (None, None) => None,
+        (l, d) => Some(common::pendulum_of(
+            l.as_deref(),
+            d.as_deref(),
+            &common::gravity(&args.gravity)?,
+        )?),
     };
-    let mass = args
-        .mass
-        .as_deref()
-        .map(|t| common::quantity("--mass", t, Dimension::Mass))
-        .transpose()?;
+    let mass = match (&args.mass, &args.design) {
+        (Some(t), _) if pendulum.is_none() => {
+            return Err(CliError::flag(
+                "--mass",
+                format!(
+                    "{t} given without --length or --design: the energy budget needs the pendulum"
+                ),
+            ))
+        }
+        (Some(t), _) => Some(common::quantity("--mass", t, Dimension::Mass)?),
+        (None, Some(path)) => Some(crate::design::read(path)?.properties().effective_mass()),
+        (None, None) => None,
+    };
     if let Some(m) = mass {
         if m <= 0.0 {
             return Err(CliError::flag(

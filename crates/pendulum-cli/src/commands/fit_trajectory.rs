@@ -36,7 +36,7 @@ struct TrajectoryJson {
     track_radius: Option<f64>,
     /// The length g is computed with, m.
     length_m: Option<f64>,
-    /// `given` (--length) or `track_radius`.
+    /// `given` (--length), `design` (--design) or `track_radius`.
     length_source: Option<&'static str>,
     /// What a person must know about these results.
     warnings: Vec<String>,
@@ -61,15 +61,17 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let given_length = args
-        .length
-        .as_deref()
-        .map(|l| common::pendulum(l, &common::gravity_default()).map(|p| p.length_m()))
-        .transpose()?;
+    let given_length = match (&args.length, &args.design) {
+        (None, None) => None,
+        (l, d) => Some(
+            common::pendulum_of(l.as_deref(), d.as_deref(), &common::gravity_default())?.length_m(),
+        ),
+    };
     let track = read_track(&args.file, &args.read)?;
     // Without --length, a fitted pivot's radius is the length (in the
     // file's units, which Tracker calibrates to metres).
     let (length, length_source) = match (given_length, track.track_radius) {
+        (Some(l), _) if args.design.is_some() => (Some(l), Some("design")),
         (Some(l), _) => (Some(l), Some("given")),
         (None, Some(r)) => (Some(r), Some("track_radius")),
         (None, None) => (None, None),

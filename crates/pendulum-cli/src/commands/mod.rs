@@ -85,7 +85,7 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
         },
         Command::Train(a) => (Vec::new(), a.json),
         Command::Regulate(a) => (Vec::new(), a.json),
-        Command::Compensate(a) => (Vec::new(), a.json),
+        Command::Compensate(a) => (vec![("--write", a.write.as_deref())], a.json),
         Command::Design(a) => (Vec::new(), a.json),
         Command::Length(_) | Command::Amplitude(_) | Command::Gravity(_) | Command::Report(_) => {
             (Vec::new(), false)

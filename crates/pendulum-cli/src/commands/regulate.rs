@@ -64,9 +64,12 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
         }
         (None, None) => None,
     };
+    let mut pitch = pitch;
+    let mut nut_divisions = args.nut_divisions;
     let (length, shift, tray) = match &args.design {
         Some(path) => {
-            let design = crate::design::read(path)?;
+            let read = crate::design::read_design(path)?;
+            let design = read.pendulum;
             let p = design.properties();
             let index = design
                 .parts()
@@ -78,6 +81,14 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
                         format!("{} has no part named '{}'", path.display(), args.part),
                     )
                 })?;
+            // The design's own thread, when the part moved is its nut and
+            // no flag gives another.
+            if let Some(t) = read.thread.filter(|t| t.part == index) {
+                if pitch.is_none() {
+                    pitch = Some(t.pitch);
+                    nut_divisions = nut_divisions.or(t.divisions);
+                }
+            }
             let shift = design.regulation(index, r).ok_or_else(|| {
                 CliError::flag(
                     "--part",
@@ -111,7 +122,7 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
         }
     };
     let turns = pitch.map(|p| shift / p);
-    let divisions = match (turns, args.nut_divisions) {
+    let divisions = match (turns, nut_divisions) {
         (Some(t), Some(d)) if d > 0 => Some(t * f64::from(d)),
         _ => None,
     };

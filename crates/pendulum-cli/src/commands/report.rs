@@ -71,9 +71,26 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         "--amplitude",
         args.amplitude.as_deref().unwrap_or(DEFAULT_AMPLITUDE),
     )?;
-    let mass = match &args.mass {
-        Some(t) => common::quantity("--mass", t, Dimension::Mass)?,
-        None => DEFAULT_MASS_KG,
+    // With a design: its datasheet, in standard air at 20 °C.
+    // Its swing's energy is M g d (1 - cos A0): the simple pendulum's
+    // of the equivalent length with the mass M d / l.
+    let (datasheet, design_mass) = match &args.design {
+        Some(path) => {
+            let design = crate::design::read_design(path)?;
+            let air = super::design::Air::standard();
+            let sheet =
+                super::design::datasheet(&design, &path.display().to_string(), &gravity, &air)?;
+            (
+                Some(super::design::rows(&sheet, &air, &gravity)),
+                Some(design.pendulum.properties().effective_mass()),
+            )
+        }
+        None => (None, None),
+    };
+    let mass = match (&args.mass, design_mass) {
+        (Some(t), _) => common::quantity("--mass", t, Dimension::Mass)?,
+        (None, Some(m)) => m,
+        (None, None) => DEFAULT_MASS_KG,
     };
     let damping = match common::damping(&args.damping, Some(mass), &pendulum)? {
         Some(d) => d,
@@ -156,7 +173,19 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         .map(|(a, b)| (a.2, b.2));
     let undamped = damping.zeta() == 0.0;
     let mut rows = vec![
-        Row("Length", format!("{} m", num(pendulum.length_m(), 8)), ""),
+        Row(
+            if args.design.is_some() {
+                "Equivalent length"
+            } else {
+                "Length"
+            },
+            format!("{} m", num(pendulum.length_m(), 8)),
+            if args.design.is_some() {
+                "I / (m d) of the design"
+            } else {
+                ""
+            },
+        ),
         Row("Gravity", gravity.describe(), ""),
         Row(
             "Working amplitude",
@@ -252,9 +281,17 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         "ln 2 × decay time",
     ));
     rows.push(Row(
-        "Bob mass",
+        if design_mass.is_some() && args.mass.is_none() {
+            "Effective mass"
+        } else {
+            "Bob mass"
+        },
         format!("{} kg", num(mass, 4)),
-        "for the energy budget",
+        if design_mass.is_some() && args.mass.is_none() {
+            "the design's M d / l: its swing's energy is M g d (1 - cos A0)"
+        } else {
+            "for the energy budget"
+        },
     ));
     if let Some(b) = budget {
         rows.push(Row(
@@ -304,7 +341,7 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         "circular error falls as the swing shrinks",
     ));
 
-    let page = html(&rows);
+    let page = html(&rows, datasheet.as_deref());
     crate::output::check_finite_text(&page)?;
     let mut file = AtomicFile::create(&folder.join("index.html"), "--output")?;
     file.writer()
@@ -340,7 +377,24 @@ fn decay_figure(damped: &DampedPendulum, a0: f64, span: f64) -> Figure {
 }
 
 /// The page: a table of figures with units, then the pictures.
-fn html(rows: &[Row]) -> String {
+fn html(rows: &[Row], datasheet: Option<&[(String, String)]>) -> String {
+    let sheet = match datasheet {
+        Some(sheet) => {
+            let mut t = String::from(
+                "<h2>The pendulum as designed</h2>\n<p>Its parts and what they make of it, in air at 1013.25 hPa, 20 °C and 50 % humidity (as <code>pendulum design</code> gives it).</p>\n<table class=\"datasheet\">\n",
+            );
+            for (name, value) in sheet {
+                t.push_str(&format!(
+                    "<tr><th>{}</th><td>{}</td></tr>\n",
+                    escape(name),
+                    escape(value)
+                ));
+            }
+            t.push_str("</table>\n");
+            t
+        }
+        None => String::new(),
+    };
     let mut table = String::new();
     for Row(name, value, note) in rows {
         table.push_str(&format!(
@@ -372,7 +426,7 @@ damping of section 1-4, the energy an escapement must supply, and the full
 nonlinear damped motion run down until the amplitude halves.</p>
 <table>
 {table}</table>
-<h2>The period and the circular error around the working amplitude</h2>
+{sheet}<h2>The period and the circular error around the working amplitude</h2>
 <img src="period.svg" alt="period ratio and circular error against amplitude">
 <h2>The decay of section 1-4</h2>
 <img src="decay.svg" alt="amplitude envelope against time">

@@ -7,7 +7,9 @@
 //! Properties tables and Carpenter Technology's Invar 36 datasheet
 //! (1.2-1.6e-6/K at 20-100 °C; 1.3e-6 taken); mercury's *volume*
 //! expansion 1.82e-4/K (CRC), which is what a mercury jar uses; fused
-//! silica from Heraeus's datasheet (0.55e-6/K); wood along the grain from
+//! silica from Heraeus's datasheet (0.55e-6/K); soda-lime glass (a mercury
+//! jar) 2500 kg/m³ and 9.0e-6/K (Schott's and Corning's soda-lime data,
+//! 8.5-9.5e-6/K); wood along the grain from
 //! the USDA Wood Handbook (FPL-GTR-190, 2010, ch. 4: 3.1e-6 to 4.5e-6/K for
 //! dry wood parallel to the grain; 3.5e-6 taken, density 600 kg/m³ as for
 //! dry oak or hard maple); carbon-fibre epoxy (unidirectional, along the
@@ -23,13 +25,17 @@ pub struct Material {
     pub name: String,
     /// Density, kg/m³.
     pub density: f64,
-    /// Linear thermal expansion coefficient, 1/K (for mercury, the volume
-    /// coefficient, as it rises in its jar).
+    /// Linear thermal expansion coefficient, 1/K; for a liquid, the volume
+    /// coefficient.
     pub expansion: f64,
+    /// A liquid (mercury): it takes the width of its jar (the part it
+    /// rests on, whose expansion sets that width) and rises as its volume
+    /// grows.
+    pub liquid: bool,
 }
 
 /// The built-in table: (name, density kg/m³, expansion 1/K).
-pub const TABLE: [(&str, f64, f64); 12] = [
+pub const TABLE: [(&str, f64, f64); 13] = [
     ("steel", 7850.0, 11.5e-6),
     ("invar", 8050.0, 1.3e-6),
     ("brass", 8500.0, 19.0e-6),
@@ -42,7 +48,11 @@ pub const TABLE: [(&str, f64, f64); 12] = [
     ("wood", 600.0, 3.5e-6),
     ("carbon fibre", 1600.0, 0.0),
     ("copper", 8960.0, 16.5e-6),
+    ("glass", 2500.0, 9.0e-6),
 ];
+
+/// The liquids of the table.
+const LIQUIDS: [&str; 1] = ["mercury"];
 
 impl Material {
     /// A material from the built-in table, by name (case and spaces or
@@ -65,6 +75,7 @@ impl Material {
                 name: n.to_string(),
                 density,
                 expansion,
+                liquid: LIQUIDS.contains(&n),
             })
     }
 

@@ -23,9 +23,11 @@
 //! the air carried along adds to the inertia, `Σ k_i ρ V_i d_i²`, with the
 //! added-mass coefficients of [`shape::Shape::added_mass_coefficient`].
 
+pub mod compensator;
 pub mod material;
 pub mod shape;
 
+pub use compensator::gridiron;
 pub use material::Material;
 pub use shape::Shape;
 
@@ -105,6 +107,17 @@ pub struct Properties {
     pub equivalent_length: f64,
 }
 
+impl Properties {
+    /// The mass, kg, of the simple pendulum of the equivalent length that
+    /// has this pendulum's restoring torque and energy at every angle:
+    /// `M d / l` (the potential energy `M g d (1 - cos θ)` equals `m g l
+    /// (1 - cos θ)`, and the kinetic `I θ'²/2` equals `m l² θ'²/2` since
+    /// `I = M d l`). The energy budget of a design uses it.
+    pub fn effective_mass(&self) -> f64 {
+        self.mass * self.centre_of_mass / self.equivalent_length
+    }
+}
+
 impl CompoundPendulum {
     /// A pendulum of `parts`, checked: every size positive and finite,
     /// every part with mass (unless `massless`), nothing above or through
@@ -169,6 +182,16 @@ impl CompoundPendulum {
             }
             if !p.material.expansion.is_finite() {
                 return Err(fail("expansion", "must be a finite number".into()));
+            }
+            if p.material.liquid {
+                let fits = matches!(p.shape, Shape::Cylinder { .. })
+                    && matches!(p.placement, Placement::RestsOn(_));
+                if !fits {
+                    return Err(fail(
+                        "rests_on",
+                        "a liquid is an upright cylinder resting on the bottom of its jar".into(),
+                    ));
+                }
             }
         }
         let centres = resolve(&parts, 0.0, None)?;
@@ -237,9 +260,20 @@ impl CompoundPendulum {
             .iter()
             .map(|p| {
                 // Every dimension grows; the mass does not (the density
-                // falls by the cube of the growth).
-                let factor = 1.0 + p.material.expansion * delta;
+                // falls as the volume grows). A liquid keeps its jar's
+                // width and rises with its volume.
                 let mut material = p.material.clone();
+                if let (true, Placement::RestsOn(jar)) = (p.material.liquid, &p.placement) {
+                    let width = 1.0 + self.parts[*jar].material.expansion * delta;
+                    let volume = 1.0 + p.material.expansion * delta;
+                    material.density /= volume;
+                    return Part {
+                        shape: p.shape.stretched(width, volume / (width * width)),
+                        material,
+                        ..p.clone()
+                    };
+                }
+                let factor = 1.0 + p.material.expansion * delta;
                 material.density /= factor.powi(3);
                 Part {
                     shape: p.shape.scaled(factor),
@@ -253,8 +287,12 @@ impl CompoundPendulum {
         Self { parts, centres }
     }
 
-    /// The rod: the first upright cylinder hanging from the pivot (its top
-    /// within a millimetre of it).
+    /// The index of the rod: the first upright cylinder hanging from the
+    /// pivot (its top within a millimetre of it).
+    pub fn rod_index(&self) -> Option<usize> {
+        self.rod()
+    }
+
     fn rod(&self) -> Option<usize> {
         self.parts.iter().zip(&self.centres).position(|(p, &c)| {
             matches!(p.shape, Shape::Cylinder { .. }) && (c - 0.5 * p.shape.height()).abs() < 1e-3
@@ -316,15 +354,7 @@ impl CompoundPendulum {
     pub fn regulation(&self, index: usize, rate: f64) -> Option<f64> {
         let l = self.properties().equivalent_length;
         let target = l + length_change_for_rate(l, rate);
-        let length_at = |shift: f64| -> Option<f64> {
-            let mut parts = self.parts.clone();
-            let Placement::Centre(c) = parts.get(index)?.placement else {
-                return None;
-            };
-            parts[index].placement = Placement::Centre(c + shift);
-            let centres = resolve(&parts, 0.0, None).ok()?;
-            Some(Self { parts, centres }.properties().equivalent_length)
-        };
+        let length_at = |shift: f64| self.length_with_shift(index, shift);
         let mut shift = 0.0;
         for _ in 0..8 {
             let h = 1e-4;
@@ -343,153 +373,33 @@ impl CompoundPendulum {
 }
 
 impl CompoundPendulum {
-    /// The index of the rod (see the module notes), if any.
-    pub fn rod_index(&self) -> Option<usize> {
-        self.rod()
-    }
-
-    /// The same pendulum with a compensating tube of `material` (outer
-    /// diameter `diameter`, bore `bore`, m) put under the part `bob`, which
-    /// must rest on a part placed on the rod (its nut); the rod is made
-    /// longer and the nut moved down by the tube's length, so that the bob
-    /// stays where it was. The tube's length is chosen so that the
-    /// first-order temperature coefficient vanishes: the tube grows upward
-    /// from the nut as much as the rod and the bob's own expansion carry
-    /// the centre of oscillation down. Found by bisection between 0.1 mm
-    /// and 1.5 m on the exact model's coefficient. Returns the design and
-    /// the tube's length, m; `None` when no length in that range does it
-    /// (a compensator that expands less than the rod).
-    pub fn with_compensating_tube(
-        &self,
-        bob: usize,
-        material: Material,
-        diameter: f64,
-        bore: f64,
-    ) -> Option<(Self, f64)> {
-        let Placement::RestsOn(nut) = self.parts.get(bob)?.placement else {
+    /// The equivalent length, m, with part `index` (and what rests on it)
+    /// moved `shift` m down; `None` when that part rests on another, or the
+    /// move puts a part above the pivot.
+    fn length_with_shift(&self, index: usize, shift: f64) -> Option<f64> {
+        let mut parts = self.parts.clone();
+        let Placement::Centre(c) = parts.get(index)?.placement else {
             return None;
         };
-        let Placement::Centre(nut_centre) = self.parts[nut].placement else {
-            return None;
-        };
-        let rod = self.rod()?;
-        let build = |length: f64| -> Option<Self> {
-            let mut parts = self.parts.clone();
-            if let Shape::Cylinder {
-                length: l,
-                diameter,
-                bore,
-            } = parts[rod].shape
-            {
-                parts[rod].shape = Shape::Cylinder {
-                    length: l + length,
-                    diameter,
-                    bore,
-                };
-                parts[rod].placement = Placement::Centre(0.5 * (l + length));
-            }
-            parts[nut].placement = Placement::Centre(nut_centre + length);
-            parts.push(Part {
-                name: "compensator".into(),
-                shape: Shape::Cylinder {
-                    length,
-                    diameter,
-                    bore,
-                },
-                material: material.clone(),
-                point_mass: 0.0,
-                placement: Placement::RestsOn(nut),
-                massless: false,
-            });
-            let tube = parts.len() - 1;
-            parts[bob].placement = Placement::RestsOn(tube);
-            Self::new(parts).ok()
-        };
-        let length = zero_coefficient(build, 1e-4, 1.5)?;
-        Some((build(length)?, length))
+        parts[index].placement = Placement::Centre(c + shift);
+        let centres = resolve(&parts, 0.0, None).ok()?;
+        Some(Self { parts, centres }.properties().equivalent_length)
     }
-}
 
-/// A gridiron (Harrison's: steel rods hanging down, brass rods standing up,
-/// in series, so that the drop `D` from the pivot to the bob's support is
-/// `L_s - L_b`) as the rod it replaces: an upright cylinder of length `D`
-/// and the rods' diameter, of a material whose expansion is the series'
-/// net `(L_s α_s - L_b α_b) / D` and whose density carries the rods' mass:
-/// each length of the series as a symmetric pair of rods but the central
-/// steel rod alone, `m = A (ρ_s (2 L_s - D) + 2 ρ_b L_b)`, spread evenly
-/// over the drop (the frame's crossbars are left out). Returns that
-/// material.
-pub fn gridiron(
-    drop: f64,
-    brass_length: f64,
-    rod_diameter: f64,
-    steel: &Material,
-    brass: &Material,
-) -> Material {
-    let steel_length = drop + brass_length;
-    let area = 0.25 * std::f64::consts::PI * rod_diameter * rod_diameter;
-    let mass =
-        area * (steel.density * (2.0 * steel_length - drop) + 2.0 * brass.density * brass_length);
-    Material {
-        name: format!(
-            "gridiron ({} {:.1} mm, {} {:.1} mm)",
-            steel.name,
-            steel_length * 1e3,
-            brass.name,
-            brass_length * 1e3
-        ),
-        density: mass / (area * drop),
-        expansion: (steel_length * steel.expansion - brass_length * brass.expansion) / drop,
+    /// The rate change, s/day per metre, of moving part `index` (and what
+    /// rests on it) down: `-86400/(2l) dl/dx`, the derivative by a central
+    /// difference of ±0.1 mm on the exact model (the equivalent length is
+    /// a ratio of quadratics in the shift, so the difference's error is
+    /// about (0.1 mm / l)², 1e-8 relative). Negative: lowering the bob
+    /// slows the clock. Multiply by the nut's pitch for s/day per turn.
+    /// `None` when the part rests on another (move what it rests on).
+    pub fn rate_per_metre(&self, index: usize) -> Option<f64> {
+        let h = 1e-4;
+        let l = self.properties().equivalent_length;
+        let slope =
+            (self.length_with_shift(index, h)? - self.length_with_shift(index, -h)?) / (2.0 * h);
+        Some(-0.5 * DAY * slope / l)
     }
-}
-
-impl CompoundPendulum {
-    /// The same pendulum with its rod replaced by a gridiron of `steel` and
-    /// `brass` of the same drop and rod diameter (see [`gridiron`]), the
-    /// brass length chosen by bisection (0 to three drops) so that the
-    /// first-order temperature coefficient vanishes. Returns the design and
-    /// the brass length, m.
-    pub fn with_gridiron(&self, steel: &Material, brass: &Material) -> Option<(Self, f64)> {
-        let rod = self.rod()?;
-        let Shape::Cylinder {
-            length, diameter, ..
-        } = self.parts[rod].shape
-        else {
-            return None;
-        };
-        let build = |brass_length: f64| -> Option<Self> {
-            let mut parts = self.parts.clone();
-            parts[rod].material = gridiron(length, brass_length, diameter, steel, brass);
-            Self::new(parts).ok()
-        };
-        let b = zero_coefficient(build, 0.0, 3.0 * length)?;
-        Some((build(b)?, b))
-    }
-}
-
-/// The size in `[low, high]` at which the design `build` makes has no
-/// first-order temperature coefficient, by bisection (80 halvings, to the
-/// last bit); `None` when the coefficient keeps its sign over the range.
-fn zero_coefficient(
-    build: impl Fn(f64) -> Option<CompoundPendulum>,
-    low: f64,
-    high: f64,
-) -> Option<f64> {
-    let coefficient = |x: f64| build(x).map(|p| p.temperature_coefficient());
-    let (mut low, mut high) = (low, high);
-    let f_low = coefficient(low)?;
-    if f_low.signum() == coefficient(high)?.signum() {
-        return None;
-    }
-    for _ in 0..80 {
-        let middle = 0.5 * (low + high);
-        if coefficient(middle)?.signum() == f_low.signum() {
-            low = middle;
-        } else {
-            high = middle;
-        }
-    }
-    Some(0.5 * (low + high))
 }
 
 /// A clock's rate in air against a vacuum.

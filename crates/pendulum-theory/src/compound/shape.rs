@@ -126,15 +126,7 @@ impl Shape {
     /// expansion).
     pub fn scaled(&self, factor: f64) -> Self {
         match *self {
-            Shape::Cylinder {
-                length,
-                diameter,
-                bore,
-            } => Shape::Cylinder {
-                length: length * factor,
-                diameter: diameter * factor,
-                bore: bore * factor,
-            },
+            Shape::Cylinder { .. } => self.stretched(factor, factor),
             Shape::Disc {
                 diameter,
                 thickness,
@@ -162,6 +154,24 @@ impl Shape {
                 thickness: thickness * factor,
             },
             Shape::Point => Shape::Point,
+        }
+    }
+
+    /// An upright cylinder with its length multiplied by `height` and its
+    /// diameters by `width` (a liquid rising in its jar); any other shape
+    /// scaled by `width` alone.
+    pub fn stretched(&self, width: f64, height: f64) -> Self {
+        match *self {
+            Shape::Cylinder {
+                length,
+                diameter,
+                bore,
+            } => Shape::Cylinder {
+                length: length * height,
+                diameter: diameter * width,
+                bore: bore * width,
+            },
+            other => other.scaled(width),
         }
     }
 

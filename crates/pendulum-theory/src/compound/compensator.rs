@@ -1,0 +1,245 @@
+//! Temperature compensators: parts sized so that a design's first-order
+//! temperature coefficient vanishes. Each builds the compensated design
+//! for a trial size and finds the size by bisection on the exact model's
+//! coefficient ([`CompoundPendulum::temperature_coefficient`]), so what is
+//! cancelled is the coefficient of the whole pendulum (the rod, the nut,
+//! the bob's own growth, the compensator's mass and inertia), not a
+//! textbook ratio of lengths.
+//!
+//! - a tube (zinc, aluminium; a short brass collar under the bob of an
+//!   Invar rod) between the nut and the bob, lifting the bob as it grows:
+//!   [`CompoundPendulum::with_compensating_tube`];
+//! - Harrison's gridiron of steel and brass rods: [`gridiron`],
+//!   [`CompoundPendulum::with_gridiron`];
+//! - Graham's jar of mercury (1721), whose level rises as the mercury
+//!   expands: [`CompoundPendulum::with_mercury_jar`].
+
+use super::{CompoundPendulum, Material, Part, Placement, Shape};
+
+impl CompoundPendulum {
+    /// The same pendulum with a compensating tube of `material` (outer
+    /// diameter `diameter`, bore `bore`, m) put under the part `bob`, which
+    /// must rest on a part placed on the rod (its nut); the rod is made
+    /// longer and the nut moved down by the tube's length, so that the bob
+    /// stays where it was. The tube's length is chosen so that the
+    /// first-order temperature coefficient vanishes: the tube grows upward
+    /// from the nut as much as the rod and the bob's own expansion carry
+    /// the centre of oscillation down. Found by bisection between 0.1 mm
+    /// and 1.5 m on the exact model's coefficient. Returns the design and
+    /// the tube's length, m; `None` when no length in that range does it
+    /// (a compensator that expands less than the rod).
+    pub fn with_compensating_tube(
+        &self,
+        bob: usize,
+        material: Material,
+        diameter: f64,
+        bore: f64,
+    ) -> Option<(Self, f64)> {
+        let Placement::RestsOn(nut) = self.parts.get(bob)?.placement else {
+            return None;
+        };
+        let Placement::Centre(nut_centre) = self.parts[nut].placement else {
+            return None;
+        };
+        let rod = self.rod()?;
+        let build = |length: f64| -> Option<Self> {
+            let mut parts = self.parts.clone();
+            if let Shape::Cylinder {
+                length: l,
+                diameter,
+                bore,
+            } = parts[rod].shape
+            {
+                parts[rod].shape = Shape::Cylinder {
+                    length: l + length,
+                    diameter,
+                    bore,
+                };
+                parts[rod].placement = Placement::Centre(0.5 * (l + length));
+            }
+            parts[nut].placement = Placement::Centre(nut_centre + length);
+            parts.push(Part {
+                name: "compensator".into(),
+                shape: Shape::Cylinder {
+                    length,
+                    diameter,
+                    bore,
+                },
+                material: material.clone(),
+                point_mass: 0.0,
+                placement: Placement::RestsOn(nut),
+                massless: false,
+            });
+            let tube = parts.len() - 1;
+            parts[bob].placement = Placement::RestsOn(tube);
+            Self::new(parts).ok()
+        };
+        let length = zero_coefficient(build, 1e-4, 1.5)?;
+        Some((build(length)?, length))
+    }
+}
+
+/// A gridiron (Harrison's: steel rods hanging down, brass rods standing up,
+/// in series, so that the drop `D` from the pivot to the bob's support is
+/// `L_s - L_b`) as the rod it replaces: an upright cylinder of length `D`
+/// and the rods' diameter, of a material whose expansion is the series'
+/// net `(L_s α_s - L_b α_b) / D` and whose density carries the rods' mass:
+/// each length of the series as a symmetric pair of rods but the central
+/// steel rod alone, `m = A (ρ_s (2 L_s - D) + 2 ρ_b L_b)`, spread evenly
+/// over the drop (the frame's crossbars are left out). Returns that
+/// material.
+pub fn gridiron(
+    drop: f64,
+    brass_length: f64,
+    rod_diameter: f64,
+    steel: &Material,
+    brass: &Material,
+) -> Material {
+    let steel_length = drop + brass_length;
+    let area = 0.25 * std::f64::consts::PI * rod_diameter * rod_diameter;
+    let mass =
+        area * (steel.density * (2.0 * steel_length - drop) + 2.0 * brass.density * brass_length);
+    Material {
+        name: format!(
+            "gridiron ({} {:.1} mm, {} {:.1} mm)",
+            steel.name,
+            steel_length * 1e3,
+            brass.name,
+            brass_length * 1e3
+        ),
+        density: mass / (area * drop),
+        expansion: (steel_length * steel.expansion - brass_length * brass.expansion) / drop,
+        liquid: false,
+    }
+}
+
+impl CompoundPendulum {
+    /// The same pendulum with its rod replaced by a gridiron of `steel` and
+    /// `brass` of the same drop and rod diameter (see [`gridiron`]), the
+    /// brass length chosen by bisection (0 to three drops) so that the
+    /// first-order temperature coefficient vanishes. Returns the design and
+    /// the brass length, m.
+    pub fn with_gridiron(&self, steel: &Material, brass: &Material) -> Option<(Self, f64)> {
+        let rod = self.rod()?;
+        let Shape::Cylinder {
+            length, diameter, ..
+        } = self.parts[rod].shape
+        else {
+            return None;
+        };
+        let build = |brass_length: f64| -> Option<Self> {
+            let mut parts = self.parts.clone();
+            parts[rod].material = gridiron(length, brass_length, diameter, steel, brass);
+            Self::new(parts).ok()
+        };
+        let b = zero_coefficient(build, 0.0, 3.0 * length)?;
+        Some((build(b)?, b))
+    }
+}
+
+impl CompoundPendulum {
+    /// The same pendulum with the part `bob` (which must rest on another
+    /// part: its nut or stirrup) replaced by a jar of mercury, Graham's
+    /// compensator: a bottom of `jar` material `wall` m thick and `diameter`
+    /// m across resting on that support, a wall of the same material and
+    /// thickness as high as the mercury, and the mercury (an upright
+    /// cylinder of the jar's inner diameter) resting on the bottom. Where
+    /// the bob had a bore (the rod passing through it), the bottom and the
+    /// mercury keep that bore (the thin tube around the rod is left out).
+    /// The mercury's height is chosen so that the first-order temperature
+    /// coefficient vanishes: the mercury rises by its volume expansion
+    /// less twice the jar's linear one, carrying its centre up as the rod
+    /// carries the jar down. Found by bisection between 1 mm and 0.5 m.
+    /// Returns the design and the height, m; `None` when no height in that
+    /// range does it, or when the jar is too narrow for its walls.
+    pub fn with_mercury_jar(
+        &self,
+        bob: usize,
+        jar: &Material,
+        diameter: f64,
+        wall: f64,
+    ) -> Option<(Self, f64)> {
+        let Placement::RestsOn(support) = self.parts.get(bob)?.placement else {
+            return None;
+        };
+        let hole = match self.parts[bob].shape {
+            Shape::Cylinder { bore, .. } => bore,
+            _ => 0.0,
+        };
+        let inner = diameter - 2.0 * wall;
+        if !(wall > 0.0 && inner > hole) {
+            return None;
+        }
+        let mercury = Material::named("mercury").expect("mercury is in the table");
+        let build = |height: f64| -> Option<Self> {
+            let mut parts = self.parts.clone();
+            let name = parts[bob].name.clone();
+            parts[bob] = Part {
+                name: format!("{name} (jar bottom)"),
+                shape: Shape::Cylinder {
+                    length: wall,
+                    diameter,
+                    bore: hole,
+                },
+                material: jar.clone(),
+                point_mass: 0.0,
+                placement: Placement::RestsOn(support),
+                massless: false,
+            };
+            let wall_part = Part {
+                name: format!("{name} (jar wall)"),
+                shape: Shape::Cylinder {
+                    length: height,
+                    diameter,
+                    bore: inner,
+                },
+                material: jar.clone(),
+                point_mass: 0.0,
+                placement: Placement::RestsOn(bob),
+                massless: false,
+            };
+            let mercury_part = Part {
+                name: format!("{name} (mercury)"),
+                shape: Shape::Cylinder {
+                    length: height,
+                    diameter: inner,
+                    bore: hole,
+                },
+                material: mercury.clone(),
+                point_mass: 0.0,
+                placement: Placement::RestsOn(bob),
+                massless: false,
+            };
+            parts.push(wall_part);
+            parts.push(mercury_part);
+            Self::new(parts).ok()
+        };
+        let height = zero_coefficient(build, 1e-3, 0.5)?;
+        Some((build(height)?, height))
+    }
+}
+
+/// The size in `[low, high]` at which the design `build` makes has no
+/// first-order temperature coefficient, by bisection (80 halvings, to the
+/// last bit); `None` when the coefficient keeps its sign over the range.
+fn zero_coefficient(
+    build: impl Fn(f64) -> Option<CompoundPendulum>,
+    low: f64,
+    high: f64,
+) -> Option<f64> {
+    let coefficient = |x: f64| build(x).map(|p| p.temperature_coefficient());
+    let (mut low, mut high) = (low, high);
+    let f_low = coefficient(low)?;
+    if f_low.signum() == coefficient(high)?.signum() {
+        return None;
+    }
+    for _ in 0..80 {
+        let middle = 0.5 * (low + high);
+        if coefficient(middle)?.signum() == f_low.signum() {
+            low = middle;
+        } else {
+            high = middle;
+        }
+    }
+    Some(0.5 * (low + high))
+}

@@ -111,6 +111,15 @@ unless --channel says otherwise.")]
     #[command(after_help = "Example:
   pendulum design examples/seconds-steel-brass.toml --pressure 1000hPa --temperature 25 --humidity 60")]
     Design(DesignArgs),
+    /// A clock: the pendulum kept going by an escapement. Its steady
+    /// amplitude and rate (circular and escapement errors), the isochronism
+    /// curve against the drive, or a long run (days to years) with the
+    /// drive changing.
+    #[command(after_help = "Examples:
+  pendulum clock --length 0.994m --q 10000 --escapement deadbeat --lift-angle 2 --drive 20uJ
+  pendulum clock --design examples/seconds-steel-brass.toml --escapement recoil --drive 2e-4Nm --drive-range 0.5x..2x --steps 7 --plot iso.svg
+  pendulum clock --length 0.994m --escapement deadbeat --drive 20uJ --duration 8days --every 1h --drive-file spring.csv --swings run.csv")]
+    Clock(ClockArgs),
     /// The one-command analysis of a pendulum, as an HTML page with figures
     /// (default: a seconds pendulum at 3° with Q = 10,000).
     #[command(after_help = "Examples:
@@ -661,6 +670,8 @@ pub enum MethodArg {
     Symplectic,
     /// The closed form (no damping).
     Exact,
+    /// One step per half swing, closed form (viscous damping only): weeks to years of turning points.
+    Averaged,
 }
 
 /// `pendulum simulate`.
@@ -844,6 +855,127 @@ pub struct CompensateArgs {
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
+}
+
+/// `pendulum clock`.
+#[derive(Debug, Args)]
+pub struct ClockArgs {
+    /// Pendulum length.
+    #[arg(
+        long,
+        value_name = "L",
+        allow_hyphen_values = true,
+        required_unless_present = "design"
+    )]
+    pub length: Option<String>,
+    /// A pendulum designed as parts (TOML), in place of --length.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<std::path::PathBuf>,
+    /// Bob mass [default: 5 kg; with --design its effective mass M d / l].
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub mass: Option<String>,
+    /// Quality factor of the free pendulum.
+    #[arg(
+        long,
+        value_name = "Q",
+        default_value = "10000",
+        allow_hyphen_values = true
+    )]
+    pub q: String,
+    /// The escapement.
+    #[arg(long, value_enum, default_value_t = EscapementArg::Deadbeat)]
+    pub escapement: EscapementArg,
+    /// The lift angle, the whole angle over which the escapement impulses
+    /// (a bare number is degrees).
+    #[arg(
+        long,
+        value_name = "A",
+        default_value = "2",
+        allow_hyphen_values = true
+    )]
+    pub lift_angle: String,
+    /// The drive: the torque at the pallets (e.g. 2e-4Nm) or the energy
+    /// per beat (e.g. 20uJ; the torque is that over the lift). For
+    /// impulse and free: the energy of each impulse; for constant-force,
+    /// the impulse, while the train's drive only adds locking friction.
+    #[arg(long, value_name = "DRIVE", allow_hyphen_values = true)]
+    pub drive: String,
+    /// Dead-face (locking) friction coefficient: deadbeat, constant-force.
+    #[arg(
+        long,
+        value_name = "MU",
+        default_value = "0.15",
+        allow_hyphen_values = true
+    )]
+    pub friction: String,
+    /// Recoil: the pushing-back torque one lift angle past the lift, over the drive torque.
+    #[arg(
+        long,
+        value_name = "R",
+        default_value = "1",
+        allow_hyphen_values = true
+    )]
+    pub recoil: String,
+    /// Where the impulse falls before the bottom (negative: after): for
+    /// impulse and free the impulse's angle, for deadbeat the lift's centre.
+    #[arg(
+        long,
+        value_name = "A",
+        default_value = "0",
+        allow_hyphen_values = true
+    )]
+    pub impulse_angle: String,
+    /// Free pendulum: beats between impulses (Shortt's: 30).
+    #[arg(long, value_name = "N", default_value_t = 30)]
+    pub every_beats: u64,
+    /// The isochronism curve: drive factors from..to (e.g. 0.5x..2x).
+    #[arg(long, value_name = "A..B")]
+    pub drive_range: Option<String>,
+    /// Points on the isochronism curve.
+    #[arg(long, value_name = "N", default_value_t = 7)]
+    pub steps: usize,
+    /// A long run of this length (e.g. 8days, 1year).
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
+    pub duration: Option<String>,
+    /// With --duration: a row this often (e.g. 1h, 1day) [default: every turning point].
+    #[arg(
+        long,
+        value_name = "E",
+        allow_hyphen_values = true,
+        requires = "duration"
+    )]
+    pub every: Option<String>,
+    /// With --duration: what changes with time (CSV: time_s and any of
+    /// drive_factor, temperature_c, pressure_hpa; the last two with
+    /// --design, moving the rate by its coefficients), linear between rows.
+    #[arg(long, value_name = "FILE.csv", requires = "duration")]
+    pub drive_file: Option<std::path::PathBuf>,
+    /// With --duration: write the rows (time_s,beats,amplitude_rad,rate_s_per_day,time_error_s,drive_factor).
+    #[arg(long, value_name = "FILE.csv", requires = "duration")]
+    pub swings: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub gravity: GravityArgs,
+    /// Plot the isochronism curve (with --drive-range) or the long run (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<std::path::PathBuf>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// The escapements of `pendulum clock`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum EscapementArg {
+    /// Airy's instantaneous impulse at --impulse-angle.
+    Impulse,
+    /// Graham's deadbeat.
+    Deadbeat,
+    /// The anchor (recoil).
+    Recoil,
+    /// Gravity escapement or remontoire: the impulse independent of the drive.
+    ConstantForce,
+    /// Shortt's free pendulum: one impulse every --every-beats.
+    Free,
 }
 
 /// `pendulum design`.

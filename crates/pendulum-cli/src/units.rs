@@ -20,6 +20,10 @@ pub enum Dimension {
     Mass,
     /// Metres per second squared.
     Acceleration,
+    /// Newton metres.
+    Torque,
+    /// Joules.
+    Energy,
 }
 
 /// A unit's spellings and its size in SI.
@@ -111,6 +115,15 @@ const TIME: &[Unit] = &[
         names: &["day", "days", "d"],
         si: 86_400.0,
     },
+    Unit {
+        names: &["week", "weeks"],
+        si: 604_800.0,
+    },
+    Unit {
+        // The Julian year, 365.25 days.
+        names: &["year", "years", "yr"],
+        si: 31_557_600.0,
+    },
 ];
 
 const MASS: &[Unit] = &[
@@ -143,6 +156,36 @@ const ACCELERATION: &[Unit] = &[
     },
 ];
 
+const TORQUE: &[Unit] = &[
+    Unit {
+        names: &["N m", "Nm", "N·m", "N*m"],
+        si: 1.0,
+    },
+    Unit {
+        names: &["mN m", "mNm", "mN·m"],
+        si: 1e-3,
+    },
+    Unit {
+        names: &["uN m", "uNm", "µN m", "µNm", "µN·m"],
+        si: 1e-6,
+    },
+];
+
+const ENERGY: &[Unit] = &[
+    Unit {
+        names: &["J"],
+        si: 1.0,
+    },
+    Unit {
+        names: &["mJ"],
+        si: 1e-3,
+    },
+    Unit {
+        names: &["uJ", "µJ"],
+        si: 1e-6,
+    },
+];
+
 impl Dimension {
     fn units(self) -> &'static [Unit] {
         match self {
@@ -151,6 +194,8 @@ impl Dimension {
             Dimension::Time => TIME,
             Dimension::Mass => MASS,
             Dimension::Acceleration => ACCELERATION,
+            Dimension::Torque => TORQUE,
+            Dimension::Energy => ENERGY,
         }
     }
 
@@ -169,6 +214,8 @@ impl Dimension {
             Dimension::Time => "a time",
             Dimension::Mass => "a mass",
             Dimension::Acceleration => "an acceleration",
+            Dimension::Torque => "a torque",
+            Dimension::Energy => "an energy",
         }
     }
 
@@ -177,12 +224,14 @@ impl Dimension {
         names.join(", ")
     }
 
-    const ALL: [Dimension; 5] = [
+    const ALL: [Dimension; 7] = [
         Dimension::Length,
         Dimension::Angle,
         Dimension::Time,
         Dimension::Mass,
         Dimension::Acceleration,
+        Dimension::Torque,
+        Dimension::Energy,
     ];
 }
 

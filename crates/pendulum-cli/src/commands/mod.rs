@@ -2,6 +2,7 @@
 //! calls the library and renders the result as a `String`.
 
 mod amplitude;
+mod clock;
 mod common;
 mod compensate;
 pub(crate) mod damped;
@@ -87,6 +88,13 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
         Command::Regulate(a) => (Vec::new(), a.json),
         Command::Compensate(a) => (vec![("--write", a.write.as_deref())], a.json),
         Command::Design(a) => (Vec::new(), a.json),
+        Command::Clock(a) => (
+            vec![
+                ("--swings", a.swings.as_deref()),
+                ("--plot", a.plot.as_deref()),
+            ],
+            a.json,
+        ),
         Command::Length(_) | Command::Amplitude(_) | Command::Gravity(_) | Command::Report(_) => {
             (Vec::new(), false)
         }
@@ -129,6 +137,7 @@ fn run_command(command: &Command) -> Result<Output, CliError> {
         Command::Regulate(args) => regulate::run(args),
         Command::Compensate(args) => compensate::run(args),
         Command::Design(args) => design::run(args),
+        Command::Clock(args) => clock::run(args),
         Command::Synth(args) => match &args.what {
             crate::args::SynthCommand::Ticks(a) => synth::run(a),
         },

@@ -93,7 +93,9 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
     let mut observer = CliObserver::new(args, &pendulum, &options)?;
     let started = Instant::now();
     let outcome = simulate(&model, amplitude, &options, &mut observer).map_err(|e| match e {
-        SimulationError::ExactWithDamping => CliError::flag("--method", e),
+        SimulationError::ExactWithDamping | SimulationError::AveragedUnsupported => {
+            CliError::flag("--method", e)
+        }
         SimulationError::Input(e) => CliError::input(flag_for(e.quantity), &e),
     })?;
     let elapsed = started.elapsed().as_secs_f64();
@@ -313,6 +315,7 @@ fn options(args: &SimulateArgs, pendulum: &Pendulum) -> Result<Options, CliError
         MethodArg::Symplectic => Method::Symplectic,
         MethodArg::Vern9 => Method::Vern9,
         MethodArg::Exact => Method::Exact,
+        MethodArg::Averaged => Method::Averaged,
     };
     Ok(Options {
         duration,

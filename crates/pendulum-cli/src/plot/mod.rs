@@ -158,6 +158,13 @@ impl Panel {
         }
     }
 
+    /// The same with the legend at the lower left (for curves that fall
+    /// to the right).
+    pub fn legend_lower_left(mut self) -> Self {
+        self.legend = SeriesLabelPosition::LowerLeft;
+        self
+    }
+
     /// The same with the legend at the upper left (for rising curves).
     pub fn legend_upper_left(mut self) -> Self {
         self.legend = SeriesLabelPosition::UpperLeft;

@@ -19,6 +19,7 @@
 //! own start, and the last step lands on the duration exactly.
 
 mod adaptive;
+mod averaged;
 mod closed_form;
 mod run;
 mod symplectic;
@@ -90,6 +91,9 @@ pub enum Method {
     Symplectic,
     /// Verner's 9(8) pair, adaptive: for tight tolerances.
     Vern9,
+    /// One step per half swing by the closed-form map (viscous damping
+    /// only): for weeks to years of turning points.
+    Averaged,
 }
 
 impl Method {
@@ -100,6 +104,7 @@ impl Method {
             Method::Exact => "exact",
             Method::Symplectic => "symplectic",
             Method::Vern9 => "vern9",
+            Method::Averaged => "averaged",
         }
     }
 }
@@ -226,7 +231,7 @@ pub const AMPLITUDE_FLOOR: f64 = 1e-280;
 /// changes the period by tens of percent.
 pub fn energy_gain_allowance(method: Method, tolerance: f64) -> f64 {
     match method {
-        Method::Exact => 1e-12,
+        Method::Exact | Method::Averaged => 1e-12,
         Method::Dop853 | Method::Vern9 | Method::Symplectic => 1e5 * tolerance.max(1e-14),
     }
 }
@@ -326,6 +331,9 @@ pub enum SimulationError {
     /// The closed form knows no damping.
     #[error("the exact method has no damping: drop the damping options or choose dop853")]
     ExactWithDamping,
+    /// The averaged method's map has viscous damping only.
+    #[error("the averaged method takes viscous damping only (no drag or dry friction), and gives turning points, not samples: choose symplectic or dop853")]
+    AveragedUnsupported,
 }
 
 /// The amplitude of the undamped swing with the energy of `state`:
@@ -373,5 +381,15 @@ pub fn simulate(
             model, amplitude, options, observer,
         )),
         Method::Vern9 => Ok(adaptive::run_vern9(model, amplitude, options, observer)),
+        Method::Averaged => {
+            if model.quadratic_drag > 0.0
+                || model.friction_angle > 0.0
+                || options.sample_interval.is_some()
+                || observer.wants_zero_crossings()
+            {
+                return Err(SimulationError::AveragedUnsupported);
+            }
+            Ok(averaged::run_averaged(model, amplitude, options, observer))
+        }
     }
 }

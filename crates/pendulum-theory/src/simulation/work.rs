@@ -38,11 +38,12 @@ pub struct WorkEstimate {
 /// (no output files): DOP853 (12 evaluations, dense output on about one
 /// step in five), Verner 9(8) (16 evaluations), the symplectic step (7
 /// sines), a quarter period of the closed form.
-pub const NANOSECONDS_PER_STEP: [(Method, f64); 4] = [
+pub const NANOSECONDS_PER_STEP: [(Method, f64); 5] = [
     (Method::Dop853, 300.0),
     (Method::Vern9, 450.0),
     (Method::Symplectic, 120.0),
     (Method::Exact, 60.0),
+    (Method::Averaged, 250.0),
 ];
 
 /// The steps an adaptive method takes per small-angle period at tolerance
@@ -103,6 +104,7 @@ pub fn work_estimate(model: &Model, amplitude: Amplitude, options: &Options) -> 
     };
     let (steps, limit) = match options.method {
         Method::Exact => (4.0 * periods, Limit::Oscillation),
+        Method::Averaged => (2.0 * periods, Limit::Oscillation),
         Method::Symplectic => {
             let limit = if rates.fastest() == rates.oscillation {
                 Limit::Oscillation

@@ -1,0 +1,790 @@
+//! `pendulum clock`: a pendulum kept going by an escapement: its steady
+//! state, the isochronism curve, and long runs.
+
+use super::common;
+use crate::args::{ClockArgs, EscapementArg};
+use crate::error::CliError;
+use crate::file::CsvFile;
+use crate::interrupt;
+use crate::output::{self, num, Summary};
+use crate::plot::{render, Figure, Panel, Series, Target};
+use crate::units::{parse_number, parse_quantity, Dimension};
+use pendulum_theory::clock::escapement::{
+    ConstantForce, Deadbeat, Escapement, FreePendulum, Impulse, Recoil,
+};
+use pendulum_theory::clock::long_run::{run as long_run, LongRun};
+use pendulum_theory::clock::{Clock, ClockError, HalfSwingMethod, Steady};
+use serde::Serialize;
+use std::path::Path;
+
+/// The default bob mass, kg (as `report`'s).
+const DEFAULT_MASS_KG: f64 = 5.0;
+
+#[derive(Serialize)]
+struct SteadyJson {
+    drive_factor: f64,
+    amplitude_rad: f64,
+    amplitude_deg: f64,
+    period_s: f64,
+    free_period_s: f64,
+    small_angle_period_s: f64,
+    /// Against a small-angle clock, positive gaining.
+    rate_s_per_day: f64,
+    circular_rate_s_per_day: f64,
+    /// The circular error as `period` gives it: positive, lost.
+    circular_error_s_per_day: f64,
+    escapement_rate_s_per_day: f64,
+    /// Airy's first-order integral.
+    escapement_rate_airy_s_per_day: f64,
+    energy_per_beat_j: f64,
+    power_w: f64,
+}
+
+impl SteadyJson {
+    fn of(s: &Steady) -> Self {
+        Self {
+            drive_factor: s.drive,
+            amplitude_rad: s.amplitude,
+            amplitude_deg: s.amplitude.to_degrees(),
+            period_s: s.period,
+            free_period_s: s.free_period,
+            small_angle_period_s: s.small_angle_period,
+            rate_s_per_day: s.rate,
+            circular_rate_s_per_day: s.circular_rate,
+            circular_error_s_per_day: -s.circular_rate,
+            escapement_rate_s_per_day: s.escapement_rate,
+            escapement_rate_airy_s_per_day: s.escapement_rate_first_order,
+            energy_per_beat_j: s.energy_per_beat,
+            power_w: s.power,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct ClockJson {
+    escapement: &'static str,
+    q: f64,
+    length_m: f64,
+    mass_kg: f64,
+    lift_angle_rad: f64,
+    drive_torque_n_m: Option<f64>,
+    drive_energy_j: Option<f64>,
+    minimum_drive_factor: f64,
+    steady: SteadyJson,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    isochronism: Option<Vec<IsoJson>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    long_run: Option<RunJson>,
+}
+
+#[derive(Serialize)]
+struct IsoJson {
+    drive_factor: f64,
+    /// `None` where the pendulum stops.
+    #[serde(flatten)]
+    steady: Option<SteadyJson>,
+    stops: bool,
+}
+
+#[derive(Serialize)]
+struct RunJson {
+    duration_s: f64,
+    beats: u64,
+    final_amplitude_rad: f64,
+    final_rate_s_per_day: f64,
+    time_error_s: f64,
+    stopped: bool,
+    half_swings_stepped: u64,
+    multi_beat_steps: u64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    swings_file: Option<String>,
+}
+
+/// A plain number flag.
+fn number(flag: &str, text: &str) -> Result<f64, CliError> {
+    parse_number(text).map_err(|e| CliError::flag(flag, e))
+}
+
+/// The drive: a torque, or an energy per beat.
+enum Drive {
+    Torque(f64),
+    Energy(f64),
+}
+
+fn drive(text: &str) -> Result<Drive, CliError> {
+    let d = match (
+        parse_quantity(text, Dimension::Torque),
+        parse_quantity(text, Dimension::Energy),
+    ) {
+        (Ok(t), _) => Drive::Torque(t),
+        (_, Ok(e)) => Drive::Energy(e),
+        _ => {
+            return Err(CliError::flag(
+                "--drive",
+                format!("'{text}' is neither a torque (2e-4Nm, 0.2mNm) nor an energy per beat (20uJ, 0.02mJ)"),
+            ))
+        }
+    };
+    let v = match d {
+        Drive::Torque(v) | Drive::Energy(v) => v,
+    };
+    if v.is_nan() || v <= 0.0 {
+        return Err(CliError::flag(
+            "--drive",
+            format!("must be positive, got {text}"),
+        ));
+    }
+    Ok(d)
+}
+
+/// What changes with time in a long run, from a CSV file: `time_s` and
+/// any of `drive_factor`, `temperature_c`, `pressure_hpa`; linear between
+/// rows, held beyond them.
+struct Schedule {
+    times: Vec<f64>,
+    /// One column per quantity, in the order of [`COLUMNS`], when given.
+    columns: [Option<Vec<f64>>; 3],
+}
+
+/// The schedule's quantities.
+const COLUMNS: [&str; 3] = ["drive_factor", "temperature_c", "pressure_hpa"];
+
+impl Schedule {
+    fn read(path: &Path) -> Result<Self, CliError> {
+        let file = path.display().to_string();
+        let bad = |what: String| CliError::flag("--drive-file", format!("{file}: {what}"));
+        let mut reader = csv::ReaderBuilder::new()
+            .trim(csv::Trim::All)
+            .from_path(path)
+            .map_err(|e| bad(format!("cannot read it: {e}")))?;
+        let headers = reader
+            .headers()
+            .map_err(|e| bad(format!("cannot read its header: {e}")))?
+            .clone();
+        let position = |name: &str| headers.iter().position(|h| h == name);
+        let time_column = position("time_s").ok_or_else(|| bad("needs a time_s column".into()))?;
+        let wanted: Vec<Option<usize>> = COLUMNS.iter().map(|c| position(c)).collect();
+        if wanted.iter().all(Option::is_none) {
+            return Err(bad(format!(
+                "needs one of the columns {} besides time_s",
+                COLUMNS.join(", ")
+            )));
+        }
+        let mut times = Vec::new();
+        let mut columns: [Option<Vec<f64>>; 3] = [None, None, None];
+        for (k, w) in wanted.iter().enumerate() {
+            if w.is_some() {
+                columns[k] = Some(Vec::new());
+            }
+        }
+        for (i, record) in reader.records().enumerate() {
+            let row = i + 2;
+            let record = record.map_err(|e| bad(format!("row {row}: {e}")))?;
+            let value = |j: usize| -> Result<f64, CliError> {
+                record
+                    .get(j)
+                    .and_then(|s| s.parse::<f64>().ok())
+                    .filter(|v| v.is_finite())
+                    .ok_or_else(|| bad(format!("row {row}: not a number")))
+            };
+            let time = value(time_column)?;
+            if times.last().is_some_and(|&last| time <= last) {
+                return Err(bad(format!("row {row}: time_s must increase")));
+            }
+            times.push(time);
+            for (k, w) in wanted.iter().enumerate() {
+                if let (Some(j), Some(col)) = (w, columns[k].as_mut()) {
+                    let v = value(*j)?;
+                    let ok = match k {
+                        0 => v >= 0.0,
+                        1 => (-50.0..=100.0).contains(&v),
+                        _ => (600.0..=1100.0).contains(&v),
+                    };
+                    if !ok {
+                        return Err(bad(format!(
+                            "row {row}: {} out of range ({})",
+                            COLUMNS[k],
+                            ["at least 0", "-50 to 100 °C", "600 to 1100 hPa"][k]
+                        )));
+                    }
+                    col.push(v);
+                }
+            }
+        }
+        if times.is_empty() {
+            return Err(bad("has no rows".into()));
+        }
+        Ok(Self { times, columns })
+    }
+
+    /// Column `k` at time `t`, if given.
+    fn at(&self, k: usize, t: f64) -> Option<f64> {
+        let values = self.columns[k].as_ref()?;
+        let i = self.times.partition_point(|&time| time <= t);
+        Some(if i == 0 {
+            values[0]
+        } else if i == self.times.len() {
+            values[i - 1]
+        } else {
+            let (t0, t1) = (self.times[i - 1], self.times[i]);
+            values[i - 1] + (values[i] - values[i - 1]) * (t - t0) / (t1 - t0)
+        })
+    }
+}
+
+fn clock_error(e: ClockError, given: &str) -> CliError {
+    match e {
+        ClockError::Stops {
+            minimum_factor,
+            unlocking_deg,
+        } => CliError::flag(
+            "--drive",
+            format!(
+                "the pendulum stops: drive below {} × {given}; it must carry the swing past {}° to unlock the escapement",
+                num(minimum_factor, 4),
+                num(unlocking_deg, 4)
+            ),
+        ),
+        ClockError::OverTheTop => CliError::flag("--drive", e),
+        ClockError::Undamped => CliError::flag("--q", e),
+        ClockError::Integration(a) => CliError::flag(
+            "--drive",
+            format!(
+                "at a {}° swing the pendulum cannot complete a half swing: the escapement's friction or recoil holds it, or it goes over the top; give less drive",
+                num(a.to_degrees(), 4)
+            ),
+        ),
+    }
+}
+
+pub fn run(args: &ClockArgs) -> Result<String, CliError> {
+    let gravity = common::gravity(&args.gravity)?;
+    let pendulum = common::pendulum_of(args.length.as_deref(), args.design.as_deref(), &gravity)?;
+    let mass = match (&args.mass, &args.design) {
+        (Some(t), _) => {
+            let m = common::quantity("--mass", t, Dimension::Mass)?;
+            if m.is_nan() || m <= 0.0 {
+                return Err(CliError::flag(
+                    "--mass",
+                    format!("must be positive, got {t}"),
+                ));
+            }
+            m
+        }
+        (None, Some(path)) => crate::design::read(path)?.properties().effective_mass(),
+        (None, None) => DEFAULT_MASS_KG,
+    };
+    let scale = mass * gravity.g_m_s2 * pendulum.length_m();
+    let q = number("--q", &args.q)?;
+    if q.is_nan() || q <= 0.5 {
+        return Err(CliError::flag(
+            "--q",
+            format!("must exceed 0.5 (an underdamped pendulum), got {}", args.q),
+        ));
+    }
+    let lift = common::quantity("--lift-angle", &args.lift_angle, Dimension::Angle)?;
+    if lift.is_nan() || lift <= 0.0 {
+        return Err(CliError::flag(
+            "--lift-angle",
+            format!("must be positive, got {}", args.lift_angle),
+        ));
+    }
+    let angle = common::quantity("--impulse-angle", &args.impulse_angle, Dimension::Angle)?;
+    let friction = number("--friction", &args.friction)?;
+    if friction.is_nan() || friction < 0.0 {
+        return Err(CliError::flag("--friction", "must not be negative"));
+    }
+    let recoil = number("--recoil", &args.recoil)?;
+    if recoil.is_nan() || recoil < 0.0 {
+        return Err(CliError::flag("--recoil", "must not be negative"));
+    }
+    if args.every_beats == 0 {
+        return Err(CliError::flag("--every-beats", "must be at least 1"));
+    }
+    let given = drive(&args.drive)?;
+    // Scaled: torques over m g l, energies over m g l.
+    let (torque, energy) = match given {
+        Drive::Torque(t) => (t / scale, t * lift / scale),
+        Drive::Energy(e) => (e / (lift * scale), e / scale),
+    };
+    let escapement: Box<dyn Escapement> = match args.escapement {
+        EscapementArg::Impulse | EscapementArg::Free => {
+            if matches!(given, Drive::Torque(_)) {
+                return Err(CliError::flag(
+                    "--drive",
+                    "an impulse is an energy per beat (e.g. 20uJ), not a torque",
+                ));
+            }
+            if args.escapement == EscapementArg::Impulse {
+                Box::new(Impulse { angle, energy })
+            } else {
+                Box::new(FreePendulum {
+                    impulse: Impulse { angle, energy },
+                    every: args.every_beats,
+                })
+            }
+        }
+        EscapementArg::Deadbeat => Box::new(Deadbeat {
+            lift,
+            torque,
+            friction,
+            offset: angle,
+        }),
+        EscapementArg::Recoil => Box::new(Recoil {
+            lift,
+            torque,
+            recoil,
+        }),
+        EscapementArg::ConstantForce => Box::new(ConstantForce {
+            lift,
+            impulse: torque,
+            torque,
+            friction,
+        }),
+    };
+    let unlocking = escapement.unlocking_amplitude();
+    if unlocking >= 170f64.to_radians() {
+        return Err(CliError::flag(
+            "--lift-angle",
+            format!(
+                "the escapement unlocks only at {}° either side, beyond the 170° a pendulum can swing",
+                num(unlocking.to_degrees(), 4)
+            ),
+        ));
+    }
+    if angle.abs() >= 170f64.to_radians() {
+        return Err(CliError::flag(
+            "--impulse-angle",
+            "must lie within 170° of the bottom",
+        ));
+    }
+    let name = escapement.name();
+    let clock = Clock {
+        pendulum,
+        q,
+        escapement,
+        torque_scale: scale,
+    };
+    let steady = clock
+        .steady(HalfSwingMethod::Direct, 1.0)
+        .map_err(|e| clock_error(e, &args.drive))?;
+
+    let isochronism = match &args.drive_range {
+        Some(text) => Some(isochronism_curve(&clock, text, args.steps)?),
+        None => None,
+    };
+
+    let long = match &args.duration {
+        Some(text) => Some(run_long(&clock, args, text, &steady)?),
+        None => None,
+    };
+
+    if let Some(path) = &args.plot {
+        let target = Target::new(path, "--plot")?;
+        let figure = match (&isochronism, &long) {
+            (Some(rows), _) => isochronism_figure(rows, name),
+            (None, Some((_, points))) => run_figure(points),
+            _ => {
+                return Err(CliError::flag(
+                    "--plot",
+                    "draws the isochronism curve (--drive-range) or a long run (--duration)",
+                ))
+            }
+        };
+        render(&target, &figure)?;
+    }
+
+    let result = ClockJson {
+        escapement: name,
+        q,
+        length_m: pendulum.length_m(),
+        mass_kg: mass,
+        lift_angle_rad: lift,
+        drive_torque_n_m: match given {
+            Drive::Torque(t) => Some(t),
+            Drive::Energy(_) => None,
+        },
+        drive_energy_j: match given {
+            Drive::Energy(e) => Some(e),
+            Drive::Torque(_) => None,
+        },
+        minimum_drive_factor: clock.minimum_drive(),
+        steady: SteadyJson::of(&steady),
+        isochronism,
+        long_run: long.map(|(r, _)| r),
+    };
+    if args.json {
+        return output::json(&result);
+    }
+    Ok(render_text(&result))
+}
+
+fn isochronism_curve(clock: &Clock, text: &str, steps: usize) -> Result<Vec<IsoJson>, CliError> {
+    let parse = |s: &str| -> Result<f64, CliError> {
+        let v = number("--drive-range", s.trim().trim_end_matches(['x', 'X']))?;
+        if v.is_nan() || v <= 0.0 {
+            return Err(CliError::flag(
+                "--drive-range",
+                format!("factors must be positive, got {s}"),
+            ));
+        }
+        Ok(v)
+    };
+    let (a, b) = text
+        .split_once("..")
+        .ok_or_else(|| CliError::flag("--drive-range", "give two factors as 0.5x..2x"))?;
+    let (a, b) = (parse(a)?, parse(b)?);
+    if a >= b {
+        return Err(CliError::flag(
+            "--drive-range",
+            "the first factor must be the smaller",
+        ));
+    }
+    if !(2..=1000).contains(&steps) {
+        return Err(CliError::flag("--steps", "must lie between 2 and 1000"));
+    }
+    let mut rows = Vec::with_capacity(steps);
+    for i in 0..steps {
+        // Geometric steps: drive factors span a ratio.
+        let f = a * (b / a).powf(i as f64 / (steps - 1) as f64);
+        if interrupt::requested() {
+            return Err(interrupt::error());
+        }
+        match clock.steady(HalfSwingMethod::Direct, f) {
+            Ok(s) => rows.push(IsoJson {
+                drive_factor: f,
+                steady: Some(SteadyJson::of(&s)),
+                stops: false,
+            }),
+            Err(ClockError::Stops { .. }) => rows.push(IsoJson {
+                drive_factor: f,
+                steady: None,
+                stops: true,
+            }),
+            Err(e) => return Err(clock_error(e, "the drive")),
+        }
+    }
+    Ok(rows)
+}
+
+/// (time s, amplitude rad, time error s) of a long run, for its plot.
+type RunPoints = Vec<(f64, f64, f64)>;
+
+fn run_long(
+    clock: &Clock,
+    args: &ClockArgs,
+    text: &str,
+    steady: &Steady,
+) -> Result<(RunJson, RunPoints), CliError> {
+    let duration = common::quantity("--duration", text, Dimension::Time)?;
+    if duration.is_nan() || duration <= 0.0 || duration > 1e10 {
+        return Err(CliError::flag(
+            "--duration",
+            format!("must lie between 0 and 300 years, got {text}"),
+        ));
+    }
+    let every = match &args.every {
+        Some(t) => {
+            let e = common::quantity("--every", t, Dimension::Time)?;
+            if e.is_nan() || e < steady.period {
+                return Err(CliError::flag(
+                    "--every",
+                    format!(
+                        "must be at least a period ({} s), got {t}",
+                        num(steady.period, 6)
+                    ),
+                ));
+            }
+            Some(e)
+        }
+        None => None,
+    };
+    if every.is_none() && duration / steady.period > 5e7 {
+        return Err(CliError::flag(
+            "--duration",
+            "every turning point of so long a run is more than 10^8 rows: give --every",
+        ));
+    }
+    let schedule = match &args.drive_file {
+        Some(p) => Some(Schedule::read(p)?),
+        None => None,
+    };
+    let column = |k: usize, t: f64| schedule.as_ref().and_then(|s| s.at(k, t));
+    let drive_at = |t: f64| column(0, t).unwrap_or(1.0);
+    // Temperature and pressure move the period by the design's
+    // coefficients, against their values at the start (where the clock
+    // was regulated).
+    let weather = schedule
+        .as_ref()
+        .is_some_and(|s| s.columns[1].is_some() || s.columns[2].is_some());
+    let (per_c, per_hpa) =
+        match (&args.design, weather) {
+            (_, false) => (0.0, 0.0),
+            (Some(path), true) => {
+                let design = crate::design::read(path)?;
+                let (t0, p0) = (
+                    column(1, 0.0).unwrap_or(20.0),
+                    column(2, 0.0).unwrap_or(1013.25),
+                );
+                (
+                    design.temperature_coefficient(),
+                    design.pressure_coefficient(p0 * 100.0, t0, 0.5),
+                )
+            }
+            (None, true) => return Err(CliError::flag(
+                "--drive-file",
+                "temperature_c and pressure_hpa need --design (the pendulum's own coefficients)",
+            )),
+        };
+    let stretch = |t: f64| {
+        let rate = column(1, t).map_or(0.0, |c| per_c * (c - column(1, 0.0).unwrap_or(c)))
+            + column(2, t).map_or(0.0, |p| per_hpa * (p - column(2, 0.0).unwrap_or(p)));
+        1.0 / (1.0 + rate / 86_400.0)
+    };
+    // Start in the steady state of the drive at the start, regulated to it.
+    let start = clock
+        .steady(HalfSwingMethod::Averaged, drive_at(0.0))
+        .map_err(|e| clock_error(e, &args.drive))?;
+    let mut csv = match &args.swings {
+        Some(p) => Some(CsvFile::create(
+            p,
+            "--swings",
+            "time_s,beats,amplitude_rad,rate_s_per_day,time_error_s,drive_factor",
+        )?),
+        None => None,
+    };
+    let mut points = Vec::new();
+    let mut failure: Option<CliError> = None;
+    // At most about 20,000 points drawn.
+    let expected_rows = duration / every.unwrap_or(0.5 * steady.period);
+    let keep_every = (expected_rows as usize / 20_000).max(1);
+    let mut count = 0usize;
+    let finish = long_run(
+        clock,
+        &drive_at,
+        &stretch,
+        &LongRun {
+            duration,
+            amplitude: start.amplitude,
+            nominal_period: start.period,
+            every,
+        },
+        &mut |row| {
+            if count % keep_every == 0 {
+                points.push((row.time, row.amplitude, row.time_error));
+            }
+            count += 1;
+            if let Some(c) = csv.as_mut() {
+                c.number(Some(row.time))
+                    .integer(row.beats)
+                    .number(Some(row.amplitude))
+                    .number(Some(row.rate))
+                    .number(Some(row.time_error))
+                    .number(Some(row.drive));
+                if let Err(e) = c.end_row() {
+                    failure = Some(e);
+                    return false;
+                }
+            }
+            !(count % 4096 == 0 && interrupt::requested())
+        },
+    );
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    if interrupt::requested() {
+        return Err(interrupt::error());
+    }
+    let swings_file = match csv {
+        Some(c) => Some(c.commit()?),
+        None => None,
+    };
+    let last = finish.last;
+    Ok((
+        RunJson {
+            duration_s: last.time,
+            beats: last.beats,
+            final_amplitude_rad: last.amplitude,
+            final_rate_s_per_day: last.rate,
+            time_error_s: last.time_error,
+            stopped: finish.stopped,
+            half_swings_stepped: finish.single_steps,
+            multi_beat_steps: finish.multi_steps,
+            swings_file,
+        },
+        points,
+    ))
+}
+
+fn isochronism_figure(rows: &[IsoJson], name: &str) -> Figure {
+    let pick = |f: &dyn Fn(&SteadyJson) -> f64| -> Vec<(f64, f64)> {
+        rows.iter()
+            .filter_map(|r| r.steady.as_ref().map(|s| (r.drive_factor, f(s))))
+            .collect()
+    };
+    Figure {
+        panels: vec![
+            Panel::new(
+                format!("Isochronism of the {name} escapement: amplitude"),
+                "drive factor (× the given drive)",
+                "amplitude (°)",
+                vec![Series::line("steady amplitude", pick(&|s| s.amplitude_deg))],
+            )
+            .legend_upper_left(),
+            Panel::new(
+                "Rate against the drive",
+                "drive factor (× the given drive)",
+                "rate (s/day, + gaining)",
+                vec![
+                    Series::line("rate (total)", pick(&|s| s.rate_s_per_day)),
+                    Series::line(
+                        "circular error's part",
+                        pick(&|s| s.circular_rate_s_per_day),
+                    ),
+                    Series::line("escapement's part", pick(&|s| s.escapement_rate_s_per_day)),
+                ],
+            )
+            .legend_lower_left(),
+        ],
+    }
+}
+
+fn run_figure(points: &[(f64, f64, f64)]) -> Figure {
+    let days = |t: f64| t / 86_400.0;
+    Figure {
+        panels: vec![
+            Panel::new(
+                "Amplitude",
+                "time (days)",
+                "amplitude (°)",
+                vec![Series::line(
+                    "amplitude",
+                    points
+                        .iter()
+                        .map(|p| (days(p.0), p.1.to_degrees()))
+                        .collect(),
+                )],
+            ),
+            Panel::new(
+                "Time error against a perfect clock",
+                "time (days)",
+                "error (s, + ahead)",
+                vec![Series::line(
+                    "clock - true time",
+                    points.iter().map(|p| (days(p.0), p.2)).collect(),
+                )],
+            )
+            .legend_upper_left(),
+        ],
+    }
+}
+
+fn render_text(r: &ClockJson) -> String {
+    let s = &r.steady;
+    let mut out = Summary::default();
+    out.row("Escapement", format!("{} (Q = {})", r.escapement, num(r.q, 6)))
+        .row(
+            "Amplitude",
+            format!("{}° either side (steady)", num(s.amplitude_deg, 6)),
+        )
+        .row(
+            "Period",
+            format!(
+                "{} s (free at that amplitude {} s, small-angle {} s)",
+                num(s.period_s, 10),
+                num(s.free_period_s, 10),
+                num(s.small_angle_period_s, 10)
+            ),
+        )
+        .row(
+            "Rate",
+            format!(
+                "{} s/day against a small-angle clock: circular error {}, escapement {} (Airy's integral: {})",
+                num(s.rate_s_per_day, 5),
+                num(s.circular_rate_s_per_day, 5),
+                num(s.escapement_rate_s_per_day, 4),
+                num(s.escapement_rate_airy_s_per_day, 4)
+            ),
+        )
+        .row(
+            "Energy",
+            format!(
+                "{} µJ per beat, {} µW",
+                num(s.energy_per_beat_j * 1e6, 5),
+                num(s.power_w * 1e6, 5)
+            ),
+        )
+        .row(
+            "Stops below",
+            format!("{} × the drive", num(r.minimum_drive_factor, 4)),
+        );
+    let mut text = out.render();
+    if let Some(rows) = &r.isochronism {
+        let table: Vec<Vec<String>> = rows
+            .iter()
+            .map(|row| match &row.steady {
+                Some(s) => vec![
+                    num(row.drive_factor, 4),
+                    num(s.amplitude_deg, 5),
+                    num(s.rate_s_per_day, 5),
+                    num(s.circular_rate_s_per_day, 5),
+                    num(s.escapement_rate_s_per_day, 4),
+                ],
+                None => vec![
+                    num(row.drive_factor, 4),
+                    "stops".into(),
+                    String::new(),
+                    String::new(),
+                    String::new(),
+                ],
+            })
+            .collect();
+        text.push('\n');
+        text.push_str(&output::table(
+            &[
+                "drive",
+                "amplitude °",
+                "rate s/day",
+                "circular",
+                "escapement",
+            ],
+            &table,
+        ));
+    }
+    if let Some(run) = &r.long_run {
+        let mut o = Summary::default();
+        o.row(
+            "Run",
+            format!(
+                "{} days, {} beats{}",
+                num(run.duration_s / 86_400.0, 6),
+                run.beats,
+                if run.stopped {
+                    " (the pendulum stopped)"
+                } else {
+                    ""
+                }
+            ),
+        )
+        .row(
+            "At the end",
+            format!(
+                "{}°, {} s/day, {} s {} of true time",
+                num(run.final_amplitude_rad.to_degrees(), 5),
+                num(run.final_rate_s_per_day, 4),
+                num(run.time_error_s.abs(), 5),
+                if run.time_error_s >= 0.0 {
+                    "ahead"
+                } else {
+                    "behind"
+                }
+            ),
+        );
+        if let Some(f) = &run.swings_file {
+            o.row("Written", f.clone());
+        }
+        text.push('\n');
+        text.push_str(&o.render());
+    }
+    text
+}

@@ -1,0 +1,316 @@
+//! `pendulum clock` through the binary.
+
+use super::util::{f, files_in, json, pendulum, refuses};
+
+/// The steady state of a deadbeat seconds clock: the circular error is the
+/// exact period's at the steady amplitude (`period` computes it on its
+/// own), the escapement's part is nearly nil, the energy balance holds
+/// (energy per beat × 2 = the viscous loss per period π m g l A²/Q), and
+/// the parts add up to the rate.
+#[test]
+fn a_deadbeat_clock() {
+    let v = json(&[
+        "clock",
+        "--length",
+        "0.99362m",
+        "--q",
+        "10000",
+        "--escapement",
+        "deadbeat",
+        "--lift-angle",
+        "2",
+        "--drive",
+        "20uJ",
+    ]);
+    let s = &v["steady"];
+    let a = f(s, "amplitude_rad");
+    assert!((2.0f64.to_radians()..5f64.to_radians()).contains(&a), "{v}");
+    let p = json(&[
+        "period",
+        "--length",
+        "0.99362m",
+        "--amplitude",
+        &format!("{}rad", a),
+    ]);
+    let circular = f(&p, "circular_error_s_per_day");
+    assert!(
+        (f(s, "circular_error_s_per_day") / circular - 1.0).abs() < 1e-9,
+        "{p}"
+    );
+    assert!(f(s, "escapement_rate_s_per_day").abs() < 1e-3);
+    let sum = f(s, "circular_rate_s_per_day") + f(s, "escapement_rate_s_per_day");
+    assert!((f(s, "rate_s_per_day") - sum).abs() < 1e-6);
+    let loss = std::f64::consts::PI * 5.0 * 9.80665 * 0.99362 * a * a / 1e4;
+    assert!(
+        (2.0 * f(s, "energy_per_beat_j") / loss - 1.0).abs() < 0.01,
+        "{v}"
+    );
+}
+
+/// The isochronism table and plot (deadbeat: the rate falls as the drive
+/// rises), a long run with a mainspring's drive falling over eight days
+/// and rewound, written as CSV with one row an hour.
+#[test]
+fn isochronism_and_a_long_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let plot = dir.path().join("iso.svg");
+    let v = json(&[
+        "clock",
+        "--length",
+        "0.99362m",
+        "--drive",
+        "20uJ",
+        "--drive-range",
+        "0.5x..2x",
+        "--steps",
+        "4",
+        "--plot",
+        plot.to_str().unwrap(),
+    ]);
+    let rows = v["isochronism"].as_array().unwrap();
+    assert_eq!(rows.len(), 4);
+    let rates: Vec<f64> = rows.iter().map(|r| f(r, "rate_s_per_day")).collect();
+    assert!(rates.windows(2).all(|w| w[1] < w[0]), "{rates:?}");
+    let svg = std::fs::read_to_string(&plot).unwrap();
+    assert!(svg.contains("drive factor") && svg.contains("amplitude (°)"));
+
+    let spring = dir.path().join("spring.csv");
+    std::fs::write(
+        &spring,
+        "time_s,drive_factor\n0,1\n691200,0.7\n691201,1\n1382400,0.7\n",
+    )
+    .unwrap();
+    let out = dir.path().join("run.csv");
+    let v = json(&[
+        "clock",
+        "--length",
+        "0.99362m",
+        "--drive",
+        "20uJ",
+        "--duration",
+        "16days",
+        "--every",
+        "1h",
+        "--drive-file",
+        spring.to_str().unwrap(),
+        "--swings",
+        out.to_str().unwrap(),
+    ]);
+    let run = &v["long_run"];
+    assert!(!run["stopped"].as_bool().unwrap());
+    let text = std::fs::read_to_string(&out).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "time_s,beats,amplitude_rad,rate_s_per_day,time_error_s,drive_factor"
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 16 * 24 + 1);
+    // The drive weakens: the arc shrinks over the first eight days, and
+    // is back after the rewinding.
+    let at = |day: f64| rows.iter().find(|r| r[0] >= day * 86_400.0 - 1.0).unwrap();
+    assert!(at(7.9)[2] < at(0.0)[2] * 0.95);
+    assert!(at(9.0)[2] > at(7.9)[2]);
+    assert!((at(7.9)[5] - (1.0 - 0.3 * 7.9 / 8.0)).abs() < 1e-3);
+}
+
+/// Bad input: one line naming the flag, exit 2, nothing left behind.
+#[test]
+fn bad_clocks_are_refused() {
+    let base = ["clock", "--length", "1m"];
+    let with = |extra: &[&str]| {
+        let mut v: Vec<String> = base.iter().map(|s| s.to_string()).collect();
+        v.extend(extra.iter().map(|s| s.to_string()));
+        v
+    };
+    for (extra, flag, words) in [
+        (
+            vec!["--drive", "1uJ"],
+            "--drive",
+            "the pendulum stops: drive below",
+        ),
+        (
+            vec!["--drive", "20uJ", "--lift-angle", "400"],
+            "--lift-angle",
+            "170°",
+        ),
+        (vec!["--drive", "-20uJ"], "--drive", "positive"),
+        (vec!["--drive", "20 kg"], "--drive", "neither a torque"),
+        (vec!["--drive", "20uJ", "--q", "-5"], "--q", "exceed"),
+        (
+            vec!["--drive", "2e-4Nm", "--escapement", "impulse"],
+            "--drive",
+            "energy per beat",
+        ),
+        (
+            vec!["--drive", "20uJ", "--friction", "-1"],
+            "--friction",
+            "negative",
+        ),
+        (
+            vec!["--drive", "20uJ", "--drive-range", "2x..1x"],
+            "--drive-range",
+            "smaller",
+        ),
+        (vec!["--drive", "20J"], "--drive", "give less drive"),
+    ] {
+        let args = with(&extra);
+        let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+        let e = refuses(&refs, flag);
+        assert!(e.contains(words), "{e}");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let bad = dir.path().join("bad.csv");
+    std::fs::write(&bad, "time_s,drive_factor\n0,1\n10,x\n").unwrap();
+    let out = dir.path().join("out.csv");
+    let e = refuses(
+        &[
+            "clock",
+            "--length",
+            "1m",
+            "--drive",
+            "20uJ",
+            "--duration",
+            "1day",
+            "--drive-file",
+            bad.to_str().unwrap(),
+            "--swings",
+            out.to_str().unwrap(),
+        ],
+        "--drive-file",
+    );
+    assert!(e.contains("row 3"), "{e}");
+    assert_eq!(files_in(dir.path()).len(), 1, "only bad.csv is left");
+    pendulum()
+        .args([
+            "clock",
+            "--length",
+            "1m",
+            "--drive",
+            "20uJ",
+            "--duration",
+            "1h",
+        ])
+        .assert()
+        .success();
+}
+
+/// A long run of a design through a warm spell: 10 °C warmer from the
+/// first day on moves the rate by ten times the design's temperature
+/// coefficient (`design` gives it on its own), so after three days the
+/// clock is 2 × 10 × coefficient seconds off the same run at constant
+/// temperature (within 1%). Without a design the temperature column is
+/// refused.
+#[test]
+fn a_warm_spell() {
+    let design = format!(
+        "{}/../../examples/seconds-steel-brass.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let coefficient = f(
+        &json(&["design", &design]),
+        "temperature_coefficient_s_per_day_per_c",
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let error_after = |text: &str| {
+        let path = dir.path().join("weather.csv");
+        std::fs::write(&path, text).unwrap();
+        let v = json(&[
+            "clock",
+            "--design",
+            &design,
+            "--drive",
+            "20uJ",
+            "--duration",
+            "3days",
+            "--every",
+            "1h",
+            "--drive-file",
+            path.to_str().unwrap(),
+        ]);
+        f(&v["long_run"], "time_error_s")
+    };
+    let steady = error_after("time_s,temperature_c\n0,20\n");
+    let warm = error_after("time_s,temperature_c\n0,20\n86400,20\n86401,30\n");
+    let expected = 2.0 * 10.0 * coefficient;
+    assert!(
+        ((warm - steady) / expected - 1.0).abs() < 0.01,
+        "{} against {expected}",
+        warm - steady
+    );
+    let path = dir.path().join("weather.csv");
+    let e = refuses(
+        &[
+            "clock",
+            "--length",
+            "1m",
+            "--drive",
+            "20uJ",
+            "--duration",
+            "1day",
+            "--drive-file",
+            path.to_str().unwrap(),
+        ],
+        "--drive-file",
+    );
+    assert!(e.contains("need --design"), "{e}");
+}
+
+/// `simulate --method averaged`: the same turning points as the
+/// symplectic method at tolerance 1e-12 over 200 periods at Q = 10,000
+/// (amplitude within 1e-9, time within 1e-6 s); drag and dry friction are
+/// refused naming --method.
+#[test]
+fn simulate_by_the_averaged_method() {
+    let dir = tempfile::tempdir().unwrap();
+    let last = |method: &[&str]| {
+        let path = dir.path().join("swings.csv");
+        let mut args = vec![
+            "simulate",
+            "--length",
+            "0.99362m",
+            "--amplitude",
+            "3",
+            "--q",
+            "10000",
+            "--duration",
+            "400s",
+            "--swings",
+            path.to_str().unwrap(),
+        ];
+        args.extend_from_slice(method);
+        json(&args);
+        let text = std::fs::read_to_string(&path).unwrap();
+        let row: Vec<f64> = text
+            .lines()
+            .last()
+            .unwrap()
+            .split(',')
+            .map(|x| x.parse().unwrap())
+            .collect();
+        row
+    };
+    let a = last(&["--method", "averaged"]);
+    let s = last(&["--method", "symplectic", "--tolerance", "1e-12"]);
+    assert_eq!(a[0], s[0]);
+    assert!((a[1] - s[1]).abs() < 1e-6, "{a:?} {s:?}");
+    assert!((a[2] / s[2] - 1.0).abs() < 1e-9, "{a:?} {s:?}");
+    refuses(
+        &[
+            "simulate",
+            "--length",
+            "1m",
+            "--amplitude",
+            "3",
+            "--quadratic-drag",
+            "0.1",
+            "--duration",
+            "10s",
+            "--method",
+            "averaged",
+        ],
+        "--method",
+    );
+}

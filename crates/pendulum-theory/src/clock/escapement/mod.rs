@@ -1,0 +1,92 @@
+//! Escapements as torques over windows of the swing.
+//!
+//! Every escapement here is symmetric (in beat): what it does to a half
+//! swing travelling towards `+θ` it does, mirrored, to the one travelling
+//! back. So each is described for a half swing from `-A` to `+A` only, by
+//! the angles where its torque changes ([`Escapement::edges`], ascending),
+//! the torque in each zone between them, its work over part of a zone
+//! (closed forms, for the long-run method), and instantaneous impulses at
+//! an edge.
+//!
+//! Units are the pendulum's own: angles in radians, torques over the
+//! largest gravity torque `m g l` (for a compound pendulum `M g d`), which
+//! is the acceleration in units of `ω_n²`; energies over `m g l`. A torque
+//! of 1e-5 is a hundred-thousandth of the bob's weight at the end of a
+//! horizontal arm.
+//!
+//! The drive factor multiplies what the train delivers (a mainspring
+//! running down, a dirtier train): 1 is the escapement as specified.
+//!
+//! Adding an escapement is adding one file with a type that implements
+//! [`Escapement`].
+
+mod constant_force;
+mod deadbeat;
+mod free;
+mod impulse;
+mod recoil;
+
+pub use constant_force::ConstantForce;
+pub use deadbeat::Deadbeat;
+pub use free::FreePendulum;
+pub use impulse::Impulse;
+pub use recoil::Recoil;
+
+/// An escapement's action on a half swing travelling from `-A` to `+A`
+/// (see the module notes for the units).
+pub trait Escapement: Send + Sync + std::fmt::Debug {
+    /// Its name on the command line and in JSON.
+    fn name(&self) -> &'static str;
+    /// The angles where its torque changes, ascending, rad.
+    fn edges(&self) -> Vec<f64>;
+    /// The torque in zone `zone` (0 below the first edge, `i` between edge
+    /// `i-1` and edge `i`) at `theta`, over `m g l`, with the drive
+    /// multiplied by `drive`.
+    fn torque(&self, zone: usize, theta: f64, drive: f64) -> f64;
+    /// Its work over zone `zone` from `from` to `to` (either order), over
+    /// `m g l`: the integral of [`Escapement::torque`].
+    fn work(&self, zone: usize, from: f64, to: f64, drive: f64) -> f64;
+    /// The energy given instantly at edge `edge` on beat `beat` (0 for
+    /// escapements that push over a window), over `m g l`.
+    fn kick(&self, _edge: usize, _beat: u64, _drive: f64) -> f64 {
+        0.0
+    }
+    /// The beats in one cycle of its pattern: 1, or N for a free pendulum
+    /// impulsed every N beats.
+    fn cycle(&self) -> u64 {
+        1
+    }
+    /// Whether its torque is even in `θ` (the same either side of the
+    /// bottom, impulses only at the bottom): then it cannot move the period
+    /// at first order (Airy), and the long-run method skips that term.
+    fn symmetric(&self) -> bool {
+        false
+    }
+    /// The smallest amplitude at which it can work (the pendulum must
+    /// carry the escapement through its lift), rad.
+    fn unlocking_amplitude(&self) -> f64;
+    /// The energy it gives a half swing whose ends are `-a1` and `+a2`, on
+    /// beat `beat`, over `m g l`: the work of each zone between the ends
+    /// and the kicks at the edges passed.
+    fn energy(&self, a1: f64, a2: f64, beat: u64, drive: f64) -> f64 {
+        let edges = self.edges();
+        let (start, end) = (-a1, a2);
+        let mut total = 0.0;
+        let mut from = start;
+        let mut zone = edges.iter().filter(|&&e| e <= start).count();
+        for (i, &e) in edges.iter().enumerate().skip(zone) {
+            if e >= end {
+                break;
+            }
+            total += self.work(zone, from, e, drive) + self.kick(i, beat, drive);
+            from = e;
+            zone = i + 1;
+        }
+        total + self.work(zone, from, end, drive)
+    }
+}
+
+/// The zone of `theta` among `edges` (ascending).
+pub fn zone_of(edges: &[f64], theta: f64) -> usize {
+    edges.iter().filter(|&&e| e <= theta).count()
+}

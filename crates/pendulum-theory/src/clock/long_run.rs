@@ -1,0 +1,203 @@
+//! Long runs of a clock: days to years of half swings.
+//!
+//! Each half swing is the closed-form map of [`super::averaged`] (one
+//! step per beat: every turning point, a week of a seconds pendulum in a
+//! fraction of a second), or, when only a row every so often is wanted,
+//! many beats per step: the map's increments `g(A)` (amplitude) and `τ(A)`
+//! (duration) become the flow `dA/dn = g - g g'/2`, `dt/dn = τ - τ' g/2` in
+//! the beat count `n` (the map's modified equation to second order, so
+//! that one unit of the flow is one half swing), advanced by the classical
+//! Runge-Kutta method over up to a few thousand beats per step (at most a
+//! twentieth of the amplitude's relaxation time `Q/π` periods, and never
+//! past a row or a change of the drive schedule's sampling).
+//!
+//! The drive may change with time (a mainspring running down): the
+//! `drive` function gives the factor at each moment, held over a beat. So
+//! may the pendulum's own period (its temperature and the air pressure):
+//! `stretch` gives the factor each half swing's duration is multiplied
+//! by (1 + the relative period change, from a design's temperature and
+//! barometric coefficients).
+//! The clock's indicated time is its beat count times the nominal beat
+//! (half the `nominal_period` it was regulated to); the time error is the
+//! indicated time less the true time (positive: ahead).
+
+use super::averaged::half_swing_map;
+use super::Clock;
+
+/// What a long run reports, at a turning point or every so often.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Row {
+    /// True time, s.
+    pub time: f64,
+    /// Beats counted.
+    pub beats: u64,
+    /// Amplitude, rad.
+    pub amplitude: f64,
+    /// The rate at this moment, s/day (positive: gaining): `86400 (T_nominal
+    /// / T - 1)` for the current half swing's period.
+    pub rate: f64,
+    /// Indicated less true time, s.
+    pub time_error: f64,
+    /// The drive factor.
+    pub drive: f64,
+}
+
+/// How a long run ended.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Finish {
+    /// The last row.
+    pub last: Row,
+    /// Half swings computed one by one.
+    pub single_steps: u64,
+    /// Multi-beat steps.
+    pub multi_steps: u64,
+    /// Whether it stopped early (the pendulum stopped, or the sink asked).
+    pub stopped: bool,
+}
+
+/// Options of a long run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LongRun {
+    /// Simulated time, s.
+    pub duration: f64,
+    /// Amplitude at the start (a turning point), rad.
+    pub amplitude: f64,
+    /// The period the clock was regulated to, s.
+    pub nominal_period: f64,
+    /// A row this often, s; `None`: a row at every turning point.
+    pub every: Option<f64>,
+}
+
+/// Runs `clock` (one whole escapement cycle per beat pattern; free
+/// pendulums step beat by beat) and hands `sink` each row; `sink` returns
+/// `false` to stop.
+pub fn run(
+    clock: &Clock,
+    drive: &dyn Fn(f64) -> f64,
+    stretch: &dyn Fn(f64) -> f64,
+    options: &LongRun,
+    sink: &mut dyn FnMut(&Row) -> bool,
+) -> Finish {
+    let omega = clock.pendulum.natural_angular_frequency();
+    let nominal_beat = 0.5 * options.nominal_period;
+    let escapement = clock.escapement.as_ref();
+    let shift = !escapement.symmetric();
+    let map =
+        |a: f64, beat: u64, d: f64| half_swing_map(Some(escapement), clock.q, d, beat, a, shift);
+    let rate_of = |beat_time: f64| 86_400.0 * (nominal_beat / beat_time - 1.0);
+    let mut row = Row {
+        time: 0.0,
+        beats: 0,
+        amplitude: options.amplitude,
+        rate: 0.0,
+        time_error: 0.0,
+        drive: drive(0.0),
+    };
+    let mut finish = Finish {
+        last: row,
+        single_steps: 0,
+        multi_steps: 0,
+        stopped: false,
+    };
+    // True time as a compensated sum of the half swings.
+    let mut carry = 0.0;
+    let mut add_time = |row: &mut Row, dt: f64| {
+        let y = dt - carry;
+        let t = row.time + y;
+        carry = (t - row.time) - y;
+        row.time = t;
+    };
+    if let Some(h) = map(row.amplitude, 0, row.drive) {
+        row.rate = rate_of(h.time * stretch(0.0) / omega);
+    }
+    if !sink(&row) {
+        finish.stopped = true;
+        return finish;
+    }
+    let cycle = escapement.cycle();
+    let relaxation_beats = (clock.q / std::f64::consts::PI * 2.0).max(1.0);
+    let mut next_row = options.every.unwrap_or(0.0);
+    while row.time < options.duration {
+        let d = drive(row.time);
+        let beat_estimate = std::f64::consts::PI / omega;
+        // Beats until the next row (or the end).
+        let target = match options.every {
+            Some(_) => next_row.min(options.duration),
+            None => options.duration,
+        };
+        let room = ((target - row.time) / beat_estimate).floor();
+        let step_beats = (room.min(relaxation_beats / 20.0).min(4096.0) as u64) / cycle * cycle;
+        if options.every.is_some() && cycle == 1 && step_beats >= 16 {
+            // Many beats at once: RK4 on the modified equation.
+            let n = step_beats as f64;
+            // The drive at each stage's time: the flow is not autonomous.
+            let flow = |a: f64, t: f64| -> Option<(f64, f64)> {
+                let d = drive(t);
+                let h = 1e-6 * a;
+                let m0 = map(a, 0, d)?;
+                let mp = map(a + h, 0, d)?;
+                let mm = map(a - h, 0, d)?;
+                let g = m0.amplitude - a;
+                let dg = ((mp.amplitude - a - h) - (mm.amplitude - a + h)) / (2.0 * h);
+                let dtau = (mp.time - mm.time) / (2.0 * h);
+                let s = stretch(t);
+                Some((g - 0.5 * g * dg, (m0.time - 0.5 * dtau * g) * s))
+            };
+            let (a, t) = (row.amplitude, row.time);
+            let Some(k1) = flow(a, t) else { break };
+            let Some(k2) = flow(a + 0.5 * n * k1.0, t + 0.5 * n * k1.1 / omega) else {
+                break;
+            };
+            let Some(k3) = flow(a + 0.5 * n * k2.0, t + 0.5 * n * k2.1 / omega) else {
+                break;
+            };
+            let Some(k4) = flow(a + n * k3.0, t + n * k3.1 / omega) else {
+                break;
+            };
+            let da = n / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0);
+            let dt = n / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1) / omega;
+            row.amplitude = a + da;
+            add_time(&mut row, dt);
+            row.beats += step_beats;
+            row.rate = rate_of(k4.1 / omega);
+            finish.multi_steps += 1;
+        } else {
+            let beat = row.beats % cycle;
+            let Some(h) = map(row.amplitude, beat, d) else {
+                finish.stopped = true;
+                break;
+            };
+            let seconds = h.time * stretch(row.time) / omega;
+            row.amplitude = h.amplitude;
+            add_time(&mut row, seconds);
+            row.beats += 1;
+            row.rate = rate_of(seconds);
+            finish.single_steps += 1;
+        }
+        row.drive = d;
+        row.time_error = row.beats as f64 * nominal_beat - row.time;
+        if row.amplitude < escapement.unlocking_amplitude() {
+            finish.stopped = true;
+            break;
+        }
+        let due = match options.every {
+            None => true,
+            Some(e) => {
+                if row.time >= next_row - 1e-9 * e || row.time >= options.duration {
+                    while next_row <= row.time + 1e-9 * e {
+                        next_row += e;
+                    }
+                    true
+                } else {
+                    false
+                }
+            }
+        };
+        if due && !sink(&row) {
+            finish.stopped = true;
+            break;
+        }
+    }
+    finish.last = row;
+    finish
+}

@@ -7,11 +7,12 @@
 //! torque and any impulse: every step integrates a smooth equation, and
 //! keeps the method's order.
 
-use super::escapement::{zone_of, Escapement};
+use super::escapement::{zone_of, Escapement, InZone};
 use crate::integrate::control::{step_factor, Tolerance};
 use crate::integrate::dop853;
 use crate::integrate::events::locate_root;
 use crate::integrate::State2;
+use crate::simulation::forces::{Gravity, Term, Viscous};
 
 /// The end of a half swing.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -46,10 +47,18 @@ pub fn half_swing(
     let mut steps = 0;
     loop {
         let edge = edges.get(zone).copied();
+        // Gravity, viscous damping and the escapement in this zone.
+        let torque = InZone {
+            escapement,
+            zone,
+            drive,
+        };
         let mut f = |_t: f64, y: State2| -> State2 {
             [
                 y[1],
-                -y[0].sin() - c * y[1] + escapement.torque(zone, y[0], drive),
+                Gravity.acceleration(y, 1.0)
+                    + Viscous(c).acceleration(y, 1.0)
+                    + torque.acceleration(y, 1.0),
             ]
         };
         let mut f0 = f(t, y);

@@ -4,6 +4,10 @@
 //! (viscous damping ζ as in seed section 1-4, quadratic air drag `b` per
 //! radian, dry friction angle `r` as in the book's section 2-4).
 //!
+//! The equation is the sum of its terms ([`forces`]: gravity and each
+//! damping law, each on its own; [`crate::clock`] adds escapements to
+//! them). What a run reports goes to an [`Observer`] (`observer.rs`).
+//!
 //! The drivers wire the pieces of [`crate::integrate`]: DOP853 (or Verner
 //! 9(8)) steps under the step-size controller (`adaptive.rs`), or Yoshida's
 //! symplectic composition at a fixed step (`symplectic.rs`); on each
@@ -13,7 +17,9 @@
 //! same steps, and the error control follows the swing's size as it decays. With dry friction the sign of `θ'` is held fixed through each
 //! half swing (the equation is smooth there) and the integration restarts
 //! at every turning point, where the pendulum sticks if `|sin θ| <= r`.
-//! `--method exact` (no damping) uses [`crate::exact`] instead.
+//! `--method exact` (no damping) uses [`crate::exact`] instead, and
+//! `--method averaged` (viscous damping only) a whole half swing per step
+//! in closed form (`averaged.rs`, [`crate::clock::averaged`]).
 //!
 //! Time is never summed: a step ends at `t + h` computed from the step's
 //! own start, and the last step lands on the duration exactly.
@@ -21,10 +27,13 @@
 mod adaptive;
 mod averaged;
 mod closed_form;
+pub mod forces;
+mod observer;
 mod run;
 mod symplectic;
 mod work;
 
+pub use observer::{Action, Crossing, Observer, Silent, TurningPoint};
 pub use symplectic::symplectic_steps_per_period;
 pub use work::{work_estimate, Limit, WorkEstimate};
 
@@ -74,8 +83,27 @@ impl Model {
     /// scaled time: `b θ'|θ'| / ω_n² = b (dθ/dτ)|dθ/dτ|`.
     #[inline(always)]
     fn acceleration(&self, c1: f64, y: State2, direction: f64) -> f64 {
-        let v = y[1];
-        -c1 * v - self.quadratic_drag * v * v.abs() - (y[0].sin() + self.friction_angle * direction)
+        self.velocity_terms(c1, y[1]) + self.position_terms(y[0], direction)
+    }
+
+    /// The terms of velocity: [`forces::Viscous`] (rate `c1 = 2ζ`) and
+    /// [`forces::QuadraticDrag`].
+    #[inline(always)]
+    fn velocity_terms(&self, c1: f64, v: f64) -> f64 {
+        use forces::Term;
+        let y = [0.0, v];
+        forces::Viscous(c1).acceleration(y, 0.0)
+            + forces::QuadraticDrag(self.quadratic_drag).acceleration(y, 0.0)
+    }
+
+    /// The terms of position: [`forces::Gravity`] and
+    /// [`forces::DryFriction`] in `direction`.
+    #[inline(always)]
+    fn position_terms(&self, theta: f64, direction: f64) -> f64 {
+        use forces::Term;
+        let y = [theta, 0.0];
+        forces::Gravity.acceleration(y, direction)
+            + forces::DryFriction(self.friction_angle).acceleration(y, direction)
     }
 }
 
@@ -120,17 +148,6 @@ pub struct Options {
     pub method: Method,
     /// Report the state every this many seconds, if any.
     pub sample_interval: Option<f64>,
-}
-
-/// A turning point of the swing.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TurningPoint {
-    /// 0 for the release, then one per half swing.
-    pub index: u64,
-    /// Time, s.
-    pub time: f64,
-    /// Signed angle, rad.
-    pub angle: f64,
 }
 
 /// Why a run ended.
@@ -268,59 +285,6 @@ impl Rates {
         self.oscillation.max(self.viscous).max(self.drag)
     }
 }
-
-/// What an observer wants done after an event.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Action {
-    /// Carry on.
-    Continue,
-    /// End the run at the event (a terminal event).
-    Stop,
-    /// Carry on from this state instead, at the event's time: the hook an
-    /// escapement uses to give its impulse. The integrator restarts there.
-    Restart(State),
-}
-
-/// An upward zero crossing: θ passing 0 from negative to positive, where an
-/// escapement usually gives its impulse.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Crossing {
-    /// 1 for the first crossing, and so on.
-    pub index: u64,
-    /// Time, s.
-    pub time: f64,
-    /// θ' there, rad/s.
-    pub angular_velocity: f64,
-}
-
-/// Receives what a run produces, as it produces it.
-pub trait Observer {
-    /// A turning point (the release is index 0, whose action is ignored).
-    fn turning_point(&mut self, _point: &TurningPoint) -> Action {
-        Action::Continue
-    }
-    /// Whether to locate upward zero crossings (off by default: it costs an
-    /// interpolant every half period).
-    fn wants_zero_crossings(&self) -> bool {
-        false
-    }
-    /// An upward zero crossing.
-    fn zero_crossing(&mut self, _crossing: &Crossing) -> Action {
-        Action::Continue
-    }
-    /// A sample at a multiple of the sample interval; `false` stops the run.
-    fn sample(&mut self, _time: f64, _state: &State) -> bool {
-        true
-    }
-    /// Called every few thousand steps with the time reached; `false` stops the run.
-    fn progress(&mut self, _time: f64) -> bool {
-        true
-    }
-}
-
-/// An observer that wants nothing.
-pub struct Silent;
-impl Observer for Silent {}
 
 /// Why a run cannot start.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

@@ -82,11 +82,11 @@ pub(super) fn run_symplectic(
 ) -> Outcome {
     // Scaled time τ = ω_n t (see `run`): ω_n = 1, viscous rate 2ζ.
     let c1 = 2.0 * model.damping.zeta();
-    let (b, r) = (model.quadratic_drag, model.friction_angle);
+    let b = model.quadratic_drag;
     let h = symplectic_step(model, amplitude, options.tolerance);
     let flow = DampingFlow::new(c1, b, h);
-    let velocity_part = |v: f64| -c1 * v - b * v * v.abs();
-    let force_of = |theta: f64, direction: f64| -(theta.sin() + r * direction);
+    let velocity_part = |v: f64| model.velocity_terms(c1, v);
+    let force_of = |theta: f64, direction: f64| model.position_terms(theta, direction);
     let mut run = match Run::start(model, Method::Symplectic, amplitude, options, observer) {
         Ok(run) => run,
         Err(finished) => return finished,

@@ -86,6 +86,25 @@ pub trait Escapement: Send + Sync + std::fmt::Debug {
     }
 }
 
+/// An escapement in one of its zones, as a term of the equation of motion
+/// ([`crate::simulation::forces::Term`]), in the frame travelling
+/// towards `+θ`.
+pub struct InZone<'a> {
+    /// The escapement.
+    pub escapement: &'a dyn Escapement,
+    /// The zone.
+    pub zone: usize,
+    /// The drive factor.
+    pub drive: f64,
+}
+
+impl crate::simulation::forces::Term for InZone<'_> {
+    #[inline]
+    fn acceleration(&self, y: crate::integrate::State2, _direction: f64) -> f64 {
+        self.escapement.torque(self.zone, y[0], self.drive)
+    }
+}
+
 /// The zone of `theta` among `edges` (ascending).
 pub fn zone_of(edges: &[f64], theta: f64) -> usize {
     edges.iter().filter(|&&e| e <= theta).count()

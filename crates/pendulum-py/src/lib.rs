@@ -6,7 +6,7 @@
 //! message.
 
 use ndarray::{ArrayD, Zip};
-use numpy::{IntoPyArray, PyArrayDyn, PyReadonlyArrayDyn};
+use numpy::{IntoPyArray, PyArrayDyn, PyReadonlyArrayDyn, PyUntypedArrayMethods};
 use pendulum_theory::damped::DampedPendulum;
 use pendulum_theory::damping::Damping;
 use pendulum_theory::elliptic::{ellipe as ellipe_m, ellipk as ellipk_m, jacobi};
@@ -15,15 +15,18 @@ use pendulum_theory::exact::ExactSwing;
 use pendulum_theory::period::{
     amplitude_for_period as theory_amplitude, circular_error, length_for_period,
 };
+use pendulum_theory::simulation;
 use pendulum_theory::{Amplitude, Pendulum};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Seconds in a day.
 const DAY: f64 = 86_400.0;
 
 type Array<'py> = Bound<'py, PyArrayDyn<f64>>;
+type Array1<'py> = Bound<'py, numpy::PyArray1<f64>>;
 type In<'py> = PyReadonlyArrayDyn<'py, f64>;
 
 /// Arrays this long and longer are computed on every core.
@@ -263,6 +266,331 @@ fn exact_angle<'py>(
     )
 }
 
+/// Collects the turning points of a run: time, signed angle, and the rate
+/// a clock would keep at that half swing.
+struct Turns {
+    pendulum: Pendulum,
+    time: Vec<f64>,
+    angle: Vec<f64>,
+    rate: Vec<f64>,
+}
+
+impl simulation::Observer for Turns {
+    fn turning_point(&mut self, p: &simulation::TurningPoint) -> simulation::Action {
+        let rate = match self.time.last() {
+            Some(&previous) => simulation::half_swing_rate(&self.pendulum, p.time - previous),
+            None => f64::NAN,
+        };
+        self.time.push(p.time);
+        self.angle.push(p.angle);
+        self.rate.push(rate);
+        simulation::Action::Continue
+    }
+}
+
+/// The full nonlinear damped pendulum released from rest (the CLI's
+/// `simulate`): every turning point's time, signed angle and rate (NaN at
+/// the release), and a summary.
+#[pyfunction]
+#[pyo3(signature = (length, amplitude, duration, zeta, quadratic_drag, friction_angle, g, method, tolerance))]
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+fn simulate<'py>(
+    py: Python<'py>,
+    length: f64,
+    amplitude: f64,
+    duration: f64,
+    zeta: f64,
+    quadratic_drag: f64,
+    friction_angle: f64,
+    g: f64,
+    method: &str,
+    tolerance: f64,
+) -> PyResult<(Array1<'py>, Array1<'py>, Array1<'py>, Bound<'py, PyDict>)> {
+    let value_error = |e: &dyn std::fmt::Display| PyValueError::new_err(e.to_string());
+    let pendulum = Pendulum::new(length, g).map_err(|e| value_error(&e))?;
+    let damping = Damping::from_zeta(zeta).map_err(|e| value_error(&e))?;
+    let model = simulation::Model::new(pendulum, damping, quadratic_drag, friction_angle)
+        .map_err(|e| value_error(&e))?;
+    let amplitude = Amplitude::from_radians(amplitude).map_err(|e| value_error(&e))?;
+    let method = match method {
+        "dop853" => simulation::Method::Dop853,
+        "vern9" => simulation::Method::Vern9,
+        "symplectic" => simulation::Method::Symplectic,
+        "exact" => simulation::Method::Exact,
+        "averaged" => simulation::Method::Averaged,
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "method: '{other}' is not one of dop853, vern9, symplectic, exact, averaged"
+            )))
+        }
+    };
+    let options = simulation::Options {
+        duration,
+        tolerance,
+        method,
+        sample_interval: None,
+    };
+    let mut turns = Turns {
+        pendulum,
+        time: Vec::new(),
+        angle: Vec::new(),
+        rate: Vec::new(),
+    };
+    let outcome = py
+        .detach(|| simulation::simulate(&model, amplitude, &options, &mut turns))
+        .map_err(|e| value_error(&e))?;
+    let summary = PyDict::new(py);
+    summary.set_item("method", outcome.method.name())?;
+    summary.set_item("swings", outcome.swings)?;
+    summary.set_item("final_time_s", outcome.final_time)?;
+    summary.set_item("final_angle_rad", outcome.final_state.angle)?;
+    summary.set_item(
+        "final_angular_velocity_rad_s",
+        outcome.final_state.angular_velocity,
+    )?;
+    summary.set_item("final_amplitude_rad", outcome.final_amplitude)?;
+    summary.set_item("steps", outcome.steps)?;
+    summary.set_item("rejected_steps", outcome.rejected_steps)?;
+    summary.set_item("function_evaluations", outcome.function_evaluations)?;
+    summary.set_item("stopped", outcome.stopped.name())?;
+    Ok((
+        turns.time.into_pyarray(py),
+        turns.angle.into_pyarray(py),
+        turns.rate.into_pyarray(py),
+        summary,
+    ))
+}
+
+/// The contiguous values of a one-dimensional array.
+fn values<'a>(a: &'a PyReadonlyArrayDyn<'_, f64>, name: &str) -> PyResult<&'a [f64]> {
+    if a.ndim() != 1 {
+        return Err(PyValueError::new_err(format!(
+            "{name}: must be one-dimensional"
+        )));
+    }
+    a.as_slice()
+        .map_err(|_| PyValueError::new_err(format!("{name}: must be contiguous")))
+}
+
+/// Fits the amplitude-decay laws (the CLI's `fit decay`) to amplitudes
+/// (rad) at times (s); the period (s), or the length (m) and g, add the
+/// physical parameters (ω = 2π/T, or the pendulum's at the record's
+/// amplitudes, as the CLI). Returns (models, preferred, omega): one dict
+/// per law with the CLI's JSON keys.
+#[pyfunction]
+#[pyo3(signature = (time, amplitude, model, period, length, g))]
+#[allow(clippy::type_complexity)]
+fn fit_decay<'py>(
+    py: Python<'py>,
+    time: In<'py>,
+    amplitude: In<'py>,
+    model: &str,
+    period: Option<f64>,
+    length: Option<f64>,
+    g: f64,
+) -> PyResult<(Vec<Bound<'py, PyDict>>, Option<&'static str>, Option<f64>)> {
+    use pendulum_theory::fitting::decay::{self, DecayModel};
+    let (t, a) = (values(&time, "time")?, values(&amplitude, "amplitude")?);
+    let omega = match (period, length) {
+        (Some(p), _) => {
+            if !(p > 0.0 && p.is_finite()) {
+                return Err(PyValueError::new_err(format!(
+                    "period: must be positive, got {p} s"
+                )));
+            }
+            Some(std::f64::consts::TAU / p)
+        }
+        (None, Some(l)) => {
+            let pendulum = Pendulum::new(l, g).map_err(|e| PyValueError::new_err(e.to_string()))?;
+            Some(decay::effective_angular_frequency(&pendulum, a))
+        }
+        (None, None) => None,
+    };
+    if t.len() != a.len() {
+        return Err(PyValueError::new_err(
+            "time and amplitude must have one length",
+        ));
+    }
+    let models: Vec<DecayModel> = match model {
+        "all" => DecayModel::ALL.to_vec(),
+        name => vec![DecayModel::from_name(name).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "model: '{name}' is not one of viscous, coulomb, quadratic, viscous+coulomb, viscous+quadratic, full, all"
+            ))
+        })?],
+    };
+    let results: Vec<(DecayModel, Result<decay::DecayFit, String>)> = py.detach(|| {
+        models
+            .iter()
+            .map(|&m| {
+                (
+                    m,
+                    decay::fit_decay(m, t, a, omega).map_err(|e| e.to_string()),
+                )
+            })
+            .collect()
+    });
+    let fits: Vec<decay::DecayFit> = results
+        .iter()
+        .filter_map(|(_, r)| r.as_ref().ok().cloned())
+        .collect();
+    if fits.is_empty() {
+        let message = results
+            .iter()
+            .find_map(|(_, r)| r.as_ref().err().cloned())
+            .unwrap_or_default();
+        return Err(PyValueError::new_err(message));
+    }
+    let weights = decay::akaike_weights(&fits);
+    let preferred = decay::preferred(&fits).map(DecayModel::name);
+    let mut out = Vec::new();
+    let mut k = 0;
+    for (m, r) in &results {
+        let d = PyDict::new(py);
+        d.set_item("model", m.name())?;
+        match r {
+            Err(e) => d.set_item("failed", e)?,
+            Ok(f) => {
+                let parameters = PyDict::new(py);
+                let errors = PyDict::new(py);
+                for e in &f.parameters {
+                    parameters.set_item(e.name, e.value)?;
+                    errors.set_item(e.name, e.standard_error)?;
+                }
+                d.set_item("parameters", parameters)?;
+                d.set_item("standard_errors", errors)?;
+                d.set_item("q_factor", f.q_factor)?;
+                d.set_item("q_factor_lower_bound", f.q_factor_lower_bound)?;
+                d.set_item("q_factor_mean", f.q_factor_mean)?;
+                d.set_item("at_bound", f.at_bound.clone())?;
+                d.set_item("residual_rms", f.fit.residual_rms)?;
+                d.set_item("aic", f.fit.aic)?;
+                d.set_item("bic", f.fit.bic)?;
+                d.set_item("akaike_weight", weights[k])?;
+                k += 1;
+            }
+        }
+        out.push(d);
+    }
+    Ok((out, preferred, omega))
+}
+
+/// The timegrapher's figures from one time per beat (the CLI's `fit
+/// beats`): a dict with the CLI's JSON keys.
+#[pyfunction]
+#[pyo3(signature = (time, nominal_beat))]
+fn fit_beats<'py>(
+    py: Python<'py>,
+    time: In<'py>,
+    nominal_beat: Option<f64>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let t = values(&time, "time")?;
+    let r = py
+        .detach(|| pendulum_theory::fitting::beats::analyse_beats(t, nominal_beat))
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let d = PyDict::new(py);
+    d.set_item("beats", r.beats)?;
+    d.set_item("mean_beat_s", r.mean_beat)?;
+    d.set_item("beats_per_hour", r.beats_per_hour)?;
+    d.set_item("nominal_beat_s", r.nominal_beat)?;
+    d.set_item("rate_s_per_day", r.rate_s_per_day)?;
+    d.set_item("beat_error_ms", r.beat_error_ms)?;
+    d.set_item("jitter_ms", r.jitter_ms)?;
+    let tau: Vec<f64> = r.allan_deviation.iter().map(|p| p.tau).collect();
+    let dev: Vec<f64> = r
+        .allan_deviation
+        .iter()
+        .map(|p| p.deviation * 86_400.0)
+        .collect();
+    d.set_item("allan_tau_s", tau.into_pyarray(py))?;
+    d.set_item("allan_deviation_s_per_day", dev.into_pyarray(py))?;
+    Ok(d)
+}
+
+/// Fits section 1-4's closed form (`linear`) or the nonlinear equation
+/// (`nonlinear`; `auto`: nonlinear above a 5° swing) to angles (rad) at
+/// times (s), as the CLI's `fit trajectory`; with the length (m), g.
+/// Returns a dict with the CLI's JSON keys (model, parameters,
+/// standard_errors, residual_rms_rad, warnings).
+#[pyfunction]
+#[pyo3(signature = (time, angle, model, length))]
+fn fit_trajectory<'py>(
+    py: Python<'py>,
+    time: In<'py>,
+    angle: In<'py>,
+    model: &str,
+    length: Option<f64>,
+) -> PyResult<Bound<'py, PyDict>> {
+    use pendulum_theory::fitting::trajectory::{self, largest_swing, TrajectoryModel};
+    let (t, a) = (values(&time, "time")?, values(&angle, "angle")?);
+    if t.len() != a.len() {
+        return Err(PyValueError::new_err("time and angle must have one length"));
+    }
+    let chosen = match model {
+        "linear" => TrajectoryModel::Linear,
+        "nonlinear" => TrajectoryModel::Nonlinear,
+        "auto" => TrajectoryModel::auto(a),
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "model: '{other}' is not one of auto, linear, nonlinear"
+            )))
+        }
+    };
+    let fit = py
+        .detach(|| trajectory::fit_trajectory(chosen, t, a))
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let parameters = PyDict::new(py);
+    let errors = PyDict::new(py);
+    for ((name, value), error) in fit
+        .names()
+        .iter()
+        .zip(&fit.fit.parameters)
+        .zip(&fit.fit.standard_errors)
+    {
+        // The envelope amplitude is a magnitude (the CLI's rule).
+        let value = if *name == "amplitude_rad" {
+            value.abs()
+        } else {
+            *value
+        };
+        parameters.set_item(*name, value)?;
+        errors.set_item(*name, *error)?;
+    }
+    let mut warnings: Vec<String> = Vec::new();
+    if let Some(l) = length {
+        if !(l > 0.0 && l.is_finite()) {
+            return Err(PyValueError::new_err(format!(
+                "length: must be positive, got {l} m"
+            )));
+        }
+        if chosen.gives_gravity(a) {
+            let (g, se) = fit.gravity(l);
+            parameters.set_item("g_m_s2", g)?;
+            errors.set_item("g_m_s2", se)?;
+        } else {
+            warnings.push(format!(
+                "g is not reported from the linear model at a {:.3}° swing: its finite-amplitude correction leaves a bias beyond the standard error; use model='nonlinear'",
+                largest_swing(a).to_degrees()
+            ));
+        }
+    }
+    let d = PyDict::new(py);
+    d.set_item(
+        "model",
+        match chosen {
+            TrajectoryModel::Linear => "linear",
+            TrajectoryModel::Nonlinear => "nonlinear",
+        },
+    )?;
+    d.set_item("model_requested", model)?;
+    d.set_item("parameters", parameters)?;
+    d.set_item("standard_errors", errors)?;
+    d.set_item("residual_rms_rad", fit.fit.residual_rms)?;
+    d.set_item("length_m", length)?;
+    d.set_item("warnings", warnings)?;
+    Ok(d)
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -278,5 +606,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(decay_time, m)?)?;
     m.add_function(wrap_pyfunction!(damped_angle, m)?)?;
     m.add_function(wrap_pyfunction!(exact_angle, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_decay, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_beats, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_trajectory, m)?)?;
     Ok(())
 }

@@ -9,7 +9,7 @@ use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
-use pendulum_theory::fitting::trajectory::{fit_trajectory, TrajectoryModel};
+use pendulum_theory::fitting::trajectory::{fit_trajectory, largest_swing, TrajectoryModel};
 use pendulum_theory::STANDARD_GRAVITY;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -42,19 +42,6 @@ struct TrajectoryJson {
     warnings: Vec<String>,
 }
 
-/// `--model auto` fits the nonlinear equation above this swing, degrees.
-const AUTO_NONLINEAR_ABOVE_DEG: f64 = 5.0;
-
-/// Half the spread of the angles: the largest swing about the middle.
-fn largest_swing(theta: &[f64]) -> f64 {
-    let (lo, hi) = theta
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
-            (lo.min(t), hi.max(t))
-        });
-    0.5 * (hi - lo)
-}
-
 pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     let plot = args
         .plot
@@ -81,13 +68,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         "nonlinear" => TrajectoryModel::Nonlinear,
         "linear" => TrajectoryModel::Linear,
         // Auto: the nonlinear model when the largest swing exceeds 5°.
-        _ => {
-            if largest_swing(theta) > AUTO_NONLINEAR_ABOVE_DEG.to_radians() {
-                TrajectoryModel::Nonlinear
-            } else {
-                TrajectoryModel::Linear
-            }
-        }
+        _ => TrajectoryModel::auto(theta),
     };
     let file = track.table.file.clone();
     let fit =
@@ -116,7 +97,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     let swing = largest_swing(theta);
     let mut warnings = Vec::new();
     if let Some(l) = length {
-        if model == TrajectoryModel::Linear && swing > AUTO_NONLINEAR_ABOVE_DEG.to_radians() {
+        if !model.gives_gravity(theta) {
             warnings.push(format!(
                 "g is not reported from the linear model at a {}° swing: its finite-amplitude \
                  correction leaves a bias beyond the standard error; use --model nonlinear",

@@ -35,6 +35,11 @@ __all__ = [
     "decay_time",
     "damped_angle",
     "exact_angle",
+    "simulate",
+    "fit_decay",
+    "fit_beats",
+    "fit_trajectory",
+    "FitResult",
 ]
 
 #: Standard gravity, m/s² (the CLI's default).
@@ -149,3 +154,115 @@ def exact_angle(t, length, amplitude, g=STANDARD_GRAVITY):
     """θ(t), rad, of the exact undamped pendulum released from rest at
     ``amplitude`` rad: θ = 2 atan2(k cn(ω_n t), k'), k = sin(A0/2)."""
     return _call(_native.exact_angle, t, length, amplitude, g)
+
+
+def simulate(
+    length,
+    amplitude,
+    duration,
+    *,
+    q=None,
+    zeta=None,
+    quadratic_drag=0.0,
+    friction_angle=0.0,
+    g=STANDARD_GRAVITY,
+    method="dop853",
+    tolerance=1e-10,
+):
+    """The full nonlinear damped pendulum θ'' + 2ζω θ' + b θ'|θ'| + ω²(sin θ
+    + r sign θ') = 0, released from rest at ``amplitude`` rad, for
+    ``duration`` s: the CLI's ``simulate`` (methods ``dop853``, ``vern9``,
+    ``symplectic``, ``exact``, ``averaged``; ``tolerance`` relative to the
+    swing). Damping by ``q`` or ``zeta`` (none: undamped), quadratic drag b
+    per radian, dry friction angle r rad.
+
+    Returns ``(time_s, angle_rad, rate_s_per_day, summary)``: every turning
+    point's time and signed angle, the rate a clock would keep over the
+    half swing that ends there (NaN at the release), and a dict with the
+    CLI's JSON keys (method, swings, final_time_s, final_angle_rad,
+    final_angular_velocity_rad_s, final_amplitude_rad, steps,
+    rejected_steps, function_evaluations, stopped)."""
+    if q is not None and zeta is not None:
+        raise ValueError("give q or zeta, not both")
+    z = 0.0 if q is None and zeta is None else (zeta if zeta is not None else float(zeta_from_q(q)))
+    return _native.simulate(
+        float(length),
+        float(amplitude),
+        float(duration),
+        float(z),
+        float(quadratic_drag),
+        float(friction_angle),
+        float(g),
+        str(method),
+        float(tolerance),
+    )
+
+
+class FitResult(dict):
+    """The result of a fit: a dict with the keys of the CLI's JSON for the
+    same fit, and attributes ``.parameters`` and ``.standard_errors`` (of
+    the preferred law, or the only one) and ``.preferred`` (its name;
+    ``None`` for beats, which have no competing laws)."""
+
+    def __init__(self, data, parameters, standard_errors, preferred):
+        super().__init__(data)
+        self.parameters = dict(parameters)
+        self.standard_errors = dict(standard_errors)
+        self.preferred = preferred
+
+    def __repr__(self):
+        return f"FitResult(preferred={self.preferred!r}, parameters={self.parameters!r})"
+
+
+def _array(x):
+    return _np.ascontiguousarray(x, dtype=_np.float64)
+
+
+def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=STANDARD_GRAVITY):
+    """Fits the amplitude-decay laws (viscous, coulomb, quadratic,
+    viscous+coulomb, viscous+quadratic, full; ``model="all"`` for every one)
+    to ``amplitude`` (rad) at ``time`` (s), every rate held at least 0, as
+    the CLI's ``fit decay``. With ``period`` (s) or ``length`` (m) the
+    rates become ζ, Q, the friction angle and the drag. Keys: omega_rad_s,
+    models (each: model, parameters, standard_errors, q_factor,
+    q_factor_lower_bound, q_factor_mean, at_bound, residual_rms, aic, bic,
+    akaike_weight; or model and failed), preferred."""
+    models, preferred, omega = _native.fit_decay(
+        _array(time), _array(amplitude), str(model),
+        None if period is None else float(period),
+        None if length is None else float(length), float(g),
+    )
+    best = next((m for m in models if m["model"] == preferred), {})
+    data = {"omega_rad_s": omega, "models": models, "preferred": preferred}
+    return FitResult(data, best.get("parameters", {}), best.get("standard_errors", {}), preferred)
+
+
+def fit_trajectory(time, angle, model="auto", *, length=None):
+    """Fits section 1-4's closed form (``"linear"``) or the nonlinear
+    damped equation integrated inside the fit (``"nonlinear"``; ``"auto"``:
+    nonlinear above a 5° swing) to ``angle`` (rad) at ``time`` (s), as the
+    CLI's ``fit trajectory``; with ``length`` (m), g. Keys: model,
+    model_requested, parameters (amplitude_rad, omega_d_rad_s or
+    omega_n_rad_s, zeta, phase_rad, offset_rad, g_m_s2), standard_errors,
+    residual_rms_rad, length_m, warnings."""
+    d = _native.fit_trajectory(_array(time), _array(angle), str(model),
+                               None if length is None else float(length))
+    return FitResult(d, d["parameters"], d["standard_errors"], d["model"])
+
+
+def fit_beats(time, *, bph=None, period=None):
+    """What a timegrapher shows, from one time per beat (s), as the CLI's
+    ``fit beats``. Keys: beats, mean_beat_s, beats_per_hour,
+    nominal_beat_s, rate_s_per_day (against ``bph`` or ``period``, else the
+    nearest standard beat), beat_error_ms, jitter_ms, allan_tau_s,
+    allan_deviation_s_per_day."""
+    if bph is not None and period is not None:
+        raise ValueError("give bph or period, not both")
+    nominal = None
+    if bph is not None:
+        nominal = 3600.0 / float(bph)
+    elif period is not None:
+        nominal = 0.5 * float(period)
+    d = _native.fit_beats(_array(time), nominal)
+    keys = ["rate_s_per_day", "beat_error_ms", "jitter_ms", "beats_per_hour"]
+    return FitResult(d, {k: d[k] for k in keys}, {}, None)

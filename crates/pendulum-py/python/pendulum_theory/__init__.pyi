@@ -1,4 +1,4 @@
-from typing import Tuple, Union
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -23,3 +23,35 @@ def zeta_from_log_decrement(delta: ArrayLike) -> Result: ...
 def decay_time(zeta: ArrayLike, length: ArrayLike, g: ArrayLike = ...) -> Result: ...
 def damped_angle(t: ArrayLike, length: ArrayLike, amplitude: ArrayLike, zeta: ArrayLike = ..., g: ArrayLike = ...) -> Result: ...
 def exact_angle(t: ArrayLike, length: ArrayLike, amplitude: ArrayLike, g: ArrayLike = ...) -> Result: ...
+def simulate(
+    length: float,
+    amplitude: float,
+    duration: float,
+    *,
+    q: Optional[float] = ...,
+    zeta: Optional[float] = ...,
+    quadratic_drag: float = ...,
+    friction_angle: float = ...,
+    g: float = ...,
+    method: str = ...,
+    tolerance: float = ...,
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64], Dict[str, Any]]: ...
+
+class FitResult(Dict[str, Any]):
+    parameters: Dict[str, float]
+    standard_errors: Dict[str, float]
+    preferred: Optional[str]
+
+def fit_decay(
+    time: npt.ArrayLike,
+    amplitude: npt.ArrayLike,
+    model: str = ...,
+    *,
+    period: Optional[float] = ...,
+    length: Optional[float] = ...,
+    g: float = ...,
+) -> FitResult: ...
+def fit_trajectory(
+    time: npt.ArrayLike, angle: npt.ArrayLike, model: str = ..., *, length: Optional[float] = ...
+) -> FitResult: ...
+def fit_beats(time: npt.ArrayLike, *, bph: Optional[float] = ..., period: Optional[float] = ...) -> FitResult: ...

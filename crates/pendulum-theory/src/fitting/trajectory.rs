@@ -49,6 +49,39 @@ pub struct TrajectoryFit {
     pub natural_angular_frequency_error: f64,
 }
 
+/// The swing above which the linear model's finite-amplitude correction
+/// leaves a bias in g beyond its standard error, so that `auto` fits the
+/// nonlinear equation and g is not reported from the linear one, rad (5°).
+pub const AUTO_NONLINEAR_ABOVE: f64 = 5.0 * std::f64::consts::PI / 180.0;
+
+/// Half the spread of the angles: the largest swing about the middle, rad.
+pub fn largest_swing(theta: &[f64]) -> f64 {
+    let (lo, hi) = theta
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
+            (lo.min(t), hi.max(t))
+        });
+    0.5 * (hi - lo)
+}
+
+impl TrajectoryModel {
+    /// The model `auto` chooses for a record: nonlinear when its largest
+    /// swing exceeds [`AUTO_NONLINEAR_ABOVE`].
+    pub fn auto(theta: &[f64]) -> Self {
+        if largest_swing(theta) > AUTO_NONLINEAR_ABOVE {
+            TrajectoryModel::Nonlinear
+        } else {
+            TrajectoryModel::Linear
+        }
+    }
+
+    /// Whether g from this model fit is free of the finite-amplitude bias
+    /// at the record's largest swing (always for the nonlinear model).
+    pub fn gives_gravity(self, theta: &[f64]) -> bool {
+        self == TrajectoryModel::Nonlinear || largest_swing(theta) <= AUTO_NONLINEAR_ABOVE
+    }
+}
+
 impl TrajectoryFit {
     /// Parameter names as in JSON.
     pub fn names(&self) -> [&'static str; 5] {

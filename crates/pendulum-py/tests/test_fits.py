@@ -1,0 +1,89 @@
+"""The fits from Python: the same figures as the binary's JSON on the same
+data (the same library), and bad input as ValueError."""
+
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import pendulum_theory as pt
+from test_simulate import binary
+
+
+def test_fit_decay_as_the_binary(tmp_path):
+    rng = np.random.default_rng(7)
+    t = np.linspace(0, 3000, 120)
+    a = 0.05 * np.exp(-2e-4 * t) / (1 + 0.002 * t) + rng.normal(0, 2e-5, t.size)
+    path = tmp_path / "decay.csv"
+    np.savetxt(path, np.column_stack([t, a]), delimiter=",", header="time_s,amplitude_rad", comments="")
+    out = subprocess.run(
+        [str(binary()), "fit", "decay", str(path), "--length", "0.99362m", "--json"],
+        capture_output=True, text=True, check=True,
+    )
+    cli = json.loads(out.stdout)
+    ours = pt.fit_decay(t, a, length=0.99362)
+    assert ours.preferred == cli["preferred"]
+    assert ours["omega_rad_s"] == pytest.approx(cli["omega_rad_s"], rel=1e-15)
+    assert ours["preferred"] == cli["preferred"]
+    for mine, theirs in zip(ours["models"], cli["models"]):
+        assert mine["model"] == theirs["model"]
+        for name, value in theirs["parameters"].items():
+            assert mine["parameters"][name] == pytest.approx(value, rel=1e-12, abs=1e-300), name
+            assert mine["standard_errors"][name] == pytest.approx(theirs["standard_errors"][name], rel=1e-12)
+        assert mine["akaike_weight"] == pytest.approx(theirs["akaike_weight"], rel=1e-9, abs=1e-300)
+    best = next(m for m in cli["models"] if m["model"] == cli["preferred"])
+    assert ours.parameters == pytest.approx(best["parameters"], rel=1e-12)
+    assert ours.standard_errors.keys() == best["standard_errors"].keys()
+
+
+def test_fit_beats_as_the_binary(tmp_path):
+    rng = np.random.default_rng(3)
+    n = 600
+    beat = 0.5 * (1 - 12 / 86400)  # a 7,200 bph clock gaining 12 s/day
+    t = np.arange(n) * beat + np.where(np.arange(n) % 2 == 0, 0.0, 1.5e-3) + rng.normal(0, 1e-4, n)
+    path = tmp_path / "beats.csv"
+    np.savetxt(path, t, header="time_s", comments="")
+    cli = json.loads(subprocess.run(
+        [str(binary()), "fit", "beats", str(path), "--json"],
+        capture_output=True, text=True, check=True,
+    ).stdout)
+    ours = pt.fit_beats(t)
+    for key in ["beats", "mean_beat_s", "beats_per_hour", "nominal_beat_s", "rate_s_per_day", "beat_error_ms", "jitter_ms"]:
+        assert ours[key] == pytest.approx(cli[key], rel=1e-12), key
+    assert abs(ours["rate_s_per_day"] - 12) < 0.5
+    assert np.allclose(ours["allan_deviation_s_per_day"], [p["deviation_s_per_day"] for p in cli["allan_deviation"]], rtol=1e-12)
+    assert pt.fit_beats(t, bph=7200)["rate_s_per_day"] == pytest.approx(ours["rate_s_per_day"], rel=1e-12)
+
+
+def test_fits_refuse_bad_input():
+    with pytest.raises(ValueError, match="points"):
+        pt.fit_decay([0.0, 1.0], [0.1, 0.09])
+    with pytest.raises(ValueError, match="model"):
+        pt.fit_decay(np.arange(10.0), np.exp(-np.arange(10.0)), model="cubic")
+    with pytest.raises(ValueError, match="one-dimensional"):
+        pt.fit_decay(np.zeros((3, 3)), np.zeros((3, 3)))
+    with pytest.raises(ValueError, match="too few"):
+        pt.fit_beats([0.0, 0.5, 1.0])
+
+
+def test_fit_trajectory_as_the_binary(tmp_path):
+    rng = np.random.default_rng(11)
+    t = np.arange(0, 12, 0.01)
+    theta = pt.damped_angle(t, 0.5, math.radians(8), 0.004) + rng.normal(0, 2e-4, t.size)
+    path = tmp_path / "video.csv"
+    np.savetxt(path, np.column_stack([t, np.degrees(theta)]), delimiter=",", header="time_s,angle_deg", comments="")
+    cli = json.loads(subprocess.run(
+        [str(binary()), "fit", "trajectory", str(path), "--length", "0.5m", "--json"],
+        capture_output=True, text=True, check=True,
+    ).stdout)
+    ours = pt.fit_trajectory(t, theta, length=0.5)
+    assert ours["model"] == cli["model"] == ours.preferred == "nonlinear"
+    # The CSV holds degrees: the data differ in the last bit, the phase (near 0) by 1e-11 rad.
+    assert ours.parameters == pytest.approx(cli["parameters"], rel=1e-9, abs=1e-9)
+    assert ours.standard_errors == pytest.approx(cli["standard_errors"], rel=1e-6)
+    assert ours["residual_rms_rad"] == pytest.approx(cli["residual_rms_rad"], rel=1e-9)
+    # The linear model at 8° gives no g, and says why.
+    linear = pt.fit_trajectory(t, theta, "linear", length=0.5)
+    assert "g_m_s2" not in linear.parameters and linear["warnings"]

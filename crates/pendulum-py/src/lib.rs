@@ -591,6 +591,271 @@ fn fit_trajectory<'py>(
     Ok(d)
 }
 
+/// A clock from its description (see `pendulum_theory.clock`).
+#[allow(clippy::too_many_arguments)]
+fn make_clock(
+    length: f64,
+    g: f64,
+    mass: f64,
+    q: f64,
+    escapement: &str,
+    lift_angle: f64,
+    drive_torque: Option<f64>,
+    drive_energy: Option<f64>,
+    friction: f64,
+    recoil: f64,
+    impulse_angle: f64,
+    every_beats: u64,
+) -> PyResult<pendulum_theory::clock::Clock> {
+    use pendulum_theory::clock::escapement::spec::{Drive, Kind, Spec};
+    let error = |e: &dyn std::fmt::Display| PyValueError::new_err(e.to_string());
+    let pendulum = Pendulum::new(length, g).map_err(|e| error(&e))?;
+    if !(mass > 0.0 && mass.is_finite()) {
+        return Err(PyValueError::new_err(format!(
+            "mass: must be positive, got {mass} kg"
+        )));
+    }
+    if !(q > 0.5 && q.is_finite()) {
+        return Err(PyValueError::new_err(format!(
+            "q: must exceed 0.5 (an underdamped pendulum), got {q}"
+        )));
+    }
+    let kind = Kind::from_name(escapement).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "escapement: '{escapement}' is not one of impulse, deadbeat, recoil, constant-force, free"
+        ))
+    })?;
+    let drive = match (drive_torque, drive_energy) {
+        (Some(t), None) => Drive::Torque(t),
+        (None, Some(e)) => Drive::Energy(e),
+        _ => {
+            return Err(PyValueError::new_err(
+                "drive: give drive_torque (N m) or drive_energy (J per beat), one of them",
+            ))
+        }
+    };
+    let scale = mass * g * length;
+    let spec = Spec {
+        kind,
+        lift: lift_angle,
+        drive,
+        friction,
+        recoil,
+        angle: impulse_angle,
+        every: every_beats,
+    };
+    Ok(pendulum_theory::clock::Clock {
+        pendulum,
+        q,
+        escapement: spec.build(scale).map_err(|e| error(&e))?,
+        torque_scale: scale,
+    })
+}
+
+/// The steady states of a clock at each drive factor (the CLI's `clock`
+/// and its isochronism curve): one dict per factor with the CLI's keys, or
+/// `{"drive_factor": f, "stops": True}`.
+#[pyfunction]
+#[pyo3(signature = (length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, factors))]
+#[allow(clippy::too_many_arguments)]
+fn clock_steady<'py>(
+    py: Python<'py>,
+    length: f64,
+    g: f64,
+    mass: f64,
+    q: f64,
+    escapement: &str,
+    lift_angle: f64,
+    drive_torque: Option<f64>,
+    drive_energy: Option<f64>,
+    friction: f64,
+    recoil: f64,
+    impulse_angle: f64,
+    every_beats: u64,
+    factors: Vec<f64>,
+) -> PyResult<Vec<Bound<'py, PyDict>>> {
+    use pendulum_theory::clock::{ClockError, HalfSwingMethod};
+    let clock = make_clock(
+        length,
+        g,
+        mass,
+        q,
+        escapement,
+        lift_angle,
+        drive_torque,
+        drive_energy,
+        friction,
+        recoil,
+        impulse_angle,
+        every_beats,
+    )?;
+    let results: Vec<_> = py.detach(|| {
+        factors
+            .iter()
+            .map(|&f| clock.steady(HalfSwingMethod::Direct, f))
+            .collect()
+    });
+    let mut out = Vec::new();
+    for (f, r) in factors.iter().zip(results) {
+        let d = PyDict::new(py);
+        d.set_item("drive_factor", *f)?;
+        match r {
+            Ok(s) => {
+                d.set_item("stops", false)?;
+                d.set_item("amplitude_rad", s.amplitude)?;
+                d.set_item("period_s", s.period)?;
+                d.set_item("free_period_s", s.free_period)?;
+                d.set_item("small_angle_period_s", s.small_angle_period)?;
+                d.set_item("rate_s_per_day", s.rate)?;
+                d.set_item("circular_rate_s_per_day", s.circular_rate)?;
+                d.set_item("circular_error_s_per_day", -s.circular_rate)?;
+                d.set_item("escapement_rate_s_per_day", s.escapement_rate)?;
+                d.set_item(
+                    "escapement_rate_airy_s_per_day",
+                    s.escapement_rate_first_order,
+                )?;
+                d.set_item("energy_per_beat_j", s.energy_per_beat)?;
+                d.set_item("power_w", s.power)?;
+            }
+            // One drive that stops the clock is an error; on a curve, a point.
+            Err(e @ ClockError::Stops { .. }) if factors.len() == 1 => {
+                return Err(PyValueError::new_err(format!("drive: {e}")))
+            }
+            Err(ClockError::Stops { .. }) => d.set_item("stops", true)?,
+            Err(e) => return Err(PyValueError::new_err(format!("drive: {e}"))),
+        }
+        out.push(d);
+    }
+    Ok(out)
+}
+
+/// A long run of a clock (the CLI's `clock --duration`): rows at every
+/// turning point or every `every` s, the drive factor from a schedule
+/// (times, factors; linear between, held beyond).
+#[pyfunction]
+#[pyo3(signature = (length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, duration, every, schedule_time, schedule_factor))]
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+fn clock_run<'py>(
+    py: Python<'py>,
+    length: f64,
+    g: f64,
+    mass: f64,
+    q: f64,
+    escapement: &str,
+    lift_angle: f64,
+    drive_torque: Option<f64>,
+    drive_energy: Option<f64>,
+    friction: f64,
+    recoil: f64,
+    impulse_angle: f64,
+    every_beats: u64,
+    duration: f64,
+    every: Option<f64>,
+    schedule_time: Vec<f64>,
+    schedule_factor: Vec<f64>,
+) -> PyResult<(Vec<Array1<'py>>, Bound<'py, PyDict>)> {
+    use pendulum_theory::clock::long_run::{run, LongRun};
+    use pendulum_theory::clock::HalfSwingMethod;
+    let clock = make_clock(
+        length,
+        g,
+        mass,
+        q,
+        escapement,
+        lift_angle,
+        drive_torque,
+        drive_energy,
+        friction,
+        recoil,
+        impulse_angle,
+        every_beats,
+    )?;
+    if !(duration > 0.0 && duration <= 1e10) {
+        return Err(PyValueError::new_err(format!(
+            "duration: must lie between 0 and 300 years, got {duration} s"
+        )));
+    }
+    if schedule_time.len() != schedule_factor.len()
+        || schedule_time.windows(2).any(|w| w[1] <= w[0])
+        || schedule_factor
+            .iter()
+            .any(|f| !(*f >= 0.0 && f.is_finite()))
+    {
+        return Err(PyValueError::new_err(
+            "drive_schedule: times must increase, factors be at least 0, one of each",
+        ));
+    }
+    let drive = |t: f64| -> f64 {
+        if schedule_time.is_empty() {
+            return 1.0;
+        }
+        let i = schedule_time.partition_point(|&x| x <= t);
+        if i == 0 {
+            schedule_factor[0]
+        } else if i == schedule_time.len() {
+            schedule_factor[i - 1]
+        } else {
+            let (t0, t1) = (schedule_time[i - 1], schedule_time[i]);
+            let (f0, f1) = (schedule_factor[i - 1], schedule_factor[i]);
+            f0 + (f1 - f0) * (t - t0) / (t1 - t0)
+        }
+    };
+    let start = clock
+        .steady(HalfSwingMethod::Averaged, drive(0.0))
+        .map_err(|e| PyValueError::new_err(format!("drive: {e}")))?;
+    if let Some(e) = every {
+        if e.is_nan() || e < start.period {
+            return Err(PyValueError::new_err(format!(
+                "every: must be at least a period ({} s), got {e} s",
+                start.period
+            )));
+        }
+    } else if duration / start.period > 5e7 {
+        return Err(PyValueError::new_err(
+            "every: every turning point of so long a run is more than 10^8 rows: give every",
+        ));
+    }
+    let mut columns: [Vec<f64>; 6] = Default::default();
+    let finish = py.detach(|| {
+        run(
+            &clock,
+            &drive,
+            &|_| 1.0,
+            &LongRun {
+                duration,
+                amplitude: start.amplitude,
+                nominal_period: start.period,
+                every,
+            },
+            &mut |r| {
+                for (c, v) in columns.iter_mut().zip([
+                    r.time,
+                    r.beats as f64,
+                    r.amplitude,
+                    r.rate,
+                    r.time_error,
+                    r.drive,
+                ]) {
+                    c.push(v);
+                }
+                true
+            },
+        )
+    });
+    let summary = PyDict::new(py);
+    summary.set_item("duration_s", finish.last.time)?;
+    summary.set_item("beats", finish.last.beats)?;
+    summary.set_item("final_amplitude_rad", finish.last.amplitude)?;
+    summary.set_item("final_rate_s_per_day", finish.last.rate)?;
+    summary.set_item("time_error_s", finish.last.time_error)?;
+    summary.set_item("stopped", finish.stopped)?;
+    summary.set_item("nominal_period_s", start.period)?;
+    Ok((
+        columns.into_iter().map(|c| c.into_pyarray(py)).collect(),
+        summary,
+    ))
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -610,5 +875,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fit_decay, m)?)?;
     m.add_function(wrap_pyfunction!(fit_beats, m)?)?;
     m.add_function(wrap_pyfunction!(fit_trajectory, m)?)?;
+    m.add_function(wrap_pyfunction!(clock_steady, m)?)?;
+    m.add_function(wrap_pyfunction!(clock_run, m)?)?;
     Ok(())
 }

@@ -9,9 +9,7 @@ use crate::interrupt;
 use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::{parse_number, parse_quantity, Dimension};
-use pendulum_theory::clock::escapement::{
-    ConstantForce, Deadbeat, Escapement, FreePendulum, Impulse, Recoil,
-};
+use pendulum_theory::clock::escapement::spec::{Drive, Kind, Spec};
 use pendulum_theory::clock::long_run::{run as long_run, LongRun};
 use pendulum_theory::clock::{Clock, ClockError, HalfSwingMethod, Steady};
 use serde::Serialize;
@@ -106,35 +104,18 @@ fn number(flag: &str, text: &str) -> Result<f64, CliError> {
 }
 
 /// The drive: a torque, or an energy per beat.
-enum Drive {
-    Torque(f64),
-    Energy(f64),
-}
-
 fn drive(text: &str) -> Result<Drive, CliError> {
-    let d = match (
+    match (
         parse_quantity(text, Dimension::Torque),
         parse_quantity(text, Dimension::Energy),
     ) {
-        (Ok(t), _) => Drive::Torque(t),
-        (_, Ok(e)) => Drive::Energy(e),
-        _ => {
-            return Err(CliError::flag(
-                "--drive",
-                format!("'{text}' is neither a torque (2e-4Nm, 0.2mNm) nor an energy per beat (20uJ, 0.02mJ)"),
-            ))
-        }
-    };
-    let v = match d {
-        Drive::Torque(v) | Drive::Energy(v) => v,
-    };
-    if v.is_nan() || v <= 0.0 {
-        return Err(CliError::flag(
+        (Ok(t), _) => Ok(Drive::Torque(t)),
+        (_, Ok(e)) => Ok(Drive::Energy(e)),
+        _ => Err(CliError::flag(
             "--drive",
-            format!("must be positive, got {text}"),
-        ));
+            format!("'{text}' is neither a torque (2e-4Nm, 0.2mNm) nor an energy per beat (20uJ, 0.02mJ)"),
+        )),
     }
-    Ok(d)
 }
 
 /// What changes with time in a long run, from a CSV file: `time_s` and
@@ -283,81 +264,34 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
         ));
     }
     let lift = common::quantity("--lift-angle", &args.lift_angle, Dimension::Angle)?;
-    if lift.is_nan() || lift <= 0.0 {
-        return Err(CliError::flag(
-            "--lift-angle",
-            format!("must be positive, got {}", args.lift_angle),
-        ));
-    }
     let angle = common::quantity("--impulse-angle", &args.impulse_angle, Dimension::Angle)?;
-    let friction = number("--friction", &args.friction)?;
-    if friction.is_nan() || friction < 0.0 {
-        return Err(CliError::flag("--friction", "must not be negative"));
-    }
-    let recoil = number("--recoil", &args.recoil)?;
-    if recoil.is_nan() || recoil < 0.0 {
-        return Err(CliError::flag("--recoil", "must not be negative"));
-    }
-    if args.every_beats == 0 {
-        return Err(CliError::flag("--every-beats", "must be at least 1"));
-    }
     let given = drive(&args.drive)?;
-    // Scaled: torques over m g l, energies over m g l.
-    let (torque, energy) = match given {
-        Drive::Torque(t) => (t / scale, t * lift / scale),
-        Drive::Energy(e) => (e / (lift * scale), e / scale),
+    let spec = Spec {
+        kind: match args.escapement {
+            EscapementArg::Impulse => Kind::Impulse,
+            EscapementArg::Deadbeat => Kind::Deadbeat,
+            EscapementArg::Recoil => Kind::Recoil,
+            EscapementArg::ConstantForce => Kind::ConstantForce,
+            EscapementArg::Free => Kind::Free,
+        },
+        lift,
+        drive: given,
+        friction: number("--friction", &args.friction)?,
+        recoil: number("--recoil", &args.recoil)?,
+        angle,
+        every: args.every_beats,
     };
-    let escapement: Box<dyn Escapement> = match args.escapement {
-        EscapementArg::Impulse | EscapementArg::Free => {
-            if matches!(given, Drive::Torque(_)) {
-                return Err(CliError::flag(
-                    "--drive",
-                    "an impulse is an energy per beat (e.g. 20uJ), not a torque",
-                ));
-            }
-            if args.escapement == EscapementArg::Impulse {
-                Box::new(Impulse { angle, energy })
-            } else {
-                Box::new(FreePendulum {
-                    impulse: Impulse { angle, energy },
-                    every: args.every_beats,
-                })
-            }
-        }
-        EscapementArg::Deadbeat => Box::new(Deadbeat {
-            lift,
-            torque,
-            friction,
-            offset: angle,
-        }),
-        EscapementArg::Recoil => Box::new(Recoil {
-            lift,
-            torque,
-            recoil,
-        }),
-        EscapementArg::ConstantForce => Box::new(ConstantForce {
-            lift,
-            impulse: torque,
-            torque,
-            friction,
-        }),
-    };
-    let unlocking = escapement.unlocking_amplitude();
-    if unlocking >= 170f64.to_radians() {
-        return Err(CliError::flag(
-            "--lift-angle",
-            format!(
-                "the escapement unlocks only at {}° either side, beyond the 170° a pendulum can swing",
-                num(unlocking.to_degrees(), 4)
-            ),
-        ));
-    }
-    if angle.abs() >= 170f64.to_radians() {
-        return Err(CliError::flag(
-            "--impulse-angle",
-            "must lie within 170° of the bottom",
-        ));
-    }
+    let escapement = spec.build(scale).map_err(|e| {
+        let flag = match e.field {
+            "lift_angle" => "--lift-angle",
+            "friction" => "--friction",
+            "recoil" => "--recoil",
+            "impulse_angle" => "--impulse-angle",
+            "every_beats" => "--every-beats",
+            _ => "--drive",
+        };
+        CliError::flag(flag, e.message)
+    })?;
     let name = escapement.name();
     let clock = Clock {
         pendulum,

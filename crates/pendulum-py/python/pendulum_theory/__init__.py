@@ -40,6 +40,8 @@ __all__ = [
     "fit_beats",
     "fit_trajectory",
     "FitResult",
+    "clock",
+    "clock_run",
 ]
 
 #: Standard gravity, m/s² (the CLI's default).
@@ -266,3 +268,90 @@ def fit_beats(time, *, bph=None, period=None):
     d = _native.fit_beats(_array(time), nominal)
     keys = ["rate_s_per_day", "beat_error_ms", "jitter_ms", "beats_per_hour"]
     return FitResult(d, {k: d[k] for k in keys}, {}, None)
+
+
+def _clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
+                friction, recoil, impulse_angle, every_beats):
+    return (float(length), float(g), float(mass), float(q), str(escapement), float(lift_angle),
+            None if drive_torque is None else float(drive_torque),
+            None if drive_energy is None else float(drive_energy),
+            float(friction), float(recoil), float(impulse_angle), int(every_beats))
+
+
+def clock(
+    length,
+    *,
+    drive_energy=None,
+    drive_torque=None,
+    q=10_000.0,
+    escapement="deadbeat",
+    lift_angle=_np.radians(2.0),
+    mass=5.0,
+    friction=0.15,
+    recoil=1.0,
+    impulse_angle=0.0,
+    every_beats=30,
+    g=STANDARD_GRAVITY,
+    drive_factor=1.0,
+):
+    """The steady state of a pendulum kept going by an escapement (the
+    CLI's ``clock``): ``escapement`` is impulse, deadbeat, recoil,
+    constant-force or free; the drive is ``drive_energy`` (J per beat) or
+    ``drive_torque`` (N m at the pallets); angles in radians. Returns a
+    dict with the CLI's keys (amplitude_rad, period_s, free_period_s,
+    small_angle_period_s, rate_s_per_day, circular_rate_s_per_day,
+    circular_error_s_per_day, escapement_rate_s_per_day,
+    escapement_rate_airy_s_per_day, energy_per_beat_j, power_w). With an
+    array of ``drive_factor`` values: the isochronism curve, a dict of
+    arrays (NaN where the pendulum stops, and a boolean ``stops``). A single
+    drive too weak raises ValueError ("the pendulum stops: ...")."""
+    factors = _np.atleast_1d(_np.asarray(drive_factor, dtype=_np.float64))
+    rows = _native.clock_steady(
+        *_clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
+                     friction, recoil, impulse_angle, every_beats),
+        [float(f) for f in factors.ravel()],
+    )
+    if _np.ndim(drive_factor) == 0:
+        return rows[0]
+    running = next((r for r in rows if not r["stops"]), {})
+    keys = [k for k in running if k not in ("stops", "drive_factor")]
+    out = {"drive_factor": factors.reshape(_np.shape(drive_factor)),
+           "stops": _np.array([r["stops"] for r in rows]).reshape(_np.shape(drive_factor))}
+    for k in keys:
+        out[k] = _np.array([r.get(k, _np.nan) for r in rows]).reshape(_np.shape(drive_factor))
+    return out
+
+
+def clock_run(
+    length,
+    duration,
+    *,
+    every=None,
+    drive_schedule=None,
+    drive_energy=None,
+    drive_torque=None,
+    q=10_000.0,
+    escapement="deadbeat",
+    lift_angle=_np.radians(2.0),
+    mass=5.0,
+    friction=0.15,
+    recoil=1.0,
+    impulse_angle=0.0,
+    every_beats=30,
+    g=STANDARD_GRAVITY,
+):
+    """A long run of the clock (the CLI's ``clock --duration``), started in
+    its steady state and regulated to it: a row at every turning point, or
+    every ``every`` s (then many beats per step: a year in a fraction of a
+    second). ``drive_schedule`` is ``(times_s, factors)``, linear between,
+    held beyond. Returns a dict of arrays (time_s, beats, amplitude_rad,
+    rate_s_per_day, time_error_s, drive_factor) and a summary dict."""
+    times, factors = ([], []) if drive_schedule is None else (
+        [float(x) for x in drive_schedule[0]], [float(x) for x in drive_schedule[1]])
+    columns, summary = _native.clock_run(
+        *_clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
+                     friction, recoil, impulse_angle, every_beats),
+        float(duration), None if every is None else float(every), times, factors,
+    )
+    names = ["time_s", "beats", "amplitude_rad", "rate_s_per_day", "time_error_s", "drive_factor"]
+    return dict(zip(names, columns)), summary

@@ -55,3 +55,37 @@ def fit_trajectory(
     time: npt.ArrayLike, angle: npt.ArrayLike, model: str = ..., *, length: Optional[float] = ...
 ) -> FitResult: ...
 def fit_beats(time: npt.ArrayLike, *, bph: Optional[float] = ..., period: Optional[float] = ...) -> FitResult: ...
+def clock(
+    length: float,
+    *,
+    drive_energy: Optional[float] = ...,
+    drive_torque: Optional[float] = ...,
+    q: float = ...,
+    escapement: str = ...,
+    lift_angle: float = ...,
+    mass: float = ...,
+    friction: float = ...,
+    recoil: float = ...,
+    impulse_angle: float = ...,
+    every_beats: int = ...,
+    g: float = ...,
+    drive_factor: ArrayLike = ...,
+) -> Dict[str, Any]: ...
+def clock_run(
+    length: float,
+    duration: float,
+    *,
+    every: Optional[float] = ...,
+    drive_schedule: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = ...,
+    drive_energy: Optional[float] = ...,
+    drive_torque: Optional[float] = ...,
+    q: float = ...,
+    escapement: str = ...,
+    lift_angle: float = ...,
+    mass: float = ...,
+    friction: float = ...,
+    recoil: float = ...,
+    impulse_angle: float = ...,
+    every_beats: int = ...,
+    g: float = ...,
+) -> Tuple[Dict[str, npt.NDArray[np.float64]], Dict[str, Any]]: ...

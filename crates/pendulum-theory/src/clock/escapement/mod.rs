@@ -25,6 +25,7 @@ mod deadbeat;
 mod free;
 mod impulse;
 mod recoil;
+pub mod spec;
 
 pub use constant_force::ConstantForce;
 pub use deadbeat::Deadbeat;

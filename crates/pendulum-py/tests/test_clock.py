@@ -1,0 +1,52 @@
+"""The clock from Python: the binary's figures on the same clock (the same
+library), the isochronism curve, a long run, bad input."""
+
+import json
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+import pendulum_theory as pt
+from test_simulate import binary
+
+
+def test_the_steady_state_as_the_binary():
+    cli = json.loads(subprocess.run(
+        [str(binary()), "clock", "--length", "0.99362m", "--escapement", "recoil", "--drive", "20uJ", "--json"],
+        capture_output=True, text=True, check=True,
+    ).stdout)["steady"]
+    ours = pt.clock(0.99362, escapement="recoil", drive_energy=20e-6)
+    for key, value in cli.items():
+        if key in ours:
+            assert ours[key] == pytest.approx(value, rel=1e-12), key
+    assert ours["amplitude_rad"] == pytest.approx(cli["amplitude_rad"], rel=1e-13)
+
+
+def test_isochronism_and_a_long_run():
+    f = np.array([0.05, 0.5, 1.0, 2.0])
+    curve = pt.clock(0.99362, drive_energy=20e-6, drive_factor=f)
+    assert curve["stops"].tolist() == [True, False, False, False]
+    assert np.isnan(curve["amplitude_rad"][0])
+    rates = curve["rate_s_per_day"][1:]
+    assert np.all(np.diff(rates) < 0)  # the deadbeat loses as the drive grows
+    rows, summary = pt.clock_run(0.99362, 8 * 86400, every=3600, drive_energy=20e-6,
+                                 drive_schedule=([0, 8 * 86400], [1.0, 0.7]))
+    assert rows["time_s"].shape == (8 * 24 + 1,)
+    assert rows["amplitude_rad"][-1] < rows["amplitude_rad"][0]
+    assert rows["time_error_s"][-1] > 0  # a smaller arc: less circular error, the clock gains
+    assert summary["beats"] == rows["beats"][-1]
+
+
+def test_bad_clocks():
+    with pytest.raises(ValueError, match="the pendulum stops"):
+        pt.clock(0.99362, drive_energy=1e-6)
+    with pytest.raises(ValueError, match="drive_torque"):
+        pt.clock(0.99362)
+    with pytest.raises(ValueError, match="escapement"):
+        pt.clock(0.99362, drive_energy=2e-5, escapement="verge")
+    with pytest.raises(ValueError, match="lift_angle"):
+        pt.clock(0.99362, drive_energy=2e-5, lift_angle=math.radians(400))
+    with pytest.raises(ValueError, match="energy per beat"):
+        pt.clock(0.99362, drive_torque=2e-4, escapement="impulse")

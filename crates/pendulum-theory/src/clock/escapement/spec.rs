@@ -1,0 +1,166 @@
+//! An escapement as clockmakers describe it (kind, lift angle, drive,
+//! friction, ...), turned into one of the escapement types, in the
+//! pendulum's units. One place for the command line and the bindings.
+
+use super::{ConstantForce, Deadbeat, Escapement, FreePendulum, Impulse, Recoil};
+
+/// The escapements by name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// Airy's instantaneous impulse.
+    Impulse,
+    /// Graham's deadbeat.
+    Deadbeat,
+    /// The anchor (recoil).
+    Recoil,
+    /// Gravity escapement or remontoire.
+    ConstantForce,
+    /// Shortt's free pendulum.
+    Free,
+}
+
+impl Kind {
+    /// From its name (`impulse`, `deadbeat`, `recoil`, `constant-force`,
+    /// `free`).
+    pub fn from_name(name: &str) -> Option<Self> {
+        Some(match name {
+            "impulse" => Kind::Impulse,
+            "deadbeat" => Kind::Deadbeat,
+            "recoil" => Kind::Recoil,
+            "constant-force" | "constant_force" => Kind::ConstantForce,
+            "free" => Kind::Free,
+            _ => return None,
+        })
+    }
+}
+
+/// What the train delivers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Drive {
+    /// The torque at the pallets, N·m.
+    Torque(f64),
+    /// The energy per beat, J (a torque over the lift).
+    Energy(f64),
+}
+
+/// An escapement's description.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Spec {
+    /// Which escapement.
+    pub kind: Kind,
+    /// The lift angle, rad.
+    pub lift: f64,
+    /// The drive.
+    pub drive: Drive,
+    /// Dead-face (locking) friction coefficient.
+    pub friction: f64,
+    /// Recoil torque one lift angle past the lift, over the drive torque.
+    pub recoil: f64,
+    /// Where the impulse falls before the bottom, rad (the impulse's angle;
+    /// the deadbeat's lift centre).
+    pub angle: f64,
+    /// Free pendulum: beats between impulses.
+    pub every: u64,
+}
+
+/// Why a description makes no escapement; `field` names the input.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{field}: {message}")]
+pub struct SpecError {
+    /// The input at fault: `lift_angle`, `drive`, `friction`, `recoil`,
+    /// `impulse_angle`, `every_beats`.
+    pub field: &'static str,
+    /// What is wrong.
+    pub message: String,
+}
+
+/// The largest swing a clock's escapement may need, rad (170°).
+const TOP: f64 = 170.0 * std::f64::consts::PI / 180.0;
+
+impl Spec {
+    /// The escapement, its torques and energies over `torque_scale` (`m g
+    /// l`, N·m): a torque drive is the impulse torque, an energy drive that
+    /// over the lift (impulse and free pendulum take an energy only).
+    pub fn build(&self, torque_scale: f64) -> Result<Box<dyn Escapement>, SpecError> {
+        let fail = |field, message: String| Err(SpecError { field, message });
+        let value = match self.drive {
+            Drive::Torque(v) | Drive::Energy(v) => v,
+        };
+        if value.is_nan() || value <= 0.0 || value.is_infinite() {
+            return fail("drive", format!("must be positive, got {value}"));
+        }
+        if !(self.lift > 0.0 && self.lift.is_finite()) {
+            return fail(
+                "lift_angle",
+                format!("must be positive, got {} rad", self.lift),
+            );
+        }
+        if self.friction.is_nan() || self.friction < 0.0 {
+            return fail("friction", "must not be negative".into());
+        }
+        if self.recoil.is_nan() || self.recoil < 0.0 {
+            return fail("recoil", "must not be negative".into());
+        }
+        if self.angle.is_nan() || self.angle.abs() >= TOP {
+            return fail("impulse_angle", "must lie within 170° of the bottom".into());
+        }
+        if self.every == 0 {
+            return fail("every_beats", "must be at least 1".into());
+        }
+        let lift = self.lift;
+        let (torque, energy) = match self.drive {
+            Drive::Torque(t) => (t / torque_scale, t * lift / torque_scale),
+            Drive::Energy(e) => (e / (lift * torque_scale), e / torque_scale),
+        };
+        let escapement: Box<dyn Escapement> = match self.kind {
+            Kind::Impulse | Kind::Free => {
+                if matches!(self.drive, Drive::Torque(_)) {
+                    return fail(
+                        "drive",
+                        "an impulse is an energy per beat (e.g. 20uJ), not a torque".into(),
+                    );
+                }
+                let impulse = Impulse {
+                    angle: self.angle,
+                    energy,
+                };
+                if self.kind == Kind::Impulse {
+                    Box::new(impulse)
+                } else {
+                    Box::new(FreePendulum {
+                        impulse,
+                        every: self.every,
+                    })
+                }
+            }
+            Kind::Deadbeat => Box::new(Deadbeat {
+                lift,
+                torque,
+                friction: self.friction,
+                offset: self.angle,
+            }),
+            Kind::Recoil => Box::new(Recoil {
+                lift,
+                torque,
+                recoil: self.recoil,
+            }),
+            Kind::ConstantForce => Box::new(ConstantForce {
+                lift,
+                impulse: torque,
+                torque,
+                friction: self.friction,
+            }),
+        };
+        let unlocking = escapement.unlocking_amplitude();
+        if unlocking >= TOP {
+            return fail(
+                "lift_angle",
+                format!(
+                    "the escapement unlocks only at {:.4}° either side, beyond the 170° a pendulum can swing",
+                    unlocking.to_degrees()
+                ),
+            );
+        }
+        Ok(escapement)
+    }
+}

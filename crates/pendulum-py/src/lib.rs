@@ -591,22 +591,41 @@ fn fit_trajectory<'py>(
     Ok(d)
 }
 
+/// A clock's description as the Python package passes it: length, g,
+/// mass, q, escapement, lift angle, drive torque, drive energy, friction,
+/// recoil, impulse angle, beats between a free pendulum's impulses.
+type ClockArgs = (
+    f64,
+    f64,
+    f64,
+    f64,
+    String,
+    f64,
+    Option<f64>,
+    Option<f64>,
+    f64,
+    f64,
+    f64,
+    u64,
+);
+
 /// A clock from its description (see `pendulum_theory.clock`).
-#[allow(clippy::too_many_arguments)]
-fn make_clock(
-    length: f64,
-    g: f64,
-    mass: f64,
-    q: f64,
-    escapement: &str,
-    lift_angle: f64,
-    drive_torque: Option<f64>,
-    drive_energy: Option<f64>,
-    friction: f64,
-    recoil: f64,
-    impulse_angle: f64,
-    every_beats: u64,
-) -> PyResult<pendulum_theory::clock::Clock> {
+fn make_clock(args: ClockArgs) -> PyResult<pendulum_theory::clock::Clock> {
+    let (
+        length,
+        g,
+        mass,
+        q,
+        escapement,
+        lift_angle,
+        drive_torque,
+        drive_energy,
+        friction,
+        recoil,
+        impulse_angle,
+        every_beats,
+    ) = args;
+    let escapement = escapement.as_str();
     use pendulum_theory::clock::escapement::spec::{Drive, Kind, Spec};
     let error = |e: &dyn std::fmt::Display| PyValueError::new_err(e.to_string());
     let pendulum = Pendulum::new(length, g).map_err(|e| error(&e))?;
@@ -656,39 +675,13 @@ fn make_clock(
 /// and its isochronism curve): one dict per factor with the CLI's keys, or
 /// `{"drive_factor": f, "stops": True}`.
 #[pyfunction]
-#[pyo3(signature = (length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, factors))]
-#[allow(clippy::too_many_arguments)]
 fn clock_steady<'py>(
     py: Python<'py>,
-    length: f64,
-    g: f64,
-    mass: f64,
-    q: f64,
-    escapement: &str,
-    lift_angle: f64,
-    drive_torque: Option<f64>,
-    drive_energy: Option<f64>,
-    friction: f64,
-    recoil: f64,
-    impulse_angle: f64,
-    every_beats: u64,
+    spec: ClockArgs,
     factors: Vec<f64>,
 ) -> PyResult<Vec<Bound<'py, PyDict>>> {
     use pendulum_theory::clock::{ClockError, HalfSwingMethod};
-    let clock = make_clock(
-        length,
-        g,
-        mass,
-        q,
-        escapement,
-        lift_angle,
-        drive_torque,
-        drive_energy,
-        friction,
-        recoil,
-        impulse_angle,
-        every_beats,
-    )?;
+    let clock = make_clock(spec)?;
     let results: Vec<_> = py.detach(|| {
         factors
             .iter()
@@ -733,22 +726,11 @@ fn clock_steady<'py>(
 /// turning point or every `every` s, the drive factor from a schedule
 /// (times, factors; linear between, held beyond).
 #[pyfunction]
-#[pyo3(signature = (length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, duration, every, schedule_time, schedule_factor))]
-#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+#[pyo3(signature = (spec, duration, every, schedule_time, schedule_factor))]
+#[allow(clippy::type_complexity)]
 fn clock_run<'py>(
     py: Python<'py>,
-    length: f64,
-    g: f64,
-    mass: f64,
-    q: f64,
-    escapement: &str,
-    lift_angle: f64,
-    drive_torque: Option<f64>,
-    drive_energy: Option<f64>,
-    friction: f64,
-    recoil: f64,
-    impulse_angle: f64,
-    every_beats: u64,
+    spec: ClockArgs,
     duration: f64,
     every: Option<f64>,
     schedule_time: Vec<f64>,
@@ -756,20 +738,7 @@ fn clock_run<'py>(
 ) -> PyResult<(Vec<Array1<'py>>, Bound<'py, PyDict>)> {
     use pendulum_theory::clock::long_run::{run, LongRun};
     use pendulum_theory::clock::HalfSwingMethod;
-    let clock = make_clock(
-        length,
-        g,
-        mass,
-        q,
-        escapement,
-        lift_angle,
-        drive_torque,
-        drive_energy,
-        friction,
-        recoil,
-        impulse_angle,
-        every_beats,
-    )?;
+    let clock = make_clock(spec)?;
     if !(duration > 0.0 && duration <= 1e10) {
         return Err(PyValueError::new_err(format!(
             "duration: must lie between 0 and 300 years, got {duration} s"

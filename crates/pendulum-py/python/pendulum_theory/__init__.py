@@ -307,7 +307,7 @@ def clock(
     drive too weak raises ValueError ("the pendulum stops: ...")."""
     factors = _np.atleast_1d(_np.asarray(drive_factor, dtype=_np.float64))
     rows = _native.clock_steady(
-        *_clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
+        _clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
                      friction, recoil, impulse_angle, every_beats),
         [float(f) for f in factors.ravel()],
     )
@@ -349,7 +349,7 @@ def clock_run(
     times, factors = ([], []) if drive_schedule is None else (
         [float(x) for x in drive_schedule[0]], [float(x) for x in drive_schedule[1]])
     columns, summary = _native.clock_run(
-        *_clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
+        _clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
                      friction, recoil, impulse_angle, every_beats),
         float(duration), None if every is None else float(every), times, factors,
     )

@@ -285,8 +285,13 @@ fn draw_panel<DB: DrawingBackend>(
         .y_label_area_size(80)
         .build_cartesian_2d(x0..x1, y0..y1)
         .map_err(|e| e.to_string())?;
+    let (x_span, y_span) = (x1 - x0, y1 - y0);
+    let x_tick = move |v: &f64| tick_label(*v, x_span);
+    let y_tick = move |v: &f64| tick_label(*v, y_span);
     chart
         .configure_mesh()
+        .x_label_formatter(&x_tick)
+        .y_label_formatter(&y_tick)
         .x_desc(&panel.x_label)
         .y_desc(&panel.y_label)
         .label_style(("sans-serif", 14))
@@ -333,6 +338,56 @@ fn draw_panel<DB: DrawingBackend>(
     Ok(())
 }
 
+/// A tick label with the digits the axis needs and no more: rounded to a
+/// hundredth of the axis's `span` (ticks fall at about a tenth of it), then
+/// trailing zeros dropped (`1400`, `2.5`, never `1400.0`), and never `-0`.
+/// Values of a million and more, or spans below 1e-4, in exponent form
+/// (`1.5e-5`).
+pub fn tick_label(value: f64, span: f64) -> String {
+    if !value.is_finite() {
+        return String::new();
+    }
+    let magnitude = value.abs();
+    let text = if magnitude >= 1e6 || (span > 0.0 && span < 1e-4 && magnitude > 0.0) {
+        // Significant digits down to a hundredth of the span.
+        let digits = if span > 0.0 && magnitude > 0.0 {
+            (magnitude.log10().floor() - (span / 100.0).log10().floor() + 1.0).clamp(1.0, 12.0)
+                as usize
+        } else {
+            3
+        };
+        let t = format!("{:.*e}", digits.saturating_sub(1), value);
+        let (mantissa, exponent) = t.split_once('e').unwrap_or((&t, "0"));
+        let mantissa = if mantissa.contains('.') {
+            mantissa.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            mantissa
+        };
+        format!("{mantissa}e{exponent}")
+    } else {
+        let decimals = if span > 0.0 {
+            (-(span / 100.0).log10()).ceil().clamp(0.0, 12.0) as usize
+        } else {
+            6
+        };
+        let t = format!("{value:.decimals$}");
+        if t.contains('.') {
+            t.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            t
+        }
+    };
+    if text
+        .trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
+        "0".to_string()
+    } else {
+        text
+    }
+}
+
 /// At most `limit` points, evenly thinned, keeping the first and the last.
 pub fn thin(points: Vec<(f64, f64)>, limit: usize) -> Vec<(f64, f64)> {
     if points.len() <= limit || limit < 2 {
@@ -342,4 +397,23 @@ pub fn thin(points: Vec<(f64, f64)>, limit: usize) -> Vec<(f64, f64)> {
     (0..limit)
         .map(|i| points[((i as f64 * step).round() as usize).min(points.len() - 1)])
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tick_label;
+
+    #[test]
+    fn tick_labels_carry_the_digits_they_need() {
+        assert_eq!(tick_label(1400.0, 1000.0), "1400");
+        assert_eq!(tick_label(2.5, 2.0), "2.5");
+        assert_eq!(tick_label(2.0, 2.0), "2");
+        assert_eq!(tick_label(-0.0, 1.0), "0");
+        assert_eq!(tick_label(-1e-17, 1.0), "0");
+        assert_eq!(tick_label(0.99362, 0.001), "0.99362");
+        assert_eq!(tick_label(1.5e-5, 2e-5), "1.5e-5");
+        assert_eq!(tick_label(2.0e7, 1e7), "2e7");
+        assert_eq!(tick_label(-3.25, 1.0), "-3.25");
+        assert_eq!(tick_label(f64::NAN, 1.0), "");
+    }
 }

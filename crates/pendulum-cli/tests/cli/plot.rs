@@ -49,6 +49,28 @@ fn check_picture(path: &Path) {
                 "{}: no text",
                 path.display()
             );
+            // Tick labels (the texts that are numbers) carry the digits
+            // they need: never `1400.0`, never `-0`.
+            let ticks: Vec<&str> = doc
+                .descendants()
+                .filter(|n| n.has_tag_name("text"))
+                .filter_map(|n| n.text())
+                .map(str::trim)
+                .filter(|t| !t.is_empty() && t.parse::<f64>().is_ok())
+                .collect();
+            assert!(ticks.len() >= 4, "{}: {ticks:?}", path.display());
+            for t in &ticks {
+                assert!(
+                    !t.ends_with(".0") && !t.contains(".0e") && *t != "-0",
+                    "{}: tick label {t}",
+                    path.display()
+                );
+                let negative_zero = t.starts_with('-')
+                    && t.trim_start_matches('-')
+                        .chars()
+                        .all(|c| c == '0' || c == '.');
+                assert!(!negative_zero, "{}: tick label {t}", path.display());
+            }
         }
         Some("png") => {
             let (width, height, distinct) = png_summary(bytes);

@@ -161,7 +161,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         let allan = a
             .allan_deviation
             .iter()
-            .map(|p| (p.tau.log10(), (SECONDS_PER_DAY * p.deviation).log10()))
+            .map(|p| (p.tau, SECONDS_PER_DAY * p.deviation))
             .collect();
         let figure = Figure {
             panels: vec![
@@ -176,10 +176,11 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
                 ),
                 Panel::new(
                     "Allan deviation of the rate",
-                    "log10 averaging time (s)",
-                    "log10 deviation (s/day)",
+                    "averaging time (s)",
+                    "Allan deviation (s/day)",
                     vec![Series::line("overlapping Allan deviation", allan)],
-                ),
+                )
+                .log_log(),
             ],
         };
         render(target, &figure)?;

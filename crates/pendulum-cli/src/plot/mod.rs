@@ -139,6 +139,8 @@ pub struct Panel {
     pub series: Vec<Series>,
     /// Where the legend goes (out of the data's way).
     pub legend: SeriesLabelPosition,
+    /// Both axes logarithmic (a quantity that spans decades).
+    pub log_log: bool,
 }
 
 impl Panel {
@@ -155,7 +157,15 @@ impl Panel {
             y_label: y_label.into(),
             series,
             legend: SeriesLabelPosition::UpperRight,
+            log_log: false,
         }
+    }
+
+    /// The same on logarithmic axes (positive values only; others are left
+    /// out).
+    pub fn log_log(mut self) -> Self {
+        self.log_log = true;
+        self
     }
 
     /// The same with the legend at the lower left (for curves that fall
@@ -271,50 +281,105 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
+/// The positive data's range with a margin of 5% of its decades (a
+/// factor of ten either way when it is one value).
+fn log_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values.filter(|v| v.is_finite() && *v > 0.0) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !lo.is_finite() {
+        return (0.1, 10.0);
+    }
+    if hi <= lo {
+        return (lo / 10.0, hi * 10.0);
+    }
+    let pad = (hi / lo).powf(0.05);
+    (lo / pad, hi * pad)
+}
+
 fn draw_panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     panel: &Panel,
 ) -> Result<(), String> {
     let points = || panel.series.iter().flat_map(|s| s.points.iter());
-    let (x0, x1) = range(points().map(|p| p.0));
-    let (y0, y1) = range(points().map(|p| p.1));
-    let mut chart = ChartBuilder::on(area)
+    let mut builder = ChartBuilder::on(area);
+    builder
         .caption(&panel.title, ("sans-serif", 22))
         .margin(12)
         .x_label_area_size(44)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|e| e.to_string())?;
-    let (x_span, y_span) = (x1 - x0, y1 - y0);
-    let x_tick = move |v: &f64| tick_label(*v, x_span);
-    let y_tick = move |v: &f64| tick_label(*v, y_span);
-    chart
-        .configure_mesh()
-        .x_label_formatter(&x_tick)
-        .y_label_formatter(&y_tick)
-        .x_desc(&panel.x_label)
-        .y_desc(&panel.y_label)
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 16))
-        .light_line_style(RGBColor(235, 235, 235))
-        .draw()
-        .map_err(|e| e.to_string())?;
+        .y_label_area_size(80);
+    if panel.log_log {
+        let (x0, x1) = log_range(points().map(|p| p.0));
+        let (y0, y1) = log_range(points().map(|p| p.1));
+        let mut chart = builder
+            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+            .map_err(|e| e.to_string())?;
+        // On a log axis a label's digits follow its own size.
+        let tick = |v: &f64| tick_label(*v, v.abs());
+        chart
+            .configure_mesh()
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
+            .x_desc(&panel.x_label)
+            .y_desc(&panel.y_label)
+            .label_style(("sans-serif", 14))
+            .axis_desc_style(("sans-serif", 16))
+            .light_line_style(RGBColor(235, 235, 235))
+            .draw()
+            .map_err(|e| e.to_string())?;
+        let positive = |p: &(f64, f64)| p.0 > 0.0 && p.1 > 0.0;
+        draw_series(&mut chart, panel, positive)
+    } else {
+        let (x0, x1) = range(points().map(|p| p.0));
+        let (y0, y1) = range(points().map(|p| p.1));
+        let mut chart = builder
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(|e| e.to_string())?;
+        let (x_span, y_span) = (x1 - x0, y1 - y0);
+        let x_tick = move |v: &f64| tick_label(*v, x_span);
+        let y_tick = move |v: &f64| tick_label(*v, y_span);
+        chart
+            .configure_mesh()
+            .x_label_formatter(&x_tick)
+            .y_label_formatter(&y_tick)
+            .x_desc(&panel.x_label)
+            .y_desc(&panel.y_label)
+            .label_style(("sans-serif", 14))
+            .axis_desc_style(("sans-serif", 16))
+            .light_line_style(RGBColor(235, 235, 235))
+            .draw()
+            .map_err(|e| e.to_string())?;
+        draw_series(&mut chart, panel, |_| true)
+    }
+}
+
+/// The panel's series and legend on `chart`, the points `keep` accepts
+/// (finite ones always).
+fn draw_series<'a, DB, X, Y>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<X, Y>>,
+    panel: &Panel,
+    keep: impl Fn(&(f64, f64)) -> bool + Copy,
+) -> Result<(), String>
+where
+    DB: DrawingBackend + 'a,
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let shown = move |p: &(f64, f64)| p.0.is_finite() && p.1.is_finite() && keep(p);
     for (i, series) in panel.series.iter().enumerate() {
         let color = PALETTE[series.color.unwrap_or(i) % PALETTE.len()];
         let drawn = match series.style {
             Style::Line => chart.draw_series(LineSeries::new(
-                series
-                    .points
-                    .iter()
-                    .copied()
-                    .filter(|p| p.0.is_finite() && p.1.is_finite()),
+                series.points.iter().copied().filter(shown),
                 color.stroke_width(2),
             )),
             Style::Dots => chart.draw_series(
                 series
                     .points
                     .iter()
-                    .filter(|p| p.0.is_finite() && p.1.is_finite())
+                    .filter(|p| shown(p))
                     .map(|&p| Circle::new(p, 3, color.filled())),
             ),
         }

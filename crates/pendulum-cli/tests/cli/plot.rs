@@ -205,6 +205,21 @@ fn every_plot_kind_in_both_formats() {
             }
         }
     }
+    // The Allan deviation spans decades: log-log axes, ticks at powers of
+    // ten (the SVG's numeric labels include at least three, on two axes).
+    let svg = std::fs::read_to_string(d.join("beats.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let decades = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text())
+        .filter_map(|t| t.trim().parse::<f64>().ok())
+        .filter(|v| *v > 0.0 && (v.log10() - v.log10().round()).abs() < 1e-9 && *v != 1.0)
+        .count();
+    assert!(
+        decades >= 3,
+        "{decades} power-of-ten labels in the beats figure"
+    );
 }
 
 #[test]

@@ -7,6 +7,7 @@
 
 use crate::error::CliError;
 use crate::file::AtomicFile;
+use plotters::coord::ranged1d::ValueFormatter;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
@@ -318,17 +319,7 @@ fn draw_panel<DB: DrawingBackend>(
             .map_err(|e| e.to_string())?;
         // On a log axis a label's digits follow its own size.
         let tick = |v: &f64| tick_label(*v, v.abs());
-        chart
-            .configure_mesh()
-            .x_label_formatter(&tick)
-            .y_label_formatter(&tick)
-            .x_desc(&panel.x_label)
-            .y_desc(&panel.y_label)
-            .label_style(("sans-serif", 14))
-            .axis_desc_style(("sans-serif", 16))
-            .light_line_style(RGBColor(235, 235, 235))
-            .draw()
-            .map_err(|e| e.to_string())?;
+        draw_mesh(&mut chart, panel, &tick, &tick)?;
         let positive = |p: &(f64, f64)| p.0 > 0.0 && p.1 > 0.0;
         draw_series(&mut chart, panel, positive)
     } else {
@@ -340,19 +331,35 @@ fn draw_panel<DB: DrawingBackend>(
         let (x_span, y_span) = (x1 - x0, y1 - y0);
         let x_tick = move |v: &f64| tick_label(*v, x_span);
         let y_tick = move |v: &f64| tick_label(*v, y_span);
-        chart
-            .configure_mesh()
-            .x_label_formatter(&x_tick)
-            .y_label_formatter(&y_tick)
-            .x_desc(&panel.x_label)
-            .y_desc(&panel.y_label)
-            .label_style(("sans-serif", 14))
-            .axis_desc_style(("sans-serif", 16))
-            .light_line_style(RGBColor(235, 235, 235))
-            .draw()
-            .map_err(|e| e.to_string())?;
+        draw_mesh(&mut chart, panel, &x_tick, &y_tick)?;
         draw_series(&mut chart, panel, |_| true)
     }
+}
+
+/// The grid, the tick labels (by `x_tick` and `y_tick`) and the axis
+/// titles of `panel` on `chart`.
+fn draw_mesh<'a, DB, X, Y>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<X, Y>>,
+    panel: &Panel,
+    x_tick: &dyn Fn(&f64) -> String,
+    y_tick: &dyn Fn(&f64) -> String,
+) -> Result<(), String>
+where
+    DB: DrawingBackend + 'a,
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    chart
+        .configure_mesh()
+        .x_label_formatter(x_tick)
+        .y_label_formatter(y_tick)
+        .x_desc(&panel.x_label)
+        .y_desc(&panel.y_label)
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 16))
+        .light_line_style(RGBColor(235, 235, 235))
+        .draw()
+        .map_err(|e| e.to_string())
 }
 
 /// The panel's series and legend on `chart`, the points `keep` accepts

@@ -736,7 +736,7 @@ fn clock_run<'py>(
     schedule_time: Vec<f64>,
     schedule_factor: Vec<f64>,
 ) -> PyResult<(Vec<Array1<'py>>, Bound<'py, PyDict>)> {
-    use pendulum_theory::clock::long_run::{run, LongRun};
+    use pendulum_theory::clock::long_run::{piecewise_linear, run, LongRun};
     use pendulum_theory::clock::HalfSwingMethod;
     let clock = make_clock(spec)?;
     if !(duration > 0.0 && duration <= 1e10) {
@@ -754,21 +754,7 @@ fn clock_run<'py>(
             "drive_schedule: times must increase, factors be at least 0, one of each",
         ));
     }
-    let drive = |t: f64| -> f64 {
-        if schedule_time.is_empty() {
-            return 1.0;
-        }
-        let i = schedule_time.partition_point(|&x| x <= t);
-        if i == 0 {
-            schedule_factor[0]
-        } else if i == schedule_time.len() {
-            schedule_factor[i - 1]
-        } else {
-            let (t0, t1) = (schedule_time[i - 1], schedule_time[i]);
-            let (f0, f1) = (schedule_factor[i - 1], schedule_factor[i]);
-            f0 + (f1 - f0) * (t - t0) / (t1 - t0)
-        }
-    };
+    let drive = |t: f64| piecewise_linear(&schedule_time, &schedule_factor, t);
     let start = clock
         .steady(HalfSwingMethod::Averaged, drive(0.0))
         .map_err(|e| PyValueError::new_err(format!("drive: {e}")))?;

@@ -337,3 +337,19 @@ fn a_weak_drive_stops_the_pendulum() {
         .unwrap();
     assert!(s.amplitude > 2f64.to_radians());
 }
+
+/// A schedule: linear between its points, held beyond them, 1 when empty;
+/// and the period factor of a rate (a clock gaining 86.4 s/day runs its
+/// half swings 1/1.001 as long).
+#[test]
+fn schedules_and_period_factors() {
+    use pendulum_theory::clock::long_run::{period_factor, piecewise_linear};
+    let (t, v) = ([0.0, 10.0, 20.0], [1.0, 0.5, 0.8]);
+    assert_eq!(piecewise_linear(&t, &v, -5.0), 1.0);
+    assert_eq!(piecewise_linear(&t, &v, 5.0), 0.75);
+    assert_eq!(piecewise_linear(&t, &v, 10.0), 0.5);
+    assert!((piecewise_linear(&t, &v, 15.0) - 0.65).abs() < 1e-15);
+    assert_eq!(piecewise_linear(&t, &v, 25.0), 0.8);
+    assert_eq!(piecewise_linear(&[], &[], 3.0), 1.0);
+    assert_eq!(period_factor(86.4), 1.0 / 1.001);
+}

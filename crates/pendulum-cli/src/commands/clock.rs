@@ -10,7 +10,7 @@ use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::{parse_number, parse_quantity, Dimension};
 use pendulum_theory::clock::escapement::spec::{Drive, Kind, Spec};
-use pendulum_theory::clock::long_run::{run as long_run, LongRun};
+use pendulum_theory::clock::long_run::{period_factor, piecewise_linear, run as long_run, LongRun};
 use pendulum_theory::clock::{Clock, ClockError, HalfSwingMethod, Steady};
 use serde::Serialize;
 use std::path::Path;
@@ -201,15 +201,7 @@ impl Schedule {
     /// Column `k` at time `t`, if given.
     fn at(&self, k: usize, t: f64) -> Option<f64> {
         let values = self.columns[k].as_ref()?;
-        let i = self.times.partition_point(|&time| time <= t);
-        Some(if i == 0 {
-            values[0]
-        } else if i == self.times.len() {
-            values[i - 1]
-        } else {
-            let (t0, t1) = (self.times[i - 1], self.times[i]);
-            values[i - 1] + (values[i] - values[i - 1]) * (t - t0) / (t1 - t0)
-        })
+        Some(piecewise_linear(&self.times, values, t))
     }
 }
 
@@ -473,7 +465,7 @@ fn run_long(
     let stretch = |t: f64| {
         let rate = column(1, t).map_or(0.0, |c| per_c * (c - column(1, 0.0).unwrap_or(c)))
             + column(2, t).map_or(0.0, |p| per_hpa * (p - column(2, 0.0).unwrap_or(p)));
-        1.0 / (1.0 + rate / 86_400.0)
+        period_factor(rate)
     };
     // Start in the steady state of the drive at the start, regulated to it.
     let start = clock

@@ -24,6 +24,30 @@
 use super::averaged::half_swing_map;
 use super::Clock;
 
+/// A schedule's value at `t`: linear between the points `(times[i],
+/// values[i])` (times increasing), held beyond the first and the last; 1
+/// for an empty schedule (the drive as given).
+pub fn piecewise_linear(times: &[f64], values: &[f64], t: f64) -> f64 {
+    let i = times.partition_point(|&x| x <= t);
+    match (i, values.first(), values.get(i.wrapping_sub(1))) {
+        (_, None, _) => 1.0,
+        (0, Some(&first), _) => first,
+        (_, _, Some(&last)) if i == times.len() => last,
+        (_, _, Some(&v0)) => {
+            let (t0, t1, v1) = (times[i - 1], times[i], values[i]);
+            v0 + (v1 - v0) * (t - t0) / (t1 - t0)
+        }
+        _ => 1.0,
+    }
+}
+
+/// The factor a clock's half swings lengthen by when its rate moves by
+/// `rate` s/day (positive: gaining): `1 / (1 + rate/86400)`, the `stretch`
+/// of [`run`] for a temperature or pressure coefficient.
+pub fn period_factor(rate: f64) -> f64 {
+    1.0 / (1.0 + rate / 86_400.0)
+}
+
 /// What a long run reports, at a turning point or every so often.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Row {

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Makes the figures the README shows (docs/*.png) with the release binary.
+# Makes the figures the README shows (docs/*.png) with the release binary,
+# from the list in tools/figures/figures.txt.
 # Usage: bash tools/figures/make_figures.sh [OUT_DIR]   (default: docs)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -7,10 +8,9 @@ out="${1:-$root/docs}"
 mkdir -p "$out"
 cargo build --release --quiet --manifest-path "$root/Cargo.toml"
 bin="$root/target/release/pendulum"
-# The isochronism of a deadbeat and a recoil escapement on the same seconds
-# pendulum (5 kg, Q = 10,000, lift 2°, 20 µJ a beat at the nominal drive).
-for kind in deadbeat recoil; do
-  "$bin" clock --length 0.99362m --q 10000 --escapement "$kind" --lift-angle 2 \
-    --drive 20uJ --drive-range 0.5x..2x --steps 13 --plot "$out/isochronism-$kind.png" >/dev/null
-done
-echo "wrote $out/isochronism-deadbeat.png $out/isochronism-recoil.png"
+while read -r name args; do
+  case "$name" in ''|'#'*) continue ;; esac
+  # shellcheck disable=SC2086 # the arguments are words
+  "$bin" $args --plot "$out/$name" >/dev/null
+  echo "wrote $out/$name"
+done < "$root/tools/figures/figures.txt"

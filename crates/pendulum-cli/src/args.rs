@@ -436,7 +436,7 @@ pub struct FitBeatsArgs {
 /// Where g comes from: given, from latitude and height, or standard gravity.
 #[derive(Debug, Args)]
 pub struct GravityArgs {
-    /// Gravitational acceleration [default: 9.80665 m/s^2].
+    /// Gravitational acceleration [default: 9.80665 m/s²].
     #[arg(
         long = "g",
         value_name = "G",

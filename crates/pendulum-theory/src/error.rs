@@ -87,7 +87,7 @@ impl Quantity {
     pub fn format_value(self, value: f64) -> String {
         match self {
             Quantity::Length | Quantity::Height => format!("{} m", significant(value)),
-            Quantity::Gravity => format!("{} m/s^2", significant(value)),
+            Quantity::Gravity => format!("{} m/s²", significant(value)),
             Quantity::Amplitude | Quantity::FrictionAngle | Quantity::LiftAngle => {
                 format!("{}°", significant(value.to_degrees()))
             }

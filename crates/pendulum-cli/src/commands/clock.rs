@@ -555,8 +555,7 @@ fn isochronism_figure(rows: &[IsoJson], name: &str) -> Figure {
                 "drive factor (× the given drive)",
                 "amplitude (°)",
                 vec![Series::line("steady amplitude", pick(&|s| s.amplitude_deg))],
-            )
-            .legend_upper_left(),
+            ),
             Panel::new(
                 "Rate against the drive",
                 "drive factor (× the given drive)",
@@ -569,8 +568,7 @@ fn isochronism_figure(rows: &[IsoJson], name: &str) -> Figure {
                     ),
                     Series::line("escapement's part", pick(&|s| s.escapement_rate_s_per_day)),
                 ],
-            )
-            .legend_lower_left(),
+            ),
         ],
     }
 }
@@ -596,11 +594,18 @@ fn run_figure(points: &[(f64, f64, f64)]) -> Figure {
                 "time (days)",
                 "error (s, + ahead)",
                 vec![Series::line(
-                    "clock - true time",
-                    points.iter().map(|p| (days(p.0), p.2)).collect(),
+                    "clock − true time",
+                    // Below the rounding of the elapsed time itself an
+                    // error is noise: drawn as zero.
+                    points
+                        .iter()
+                        .map(|p| {
+                            let resolution = 8.0 * f64::EPSILON * p.0.abs();
+                            (days(p.0), if p.2.abs() <= resolution { 0.0 } else { p.2 })
+                        })
+                        .collect(),
                 )],
-            )
-            .legend_upper_left(),
+            ),
         ],
     }
 }

@@ -34,14 +34,14 @@ pub struct ResolvedGravity {
 }
 
 impl ResolvedGravity {
-    /// A phrase for people: "9.80665 m/s^2 (standard gravity)".
+    /// A phrase for people: "9.80665 m/s² (standard gravity)".
     pub fn describe(&self) -> String {
         let source = match self.g_source {
             "standard" => "standard gravity",
             "wgs84" => "WGS 84 normal gravity",
             _ => "given",
         };
-        format!("{} m/s^2 ({source})", crate::output::num(self.g_m_s2, 10))
+        format!("{} m/s² ({source})", crate::output::num(self.g_m_s2, 10))
     }
 }
 

@@ -331,7 +331,7 @@ fn text(r: &Results, j: &DampedJson) -> String {
             )
             .row(
                 "Impulse per beat",
-                format!("{} kg m^2/s", num(b.impulse_per_beat, 6)),
+                format!("{} kg m²/s", num(b.impulse_per_beat, 6)),
             );
     }
     if let Some(t) = &j.trajectory {
@@ -401,7 +401,13 @@ fn write_trajectory(
     })
 }
 
-/// θ(t) with its envelope (viscous damping only) and the turning points.
+/// Turning points drawn at most (evenly thinned beyond).
+const FIGURE_TURNS: usize = 1000;
+
+/// θ(t) with its envelope and every turning point over `duration`: the
+/// viscous envelope `±A0 e^(-ζωt)/√(1-ζ²)` that the motion touches, or
+/// with dry friction the envelope through the turning points (a straight
+/// line without viscous damping) up to where the pendulum sticks.
 fn figure(r: &Results, duration: f64) -> Figure {
     let a0 = r.amplitude.radians();
     let mut sampler = r.friction.sampler(a0);
@@ -412,20 +418,52 @@ fn figure(r: &Results, duration: f64) -> Figure {
         })
         .collect();
     let mut series = vec![Series::line("θ(t)", motion)];
-    if r.friction.friction_angle() == 0.0 {
+    // Every turning point within the duration, not only the --extrema
+    // listed in the table.
+    let half = r
+        .damped
+        .damped_angular_frequency()
+        .map(|w| std::f64::consts::PI / w);
+    let count = half.map_or(1, |h| ((duration / h).ceil() as u64 + 1).min(MAX_EXTREMA));
+    let friction = r.friction.friction_angle();
+    let (extrema, stop) = if friction == 0.0 {
+        (r.damped.extrema(a0, count), None)
+    } else {
+        let run = r.friction.run_down(a0, count);
+        (run.extrema, run.stop.and_then(|s| s.time))
+    };
+    if friction == 0.0 {
         let (upper, lower) = envelope_points(&r.damped, a0, duration);
         if !upper.is_empty() {
-            series.push(Series::line("envelope A0 e^(-ζωt)/√(1-ζ²)", upper));
+            series.push(Series::line("envelope ±A₀ e^(−ζω₀t)/√(1−ζ²)", upper));
             series.push(Series::line("", lower).colored(1));
         }
+    } else if half.is_some() {
+        let end = stop.unwrap_or(duration).min(duration);
+        let upper: Points = (0..=400)
+            .filter_map(|i| {
+                let t = end * f64::from(i) / 400.0;
+                r.friction
+                    .envelope(a0, t)
+                    .map(|e| (t, e.max(friction).to_degrees()))
+            })
+            .collect();
+        let lower = upper.iter().map(|&(t, e)| (t, -e)).collect();
+        series.push(Series::line(
+            "envelope through the turning points (dry friction)",
+            upper,
+        ));
+        series.push(Series::line("", lower).colored(1));
     }
-    let turns: Vec<(f64, f64)> = r
-        .extrema
+    let turns: Vec<(f64, f64)> = extrema
         .iter()
         .filter(|e| e.time <= duration)
         .map(|e| (e.time, e.angle.to_degrees()))
         .collect();
-    series.push(Series::dots("turning points", turns));
+    series.push(Series::dots(
+        "turning points",
+        crate::plot::thin(turns, FIGURE_TURNS),
+    ));
     Figure {
         panels: vec![Panel::new(
             format!(

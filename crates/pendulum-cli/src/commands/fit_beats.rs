@@ -178,7 +178,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
                     "Allan deviation of the rate",
                     "averaging time (s)",
                     "Allan deviation (s/day)",
-                    vec![Series::line("overlapping Allan deviation", allan)],
+                    vec![Series::dots("overlapping Allan deviation", allan)],
                 )
                 .log_log(),
             ],

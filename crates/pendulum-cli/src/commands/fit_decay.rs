@@ -433,7 +433,12 @@ fn figure(time: &[f64], amplitude: &[f64], fits: &[DecayFit], best: Option<Decay
                 (t, f.model.amplitude(t, &f.fit.parameters).to_degrees())
             })
             .collect();
-        curves.push(Series::line(f.model.name(), curve));
+        let label = if Some(f.model) == best {
+            format!("{} (preferred)", f.model.name())
+        } else {
+            f.model.name().to_string()
+        };
+        curves.push(Series::line(label, curve));
     }
     let mut panels = vec![Panel::new(
         "Amplitude decay and the fitted laws",
@@ -450,7 +455,7 @@ fn figure(time: &[f64], amplitude: &[f64], fits: &[DecayFit], best: Option<Decay
         panels.push(Panel::new(
             format!("Residuals of the preferred law ({})", f.model.name()),
             "time (s)",
-            "measured - fitted (°)",
+            "measured − fitted (°)",
             vec![Series::dots("residual", residuals)],
         ));
     }

@@ -211,7 +211,7 @@ fn figure(time: &[f64], theta: &[f64], residuals: &[f64]) -> Figure {
             Panel::new(
                 "Residuals",
                 "time (s)",
-                "measured - fitted (°)",
+                "measured − fitted (°)",
                 vec![Series::dots("residual", res)],
             ),
         ],

@@ -28,13 +28,13 @@ pub fn run(args: &GravityCommandArgs) -> Result<String, CliError> {
         return output::json(&result);
     }
     let mut s = Summary::default();
-    s.row("g", format!("{} m/s^2", num(g, 10)))
+    s.row("g", format!("{} m/s²", num(g, 10)))
         .row("Latitude", format!("{}°", num(latitude_deg, 10)))
         .row("Height", format!("{} m", num(height_m, 10)))
         .row("Model", result.model)
         .row(
             "Note",
-            "local anomalies reach a few 1e-4 m/s^2; measure g for better than 30 ppm",
+            "local anomalies reach a few 1e-4 m/s²; measure g for better than 30 ppm",
         );
     Ok(s.render())
 }

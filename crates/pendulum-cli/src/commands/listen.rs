@@ -336,14 +336,7 @@ fn draw(
             Series::dots("tocks", strip(1)),
         ],
     );
-    // The legend in the corner the traces leave free: a losing clock's
-    // traces rise to the upper right.
-    let losing = a.rate_s_per_day.is_some_and(|r| r < 0.0);
-    let mut panels = vec![if losing {
-        strip.legend_upper_left()
-    } else {
-        strip
-    }];
+    let mut panels = vec![strip];
     if let Some(sounds) = sounds {
         let wave = |s: &MedianSound| -> Vec<(f64, f64)> {
             s.samples

@@ -71,12 +71,12 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
     if let Some(target) = &plot {
         let first = amplitudes[0].degrees();
         let last = amplitudes[amplitudes.len() - 1].degrees();
-        let (from, to) = if amplitudes.len() > 1 {
-            (first.min(last), first.max(last))
+        let (from, to, working) = if amplitudes.len() > 1 {
+            (first.min(last), first.max(last), None)
         } else {
-            (0.0, (2.0 * first).clamp(10.0, 170.0))
+            (0.0, (2.0 * first).clamp(10.0, 170.0), Some(first))
         };
-        render(target, &figure(&pendulum, from, to))?;
+        render(target, &figure(&pendulum, from, to, working))?;
     }
     let analyses = amplitudes
         .iter()
@@ -253,12 +253,15 @@ fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodAnal
     out
 }
 
-/// T/T0 against amplitude (exact, the power series with 1 to 5 terms, the
-/// small-angle value) above the circular error in s/day.
-pub fn figure(pendulum: &Pendulum, from_deg: f64, to_deg: f64) -> Figure {
-    let grid: Vec<Amplitude> = (0..=200)
+/// The period against amplitude from `from_deg` to `to_deg`, with the
+/// `working` amplitude (degrees) marked: T/T0 exact; the relative error of
+/// the power series with 1 to 5 terms against it, on a log axis (errors
+/// below 1e-15, under the exact value's own rounding, are not drawn); the
+/// circular error in s/day.
+pub fn figure(pendulum: &Pendulum, from_deg: f64, to_deg: f64, working: Option<f64>) -> Figure {
+    let grid: Vec<Amplitude> = (0..=400)
         .filter_map(|i| {
-            Amplitude::from_degrees(from_deg + (to_deg - from_deg) * f64::from(i) / 200.0).ok()
+            Amplitude::from_degrees(from_deg + (to_deg - from_deg) * f64::from(i) / 400.0).ok()
         })
         .collect();
     let curve = |f: &dyn Fn(Amplitude) -> f64| {
@@ -266,38 +269,70 @@ pub fn figure(pendulum: &Pendulum, from_deg: f64, to_deg: f64) -> Figure {
             .map(|&a| (a.degrees(), f(a)))
             .collect::<Vec<_>>()
     };
-    let mut ratio = vec![Series::line("exact, 2K/π", curve(&|a| period_ratio(a)))];
-    for terms in 1..=5 {
-        let label = if terms == 1 {
-            "small-angle (1 term)".to_string()
-        } else {
-            format!("series, {terms} terms")
-        };
-        ratio.push(Series::line(
-            label,
-            curve(&|a| period_ratio_series(a, terms).map_or(f64::NAN, |s| s.period_ratio)),
-        ));
-    }
+    let errors = (1..=5)
+        .map(|terms| {
+            let label = match terms {
+                1 => "1 term (small-angle)".to_string(),
+                n => format!("{n} terms"),
+            };
+            Series::line(
+                label,
+                curve(&|a| {
+                    period_ratio_series(a, terms)
+                        .map(|s| s.relative_error.abs())
+                        .ok()
+                        .filter(|e| *e >= 1e-15)
+                        .unwrap_or(f64::NAN)
+                }),
+            )
+        })
+        .collect();
     let day = pendulum_theory::period::SECONDS_PER_DAY;
+    // The working amplitude named in the first panel's legend only.
+    let mark = |panel: Panel, named: bool| match working {
+        Some(a) if named => panel.mark_x(a, format!("working amplitude, {}°", num(a, 4))),
+        Some(a) => panel.mark_x(a, ""),
+        None => panel,
+    };
     Figure {
         panels: vec![
-            Panel::new(
-                format!("Period at amplitude, l = {} m", num(pendulum.length_m(), 6)),
-                "amplitude (°)",
-                "T / T0",
-                ratio,
-            )
-            .legend_upper_left(),
-            Panel::new(
-                "Circular error: what the clock loses against a vanishing swing",
-                "amplitude (°)",
-                "circular error (s/day)",
-                vec![Series::line(
-                    "86400 (1 - T0/T)",
-                    curve(&|a| day * circular_error(a)),
-                )],
-            )
-            .legend_upper_left(),
+            mark(
+                Panel::new(
+                    format!(
+                        "Period against amplitude, l = {} m",
+                        num(pendulum.length_m(), 6)
+                    ),
+                    "amplitude (°)",
+                    "T / T₀",
+                    vec![Series::line(
+                        "exact: 2K(sin²(A/2))/π",
+                        curve(&|a| period_ratio(a)),
+                    )],
+                ),
+                true,
+            ),
+            mark(
+                Panel::new(
+                    "The power series in sin²(A/2): its error against the exact period",
+                    "amplitude (°)",
+                    "|T_series / T − 1|",
+                    errors,
+                )
+                .log_y(),
+                false,
+            ),
+            mark(
+                Panel::new(
+                    "Circular error: what the clock loses against a vanishing swing",
+                    "amplitude (°)",
+                    "circular error (s/day)",
+                    vec![Series::line(
+                        "loss per day, 86400 s × (1 − T₀/T)",
+                        curve(&|a| day * circular_error(a)),
+                    )],
+                ),
+                false,
+            ),
         ],
     }
 }

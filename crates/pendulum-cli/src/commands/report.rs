@@ -106,7 +106,7 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
     write_figure(
         &folder,
         "period.svg",
-        &period_figure(&pendulum, 0.0, (2.0 * a_deg).clamp(6.0, 170.0)),
+        &period_figure(&pendulum, 0.0, (2.0 * a_deg).clamp(6.0, 170.0), Some(a_deg)),
     )?;
 
     // Section 1-4: the linear decay, its Q and the energy budget.
@@ -249,7 +249,7 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
                 num(exact.to_degrees(), 5),
                 num(approx.to_degrees(), 5)
             ),
-            "A0 (1 - e^(-δ)), and the first-order δ A0 of section 1-4",
+            "A₀ (1 − e^(−δ)), and the first-order δ A₀ of section 1-4",
         ));
     }
     let overdamped = damping.zeta() > 1.0;
@@ -369,7 +369,7 @@ fn decay_figure(damped: &DampedPendulum, a0: f64, span: f64) -> Figure {
             "time (s)",
             "angle (°)",
             vec![
-                Series::line("A0 e^(-ζωt)/√(1-ζ²)", upper),
+                Series::line("envelope ±A₀ e^(−ζω₀t)/√(1−ζ²)", upper),
                 Series::line("", lower).colored(0),
             ],
         )],

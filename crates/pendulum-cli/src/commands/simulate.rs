@@ -21,7 +21,9 @@ use serde::Serialize;
 use std::time::{Duration, Instant};
 
 /// Whole periods drawn in the phase portrait (evenly chosen over the run).
-const PHASE_PERIODS: u64 = 200;
+const PHASE_PERIODS: u64 = 60;
+/// Samples a period for the phase portrait (from the dense output).
+const PHASE_SAMPLES: usize = 360;
 /// Points kept for the amplitude and rate plot.
 const PLOT_POINTS: usize = 4000;
 
@@ -296,8 +298,11 @@ fn options(args: &SimulateArgs, pendulum: &Pendulum) -> Result<Options, CliError
         ));
     }
     let sample_interval = match &args.trajectory {
-        // The phase portrait alone: 100 samples a period.
-        None if args.phase_plot.is_some() => Some(pendulum.small_angle_period() / 100.0),
+        // The phase portrait alone: PHASE_SAMPLES a period, from the
+        // dense output (with --trajectory it uses the trajectory's).
+        None if args.phase_plot.is_some() => {
+            Some(pendulum.small_angle_period() / PHASE_SAMPLES as f64)
+        }
         None => None,
         Some(_) => {
             let default = pendulum.small_angle_period() / 100.0;
@@ -341,7 +346,8 @@ struct CliObserver {
     turns: Option<Vec<(f64, f64, f64)>>,
     phase: Option<Vec<Vec<(f64, f64)>>>,
     phase_stride: u64,
-    phase_period: u64,
+    /// The group of periods whose loop is being drawn.
+    phase_period: Option<u64>,
 }
 
 struct SwingsFile {
@@ -379,7 +385,7 @@ impl CliObserver {
             turns: args.plot.as_ref().map(|_| Vec::new()),
             phase: args.phase_plot.as_ref().map(|_| Vec::new()),
             phase_stride: periods.div_ceil(PHASE_PERIODS).max(1),
-            phase_period: u64::MAX,
+            phase_period: None,
         })
     }
 
@@ -406,9 +412,12 @@ impl CliObserver {
                 .enumerate()
                 .map(|(i, period)| {
                     let label = if i == 0 {
-                        "(θ, θ'), one curve per period shown"
+                        match self.phase_stride {
+                            1 => "(θ, θ′) over the whole run".to_string(),
+                            n => format!("(θ, θ′), one period in {n}"),
+                        }
                     } else {
-                        ""
+                        String::new()
                     };
                     Series::line(label, period.clone()).colored(0)
                 })
@@ -468,17 +477,28 @@ impl Observer for CliObserver {
 
     fn sample(&mut self, time: f64, state: &State) -> bool {
         if let Some(phase) = self.phase.as_mut() {
-            let period = (time / self.pendulum.small_angle_period()) as u64;
-            if period % self.phase_stride == 0 {
-                if period != self.phase_period {
-                    phase.push(Vec::with_capacity(101));
-                    self.phase_period = period;
+            // Every sample when all periods are kept (one spiral); else
+            // the kept periods' loops, each drawn over 1.1 periods so that
+            // it closes although the true period exceeds T0.
+            let u = time / self.pendulum.small_angle_period();
+            let stride = self.phase_stride as f64;
+            let group = if self.phase_stride == 1 {
+                0
+            } else {
+                (u / stride).floor() as u64
+            };
+            let kept = self.phase_stride == 1 || u - group as f64 * stride < 1.1;
+            if kept {
+                if self.phase_period != Some(group) || phase.is_empty() {
+                    phase.push(Vec::with_capacity(PHASE_SAMPLES * 11 / 10 + 1));
+                    self.phase_period = Some(group);
                 }
-                let point = (
-                    state.angle.to_degrees(),
-                    state.angular_velocity.to_degrees(),
-                );
-                phase.last_mut().expect("pushed above").push(point);
+                if let Some(curve) = phase.last_mut() {
+                    curve.push((
+                        state.angle.to_degrees(),
+                        state.angular_velocity.to_degrees(),
+                    ));
+                }
             }
         }
         let Some(file) = self.trajectory.as_mut() else {
@@ -623,13 +643,15 @@ pub fn rundown_figure(turns: &[(f64, f64, f64)]) -> Figure {
                 "time (s)",
                 "amplitude (°)",
                 vec![Series::line("amplitude at each turning point", amplitude)],
-            ),
+            )
+            .log_y_beyond(1.5),
             Panel::new(
-                "Rate each half swing implies, against the small-angle beat",
+                "What each half swing loses against the small-angle beat",
                 "time (s)",
-                "rate (s/day)",
-                vec![Series::line("86400 (1 - (T0/2) / half period)", rate)],
-            ),
+                "loss (s/day)",
+                vec![Series::line("86400 s × (1 − (T₀/2) / half period)", rate)],
+            )
+            .log_y_beyond(1.5),
         ],
     }
 }

@@ -2,18 +2,30 @@
 //! or PNG. The font (DejaVu Sans) is compiled into the binary and
 //! registered once, so no system font library is needed.
 //!
-//! A [`Figure`] is data (panels of named series); [`render`] turns it into
-//! a file through the same all-or-nothing writer as every other output.
+//! A [`Figure`] is data (panels of named series: models as lines, data as
+//! markers); [`render`] turns it into a file through the same
+//! all-or-nothing writer as every other output. Every figure has one look
+//! (`style`): the Okabe–Ito palette, legends where they cover nothing
+//! (`legend`), robust axis ranges and tick labels with the digits they
+//! need (`axis`), curves clipped to the frame (`clip`), PNGs at twice the
+//! pixel density.
+
+mod axis;
+mod clip;
+mod draw;
+mod legend;
+mod style;
+
+pub use axis::Scale;
 
 use crate::error::CliError;
 use crate::file::AtomicFile;
-use plotters::coord::ranged1d::ValueFormatter;
-use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 use std::sync::Once;
+use style::Look;
 
-/// Picture size in pixels (SVG user units).
+/// Picture size in CSS pixels (SVG user units) for one or two panels.
 pub const SIZE: (u32, u32) = (960, 640);
 
 /// The file formats a plot can be written in.
@@ -127,6 +139,15 @@ impl Series {
     }
 }
 
+/// A vertical line across a panel at `x`, marking a working point.
+#[derive(Clone, Debug)]
+pub struct Mark {
+    /// Where, in the panel's horizontal units.
+    pub x: f64,
+    /// Legend text.
+    pub label: String,
+}
+
 /// One chart: a title, two axis labels (with units) and its series.
 #[derive(Clone, Debug)]
 pub struct Panel {
@@ -136,16 +157,18 @@ pub struct Panel {
     pub x_label: String,
     /// Vertical axis label, with its unit.
     pub y_label: String,
-    /// The series, drawn in order.
+    /// The series: data (markers) drawn first, models (lines) over them.
     pub series: Vec<Series>,
-    /// Where the legend goes (out of the data's way).
-    pub legend: SeriesLabelPosition,
-    /// Both axes logarithmic (a quantity that spans decades).
-    pub log_log: bool,
+    /// The horizontal axis's scale.
+    pub x_scale: Scale,
+    /// The vertical axis's scale.
+    pub y_scale: Scale,
+    /// Vertical marks.
+    pub marks: Vec<Mark>,
 }
 
 impl Panel {
-    /// A panel with its legend at the upper right.
+    /// A panel on linear axes; its legend goes where it covers nothing.
     pub fn new(
         title: impl Into<String>,
         x_label: impl Into<String>,
@@ -157,28 +180,53 @@ impl Panel {
             x_label: x_label.into(),
             y_label: y_label.into(),
             series,
-            legend: SeriesLabelPosition::UpperRight,
-            log_log: false,
+            x_scale: Scale::Linear,
+            y_scale: Scale::Linear,
+            marks: Vec::new(),
         }
     }
 
-    /// The same on logarithmic axes (positive values only; others are left
-    /// out).
+    /// The same on logarithmic axes (a quantity and its argument that
+    /// both span decades; values that are not positive are not shown).
     pub fn log_log(mut self) -> Self {
-        self.log_log = true;
+        self.x_scale = Scale::Log;
+        self.y_scale = Scale::Log;
         self
     }
 
-    /// The same with the legend at the lower left (for curves that fall
-    /// to the right).
-    pub fn legend_lower_left(mut self) -> Self {
-        self.legend = SeriesLabelPosition::LowerLeft;
+    /// The same with a logarithmic vertical axis.
+    pub fn log_y(mut self) -> Self {
+        self.y_scale = Scale::Log;
         self
     }
 
-    /// The same with the legend at the upper left (for rising curves).
-    pub fn legend_upper_left(mut self) -> Self {
-        self.legend = SeriesLabelPosition::UpperLeft;
+    /// The same with a logarithmic vertical axis when every value is
+    /// positive and they span more than `decades` decades.
+    pub fn log_y_beyond(self, decades: f64) -> Self {
+        let ys = || {
+            self.series
+                .iter()
+                .flat_map(|s| s.points.iter().map(|p| p.1))
+        };
+        let positive = ys().filter(|y| y.is_finite()).all(|y| y > 0.0);
+        let (lo, hi) = ys()
+            .filter(|y| y.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
+                (a.min(y), b.max(y))
+            });
+        if positive && lo.is_finite() && (hi / lo).log10() > decades {
+            self.log_y()
+        } else {
+            self
+        }
+    }
+
+    /// The same with a dashed vertical line at `x`, named in the legend.
+    pub fn mark_x(mut self, x: f64, label: impl Into<String>) -> Self {
+        self.marks.push(Mark {
+            x,
+            label: label.into(),
+        });
         self
     }
 }
@@ -190,17 +238,14 @@ pub struct Figure {
     pub panels: Vec<Panel>,
 }
 
-/// Colours for successive series (a colour-blind-safe palette, Okabe & Ito 2008).
-const PALETTE: [RGBColor; 8] = [
-    RGBColor(0, 114, 178),
-    RGBColor(213, 94, 0),
-    RGBColor(0, 158, 115),
-    RGBColor(204, 121, 167),
-    RGBColor(230, 159, 0),
-    RGBColor(86, 180, 233),
-    RGBColor(0, 0, 0),
-    RGBColor(240, 228, 66),
-];
+impl Figure {
+    /// The picture's size in CSS pixels: 960 wide, 640 high for one or
+    /// two panels and 300 a panel for more.
+    pub fn size(&self) -> (u32, u32) {
+        let n = u32::try_from(self.panels.len()).unwrap_or(u32::MAX);
+        (SIZE.0, SIZE.1.max(n.saturating_mul(300)).min(3000))
+    }
+}
 
 static FONT: Once = Once::new();
 
@@ -216,26 +261,38 @@ fn register_font() {
     });
 }
 
+/// PNG pixels per CSS pixel: twice, so lines and letters are smooth (the
+/// bitmap backend draws without anti-aliasing).
+pub const PNG_DENSITY: u32 = 2;
+
 /// Draws `figure` into `target`; returns the file's path.
 pub fn render(target: &Target, figure: &Figure) -> Result<String, CliError> {
     register_font();
     let fail = |e: String| CliError::flag(target.flag, format!("could not draw the plot: {e}"));
+    let (w, h) = figure.size();
     let bytes = match target.format {
         Format::Svg => {
             let mut text = String::new();
             {
-                let root = SVGBackend::with_string(&mut text, SIZE).into_drawing_area();
-                draw(&root, figure).map_err(fail)?;
+                let root = SVGBackend::with_string(&mut text, (w, h)).into_drawing_area();
+                draw::figure(&root, figure, Look { density: 1 }).map_err(fail)?;
                 root.present().map_err(|e| fail(e.to_string()))?;
             }
             text.into_bytes()
         }
         Format::Png => {
-            let (w, h) = SIZE;
+            let (w, h) = (w * PNG_DENSITY, h * PNG_DENSITY);
             let mut pixels = vec![0_u8; (w * h * 3) as usize];
             {
-                let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
-                draw(&root, figure).map_err(fail)?;
+                let root = BitMapBackend::with_buffer(&mut pixels, (w, h)).into_drawing_area();
+                draw::figure(
+                    &root,
+                    figure,
+                    Look {
+                        density: PNG_DENSITY,
+                    },
+                )
+                .map_err(fail)?;
                 root.present().map_err(|e| fail(e.to_string()))?;
             }
             let image = image::RgbImage::from_raw(w, h, pixels)
@@ -254,212 +311,6 @@ pub fn render(target: &Target, figure: &Figure) -> Result<String, CliError> {
     file.commit()
 }
 
-/// Draws every panel of `figure`, stacked, on `root`.
-fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, figure: &Figure) -> Result<(), String> {
-    root.fill(&WHITE).map_err(|e| e.to_string())?;
-    let areas = root.split_evenly((figure.panels.len().max(1), 1));
-    for (area, panel) in areas.iter().zip(&figure.panels) {
-        draw_panel(area, panel)?;
-    }
-    Ok(())
-}
-
-/// The data's range with a 5% margin (and a unit width when it is flat).
-fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for v in values.filter(|v| v.is_finite()) {
-        lo = lo.min(v);
-        hi = hi.max(v);
-    }
-    if !lo.is_finite() {
-        return (0.0, 1.0);
-    }
-    if hi - lo <= f64::EPSILON * hi.abs().max(lo.abs()).max(1e-300) {
-        let pad = if lo == 0.0 { 1.0 } else { 0.05 * lo.abs() };
-        return (lo - pad, hi + pad);
-    }
-    let pad = 0.05 * (hi - lo);
-    (lo - pad, hi + pad)
-}
-
-/// The positive data's range with a margin of 5% of its decades (a
-/// factor of ten either way when it is one value).
-fn log_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for v in values.filter(|v| v.is_finite() && *v > 0.0) {
-        lo = lo.min(v);
-        hi = hi.max(v);
-    }
-    if !lo.is_finite() {
-        return (0.1, 10.0);
-    }
-    if hi <= lo {
-        return (lo / 10.0, hi * 10.0);
-    }
-    let pad = (hi / lo).powf(0.05);
-    (lo / pad, hi * pad)
-}
-
-fn draw_panel<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    panel: &Panel,
-) -> Result<(), String> {
-    let points = || panel.series.iter().flat_map(|s| s.points.iter());
-    let mut builder = ChartBuilder::on(area);
-    builder
-        .caption(&panel.title, ("sans-serif", 22))
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(80);
-    if panel.log_log {
-        let (x0, x1) = log_range(points().map(|p| p.0));
-        let (y0, y1) = log_range(points().map(|p| p.1));
-        let mut chart = builder
-            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-            .map_err(|e| e.to_string())?;
-        // On a log axis a label's digits follow its own size.
-        let tick = |v: &f64| tick_label(*v, v.abs());
-        draw_mesh(&mut chart, panel, &tick, &tick)?;
-        let positive = |p: &(f64, f64)| p.0 > 0.0 && p.1 > 0.0;
-        draw_series(&mut chart, panel, positive)
-    } else {
-        let (x0, x1) = range(points().map(|p| p.0));
-        let (y0, y1) = range(points().map(|p| p.1));
-        let mut chart = builder
-            .build_cartesian_2d(x0..x1, y0..y1)
-            .map_err(|e| e.to_string())?;
-        let (x_span, y_span) = (x1 - x0, y1 - y0);
-        let x_tick = move |v: &f64| tick_label(*v, x_span);
-        let y_tick = move |v: &f64| tick_label(*v, y_span);
-        draw_mesh(&mut chart, panel, &x_tick, &y_tick)?;
-        draw_series(&mut chart, panel, |_| true)
-    }
-}
-
-/// The grid, the tick labels (by `x_tick` and `y_tick`) and the axis
-/// titles of `panel` on `chart`.
-fn draw_mesh<'a, DB, X, Y>(
-    chart: &mut ChartContext<'a, DB, Cartesian2d<X, Y>>,
-    panel: &Panel,
-    x_tick: &dyn Fn(&f64) -> String,
-    y_tick: &dyn Fn(&f64) -> String,
-) -> Result<(), String>
-where
-    DB: DrawingBackend + 'a,
-    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
-    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
-{
-    chart
-        .configure_mesh()
-        .x_label_formatter(x_tick)
-        .y_label_formatter(y_tick)
-        .x_desc(&panel.x_label)
-        .y_desc(&panel.y_label)
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 16))
-        .light_line_style(RGBColor(235, 235, 235))
-        .draw()
-        .map_err(|e| e.to_string())
-}
-
-/// The panel's series and legend on `chart`, the points `keep` accepts
-/// (finite ones always).
-fn draw_series<'a, DB, X, Y>(
-    chart: &mut ChartContext<'a, DB, Cartesian2d<X, Y>>,
-    panel: &Panel,
-    keep: impl Fn(&(f64, f64)) -> bool + Copy,
-) -> Result<(), String>
-where
-    DB: DrawingBackend + 'a,
-    X: Ranged<ValueType = f64>,
-    Y: Ranged<ValueType = f64>,
-{
-    let shown = move |p: &(f64, f64)| p.0.is_finite() && p.1.is_finite() && keep(p);
-    for (i, series) in panel.series.iter().enumerate() {
-        let color = PALETTE[series.color.unwrap_or(i) % PALETTE.len()];
-        let drawn = match series.style {
-            Style::Line => chart.draw_series(LineSeries::new(
-                series.points.iter().copied().filter(shown),
-                color.stroke_width(2),
-            )),
-            Style::Dots => chart.draw_series(
-                series
-                    .points
-                    .iter()
-                    .filter(|p| shown(p))
-                    .map(|&p| Circle::new(p, 3, color.filled())),
-            ),
-        }
-        .map_err(|e| e.to_string())?;
-        if !series.label.is_empty() {
-            drawn.label(&series.label).legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3))
-            });
-        }
-    }
-    if panel.series.len() > 1 || panel.series.first().is_some_and(|s| !s.label.is_empty()) {
-        chart
-            .configure_series_labels()
-            .label_font(("sans-serif", 14))
-            .background_style(WHITE.mix(0.85))
-            .border_style(RGBColor(150, 150, 150))
-            .position(panel.legend.clone())
-            .draw()
-            .map_err(|e| e.to_string())?;
-    }
-    Ok(())
-}
-
-/// A tick label with the digits the axis needs and no more: rounded to a
-/// hundredth of the axis's `span` (ticks fall at about a tenth of it), then
-/// trailing zeros dropped (`1400`, `2.5`, never `1400.0`), and never `-0`.
-/// Values of a million and more, or spans below 1e-4, in exponent form
-/// (`1.5e-5`).
-pub fn tick_label(value: f64, span: f64) -> String {
-    if !value.is_finite() {
-        return String::new();
-    }
-    let magnitude = value.abs();
-    let text = if magnitude >= 1e6 || (span > 0.0 && span < 1e-4 && magnitude > 0.0) {
-        // Significant digits down to a hundredth of the span.
-        let digits = if span > 0.0 && magnitude > 0.0 {
-            (magnitude.log10().floor() - (span / 100.0).log10().floor() + 1.0).clamp(1.0, 12.0)
-                as usize
-        } else {
-            3
-        };
-        let t = format!("{:.*e}", digits.saturating_sub(1), value);
-        let (mantissa, exponent) = t.split_once('e').unwrap_or((&t, "0"));
-        let mantissa = if mantissa.contains('.') {
-            mantissa.trim_end_matches('0').trim_end_matches('.')
-        } else {
-            mantissa
-        };
-        format!("{mantissa}e{exponent}")
-    } else {
-        let decimals = if span > 0.0 {
-            (-(span / 100.0).log10()).ceil().clamp(0.0, 12.0) as usize
-        } else {
-            6
-        };
-        let t = format!("{value:.decimals$}");
-        if t.contains('.') {
-            t.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            t
-        }
-    };
-    if text
-        .trim_start_matches('-')
-        .chars()
-        .all(|c| c == '0' || c == '.')
-    {
-        "0".to_string()
-    } else {
-        text
-    }
-}
-
 /// At most `limit` points, evenly thinned, keeping the first and the last.
 pub fn thin(points: Vec<(f64, f64)>, limit: usize) -> Vec<(f64, f64)> {
     if points.len() <= limit || limit < 2 {
@@ -469,23 +320,4 @@ pub fn thin(points: Vec<(f64, f64)>, limit: usize) -> Vec<(f64, f64)> {
     (0..limit)
         .map(|i| points[((i as f64 * step).round() as usize).min(points.len() - 1)])
         .collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::tick_label;
-
-    #[test]
-    fn tick_labels_carry_the_digits_they_need() {
-        assert_eq!(tick_label(1400.0, 1000.0), "1400");
-        assert_eq!(tick_label(2.5, 2.0), "2.5");
-        assert_eq!(tick_label(2.0, 2.0), "2");
-        assert_eq!(tick_label(-0.0, 1.0), "0");
-        assert_eq!(tick_label(-1e-17, 1.0), "0");
-        assert_eq!(tick_label(0.99362, 0.001), "0.99362");
-        assert_eq!(tick_label(1.5e-5, 2e-5), "1.5e-5");
-        assert_eq!(tick_label(2.0e7, 1e7), "2e7");
-        assert_eq!(tick_label(-3.25, 1.0), "-3.25");
-        assert_eq!(tick_label(f64::NAN, 1.0), "");
-    }
 }

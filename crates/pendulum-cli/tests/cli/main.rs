@@ -5,6 +5,7 @@ mod clock;
 mod damped;
 mod design;
 mod extremes;
+mod figures;
 mod fit;
 mod formats;
 mod hardening;

@@ -1,23 +1,153 @@
 //! Every plot kind, drawn to SVG and PNG and checked as a file a viewer can
 //! open; the report, looked at by a real browser.
 
-use crate::util::{pendulum, refuses};
+use crate::util::{decode_png, pendulum, refuses};
 use std::path::{Path, PathBuf};
 
 /// Decodes a PNG: its size and how many pixels differ from the first.
 fn png_summary(bytes: Vec<u8>) -> (u32, u32, usize) {
-    let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
-        .read_info()
-        .unwrap();
-    let mut pixels = vec![0; reader.output_buffer_size()];
-    let info = reader.next_frame(&mut pixels).unwrap();
-    let channels = info.color_type.samples();
-    let first = pixels[..channels].to_vec();
-    let distinct = pixels
-        .chunks(channels)
-        .filter(|p| *p != first.as_slice())
-        .count();
-    (info.width, info.height, distinct)
+    let (width, height, rgb) = decode_png(bytes);
+    let first = rgb[..3].to_vec();
+    let distinct = rgb.chunks(3).filter(|p| *p != first.as_slice()).count();
+    (width, height, distinct)
+}
+
+/// A rectangle in SVG pixels.
+#[derive(Clone, Copy, Debug)]
+struct Rect {
+    x0: f64,
+    y0: f64,
+    x1: f64,
+    y1: f64,
+}
+
+impl Rect {
+    fn contains(&self, x: f64, y: f64, slack: f64) -> bool {
+        x >= self.x0 - slack && x <= self.x1 + slack && y >= self.y0 - slack && y <= self.y1 + slack
+    }
+}
+
+/// What an SVG figure draws, read back from its elements: the plot frames
+/// (from the grid lines: vertical ones span a frame's height, horizontal
+/// ones its width), the legend boxes (the grey-bordered rectangles), the
+/// data markers (circles) and the points of the series' lines (polylines
+/// in the palette's colours).
+struct Drawing {
+    frames: Vec<Rect>,
+    legends: Vec<Rect>,
+    markers: Vec<(f64, f64, f64)>,
+    line_points: Vec<(f64, f64)>,
+}
+
+const SERIES_COLOURS: [&str; 7] = [
+    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#56B4E9", "#E69F00", "#F0E442",
+];
+
+fn drawing(doc: &roxmltree::Document) -> Drawing {
+    let num = |n: &roxmltree::Node, a: &str| -> f64 {
+        n.attribute(a)
+            .unwrap_or_else(|| panic!("{a} missing"))
+            .parse()
+            .unwrap()
+    };
+    let grid: Vec<(f64, f64, f64, f64)> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("line") && n.attribute("stroke") == Some("#EBEBEB"))
+        .map(|n| (num(&n, "x1"), num(&n, "y1"), num(&n, "x2"), num(&n, "y2")))
+        .collect();
+    let mut frames: Vec<Rect> = Vec::new();
+    for &(x1, y1, x2, y2) in grid.iter().filter(|g| g.0 == g.2) {
+        let _ = (x1, x2);
+        let (top, bottom) = (y1.min(y2), y1.max(y2));
+        if frames.iter().any(|f| f.y0 == top && f.y1 == bottom) {
+            continue;
+        }
+        // The horizontal grid lines inside this height give the width.
+        let (left, right) = grid
+            .iter()
+            .filter(|h| h.1 == h.3 && h.1 >= top && h.1 <= bottom)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, r), h| {
+                (l.min(h.0.min(h.2)), r.max(h.0.max(h.2)))
+            });
+        frames.push(Rect {
+            x0: left,
+            y0: top,
+            x1: right,
+            y1: bottom,
+        });
+    }
+    let legends = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("rect") && n.attribute("stroke") == Some("#969696"))
+        .map(|n| {
+            let (x, y) = (num(&n, "x"), num(&n, "y"));
+            Rect {
+                x0: x,
+                y0: y,
+                x1: x + num(&n, "width"),
+                y1: y + num(&n, "height"),
+            }
+        })
+        .collect();
+    let markers = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("circle"))
+        .map(|n| (num(&n, "cx"), num(&n, "cy"), num(&n, "r")))
+        .collect();
+    let line_points = doc
+        .descendants()
+        .filter(|n| {
+            n.has_tag_name("polyline")
+                && SERIES_COLOURS.contains(&n.attribute("stroke").unwrap_or(""))
+        })
+        .flat_map(|n| {
+            n.attribute("points")
+                .unwrap_or("")
+                .split_whitespace()
+                .filter_map(|p| {
+                    let (x, y) = p.split_once(',')?;
+                    Some((x.parse::<f64>().ok()?, y.parse::<f64>().ok()?))
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    Drawing {
+        frames,
+        legends,
+        markers,
+        line_points,
+    }
+}
+
+/// The layout rules every figure keeps: no legend box covers a data
+/// marker; every marker and every point of a line lies inside a frame
+/// (nothing is drawn outside the axes; the legend's own swatches aside).
+fn check_layout(path: &Path, d: &Drawing) {
+    let name = path.display();
+    assert!(!d.frames.is_empty(), "{name}: no plot frame found");
+    for box_ in &d.legends {
+        for &(x, y, r) in &d.markers {
+            assert!(
+                !box_.contains(x, y, r),
+                "{name}: the legend box {box_:?} covers the marker at ({x}, {y})"
+            );
+        }
+    }
+    for &(x, y, _) in &d.markers {
+        assert!(
+            d.frames.iter().any(|f| f.contains(x, y, 1.0)),
+            "{name}: a marker at ({x}, {y}) outside every frame {:?}",
+            d.frames
+        );
+    }
+    for &(x, y) in &d.line_points {
+        let in_legend = d.legends.iter().any(|b| b.contains(x, y, 1.0));
+        assert!(
+            in_legend || d.frames.iter().any(|f| f.contains(x, y, 1.5)),
+            "{name}: a line point at ({x}, {y}) outside every frame {:?}",
+            d.frames
+        );
+    }
 }
 
 /// Checks that `path` is a well-formed SVG or a PNG of the plot size that
@@ -59,6 +189,7 @@ fn check_picture(path: &Path) {
                 .filter(|t| !t.is_empty() && t.parse::<f64>().is_ok())
                 .collect();
             assert!(ticks.len() >= 4, "{}: {ticks:?}", path.display());
+            check_layout(path, &drawing(&doc));
             for t in &ticks {
                 assert!(
                     !t.ends_with(".0") && !t.contains(".0e") && *t != "-0",
@@ -73,8 +204,11 @@ fn check_picture(path: &Path) {
             }
         }
         Some("png") => {
+            // Twice the pixel density of the SVG's 960 × 640 (or taller
+            // for three panels and more).
             let (width, height, distinct) = png_summary(bytes);
-            assert_eq!((width, height), (960, 640));
+            assert_eq!(width, 1920, "{}", path.display());
+            assert!(height >= 1280 && height % 2 == 0, "{}", path.display());
             assert!(distinct > 1000, "{}: a flat picture", path.display());
         }
         other => panic!("unexpected extension {other:?}"),
@@ -119,6 +253,18 @@ fn every_plot_kind_in_both_formats() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let (decay, video, beats) = fit_files(d);
+    let spike = d.join("spike.csv");
+    let mut text = String::from("time_s,angle_deg\n");
+    for i in 0..300 {
+        let x = f64::from(i);
+        let a = if i == 150 {
+            80.0
+        } else {
+            5.0 * (4.43 * 0.02 * x).cos() + 0.1 * (x * 2.1).sin()
+        };
+        text.push_str(&format!("{},{a}\n", 0.02 * x));
+    }
+    std::fs::write(&spike, text).unwrap();
     for ext in ["svg", "png"] {
         let out = |name: &str| d.join(format!("{name}.{ext}"));
         let s = |p: &Path| p.to_str().unwrap().to_string();
@@ -198,6 +344,52 @@ fn every_plot_kind_in_both_formats() {
                 vec![out("beats")],
             ),
         ];
+        let words =
+            |line: &str| -> Vec<String> { line.split_whitespace().map(String::from).collect() };
+        let more: Vec<(&str, Vec<String>)> = vec![
+            // One amplitude: the working amplitude marked, the series'
+            // error on a log axis.
+            ("period-one", words("period --length 1 --amplitude 15deg")),
+            // Dry friction: the envelope through the turning points.
+            (
+                "friction",
+                words("damped --length 1 --amplitude 10deg --q 200 --friction-angle 0.2deg"),
+            ),
+            (
+                "isochronism",
+                words(
+                    "clock --length 0.99362m --q 10000 --escapement recoil --lift-angle 2 \
+                     --drive 20uJ --drive-range 0.5x..2x --steps 5",
+                ),
+            ),
+            (
+                "clock-run",
+                words(
+                    "clock --length 0.99362m --q 10000 --escapement deadbeat --lift-angle 2 \
+                     --drive 20uJ --duration 3day --every 1h",
+                ),
+            ),
+            // A tracked angle with one bad value: clipped, counted.
+            ("spike", vec!["fit".into(), "trajectory".into(), s(&spike)]),
+        ];
+        // A timegrapher's strip from a synthetic recording.
+        let wav = d.join("clock.wav");
+        if !wav.exists() {
+            pendulum()
+                .args(["synth", "ticks", wav.to_str().unwrap(), "--bph", "3600"])
+                .args(["--rate", "12", "--beat-error", "1.5", "--duration", "1min"])
+                .args(["--snr-db", "20", "--seed", "7"])
+                .assert()
+                .success();
+        }
+        let mut more = more;
+        more.push(("listen", vec!["listen".into(), s(&wav)]));
+        let mut runs = runs;
+        for (name, mut args) in more {
+            args.push("--plot".into());
+            args.push(s(&out(name)));
+            runs.push((args, vec![out(name)]));
+        }
         for (args, files) in runs {
             pendulum().args(&args).assert().success();
             for f in files {
@@ -205,21 +397,43 @@ fn every_plot_kind_in_both_formats() {
             }
         }
     }
-    // The Allan deviation spans decades: log-log axes, ticks at powers of
-    // ten (the SVG's numeric labels include at least three, on two axes).
-    let svg = std::fs::read_to_string(d.join("beats.svg")).unwrap();
-    let doc = roxmltree::Document::parse(&svg).unwrap();
-    let decades = doc
-        .descendants()
-        .filter(|n| n.has_tag_name("text"))
-        .filter_map(|n| n.text())
-        .filter_map(|t| t.trim().parse::<f64>().ok())
-        .filter(|v| *v > 0.0 && (v.log10() - v.log10().round()).abs() < 1e-9 && *v != 1.0)
-        .count();
+    // Quantities that span decades on log axes, ticks at powers of ten:
+    // the Allan deviation (log-log) and the power series' error (log y:
+    // 1e-15 to 1e-2, so at least five).
+    for (name, least) in [("beats", 3), ("period-one", 5)] {
+        let svg = std::fs::read_to_string(d.join(format!("{name}.svg"))).unwrap();
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let decades = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .filter_map(|n| n.text())
+            .filter_map(|t| t.trim().parse::<f64>().ok())
+            .filter(|v| *v > 0.0 && (v.log10() - v.log10().round()).abs() < 1e-9 && *v != 1.0)
+            .count();
+        assert!(
+            decades >= least,
+            "{decades} power-of-ten labels in the {name} figure"
+        );
+    }
+    // The working amplitude is marked and named.
+    let period = std::fs::read_to_string(d.join("period-one.svg")).unwrap();
+    assert!(period.contains("working amplitude, 15°"));
+    // The bad value is left off the axes and said to be.
+    let spike = std::fs::read_to_string(d.join("spike.svg")).unwrap();
     assert!(
-        decades >= 3,
-        "{decades} power-of-ten labels in the beats figure"
+        spike.contains("measured (1 off-scale)"),
+        "no off-scale count"
     );
+    // Dry friction: turning points over the whole curve (20 s at a
+    // 2 s period: 21), and the envelope named.
+    let friction = std::fs::read_to_string(d.join("friction.svg")).unwrap();
+    assert!(friction.contains("envelope through the turning points"));
+    let doc = roxmltree::Document::parse(&friction).unwrap();
+    let turns = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("circle"))
+        .count();
+    assert!(turns >= 20, "{turns} turning points drawn");
 }
 
 #[test]

@@ -1,0 +1,230 @@
+//! Axes: linear or logarithmic scales, ranges that follow the data but not
+//! its spikes, and tick labels with the digits they need.
+//!
+//! Ranges are worked out in *axis units*: the value itself on a linear
+//! axis, its base-10 logarithm on a log axis, so one rule serves both.
+
+/// How values map onto an axis.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scale {
+    /// Equal steps for equal differences.
+    Linear,
+    /// Equal steps for equal ratios (a quantity that spans decades);
+    /// values that are not positive cannot be shown.
+    Log,
+}
+
+impl Scale {
+    /// `value` in axis units, or `None` when the axis cannot show it (not
+    /// finite; not positive on a log axis).
+    pub fn to_axis(self, value: f64) -> Option<f64> {
+        match self {
+            Scale::Linear => value.is_finite().then_some(value),
+            Scale::Log => (value.is_finite() && value > 0.0).then(|| value.log10()),
+        }
+    }
+
+    /// The value at `u` axis units.
+    pub fn value_at(self, u: f64) -> f64 {
+        match self {
+            Scale::Linear => u,
+            Scale::Log => 10_f64.powf(u),
+        }
+    }
+}
+
+/// A closed interval in axis units.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Span {
+    /// The lower end.
+    pub lo: f64,
+    /// The upper end.
+    pub hi: f64,
+}
+
+impl Span {
+    /// Its width.
+    pub fn width(self) -> f64 {
+        self.hi - self.lo
+    }
+
+    /// Whether `u` lies in it.
+    pub fn contains(self, u: f64) -> bool {
+        u >= self.lo && u <= self.hi
+    }
+}
+
+/// Data at least this many points long get robust limits.
+const ROBUST_FROM: usize = 20;
+
+/// The axis span for `models` (drawn whole: computed curves have no bad
+/// values) and `data` (measured values, where a spike is more likely a
+/// bad value than the truth), in axis units, with a margin of 5% of the
+/// width either side.
+///
+/// The data's limits are robust: of n ≥ 20 values, the extremes of those
+/// within the 1st and 99th percentiles (by rank) widened by the width
+/// between them. A spike beyond is clipped to the frame and counted as
+/// off-scale; a tail that continues the bulk is kept.
+/// A flat range gets a width of 10% of its value (a unit when it is zero;
+/// two decades on a log axis).
+pub fn span(scale: Scale, models: &[f64], data: &[f64]) -> Span {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &u in models {
+        lo = lo.min(u);
+        hi = hi.max(u);
+    }
+    if let Some((a, b)) = robust_limits(data) {
+        lo = lo.min(a);
+        hi = hi.max(b);
+    }
+    if !lo.is_finite() || !hi.is_finite() {
+        return match scale {
+            Scale::Linear => Span { lo: 0.0, hi: 1.0 },
+            Scale::Log => Span { lo: -1.0, hi: 1.0 },
+        };
+    }
+    let width = hi - lo;
+    let flat = width <= 1e-12 * hi.abs().max(lo.abs()).max(f64::MIN_POSITIVE);
+    if flat {
+        let pad = match scale {
+            Scale::Log => 1.0,
+            Scale::Linear if lo == 0.0 => 1.0,
+            Scale::Linear => 0.05 * lo.abs(),
+        };
+        return Span {
+            lo: lo - pad,
+            hi: hi + pad,
+        };
+    }
+    Span {
+        lo: lo - 0.05 * width,
+        hi: hi + 0.05 * width,
+    }
+}
+
+/// The robust limits of `values` (see [`span`]); `None` when empty.
+fn robust_limits(values: &[f64]) -> Option<(f64, f64)> {
+    if values.is_empty() {
+        return None;
+    }
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len();
+    let (min, max) = (sorted[0], sorted[n - 1]);
+    if n < ROBUST_FROM {
+        return Some((min, max));
+    }
+    let k = n / 100;
+    let (a, b) = (sorted[k], sorted[n - 1 - k]);
+    let w = b - a;
+    // The extreme values kept: the frame ends at the data, not at the
+    // fence.
+    let lo = sorted.iter().copied().find(|&v| v >= a - w).unwrap_or(a);
+    let hi = sorted
+        .iter()
+        .rev()
+        .copied()
+        .find(|&v| v <= b + w)
+        .unwrap_or(b);
+    Some((lo, hi))
+}
+
+/// A tick label with the digits the axis needs and no more: rounded to a
+/// hundredth of the axis's `span` (ticks fall at about a tenth of it), then
+/// trailing zeros dropped (`1400`, `2.5`, never `1400.0`), and never `-0`.
+/// Values of a million and more, or spans below 1e-4, in exponent form
+/// (`1.5e-5`).
+pub fn tick_label(value: f64, span: f64) -> String {
+    if !value.is_finite() {
+        return String::new();
+    }
+    let magnitude = value.abs();
+    let text = if magnitude >= 1e6 || (span > 0.0 && span < 1e-4 && magnitude > 0.0) {
+        // Significant digits down to a hundredth of the span.
+        let digits = if span > 0.0 && magnitude > 0.0 {
+            (magnitude.log10().floor() - (span / 100.0).log10().floor() + 1.0).clamp(1.0, 12.0)
+                as usize
+        } else {
+            3
+        };
+        let t = format!("{:.*e}", digits.saturating_sub(1), value);
+        let (mantissa, exponent) = t.split_once('e').unwrap_or((&t, "0"));
+        let mantissa = if mantissa.contains('.') {
+            mantissa.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            mantissa
+        };
+        format!("{mantissa}e{exponent}")
+    } else {
+        let decimals = if span > 0.0 {
+            (-(span / 100.0).log10()).ceil().clamp(0.0, 12.0) as usize
+        } else {
+            6
+        };
+        let t = format!("{value:.decimals$}");
+        if t.contains('.') {
+            t.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            t
+        }
+    };
+    if text
+        .trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
+        "0".to_string()
+    } else {
+        text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tick_labels_carry_the_digits_they_need() {
+        assert_eq!(tick_label(1400.0, 1000.0), "1400");
+        assert_eq!(tick_label(2.5, 2.0), "2.5");
+        assert_eq!(tick_label(2.0, 2.0), "2");
+        assert_eq!(tick_label(-0.0, 1.0), "0");
+        assert_eq!(tick_label(-1e-17, 1.0), "0");
+        assert_eq!(tick_label(0.99362, 0.001), "0.99362");
+        assert_eq!(tick_label(1.5e-5, 2e-5), "1.5e-5");
+        assert_eq!(tick_label(2.0e7, 1e7), "2e7");
+        assert_eq!(tick_label(-3.25, 1.0), "-3.25");
+        assert_eq!(tick_label(f64::NAN, 1.0), "");
+    }
+
+    #[test]
+    fn a_spike_in_the_data_is_left_out_of_the_range_but_a_tail_is_kept() {
+        // 200 values near 1 and one bad value of 1e6.
+        let mut data: Vec<f64> = (0..200).map(|i| 1.0 + 1e-3 * f64::from(i % 7)).collect();
+        data.push(1e6);
+        let s = span(Scale::Linear, &[], &data);
+        assert!(s.hi < 1.1 && s.lo > 0.9, "{s:?}");
+        // An exponential decay's first values are its largest: all kept.
+        let decay: Vec<f64> = (0..200)
+            .map(|i| 3.0 * (-0.01 * f64::from(i)).exp())
+            .collect();
+        let s = span(Scale::Linear, &[], &decay);
+        assert!(s.hi >= 3.0 && s.lo <= decay[199], "{s:?}");
+        // Models are drawn whole.
+        let s = span(Scale::Linear, &[0.0, 1e6], &data);
+        assert!(s.hi >= 1e6);
+    }
+
+    #[test]
+    fn flat_and_empty_ranges_get_a_width() {
+        let s = span(Scale::Linear, &[2.0, 2.0], &[]);
+        assert!(s.lo < 2.0 && s.hi > 2.0);
+        let s = span(Scale::Linear, &[0.0], &[]);
+        assert_eq!((s.lo, s.hi), (-1.0, 1.0));
+        let s = span(Scale::Log, &[], &[]);
+        assert!(s.width() > 0.0);
+        assert_eq!(Scale::Log.to_axis(-1.0), None);
+        assert_eq!(Scale::Log.to_axis(100.0), Some(2.0));
+    }
+}

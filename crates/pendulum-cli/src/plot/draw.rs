@@ -1,0 +1,503 @@
+//! A [`Figure`] onto a plotters drawing area: panels stacked, each with
+//! its axes, its series clipped to the frame and its legend placed where
+//! it covers nothing.
+
+use super::axis::{span, tick_label, Scale, Span};
+use super::clip::{self, Point};
+use super::legend::{self, Drawn, Place, Rect};
+use super::style::{Look, GRID, LEGEND_BORDER, MARK, PALETTE};
+use super::{Figure, Panel, Style};
+use plotters::coord::ranged1d::ValueFormatter;
+use plotters::coord::Shift;
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+type Failure = String;
+
+fn fail<E: std::fmt::Display>(e: E) -> Failure {
+    e.to_string()
+}
+
+/// Draws every panel of `figure`, stacked, on `root`.
+pub fn figure<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    figure: &Figure,
+    look: Look,
+) -> Result<(), Failure> {
+    root.fill(&WHITE).map_err(fail)?;
+    let areas = root.split_evenly((figure.panels.len().max(1), 1));
+    // A legend that goes beside its plot narrows every panel alike, so
+    // that stacked panels keep one horizontal axis.
+    let mut reserve = 0;
+    for (area, panel) in areas.iter().zip(&figure.panels) {
+        reserve = reserve.max(draw_panel(area, panel, look, 0, false)?);
+    }
+    for (area, panel) in areas.iter().zip(&figure.panels) {
+        draw_panel(area, panel, look, reserve, true)?;
+    }
+    Ok(())
+}
+
+/// One series in axis units, ready to draw.
+struct Prepared {
+    /// Line pieces inside the frame, or markers inside it.
+    pieces: Vec<Vec<Point>>,
+    /// The style.
+    style: Style,
+    /// Palette colour.
+    color: RGBColor,
+    /// Legend text with the count of points off-scale, if any.
+    label: String,
+}
+
+/// One legend entry: its swatch and text.
+struct Entry {
+    style: Option<Style>,
+    color: RGBColor,
+    text: String,
+}
+
+/// The axis spans of `panel` (before any room is made for the legend).
+fn spans(panel: &Panel) -> (Span, Span) {
+    let (mut mx, mut my, mut dx, mut dy) = (vec![], vec![], vec![], vec![]);
+    for s in &panel.series {
+        let (xs, ys) = match s.style {
+            Style::Line => (&mut mx, &mut my),
+            Style::Dots => (&mut dx, &mut dy),
+        };
+        for &(x, y) in &s.points {
+            if let (Some(u), Some(v)) = (panel.x_scale.to_axis(x), panel.y_scale.to_axis(y)) {
+                xs.push(u);
+                ys.push(v);
+            }
+        }
+    }
+    mx.extend(
+        panel
+            .marks
+            .iter()
+            .filter_map(|m| panel.x_scale.to_axis(m.x)),
+    );
+    (span(panel.x_scale, &mx, &dx), span(panel.y_scale, &my, &dy))
+}
+
+/// The series of `panel` clipped to `x` × `y` (axis units).
+fn prepare(panel: &Panel, x: Span, y: Span) -> Vec<Prepared> {
+    panel
+        .series
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let color = PALETTE[s.color.unwrap_or(i) % PALETTE.len()];
+            let axis: Vec<Option<Point>> = s
+                .points
+                .iter()
+                .map(|&(a, b)| Some((panel.x_scale.to_axis(a)?, panel.y_scale.to_axis(b)?)))
+                .collect();
+            let (pieces, off) = match s.style {
+                Style::Line => (clip::polyline(&axis, x, y), 0),
+                Style::Dots => {
+                    let inside: Vec<Point> = axis
+                        .iter()
+                        .flatten()
+                        .copied()
+                        .filter(|p| x.contains(p.0) && y.contains(p.1))
+                        .collect();
+                    // Off-scale: outside the frame, or not showable (a
+                    // value that is not positive on a log axis).
+                    let off = s.points.len() - inside.len();
+                    (vec![inside], off)
+                }
+            };
+            let label = match (s.label.is_empty(), off) {
+                (_, 0) => s.label.clone(),
+                (true, n) => format!("{n} points off-scale"),
+                (false, n) => format!("{} ({n} off-scale)", s.label),
+            };
+            Prepared {
+                pieces,
+                style: s.style,
+                color,
+                label,
+            }
+        })
+        .collect()
+}
+
+/// Maps axis units to device pixels inside `plot`.
+#[derive(Clone, Copy)]
+struct Map {
+    plot: Rect,
+    x: Span,
+    y: Span,
+}
+
+impl Map {
+    fn px(&self, p: Point) -> (f64, f64) {
+        (
+            self.plot.x0 + (p.0 - self.x.lo) / self.x.width() * (self.plot.x1 - self.plot.x0),
+            self.plot.y1 - (p.1 - self.y.lo) / self.y.width() * self.plot.height(),
+        )
+    }
+}
+
+/// Everything drawn in `plot`, in device pixels, for placing the legend.
+fn drawn(prepared: &[Prepared], panel: &Panel, map: Map, look: Look) -> Drawn {
+    let mut d = Drawn::default();
+    let step = f64::from(look.px(3));
+    for p in prepared {
+        match p.style {
+            Style::Line => {
+                for piece in &p.pieces {
+                    for w in piece.windows(2) {
+                        d.trace(map.px(w[0]), map.px(w[1]), step);
+                    }
+                }
+            }
+            Style::Dots => {
+                let r = f64::from(look.marker_radius(p.pieces[0].len()));
+                d.markers.extend(p.pieces[0].iter().map(|&q| {
+                    let (x, y) = map.px(q);
+                    (x, y, r)
+                }));
+            }
+        }
+    }
+    for m in &panel.marks {
+        if let Some(u) = panel.x_scale.to_axis(m.x) {
+            d.trace(map.px((u, map.y.lo)), map.px((u, map.y.hi)), step);
+        }
+    }
+    d
+}
+
+/// Lays out one panel with `reserve` pixels kept free on the right, and
+/// draws it when `paint`; returns the width its legend needs beside the
+/// plot (0 when it goes inside).
+fn draw_panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    panel: &Panel,
+    look: Look,
+    reserve: i32,
+    paint: bool,
+) -> Result<i32, Failure> {
+    let (x, y) = spans(panel);
+    let prepared = prepare(panel, x, y);
+    let m = look.margin() as i32;
+    let inner = area.margin(m, m, m, m);
+    let title_style: TextStyle = ("sans-serif", look.title_font()).into();
+    let (_, text_h) = inner
+        .estimate_text_size(&panel.title, &title_style)
+        .map_err(fail)?;
+    let title_pad = (text_h / 2).min(look.px(5));
+    let title_h = text_h + 2 * title_pad;
+    let (title_area, titled) = inner.split_vertically(title_h);
+
+    // The legend's entries and size.
+    let font: TextStyle = ("sans-serif", look.label_font()).into();
+    let mut entries: Vec<Entry> = prepared
+        .iter()
+        .filter(|p| !p.label.is_empty())
+        .map(|p| Entry {
+            style: Some(p.style),
+            color: p.color,
+            text: p.label.clone(),
+        })
+        .collect();
+    entries.extend(
+        panel
+            .marks
+            .iter()
+            .filter(|m| !m.label.is_empty())
+            .map(|m| Entry {
+                style: None,
+                color: MARK,
+                text: m.label.clone(),
+            }),
+    );
+    let pad = f64::from(look.px(6));
+    let swatch = f64::from(look.px(24));
+    let row = f64::from(look.label_font()) * 1.35;
+    let mut text_width = 0.0_f64;
+    for e in &entries {
+        let (w, _) = titled.estimate_text_size(&e.text, &font).map_err(fail)?;
+        text_width = text_width.max(f64::from(w));
+    }
+    let size = (
+        pad + swatch + pad + text_width + pad,
+        2.0 * pad + row * entries.len() as f64,
+    );
+    let inset = f64::from(look.px(8));
+    let gap = f64::from(look.px(3));
+
+    // The plot rectangle as ChartBuilder will lay it out, in the titled
+    // area's own pixels.
+    let (w, h) = titled.dim_in_pixel();
+    let predicted = Rect {
+        x0: f64::from(look.y_label_area()),
+        y0: 0.0,
+        x1: f64::from(w) - f64::from(reserve),
+        y1: f64::from(h) - f64::from(look.x_label_area()),
+    };
+    let place = if entries.is_empty() {
+        Place::Inside((1.0, 0.0))
+    } else {
+        let map = Map {
+            plot: predicted,
+            x,
+            y,
+        };
+        legend::place(
+            predicted,
+            size,
+            inset,
+            gap,
+            &drawn(&prepared, panel, map, look),
+        )
+    };
+    // Room above the data: the span grows so that the data end `need`
+    // pixels below the top.
+    let y_drawn = match place {
+        Place::Above => {
+            let need = size.1 + 2.0 * inset;
+            let height = predicted.height();
+            Span {
+                lo: y.lo,
+                hi: (y.hi * height - y.lo * need) / (height - need),
+            }
+        }
+        _ => y,
+    };
+    let beside = match place {
+        Place::Beside => (size.0 + 2.0 * inset).ceil() as i32,
+        _ => 0,
+    };
+    if !paint {
+        return Ok(beside);
+    }
+    title_area
+        .draw_text(
+            &panel.title,
+            &title_style.pos(Pos::new(HPos::Center, VPos::Top)),
+            (
+                // Centred over the plot, not over the legend beside it.
+                (look.y_label_area() as i32 + w as i32 - beside.max(reserve)) / 2,
+                i32::try_from(title_pad).unwrap_or(0),
+            ),
+        )
+        .map_err(fail)?;
+    let chart_area = titled.margin(0, 0, 0, beside.max(reserve));
+    let mut builder = ChartBuilder::on(&chart_area);
+    builder
+        .x_label_area_size(look.x_label_area())
+        .y_label_area_size(look.y_label_area());
+    let (x0, x1) = (panel.x_scale.value_at(x.lo), panel.x_scale.value_at(x.hi));
+    let (y0, y1) = (
+        panel.y_scale.value_at(y_drawn.lo),
+        panel.y_scale.value_at(y_drawn.hi),
+    );
+    let lines = Lines {
+        prepared: &prepared,
+        panel,
+        y: y_drawn,
+        look,
+    };
+    let plot = match (panel.x_scale, panel.y_scale) {
+        (Scale::Linear, Scale::Linear) => {
+            let mut c = builder.build_cartesian_2d(x0..x1, y0..y1).map_err(fail)?;
+            lines.draw(&mut c)?
+        }
+        (Scale::Log, Scale::Linear) => {
+            let mut c = builder
+                .build_cartesian_2d((x0..x1).log_scale(), y0..y1)
+                .map_err(fail)?;
+            lines.draw(&mut c)?
+        }
+        (Scale::Linear, Scale::Log) => {
+            let mut c = builder
+                .build_cartesian_2d(x0..x1, (y0..y1).log_scale())
+                .map_err(fail)?;
+            lines.draw(&mut c)?
+        }
+        (Scale::Log, Scale::Log) => {
+            let mut c = builder
+                .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+                .map_err(fail)?;
+            lines.draw(&mut c)?
+        }
+    };
+    if entries.is_empty() {
+        return Ok(beside);
+    }
+    // The plot's pixels relative to `area`.
+    let (bx, by) = area.get_base_pixel();
+    let plot = Rect {
+        x0: f64::from(plot.0.start - bx),
+        y0: f64::from(plot.1.start - by),
+        x1: f64::from(plot.0.end - bx),
+        y1: f64::from(plot.1.end - by),
+    };
+    let at = match place {
+        Place::Inside(spot) => legend::box_at(plot, size, inset, spot),
+        Place::Above => legend::box_at(plot, size, inset, (1.0, 0.0)),
+        Place::Beside => Rect {
+            x0: plot.x1 + inset,
+            y0: plot.y0,
+            x1: plot.x1 + inset + size.0,
+            y1: plot.y0 + size.1,
+        },
+    };
+    draw_legend(area, at, &entries, look, pad, swatch, row)?;
+    Ok(beside)
+}
+
+/// The series, the marks and the axes of one panel.
+struct Lines<'p> {
+    prepared: &'p [Prepared],
+    panel: &'p Panel,
+    /// The vertical span drawn (axis units), for the marks.
+    y: Span,
+    look: Look,
+}
+
+impl Lines<'_> {
+    /// Draws on `chart`; returns the plot's pixel range.
+    fn draw<'a, DB, X, Y>(
+        &self,
+        chart: &mut ChartContext<'a, DB, Cartesian2d<X, Y>>,
+    ) -> Result<(std::ops::Range<i32>, std::ops::Range<i32>), Failure>
+    where
+        DB: DrawingBackend + 'a,
+        X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+        Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    {
+        let (panel, look) = (self.panel, self.look);
+        let x_range = chart.x_range();
+        let y_range = chart.y_range();
+        let (x_span, y_span) = (x_range.end - x_range.start, y_range.end - y_range.start);
+        let x_tick = move |v: &f64| match panel.x_scale {
+            Scale::Linear => tick_label(*v, x_span),
+            Scale::Log => tick_label(*v, v.abs()),
+        };
+        let y_tick = move |v: &f64| match panel.y_scale {
+            Scale::Linear => tick_label(*v, y_span),
+            Scale::Log => tick_label(*v, v.abs()),
+        };
+        chart
+            .configure_mesh()
+            .x_label_formatter(&x_tick)
+            .y_label_formatter(&y_tick)
+            .x_desc(&panel.x_label)
+            .y_desc(&panel.y_label)
+            .label_style(("sans-serif", look.label_font()))
+            .axis_desc_style(("sans-serif", look.axis_font()))
+            .axis_style(BLACK.stroke_width(look.px(1)))
+            .bold_line_style(GRID.stroke_width(look.px(1)))
+            .light_line_style(TRANSPARENT)
+            .set_all_tick_mark_size(look.px(5))
+            .draw()
+            .map_err(fail)?;
+        let (xs, ys) = (panel.x_scale, panel.y_scale);
+        let value = move |p: &Point| (xs.value_at(p.0), ys.value_at(p.1));
+        for m in &panel.marks {
+            if xs.to_axis(m.x).is_some() {
+                chart
+                    .draw_series(std::iter::once(DashedPathElement::new(
+                        vec![(m.x, ys.value_at(self.y.lo)), (m.x, ys.value_at(self.y.hi))],
+                        look.px(6),
+                        look.px(4),
+                        MARK.stroke_width(look.px(1)),
+                    )))
+                    .map_err(fail)?;
+            }
+        }
+        // Data first, models drawn over them: a law must stay visible
+        // through a dense cloud of measurements.
+        for p in self.prepared.iter().filter(|p| p.style == Style::Dots) {
+            let r = look.marker_radius(p.pieces[0].len());
+            chart
+                .draw_series(
+                    p.pieces[0]
+                        .iter()
+                        .map(|q| Circle::new(value(q), r, p.color.filled())),
+                )
+                .map_err(fail)?;
+        }
+        for p in self.prepared.iter().filter(|p| p.style == Style::Line) {
+            for piece in &p.pieces {
+                chart
+                    .draw_series(LineSeries::new(
+                        piece.iter().map(value),
+                        p.color.stroke_width(look.line_width()),
+                    ))
+                    .map_err(fail)?;
+            }
+        }
+        Ok(chart.plotting_area().get_pixel_range())
+    }
+}
+
+/// The legend box at `at` (pixels of `area`): a white box with a grey
+/// border, a swatch and a text per entry.
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    at: Rect,
+    entries: &[Entry],
+    look: Look,
+    pad: f64,
+    swatch: f64,
+    row: f64,
+) -> Result<(), Failure> {
+    let corner = |x: f64, y: f64| (x.round() as i32, y.round() as i32);
+    let (a, b) = (corner(at.x0, at.y0), corner(at.x1, at.y1));
+    area.draw(&Rectangle::new([a, b], WHITE.mix(0.9).filled()))
+        .map_err(fail)?;
+    area.draw(&Rectangle::new(
+        [a, b],
+        LEGEND_BORDER.stroke_width(look.px(1)),
+    ))
+    .map_err(fail)?;
+    let font = ("sans-serif", look.label_font())
+        .into_font()
+        .color(&BLACK)
+        .pos(Pos::new(HPos::Left, VPos::Center));
+    for (i, e) in entries.iter().enumerate() {
+        let y = at.y0 + pad + row * (i as f64 + 0.5);
+        let x = at.x0 + pad;
+        let (l, r) = (corner(x, y), corner(x + swatch, y));
+        match e.style {
+            Some(Style::Line) => area
+                .draw(&PathElement::new(
+                    vec![l, r],
+                    e.color.stroke_width(look.line_width() + look.px(1)),
+                ))
+                .map_err(fail)?,
+            Some(Style::Dots) => {
+                // A marker drawn as a polygon, so that the only circles
+                // in a picture are data.
+                let c = (x + swatch / 2.0, y);
+                let radius = f64::from(look.px(3));
+                let ring: Vec<(i32, i32)> = (0..16)
+                    .map(|k| {
+                        let t = std::f64::consts::TAU * f64::from(k) / 16.0;
+                        corner(c.0 + radius * t.cos(), c.1 + radius * t.sin())
+                    })
+                    .collect();
+                area.draw(&Polygon::new(ring, e.color.filled()))
+                    .map_err(fail)?;
+            }
+            None => area
+                .draw(&DashedPathElement::new(
+                    vec![l, r],
+                    look.px(6),
+                    look.px(4),
+                    e.color.stroke_width(look.px(1)),
+                ))
+                .map_err(fail)?,
+        }
+        area.draw_text(&e.text, &font, corner(x + swatch + pad, y))
+            .map_err(fail)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,86 @@
+//! The README's figures (docs/*.png, listed in tools/figures/figures.txt):
+//! drawn again by the binary and compared with the committed files, by
+//! size and by the share of pixels that differ, not byte for byte (a PNG
+//! encoder may pack the same picture differently).
+
+use crate::util::{decode_png, pendulum};
+use std::path::{Path, PathBuf};
+
+/// A pixel differs when a channel moves by more than this (of 255).
+const CHANNEL_TOLERANCE: u8 = 32;
+/// The share of differing pixels a regenerated figure may show.
+const PIXEL_SHARE: f64 = 0.002;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// The share of pixels that differ between two pictures of one size.
+fn differing_share(a: &[u8], b: &[u8]) -> f64 {
+    let differ = a
+        .chunks(3)
+        .zip(b.chunks(3))
+        .filter(|(p, q)| {
+            p.iter()
+                .zip(*q)
+                .any(|(x, y)| x.abs_diff(*y) > CHANNEL_TOLERANCE)
+        })
+        .count();
+    differ as f64 / (a.len() / 3) as f64
+}
+
+/// The figures: (file name, arguments).
+fn figures() -> Vec<(String, Vec<String>)> {
+    let list = std::fs::read_to_string(root().join("tools/figures/figures.txt")).unwrap();
+    list.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .map(|l| {
+            let mut words = l.split_whitespace().map(String::from);
+            let name = words.next().unwrap();
+            (name, words.collect())
+        })
+        .collect()
+}
+
+#[test]
+fn the_readme_figures_are_what_the_binary_draws() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let figures = figures();
+    assert!(figures.len() >= 2, "the README shows at least two figures");
+    let dir = tempfile::tempdir().unwrap();
+    let mut drawn = Vec::new();
+    for (name, args) in &figures {
+        assert!(
+            readme.contains(&format!("docs/{name}")),
+            "README.md does not show docs/{name}"
+        );
+        let fresh = dir.path().join(name);
+        pendulum()
+            .args(args)
+            .arg("--plot")
+            .arg(&fresh)
+            .assert()
+            .success();
+        let (w, h, new) = decode_png(std::fs::read(&fresh).unwrap());
+        let committed = root().join("docs").join(name);
+        let (cw, ch, old) =
+            decode_png(std::fs::read(&committed).unwrap_or_else(|e| panic!("docs/{name}: {e}")));
+        assert_eq!(
+            (w, h),
+            (cw, ch),
+            "docs/{name}: size changed; run bash tools/figures/make_figures.sh"
+        );
+        let share = differing_share(&new, &old);
+        assert!(
+            share <= PIXEL_SHARE,
+            "docs/{name}: {:.3}% of the pixels differ from the figure drawn now; \
+             run bash tools/figures/make_figures.sh and commit docs/",
+            100.0 * share
+        );
+        drawn.push(new);
+    }
+    // The measure can fail: two different figures differ far beyond it.
+    let between = differing_share(&drawn[0], &drawn[1]);
+    assert!(between > 10.0 * PIXEL_SHARE, "{between}");
+}

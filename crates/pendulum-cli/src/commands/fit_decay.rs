@@ -432,6 +432,9 @@ fn figure(time: &[f64], amplitude: &[f64], fits: &[DecayFit], best: Option<Decay
                 let t = t0 + (t1 - t0) * f64::from(i) / 300.0;
                 (t, f.model.amplitude(t, &f.fit.parameters).to_degrees())
             })
+            // A law whose amplitude reaches zero has stopped the
+            // pendulum: its curve ends there.
+            .filter(|p: &(f64, f64)| p.1 >= 0.0)
             .collect();
         let label = if Some(f.model) == best {
             format!("{} (preferred)", f.model.name())
@@ -445,7 +448,8 @@ fn figure(time: &[f64], amplitude: &[f64], fits: &[DecayFit], best: Option<Decay
         "time (s)",
         "amplitude (°)",
         curves,
-    )];
+    )
+    .log_y_beyond(1.5)];
     if let Some(f) = fits.iter().find(|f| Some(f.model) == best) {
         let residuals = time
             .iter()

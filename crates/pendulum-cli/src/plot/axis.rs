@@ -130,6 +130,61 @@ fn robust_limits(values: &[f64]) -> Option<(f64, f64)> {
     Some((lo, hi))
 }
 
+/// The ticks of a log axis spanning `span` (axis units, so decades): 1, 2
+/// and 5 times the powers of ten over up to three decades, the powers of
+/// ten alone up to ten, every n-th power beyond; and within less than a
+/// decade, evenly spaced round values (at least two ticks always).
+pub fn log_ticks(span: Span) -> Vec<f64> {
+    let decades = span.width();
+    let (first, last) = (span.lo.floor() as i32, span.hi.ceil() as i32);
+    let mantissas: &[f64] = if decades <= 1.0 {
+        &[1.0, 1.5, 2.0, 3.0, 5.0, 7.0]
+    } else if decades <= 3.0 {
+        &[1.0, 2.0, 5.0]
+    } else {
+        &[1.0]
+    };
+    let every = (decades / 10.0).ceil().max(1.0) as i32;
+    let (lo, hi) = (10_f64.powf(span.lo), 10_f64.powf(span.hi));
+    let ticks: Vec<f64> = (first..=last)
+        .filter(|k| k.rem_euclid(every) == 0)
+        .flat_map(|k| mantissas.iter().map(move |m| m * 10_f64.powi(k)))
+        .filter(|v| *v >= lo * (1.0 - 1e-12) && *v <= hi * (1.0 + 1e-12))
+        .collect();
+    if ticks.len() >= 2 {
+        return ticks;
+    }
+    // Less than a decade: round steps of 1, 2 or 5 times a power of ten.
+    let raw = (hi - lo) / 5.0;
+    let power = 10_f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|m| m * power)
+        .find(|s| *s >= raw)
+        .unwrap_or(10.0 * power);
+    let start = (lo / step).ceil() as i64;
+    let end = (hi / step).floor() as i64;
+    (start..=end).map(|i| i as f64 * step).collect()
+}
+
+/// A log axis's tick label (ticks are 1, 1.5, 2, 3, 5 or 7 times a power
+/// of ten, or round steps): three significant digits at most, trailing
+/// zeros dropped; in exponent form (`1e-4`, `2e5`) when `exponent`, so
+/// one axis never mixes `0.0001` with `1e-6`.
+pub fn log_tick_label(value: f64, exponent: bool) -> String {
+    if !value.is_finite() {
+        return String::new();
+    }
+    if exponent {
+        let t = format!("{value:.2e}");
+        let (mantissa, power) = t.split_once('e').unwrap_or((&t, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        format!("{mantissa}e{power}")
+    } else {
+        tick_label(value, value.abs())
+    }
+}
+
 /// A tick label with the digits the axis needs and no more: rounded to a
 /// hundredth of the axis's `span` (ticks fall at about a tenth of it), then
 /// trailing zeros dropped (`1400`, `2.5`, never `1400.0`), and never `-0`.
@@ -214,6 +269,43 @@ mod tests {
         // Models are drawn whole.
         let s = span(Scale::Linear, &[0.0, 1e6], &data);
         assert!(s.hi >= 1e6);
+    }
+
+    #[test]
+    fn log_tick_labels_take_one_form() {
+        assert_eq!(log_tick_label(1e-4, true), "1e-4");
+        assert_eq!(log_tick_label(3.0 * 1e-5, true), "3e-5");
+        assert_eq!(log_tick_label(1.5e-3, true), "1.5e-3");
+        assert_eq!(log_tick_label(0.01, true), "1e-2");
+        assert_eq!(log_tick_label(20.0, false), "20");
+        assert_eq!(log_tick_label(0.5, false), "0.5");
+    }
+
+    #[test]
+    fn log_ticks_are_round_and_never_repeat() {
+        let t = log_ticks(Span { lo: 0.0, hi: 1.85 });
+        assert_eq!(t, vec![1.0, 2.0, 5.0, 10.0, 20.0, 50.0]);
+        // 13 decades: every second power of ten.
+        let t = log_ticks(Span {
+            lo: -15.2,
+            hi: -1.9,
+        });
+        let exponents: Vec<i32> = t.iter().map(|v| v.log10().round() as i32).collect();
+        assert_eq!(exponents, vec![-14, -12, -10, -8, -6, -4, -2]);
+        // 8 decades: every one.
+        let t = log_ticks(Span { lo: -9.5, hi: -1.9 });
+        assert_eq!(t.len(), 8, "{t:?}");
+        let t = log_ticks(Span {
+            lo: -30.0,
+            hi: 30.0,
+        });
+        assert!(t.len() <= 11 && t.len() >= 5, "{t:?}");
+        // Within a decade: round linear steps.
+        let t = log_ticks(Span { lo: 0.1, hi: 0.25 });
+        assert!(t.len() >= 2, "{t:?}");
+        for w in t.windows(2) {
+            assert!(w[1] > w[0]);
+        }
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! its axes, its series clipped to the frame and its legend placed where
 //! it covers nothing.
 
-use super::axis::{span, tick_label, Scale, Span};
+use super::axis::{log_tick_label, log_ticks, span, tick_label, Scale, Span};
 use super::clip::{self, Point};
 use super::legend::{self, Drawn, Place, Rect};
 use super::style::{Look, GRID, LEGEND_BORDER, MARK, PALETTE};
@@ -310,19 +310,25 @@ fn draw_panel<DB: DrawingBackend>(
         }
         (Scale::Log, Scale::Linear) => {
             let mut c = builder
-                .build_cartesian_2d((x0..x1).log_scale(), y0..y1)
+                .build_cartesian_2d((x0..x1).log_scale().with_key_points(log_ticks(x)), y0..y1)
                 .map_err(fail)?;
             lines.draw(&mut c)?
         }
         (Scale::Linear, Scale::Log) => {
             let mut c = builder
-                .build_cartesian_2d(x0..x1, (y0..y1).log_scale())
+                .build_cartesian_2d(
+                    x0..x1,
+                    (y0..y1).log_scale().with_key_points(log_ticks(y_drawn)),
+                )
                 .map_err(fail)?;
             lines.draw(&mut c)?
         }
         (Scale::Log, Scale::Log) => {
             let mut c = builder
-                .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+                .build_cartesian_2d(
+                    (x0..x1).log_scale().with_key_points(log_ticks(x)),
+                    (y0..y1).log_scale().with_key_points(log_ticks(y_drawn)),
+                )
                 .map_err(fail)?;
             lines.draw(&mut c)?
         }
@@ -376,13 +382,17 @@ impl Lines<'_> {
         let x_range = chart.x_range();
         let y_range = chart.y_range();
         let (x_span, y_span) = (x_range.end - x_range.start, y_range.end - y_range.start);
+        // On a log axis every label takes one form: exponents when the
+        // axis reaches below 1e-3 or to 1e5, plain numbers otherwise.
+        let x_exp = x_range.start < 1e-3 || x_range.end >= 1e5;
+        let y_exp = y_range.start < 1e-3 || y_range.end >= 1e5;
         let x_tick = move |v: &f64| match panel.x_scale {
             Scale::Linear => tick_label(*v, x_span),
-            Scale::Log => tick_label(*v, v.abs()),
+            Scale::Log => log_tick_label(*v, x_exp),
         };
         let y_tick = move |v: &f64| match panel.y_scale {
             Scale::Linear => tick_label(*v, y_span),
-            Scale::Log => tick_label(*v, v.abs()),
+            Scale::Log => log_tick_label(*v, y_exp),
         };
         chart
             .configure_mesh()

@@ -40,6 +40,12 @@ pub enum Role {
     X,
     /// Vertical position (up).
     Y,
+    /// A factor on a clock's drive (a long run's schedule).
+    DriveFactor,
+    /// Air temperature, °C.
+    Temperature,
+    /// Air pressure (read in Pa).
+    Pressure,
 }
 
 impl Role {
@@ -51,6 +57,9 @@ impl Role {
             Role::Amplitude => "amplitude",
             Role::X => "x",
             Role::Y => "y",
+            Role::DriveFactor => "drive_factor",
+            Role::Temperature => "temperature",
+            Role::Pressure => "pressure",
         }
     }
 
@@ -68,6 +77,11 @@ impl Role {
             }
             "x" => Role::X,
             "y" => Role::Y,
+            "drive_factor" | "drive" | "factor" | "drive factor" | "antrieb" => Role::DriveFactor,
+            "temperature" | "temp" | "temperatur" | "température" | "temperatura"
+            | "temperatuur" => Role::Temperature,
+            "pressure" | "barometer" | "air_pressure" | "air pressure" | "druck" | "luftdruck"
+            | "pression" | "presión" | "pressione" | "luchtdruk" => Role::Pressure,
             _ => return None,
         })
     }
@@ -91,6 +105,9 @@ pub struct ReadOptions {
     pub columns: Option<Vec<String>>,
     /// `--frame-rate`: rebuild times as the first time + row index / rate.
     pub frame_rate: Option<f64>,
+    /// Keep times as written instead of measuring them from the first row
+    /// (a schedule against the run's own clock).
+    pub absolute_time: bool,
 }
 
 /// What was read, for the JSON output (`format`).
@@ -139,8 +156,11 @@ pub struct Found {
     /// Its header name as written.
     pub header: String,
     index: usize,
-    /// The factor to SI (time in s, angles in rad); `None` for an angle
-    /// column without a unit.
+    /// The unit written in the header, if any.
+    unit: Option<String>,
+    /// The factor to SI (time in s, angles in rad, pressure in Pa;
+    /// temperature stays in °C); `None` for an angle column without a
+    /// unit, or a unit that is not one of the column's kind.
     factor: Option<f64>,
 }
 
@@ -406,19 +426,53 @@ fn split_header(header: &str) -> (String, Option<String>) {
     (text, None)
 }
 
-/// The SI factor of a unit written in a header.
-fn unit_factor(unit: &str) -> Option<f64> {
+/// What a unit measures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Time,
+    Angle,
+    Length,
+    Temperature,
+    Pressure,
+}
+
+/// The kind and SI factor of a unit written in a header (temperature in
+/// °C, its only unit here).
+fn unit_of(unit: &str) -> Option<(Kind, f64)> {
     Some(match unit {
-        "s" | "sec" | "secs" | "second" | "seconds" => 1.0,
-        "ms" => 1e-3,
-        "us" | "µs" => 1e-6,
-        "min" => 60.0,
-        "h" => 3600.0,
-        "deg" | "degree" | "degrees" | "°" => DEG,
-        "rad" | "radian" | "radians" => 1.0,
-        "m" | "cm" | "mm" | "px" | "pixels" | "pixel" | "in" => 1.0,
+        "s" | "sec" | "secs" | "second" | "seconds" => (Kind::Time, 1.0),
+        "ms" => (Kind::Time, 1e-3),
+        "us" | "µs" => (Kind::Time, 1e-6),
+        "min" => (Kind::Time, 60.0),
+        "h" => (Kind::Time, 3600.0),
+        "deg" | "degree" | "degrees" | "°" => (Kind::Angle, DEG),
+        "rad" | "radian" | "radians" => (Kind::Angle, 1.0),
+        "m" | "cm" | "mm" | "px" | "pixels" | "pixel" | "in" => (Kind::Length, 1.0),
+        "c" | "°c" | "degc" | "celsius" => (Kind::Temperature, 1.0),
+        "hpa" | "mbar" => (Kind::Pressure, 100.0),
+        "pa" => (Kind::Pressure, 1.0),
+        "kpa" => (Kind::Pressure, 1000.0),
+        // The conventional inch (25.4 mm) and millimetre of mercury.
+        "inhg" => (Kind::Pressure, 3386.389),
+        "mmhg" => (Kind::Pressure, 133.322_387_415),
         _ => return None,
     })
+}
+
+/// The SI factor of a unit written in a header.
+fn unit_factor(unit: &str) -> Option<f64> {
+    unit_of(unit).map(|(_, f)| f)
+}
+
+/// The units a column of `role` may carry, for messages.
+fn units_for(role: Role) -> &'static str {
+    match role {
+        Role::Time => "s, ms, us, min, h",
+        Role::Angle | Role::Amplitude => "deg, rad",
+        Role::Temperature => "°C (c, degc, celsius)",
+        Role::Pressure => "hPa, mbar, Pa, kPa, inHg, mmHg",
+        _ => "none",
+    }
 }
 
 /// The columns a header holds, with their roles and units.
@@ -432,18 +486,33 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
         if found.iter().any(|f| f.role == role) {
             continue; // The first column of a kind counts.
         }
+        let kind = |k: Kind| {
+            unit.as_deref()
+                .and_then(unit_of)
+                .filter(|(of, _)| *of == k)
+                .map(|(_, f)| f)
+        };
         let factor = match (role, unit.as_deref()) {
             (Role::Angle | Role::Amplitude, None) => options.angle_unit.map(|u| match u {
                 AngleUnit::Degrees => DEG,
                 AngleUnit::Radians => 1.0,
             }),
-            (Role::Time, None) | (Role::Swing | Role::X | Role::Y, _) => Some(1.0),
-            (_, Some(u)) => unit_factor(u),
+            (Role::Time, None)
+            | (Role::Swing | Role::X | Role::Y | Role::DriveFactor, _)
+            // A temperature without a unit is in °C.
+            | (Role::Temperature, None) => Some(1.0),
+            // A pressure without a unit is in hPa (a barometer's).
+            (Role::Pressure, None) => Some(100.0),
+            (Role::Time, Some(_)) => kind(Kind::Time),
+            (Role::Angle | Role::Amplitude, Some(_)) => kind(Kind::Angle),
+            (Role::Temperature, Some(_)) => kind(Kind::Temperature),
+            (Role::Pressure, Some(_)) => kind(Kind::Pressure),
         };
         found.push(Found {
             role,
             header: header.trim().trim_matches('"').to_string(),
             index,
+            unit,
             factor,
         });
     }
@@ -532,11 +601,22 @@ pub fn stream_table(
             .iter()
             .find(|f| f.role == *role)
             .expect("choose returns found roles");
-        if f.factor.is_none() {
-            return Err(fail(format!(
-                "column '{}' has no unit: give --angle-unit deg or --angle-unit rad",
-                f.header
-            )));
+        match (&f.unit, f.factor) {
+            (_, Some(_)) => {}
+            (None, None) => {
+                return Err(fail(format!(
+                    "column '{}' has no unit: give --angle-unit deg or --angle-unit rad",
+                    f.header
+                )))
+            }
+            (Some(u), None) => {
+                return Err(fail(format!(
+                    "column '{}': '{u}' is not a unit of {} (use {})",
+                    f.header,
+                    f.role.name(),
+                    units_for(f.role)
+                )))
+            }
         }
         used.push(f);
     }
@@ -585,6 +665,8 @@ pub fn stream_table(
             if let Some(rate) = options.frame_rate {
                 // Frames counted from the first row of numbers.
                 row[k] = row_index as f64 / rate;
+            } else if options.absolute_time {
+                format.time_origin_s = Some(0.0);
             } else {
                 let origin = *first_time.get_or_insert(row[k]);
                 format.time_origin_s = Some(origin);
@@ -637,6 +719,9 @@ mod tests {
             ("amplitude (deg)", "amplitude", Some("deg")),
             ("x", "x", None),
             ("amplitude_rad", "amplitude", Some("rad")),
+            ("temperature_c", "temperature", Some("c")),
+            ("Pressure (hPa)", "pressure", Some("hpa")),
+            ("drive_factor", "drive_factor", None),
         ];
         for (header, base, unit) in cases {
             let (b, u) = split_header(header);

@@ -31,6 +31,15 @@ impl CliError {
         }
     }
 
+    /// The same error said of `flag` (a file reader's error, attributed
+    /// to the flag that named the file).
+    pub fn of_flag(self, flag: &str) -> Self {
+        Self {
+            message: format!("{flag}: {}", self.message),
+            status: self.status,
+        }
+    }
+
     /// The same error with another exit status (130 after Ctrl-C).
     pub fn with_status(mut self, status: u8) -> Self {
         self.status = status;

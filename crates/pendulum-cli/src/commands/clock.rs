@@ -3,6 +3,7 @@
 
 use super::common;
 use crate::args::{ClockArgs, EscapementArg};
+use crate::data::{read_table, Found, ReadOptions, Role};
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::interrupt;
@@ -118,82 +119,88 @@ fn drive(text: &str) -> Result<Drive, CliError> {
     }
 }
 
-/// What changes with time in a long run, from a CSV file: `time_s` and
-/// any of `drive_factor`, `temperature_c`, `pressure_hpa`; linear between
-/// rows, held beyond them.
+/// What changes with time in a long run, from a measurement file read by
+/// the shared reader (any separator, decimal commas, units in the header):
+/// a time column and any of a drive factor, a temperature (°C) and a
+/// pressure (hPa without a unit; Pa, kPa, inHg, mmHg named); linear
+/// between rows, held beyond them. Times are the run's own: a file that
+/// starts at day 3 holds its first row until then.
 struct Schedule {
     times: Vec<f64>,
-    /// One column per quantity, in the order of [`COLUMNS`], when given.
+    /// One column per quantity, in the order of [`COLUMNS`], when given
+    /// (pressure in hPa).
     columns: [Option<Vec<f64>>; 3],
 }
 
-/// The schedule's quantities.
-const COLUMNS: [&str; 3] = ["drive_factor", "temperature_c", "pressure_hpa"];
+/// The schedule's quantities, with their names in messages.
+const COLUMNS: [(Role, &str); 3] = [
+    (Role::DriveFactor, "drive_factor"),
+    (Role::Temperature, "temperature_c"),
+    (Role::Pressure, "pressure_hpa"),
+];
 
 impl Schedule {
     fn read(path: &Path) -> Result<Self, CliError> {
-        let file = path.display().to_string();
-        let bad = |what: String| CliError::flag("--drive-file", format!("{file}: {what}"));
-        let mut reader = csv::ReaderBuilder::new()
-            .trim(csv::Trim::All)
-            .from_path(path)
-            .map_err(|e| bad(format!("cannot read it: {e}")))?;
-        let headers = reader
-            .headers()
-            .map_err(|e| bad(format!("cannot read its header: {e}")))?
-            .clone();
-        let position = |name: &str| headers.iter().position(|h| h == name);
-        let time_column = position("time_s").ok_or_else(|| bad("needs a time_s column".into()))?;
-        let wanted: Vec<Option<usize>> = COLUMNS.iter().map(|c| position(c)).collect();
-        if wanted.iter().all(Option::is_none) {
-            return Err(bad(format!(
-                "needs one of the columns {} besides time_s",
-                COLUMNS.join(", ")
+        let flag = |e: CliError| e.of_flag("--drive-file");
+        let choose = |found: &[Found]| -> Result<Vec<Role>, String> {
+            let has = |r: Role| found.iter().any(|f| f.role == r);
+            if !has(Role::Time) {
+                return Err("needs a time column (time_s)".to_string());
+            }
+            let mut roles = vec![Role::Time];
+            roles.extend(COLUMNS.iter().map(|c| c.0).filter(|&r| has(r)));
+            if roles.len() == 1 {
+                let names: Vec<&str> = COLUMNS.iter().map(|c| c.1).collect();
+                return Err(format!(
+                    "needs one of the columns {} besides time_s",
+                    names.join(", ")
+                ));
+            }
+            Ok(roles)
+        };
+        let options = ReadOptions {
+            absolute_time: true,
+            ..ReadOptions::default()
+        };
+        let table = read_table(path, &options, &choose).map_err(flag)?;
+        let times = table.column(Role::Time).unwrap_or_default().to_vec();
+        if times.is_empty() {
+            return Err(flag(CliError::other(format!(
+                "{}: has no rows",
+                table.file
+            ))));
+        }
+        if let Some(i) = (1..times.len()).find(|&i| times[i] <= times[i - 1]) {
+            return Err(flag(table.error_at(
+                i,
+                Role::Time,
+                "the times must increase (sort the file by time)",
             )));
         }
-        let mut times = Vec::new();
         let mut columns: [Option<Vec<f64>>; 3] = [None, None, None];
-        for (k, w) in wanted.iter().enumerate() {
-            if w.is_some() {
-                columns[k] = Some(Vec::new());
-            }
-        }
-        for (i, record) in reader.records().enumerate() {
-            let row = i + 2;
-            let record = record.map_err(|e| bad(format!("row {row}: {e}")))?;
-            let value = |j: usize| -> Result<f64, CliError> {
-                record
-                    .get(j)
-                    .and_then(|s| s.parse::<f64>().ok())
-                    .filter(|v| v.is_finite())
-                    .ok_or_else(|| bad(format!("row {row}: not a number")))
+        for (k, &(role, name)) in COLUMNS.iter().enumerate() {
+            let Some(values) = table.column(role) else {
+                continue;
             };
-            let time = value(time_column)?;
-            if times.last().is_some_and(|&last| time <= last) {
-                return Err(bad(format!("row {row}: time_s must increase")));
+            // Pressure is read in Pa; the schedule keeps hPa.
+            let values: Vec<f64> = if role == Role::Pressure {
+                values.iter().map(|p| p / 100.0).collect()
+            } else {
+                values.to_vec()
+            };
+            let (ok, range): (fn(f64) -> bool, &str) = match role {
+                Role::DriveFactor => (|v| v >= 0.0, "at least 0"),
+                Role::Temperature => (|v| (-50.0..=100.0).contains(&v), "-50 to 100 °C"),
+                _ => (|v| (600.0..=1100.0).contains(&v), "600 to 1100 hPa"),
+            };
+            if let Some(i) = values.iter().position(|&v| !ok(v)) {
+                return Err(flag(table.error_at(
+                    i,
+                    role,
+                    format!("{name} {} out of range ({range})", num(values[i], 6)),
+                )));
             }
-            times.push(time);
-            for (k, w) in wanted.iter().enumerate() {
-                if let (Some(j), Some(col)) = (w, columns[k].as_mut()) {
-                    let v = value(*j)?;
-                    let ok = match k {
-                        0 => v >= 0.0,
-                        1 => (-50.0..=100.0).contains(&v),
-                        _ => (600.0..=1100.0).contains(&v),
-                    };
-                    if !ok {
-                        return Err(bad(format!(
-                            "row {row}: {} out of range ({})",
-                            COLUMNS[k],
-                            ["at least 0", "-50 to 100 °C", "600 to 1100 hPa"][k]
-                        )));
-                    }
-                    col.push(v);
-                }
-            }
-        }
-        if times.is_empty() {
-            return Err(bad("has no rows".into()));
+            columns[k] = Some(values);
         }
         Ok(Self { times, columns })
     }

@@ -19,6 +19,7 @@ pub fn read_options(args: &MeasurementArgs) -> Result<ReadOptions, CliError> {
         }),
         columns: columns(args.columns.as_deref()),
         frame_rate: frame_rate(args.frame_rate.as_deref())?,
+        absolute_time: false,
     })
 }
 

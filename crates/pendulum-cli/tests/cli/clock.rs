@@ -181,7 +181,7 @@ fn bad_clocks_are_refused() {
         ],
         "--drive-file",
     );
-    assert!(e.contains("row 3"), "{e}");
+    assert!(e.contains("line 3"), "{e}");
     assert_eq!(files_in(dir.path()).len(), 1, "only bad.csv is left");
     pendulum()
         .args([
@@ -195,6 +195,26 @@ fn bad_clocks_are_refused() {
         ])
         .assert()
         .success();
+}
+
+/// The time error after a three-day run of `design` at 20 µJ a beat with
+/// the drive file `text` (written to `path`), a row an hour.
+fn three_days(design: &str, path: &std::path::Path, text: &str) -> f64 {
+    std::fs::write(path, text).unwrap();
+    let v = json(&[
+        "clock",
+        "--design",
+        design,
+        "--drive",
+        "20uJ",
+        "--duration",
+        "3days",
+        "--every",
+        "1h",
+        "--drive-file",
+        path.to_str().unwrap(),
+    ]);
+    f(&v["long_run"], "time_error_s")
 }
 
 /// A long run of a design through a warm spell: 10 °C warmer from the
@@ -214,24 +234,7 @@ fn a_warm_spell() {
         "temperature_coefficient_s_per_day_per_c",
     );
     let dir = tempfile::tempdir().unwrap();
-    let error_after = |text: &str| {
-        let path = dir.path().join("weather.csv");
-        std::fs::write(&path, text).unwrap();
-        let v = json(&[
-            "clock",
-            "--design",
-            &design,
-            "--drive",
-            "20uJ",
-            "--duration",
-            "3days",
-            "--every",
-            "1h",
-            "--drive-file",
-            path.to_str().unwrap(),
-        ]);
-        f(&v["long_run"], "time_error_s")
-    };
+    let error_after = |text: &str| three_days(&design, &dir.path().join("weather.csv"), text);
     let steady = error_after("time_s,temperature_c\n0,20\n");
     let warm = error_after("time_s,temperature_c\n0,20\n86400,20\n86401,30\n");
     let expected = 2.0 * 10.0 * coefficient;
@@ -313,4 +316,63 @@ fn simulate_by_the_averaged_method() {
         ],
         "--method",
     );
+}
+
+/// The drive file is read by the shared measurement reader: a spreadsheet
+/// of much of Europe (semicolons, decimal commas, hours, German names)
+/// gives the run the plain CSV gives; pressures in inHg the run in hPa
+/// gives; times are the run's own (a file that starts on day 1 holds its
+/// first row until then); a unit of the wrong kind is refused naming it.
+#[test]
+fn drive_files_as_people_write_them() {
+    let design = format!(
+        "{}/../../examples/seconds-steel-brass.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let run = |name: &str, text: &str| three_days(&design, &dir.path().join(name), text);
+    let plain = run(
+        "plain.csv",
+        "time_s,temperature_c,drive_factor\n0,20,1\n86400,20,1\n172800,26,0.8\n",
+    );
+    let european = run(
+        "europe.csv",
+        "Zeit (h);Temperatur (°C);Antrieb\n0;20,0;1\n24;20,0;1\n48;26,0;0,8\n",
+    );
+    assert!(
+        (plain - european).abs() <= 1e-9 * plain.abs().max(1e-3),
+        "{plain} against {european}"
+    );
+    // 29.92 inHg = 1013.21 hPa, then 28.5 inHg = 965.12 hPa.
+    let hpa = run(
+        "hpa.csv",
+        "time_s,pressure_hpa\n0,1013.2087\n86400,965.1209\n",
+    );
+    let inhg = run("inhg.csv", "time_s,pressure (inHg)\n0,29.92\n86400,28.5\n");
+    assert!(
+        (hpa - inhg).abs() < 1e-3 * hpa.abs(),
+        "{hpa} against {inhg}"
+    );
+    // A schedule that starts on day 1 holds its first row before it: the
+    // same as one that states day 0.
+    let late = run("late.csv", "time_s,temperature_c\n86400,25\n");
+    let early = run("early.csv", "time_s,temperature_c\n0,25\n86400,25\n");
+    assert_eq!(late, early);
+    let bad = dir.path().join("fahrenheit.csv");
+    std::fs::write(&bad, "time_s,temperature (F)\n0,68\n").unwrap();
+    let args = [
+        "clock",
+        "--design",
+        &design,
+        "--drive",
+        "20uJ",
+        "--duration",
+        "1day",
+        "--drive-file",
+    ];
+    let e = refuses(
+        &[&args[..], &[bad.to_str().unwrap()]].concat(),
+        "--drive-file",
+    );
+    assert!(e.contains("'f' is not a unit of temperature"), "{e}");
 }

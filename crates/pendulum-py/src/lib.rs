@@ -724,10 +724,12 @@ fn clock_steady<'py>(
 
 /// A long run of a clock (the CLI's `clock --duration`): rows at every
 /// turning point or every `every` s, the drive factor from a schedule
-/// (times, factors; linear between, held beyond).
+/// (times, factors; linear between, held beyond) and a rate change from
+/// outside (times, s/day: a temperature or pressure coefficient times the
+/// change), against the clock as regulated at the start.
 #[pyfunction]
-#[pyo3(signature = (spec, duration, every, schedule_time, schedule_factor))]
-#[allow(clippy::type_complexity)]
+#[pyo3(signature = (spec, duration, every, schedule_time, schedule_factor, rate_time, rate_change))]
+#[allow(clippy::type_complexity, clippy::too_many_arguments)]
 fn clock_run<'py>(
     py: Python<'py>,
     spec: ClockArgs,
@@ -735,8 +737,10 @@ fn clock_run<'py>(
     every: Option<f64>,
     schedule_time: Vec<f64>,
     schedule_factor: Vec<f64>,
+    rate_time: Vec<f64>,
+    rate_change: Vec<f64>,
 ) -> PyResult<(Vec<Array1<'py>>, Bound<'py, PyDict>)> {
-    use pendulum_theory::clock::long_run::{piecewise_linear, run, LongRun};
+    use pendulum_theory::clock::long_run::{period_factor, piecewise_linear, run, LongRun};
     use pendulum_theory::clock::HalfSwingMethod;
     let clock = make_clock(spec)?;
     if !(duration > 0.0 && duration <= 1e10) {
@@ -754,7 +758,24 @@ fn clock_run<'py>(
             "drive_schedule: times must increase, factors be at least 0, one of each",
         ));
     }
+    if rate_time.len() != rate_change.len()
+        || rate_time.windows(2).any(|w| w[1] <= w[0])
+        || rate_change
+            .iter()
+            .any(|r| !(r.is_finite() && *r > -86_400.0))
+    {
+        return Err(PyValueError::new_err(
+            "rate_schedule: times must increase, rates be finite and above -86400 s/day, one of each",
+        ));
+    }
     let drive = |t: f64| piecewise_linear(&schedule_time, &schedule_factor, t);
+    let stretch = |t: f64| {
+        if rate_time.is_empty() {
+            1.0
+        } else {
+            period_factor(piecewise_linear(&rate_time, &rate_change, t))
+        }
+    };
     let start = clock
         .steady(HalfSwingMethod::Averaged, drive(0.0))
         .map_err(|e| PyValueError::new_err(format!("drive: {e}")))?;
@@ -775,7 +796,7 @@ fn clock_run<'py>(
         run(
             &clock,
             &drive,
-            &|_| 1.0,
+            &stretch,
             &LongRun {
                 duration,
                 amplitude: start.amplitude,

@@ -39,6 +39,26 @@ def test_isochronism_and_a_long_run():
     assert summary["beats"] == rows["beats"][-1]
 
 
+def test_a_rate_change_from_outside():
+    # A clock that gains 2 s/day from the start gains 2 s a day to 1e-6 s
+    # (the period shortens by 1/(1 + 2/86400)); a warm spell from day 1 at
+    # -0.5 s/day per °C and 10 °C costs 5 s a day from then on.
+    base = dict(drive_energy=20e-6, every=3600)
+    _, plain = pt.clock_run(0.99362, 8 * 86400, **base)
+    _, gaining = pt.clock_run(0.99362, 8 * 86400, rate_schedule=([0], [2.0]), **base)
+    # The last row falls on the first turning point past the 8 days.
+    expected = 2.0 * gaining["duration_s"] / 86400
+    assert abs(gaining["time_error_s"] - plain["time_error_s"] - expected) < 1e-6
+    _, warm = pt.clock_run(0.99362, 3 * 86400, rate_schedule=([0, 86400, 86401], [0, 0, -5.0]),
+                           **base)
+    _, cool = pt.clock_run(0.99362, 3 * 86400, **base)
+    assert abs(warm["time_error_s"] - cool["time_error_s"] + 10.0) < 1e-3
+    with pytest.raises(ValueError, match="rate_schedule"):
+        pt.clock_run(0.99362, 86400, rate_schedule=([0, 0], [1.0, 2.0]), **base)
+    with pytest.raises(ValueError, match="rate_schedule"):
+        pt.clock_run(0.99362, 86400, rate_schedule=([0], [float("nan")]), **base)
+
+
 def test_bad_clocks():
     with pytest.raises(ValueError, match="the pendulum stops"):
         pt.clock(0.99362, drive_energy=1e-6)

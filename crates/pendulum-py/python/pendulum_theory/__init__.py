@@ -328,6 +328,7 @@ def clock_run(
     *,
     every=None,
     drive_schedule=None,
+    rate_schedule=None,
     drive_energy=None,
     drive_torque=None,
     q=10_000.0,
@@ -344,14 +345,24 @@ def clock_run(
     its steady state and regulated to it: a row at every turning point, or
     every ``every`` s (then many beats per step: a year in a fraction of a
     second). ``drive_schedule`` is ``(times_s, factors)``, linear between,
-    held beyond. Returns a dict of arrays (time_s, beats, amplitude_rad,
+    held beyond. ``rate_schedule`` is ``(times_s, rate_change_s_per_day)``,
+    a change of rate from outside (positive: gaining), as the CLI's drive
+    file makes from temperature and pressure: for a coefficient of -0.5
+    s/day per °C and a 10 °C warm spell, ``([0, 86400, 86401], [0, 0,
+    -5])``. Returns a dict of arrays (time_s, beats, amplitude_rad,
     rate_s_per_day, time_error_s, drive_factor) and a summary dict."""
-    times, factors = ([], []) if drive_schedule is None else (
-        [float(x) for x in drive_schedule[0]], [float(x) for x in drive_schedule[1]])
+    def pairs(schedule):
+        if schedule is None:
+            return [], []
+        return [float(x) for x in schedule[0]], [float(x) for x in schedule[1]]
+
+    times, factors = pairs(drive_schedule)
+    rate_times, rates = pairs(rate_schedule)
     columns, summary = _native.clock_run(
         _clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
                      friction, recoil, impulse_angle, every_beats),
         float(duration), None if every is None else float(every), times, factors,
+        rate_times, rates,
     )
     names = ["time_s", "beats", "amplitude_rad", "rate_s_per_day", "time_error_s", "drive_factor"]
     return dict(zip(names, columns)), summary

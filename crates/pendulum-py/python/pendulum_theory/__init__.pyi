@@ -77,6 +77,7 @@ def clock_run(
     *,
     every: Optional[float] = ...,
     drive_schedule: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = ...,
+    rate_schedule: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = ...,
     drive_energy: Optional[float] = ...,
     drive_torque: Optional[float] = ...,
     q: float = ...,

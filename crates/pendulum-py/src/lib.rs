@@ -556,14 +556,14 @@ fn fit_trajectory<'py>(
         parameters.set_item(*name, value)?;
         errors.set_item(*name, *error)?;
     }
-    let mut warnings: Vec<String> = Vec::new();
+    let mut warnings: Vec<String> = fit.fallback_note().into_iter().collect();
     if let Some(l) = length {
         if !(l > 0.0 && l.is_finite()) {
             return Err(PyValueError::new_err(format!(
                 "length: must be positive, got {l} m"
             )));
         }
-        if chosen.gives_gravity(a) {
+        if fit.model.gives_gravity(a) {
             let (g, se) = fit.gravity(l);
             parameters.set_item("g_m_s2", g)?;
             errors.set_item("g_m_s2", se)?;
@@ -577,7 +577,7 @@ fn fit_trajectory<'py>(
     let d = PyDict::new(py);
     d.set_item(
         "model",
-        match chosen {
+        match fit.model {
             TrajectoryModel::Linear => "linear",
             TrajectoryModel::Nonlinear => "nonlinear",
         },

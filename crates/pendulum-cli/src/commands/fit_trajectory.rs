@@ -95,9 +95,9 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     // standard error above a few degrees (the correction takes the amplitude
     // at mid-record, but the swing decays through it): not reported there.
     let swing = largest_swing(theta);
-    let mut warnings = Vec::new();
+    let mut warnings: Vec<String> = fit.fallback_note().into_iter().collect();
     if let Some(l) = length {
-        if !model.gives_gravity(theta) {
+        if !fit.model.gives_gravity(theta) {
             warnings.push(format!(
                 "g is not reported from the linear model at a {}° swing: its finite-amplitude \
                  correction leaves a bias beyond the standard error; use --model nonlinear",
@@ -108,6 +108,27 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             parameters.insert("g_m_s2", g);
             standard_errors.insert("g_m_s2", se);
         }
+    }
+    let undetermined = undetermined(&parameters, &standard_errors);
+    if undetermined.contains(&"zeta") {
+        warnings.push(
+            "zeta not determined (its standard error exceeds it): the swing decays too little \
+             over the record to measure the damping; a longer record will"
+                .to_string(),
+        );
+    }
+    let shape: Vec<&str> = undetermined
+        .iter()
+        .copied()
+        .filter(|n| *n != "zeta")
+        .collect();
+    if !shape.is_empty() {
+        warnings.push(format!(
+            "{} not determined by the data (standard error beyond the value): the record does \
+             not follow the model (no swing in it, a pendulum that friction stops, a record \
+             mostly at rest?); fit the swinging part only",
+            shape.join(", ")
+        ));
     }
     let residuals_file = match &args.residuals {
         Some(path) => {
@@ -122,7 +143,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     let result = TrajectoryJson {
         file,
         points: time.len(),
-        model: if model == TrajectoryModel::Linear {
+        model: if fit.model == TrajectoryModel::Linear {
             "linear"
         } else {
             "nonlinear"
@@ -151,8 +172,13 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     );
     for (name, value) in &result.parameters {
         let se = result.standard_errors[name];
+        let note = if undetermined.contains(name) {
+            "  (not determined)"
+        } else {
+            ""
+        };
         out.push_str(&format!(
-            "  {name:<16} {} ± {}\n",
+            "  {name:<16} {} ± {}{note}\n",
             num(*value, 8),
             num(se, 2)
         ));
@@ -180,6 +206,27 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         num(result.residual_rms_rad.to_degrees(), 3)
     ));
     Ok(out)
+}
+
+/// The parameters the data do not determine: those whose standard error
+/// exceeds their value (a phase: half a turn; an offset may be zero). They
+/// are marked so rather than printed as if measured.
+fn undetermined(
+    parameters: &BTreeMap<&'static str, f64>,
+    standard_errors: &BTreeMap<&'static str, f64>,
+) -> Vec<&'static str> {
+    parameters
+        .iter()
+        .filter(|(name, value)| {
+            let se = standard_errors.get(*name).copied().unwrap_or(f64::NAN);
+            match **name {
+                "offset_rad" => false,
+                "phase_rad" => se.is_nan() || se >= std::f64::consts::PI,
+                _ => se.is_nan() || se >= value.abs(),
+            }
+        })
+        .map(|(name, _)| *name)
+        .collect()
 }
 
 /// The tracked angle with the fitted curve (the data less the residuals),
@@ -215,5 +262,34 @@ fn figure(time: &[f64], theta: &[f64], residuals: &[f64]) -> Figure {
                 vec![Series::dots("residual", res)],
             ),
         ],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::undetermined;
+    use std::collections::BTreeMap;
+
+    #[test]
+    fn a_parameter_is_not_determined_when_its_error_exceeds_it() {
+        let p = BTreeMap::from([
+            ("amplitude_rad", 0.09),
+            ("zeta", 1e-5),
+            ("phase_rad", 0.1),
+            ("offset_rad", 0.0),
+            ("omega_n_rad_s", 3.2),
+        ]);
+        let mut e = BTreeMap::from([
+            ("amplitude_rad", 2e-4),
+            ("zeta", 2e-4),
+            ("phase_rad", 0.5),
+            ("offset_rad", 1e-4),
+            ("omega_n_rad_s", f64::NAN),
+        ]);
+        // A NaN error determines nothing; an offset of zero is a value.
+        assert_eq!(undetermined(&p, &e), vec!["omega_n_rad_s", "zeta"]);
+        e.insert("omega_n_rad_s", 1e-3);
+        e.insert("phase_rad", 4.0);
+        assert_eq!(undetermined(&p, &e), vec!["phase_rad", "zeta"]);
     }
 }

@@ -47,6 +47,11 @@ pub struct TrajectoryFit {
     pub natural_angular_frequency: f64,
     /// Its standard error.
     pub natural_angular_frequency_error: f64,
+    /// The residual rms (rad) of a nonlinear fit that ran off (its release
+    /// amplitude at the top or not determined) and came out worse than the
+    /// linear one, which is then returned instead (`model` says `Linear`);
+    /// `None` otherwise.
+    pub nonlinear_rms_rejected: Option<f64>,
 }
 
 /// The swing above which the linear model's finite-amplitude correction
@@ -83,6 +88,21 @@ impl TrajectoryModel {
 }
 
 impl TrajectoryFit {
+    /// For people, when the nonlinear fit was rejected for the linear one:
+    /// what happened and what to do.
+    pub fn fallback_note(&self) -> Option<String> {
+        self.nonlinear_rms_rejected.map(|rms| {
+            format!(
+                "the nonlinear fit ran off (its release amplitude went to the top or is not \
+                 determined) and fits worse than the linear one (residual rms {:.3}° against \
+                 {:.3}°): the linear fit is reported; the record does not follow a free decay \
+                 from one release (heavy damping, friction?)",
+                rms.to_degrees(),
+                self.fit.residual_rms.to_degrees()
+            )
+        })
+    }
+
     /// Parameter names as in JSON.
     pub fn names(&self) -> [&'static str; 5] {
         match self.model {
@@ -154,15 +174,17 @@ pub fn fit_trajectory(
     let ratio = Amplitude::from_radians(a_mid)
         .map(period_ratio)
         .unwrap_or(1.0);
+    let w0 = wd / damping_factor * ratio;
+    let w0_error = lin.standard_errors[1] / damping_factor * ratio;
+    let linear_fit = |fit: Fit, rejected: Option<f64>| TrajectoryFit {
+        model: TrajectoryModel::Linear,
+        fit,
+        natural_angular_frequency: w0,
+        natural_angular_frequency_error: w0_error,
+        nonlinear_rms_rejected: rejected,
+    };
     if model == TrajectoryModel::Linear {
-        let w0 = wd / damping_factor * ratio;
-        let w0_error = lin.standard_errors[1] / damping_factor * ratio;
-        return Ok(TrajectoryFit {
-            model,
-            fit: lin,
-            natural_angular_frequency: w0,
-            natural_angular_frequency_error: w0_error,
-        });
+        return Ok(linear_fit(lin, None));
     }
     let wn = wd / damping_factor * ratio;
     // Release from rest at the crest before the first sample: the phase
@@ -174,6 +196,7 @@ pub fn fit_trajectory(
         times: &t,
         cache: RefCell::new(Simulated::default()),
     };
+    let linear_rms = lin.residual_rms;
     let mut fit = fit_curve(&curve, &t, theta, None, &initial)?;
     // The release is the last crest at or before the first sample: a
     // release a whole period (or more) earlier fits the same curve with a
@@ -191,6 +214,17 @@ pub fn fit_trajectory(
         let start = [angle, p[1], p[2], p[3].abs() - p[1].abs() * time, p[4]];
         fit = fit_curve(&curve, &t, theta, None, &start)?;
     }
+    // A nonlinear fit that ran off (its release amplitude driven to the
+    // top, or not determined by the data: a release rewound through heavy
+    // damping, a record that does not follow a free decay) and fits worse
+    // than the linear one is not reported: the linear fit is returned, and
+    // says so. (A sound nonlinear fit may still be a little worse than the
+    // linear one on data that follow the linear equation exactly.)
+    let (a, a_error) = (fit.parameters[0].abs(), fit.standard_errors[0]);
+    let ran_off = a >= 3.0 || a_error.is_nan() || a_error >= a;
+    if ran_off && (fit.residual_rms.is_nan() || fit.residual_rms > linear_rms) {
+        return Ok(linear_fit(lin, Some(fit.residual_rms)));
+    }
     // Report the phase as a fraction of the true (finite-amplitude) period:
     // the release lies phase/2π of a period before the first sample.
     let ratio = release_period_ratio(fit.parameters[0]);
@@ -203,6 +237,7 @@ pub fn fit_trajectory(
         fit,
         natural_angular_frequency: w,
         natural_angular_frequency_error: e,
+        nonlinear_rms_rejected: None,
     })
 }
 

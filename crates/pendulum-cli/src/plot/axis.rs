@@ -167,6 +167,35 @@ pub fn log_ticks(span: Span) -> Vec<f64> {
     (start..=end).map(|i| i as f64 * step).collect()
 }
 
+/// The offset to take from a linear axis's tick labels when its values
+/// differ only far down their digits (the middle more than 10⁴ spans from
+/// zero: labels would need eight digits and more to tell ticks apart):
+/// the middle rounded to the power of ten just above the span, so the
+/// labels show the differences and the axis title the offset. `None` for
+/// an axis its labels can show directly.
+pub fn label_offset(lo: f64, hi: f64) -> Option<f64> {
+    let span = hi - lo;
+    let middle = 0.5 * (lo + hi);
+    if !(span > 0.0 && span.is_finite() && middle.is_finite()) || middle.abs() <= 1e4 * span {
+        return None;
+    }
+    let step = 10_f64.powf(span.log10().floor() + 1.0);
+    Some((middle / step).round() * step)
+}
+
+/// An axis offset (from [`label_offset`]) as a plain decimal with the
+/// digits down to the power of ten above `span` (`108.06759`, not
+/// `1.0806759e2`).
+pub fn offset_label(offset: f64, span: f64) -> String {
+    let decimals = (-(span.log10().floor() + 1.0)).clamp(0.0, 15.0) as usize;
+    let t = format!("{offset:.decimals$}");
+    if t.contains('.') {
+        t.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        t
+    }
+}
+
 /// A log axis's tick label (ticks are 1, 1.5, 2, 3, 5 or 7 times a power
 /// of ten, or round steps): three significant digits at most, trailing
 /// zeros dropped; in exponent form (`1e-4`, `2e5`) when `exponent`, so
@@ -269,6 +298,21 @@ mod tests {
         // Models are drawn whole.
         let s = span(Scale::Linear, &[0.0, 1e6], &data);
         assert!(s.hi >= 1e6);
+    }
+
+    #[test]
+    fn an_axis_of_tiny_differences_is_labelled_from_an_offset() {
+        // 108.06758 s/day varying in its eighth digit.
+        let offset = label_offset(108.067_584, 108.067_588_2).unwrap();
+        assert!((offset - 108.067_59).abs() < 1e-9, "{offset}");
+        let span = 4.2e-6;
+        assert_eq!(tick_label(108.067_586 - offset, span), "-4e-6");
+        assert_eq!(offset_label(offset, span), "108.06759");
+        assert_eq!(offset_label(86_400.0, 0.5), "86400");
+        // An ordinary axis needs none, nor one about zero.
+        assert_eq!(label_offset(0.0, 20.0), None);
+        assert_eq!(label_offset(1.0, 1.018), None);
+        assert_eq!(label_offset(-1e-9, 1e-9), None);
     }
 
     #[test]

@@ -2,7 +2,9 @@
 //! its axes, its series clipped to the frame and its legend placed where
 //! it covers nothing.
 
-use super::axis::{log_tick_label, log_ticks, span, tick_label, Scale, Span};
+use super::axis::{
+    label_offset, log_tick_label, log_ticks, offset_label, span, tick_label, Scale, Span,
+};
 use super::clip::{self, Point};
 use super::legend::{self, Drawn, Place, Rect};
 use super::style::{Look, GRID, LEGEND_BORDER, MARK, PALETTE};
@@ -386,20 +388,36 @@ impl Lines<'_> {
         // axis reaches below 1e-3 or to 1e5, plain numbers otherwise.
         let x_exp = x_range.start < 1e-3 || x_range.end >= 1e5;
         let y_exp = y_range.start < 1e-3 || y_range.end >= 1e5;
+        // A linear axis whose values differ only far down their digits is
+        // labelled from an offset, named in its title.
+        let offset = |scale: Scale, range: &std::ops::Range<f64>| match scale {
+            Scale::Linear => label_offset(range.start, range.end),
+            Scale::Log => None,
+        };
+        let (x_offset, y_offset) = (
+            offset(panel.x_scale, &x_range),
+            offset(panel.y_scale, &y_range),
+        );
+        let title = |label: &str, offset: Option<f64>, span: f64| match offset {
+            Some(o) => format!("{label} − {}", offset_label(o, span)),
+            None => label.to_string(),
+        };
+        let x_title = title(&panel.x_label, x_offset, x_span);
+        let y_title = title(&panel.y_label, y_offset, y_span);
         let x_tick = move |v: &f64| match panel.x_scale {
-            Scale::Linear => tick_label(*v, x_span),
+            Scale::Linear => tick_label(*v - x_offset.unwrap_or(0.0), x_span),
             Scale::Log => log_tick_label(*v, x_exp),
         };
         let y_tick = move |v: &f64| match panel.y_scale {
-            Scale::Linear => tick_label(*v, y_span),
+            Scale::Linear => tick_label(*v - y_offset.unwrap_or(0.0), y_span),
             Scale::Log => log_tick_label(*v, y_exp),
         };
         chart
             .configure_mesh()
             .x_label_formatter(&x_tick)
             .y_label_formatter(&y_tick)
-            .x_desc(&panel.x_label)
-            .y_desc(&panel.y_label)
+            .x_desc(&x_title)
+            .y_desc(&y_title)
             .label_style(("sans-serif", look.label_font()))
             .axis_desc_style(("sans-serif", look.axis_font()))
             .axis_style(BLACK.stroke_width(look.px(1)))

@@ -196,6 +196,9 @@ fn check_picture(path: &Path) {
                     "{}: tick label {t}",
                     path.display()
                 );
+                // Short enough for the label area: an axis whose values
+                // differ far down their digits is labelled from an offset.
+                assert!(t.chars().count() <= 8, "{}: tick label {t}", path.display());
                 let negative_zero = t.starts_with('-')
                     && t.trim_start_matches('-')
                         .chars()
@@ -369,6 +372,11 @@ fn every_plot_kind_in_both_formats() {
                      --drive 20uJ --duration 3day --every 1h",
                 ),
             ),
+            // A loss constant to its eighth digit: labelled from an offset.
+            (
+                "offset",
+                words("simulate --length 1 --amplitude 0.0001deg --q 10 --duration 100s"),
+            ),
             // A tracked angle with one bad value: clipped, counted.
             ("spike", vec!["fit".into(), "trajectory".into(), s(&spike)]),
         ];
@@ -424,6 +432,11 @@ fn every_plot_kind_in_both_formats() {
             "{name}: no log axis in the labels {labels:?}"
         );
     }
+    let offset = std::fs::read_to_string(d.join("offset.svg")).unwrap();
+    assert!(
+        offset.contains("loss (s/day) − 108.0675"),
+        "no offset in the title"
+    );
     // The working amplitude is marked and named.
     let period = std::fs::read_to_string(d.join("period-one.svg")).unwrap();
     assert!(period.contains("working amplitude, 15°"));

@@ -419,7 +419,7 @@ fn split_header(header: &str) -> (String, Option<String>) {
         }
     }
     if let Some((base, unit)) = text.rsplit_once(['_', ' ']) {
-        if unit_factor(unit).is_some() && !base.is_empty() {
+        if unit_of(unit).is_some() && !base.is_empty() {
             return (base.trim().to_string(), Some(unit.to_string()));
         }
     }
@@ -457,11 +457,6 @@ fn unit_of(unit: &str) -> Option<(Kind, f64)> {
         "mmhg" => (Kind::Pressure, 133.322_387_415),
         _ => return None,
     })
-}
-
-/// The SI factor of a unit written in a header.
-fn unit_factor(unit: &str) -> Option<f64> {
-    unit_of(unit).map(|(_, f)| f)
 }
 
 /// The units a column of `role` may carry, for messages.

@@ -797,12 +797,7 @@ fn clock_run<'py>(
             &clock,
             &drive,
             &stretch,
-            &LongRun {
-                duration,
-                amplitude: start.amplitude,
-                nominal_period: start.period,
-                every,
-            },
+            &LongRun::from_steady(&start, duration, every),
             &mut |r| {
                 for (c, v) in columns.iter_mut().zip([
                     r.time,

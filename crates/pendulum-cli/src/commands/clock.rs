@@ -496,12 +496,7 @@ fn run_long(
         clock,
         &drive_at,
         &stretch,
-        &LongRun {
-            duration,
-            amplitude: start.amplitude,
-            nominal_period: start.period,
-            every,
-        },
+        &LongRun::from_steady(&start, duration, every),
         &mut |row| {
             if count % keep_every == 0 {
                 points.push((row.time, row.amplitude, row.time_error));

@@ -109,7 +109,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             standard_errors.insert("g_m_s2", se);
         }
     }
-    let undetermined = undetermined(&parameters, &standard_errors);
+    let undetermined = fit.undetermined();
     if undetermined.contains(&"zeta") {
         warnings.push(
             "zeta not determined (its standard error exceeds it): the swing decays too little \
@@ -208,27 +208,6 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     Ok(out)
 }
 
-/// The parameters the data do not determine: those whose standard error
-/// exceeds their value (a phase: half a turn; an offset may be zero). They
-/// are marked so rather than printed as if measured.
-fn undetermined(
-    parameters: &BTreeMap<&'static str, f64>,
-    standard_errors: &BTreeMap<&'static str, f64>,
-) -> Vec<&'static str> {
-    parameters
-        .iter()
-        .filter(|(name, value)| {
-            let se = standard_errors.get(*name).copied().unwrap_or(f64::NAN);
-            match **name {
-                "offset_rad" => false,
-                "phase_rad" => se.is_nan() || se >= std::f64::consts::PI,
-                _ => se.is_nan() || se >= value.abs(),
-            }
-        })
-        .map(|(name, _)| *name)
-        .collect()
-}
-
 /// The tracked angle with the fitted curve (the data less the residuals),
 /// and the residuals.
 fn figure(time: &[f64], theta: &[f64], residuals: &[f64]) -> Figure {
@@ -262,34 +241,5 @@ fn figure(time: &[f64], theta: &[f64], residuals: &[f64]) -> Figure {
                 vec![Series::dots("residual", res)],
             ),
         ],
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::undetermined;
-    use std::collections::BTreeMap;
-
-    #[test]
-    fn a_parameter_is_not_determined_when_its_error_exceeds_it() {
-        let p = BTreeMap::from([
-            ("amplitude_rad", 0.09),
-            ("zeta", 1e-5),
-            ("phase_rad", 0.1),
-            ("offset_rad", 0.0),
-            ("omega_n_rad_s", 3.2),
-        ]);
-        let mut e = BTreeMap::from([
-            ("amplitude_rad", 2e-4),
-            ("zeta", 2e-4),
-            ("phase_rad", 0.5),
-            ("offset_rad", 1e-4),
-            ("omega_n_rad_s", f64::NAN),
-        ]);
-        // A NaN error determines nothing; an offset of zero is a value.
-        assert_eq!(undetermined(&p, &e), vec!["omega_n_rad_s", "zeta"]);
-        e.insert("omega_n_rad_s", 1e-3);
-        e.insert("phase_rad", 4.0);
-        assert_eq!(undetermined(&p, &e), vec!["phase_rad", "zeta"]);
     }
 }

@@ -299,7 +299,7 @@ fn draw_panel<DB: DrawingBackend>(
         panel.y_scale.value_at(y_drawn.lo),
         panel.y_scale.value_at(y_drawn.hi),
     );
-    let lines = Lines {
+    let contents = Contents {
         prepared: &prepared,
         panel,
         y: y_drawn,
@@ -308,13 +308,13 @@ fn draw_panel<DB: DrawingBackend>(
     let plot = match (panel.x_scale, panel.y_scale) {
         (Scale::Linear, Scale::Linear) => {
             let mut c = builder.build_cartesian_2d(x0..x1, y0..y1).map_err(fail)?;
-            lines.draw(&mut c)?
+            contents.draw(&mut c)?
         }
         (Scale::Log, Scale::Linear) => {
             let mut c = builder
                 .build_cartesian_2d((x0..x1).log_scale().with_key_points(log_ticks(x)), y0..y1)
                 .map_err(fail)?;
-            lines.draw(&mut c)?
+            contents.draw(&mut c)?
         }
         (Scale::Linear, Scale::Log) => {
             let mut c = builder
@@ -323,7 +323,7 @@ fn draw_panel<DB: DrawingBackend>(
                     (y0..y1).log_scale().with_key_points(log_ticks(y_drawn)),
                 )
                 .map_err(fail)?;
-            lines.draw(&mut c)?
+            contents.draw(&mut c)?
         }
         (Scale::Log, Scale::Log) => {
             let mut c = builder
@@ -332,7 +332,7 @@ fn draw_panel<DB: DrawingBackend>(
                     (y0..y1).log_scale().with_key_points(log_ticks(y_drawn)),
                 )
                 .map_err(fail)?;
-            lines.draw(&mut c)?
+            contents.draw(&mut c)?
         }
     };
     if entries.is_empty() {
@@ -361,7 +361,7 @@ fn draw_panel<DB: DrawingBackend>(
 }
 
 /// The series, the marks and the axes of one panel.
-struct Lines<'p> {
+struct Contents<'p> {
     prepared: &'p [Prepared],
     panel: &'p Panel,
     /// The vertical span drawn (axis units), for the marks.
@@ -369,7 +369,7 @@ struct Lines<'p> {
     look: Look,
 }
 
-impl Lines<'_> {
+impl Contents<'_> {
     /// Draws on `chart`; returns the plot's pixel range.
     fn draw<'a, DB, X, Y>(
         &self,

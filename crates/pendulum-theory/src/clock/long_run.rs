@@ -92,6 +92,20 @@ pub struct LongRun {
     pub every: Option<f64>,
 }
 
+impl LongRun {
+    /// A run of `duration` s started in the steady state `start` and
+    /// regulated to it (its amplitude and period), a row every `every` s
+    /// (`None`: every turning point).
+    pub fn from_steady(start: &super::Steady, duration: f64, every: Option<f64>) -> Self {
+        Self {
+            duration,
+            amplitude: start.amplitude,
+            nominal_period: start.period,
+            every,
+        }
+    }
+}
+
 /// Runs `clock` (one whole escapement cycle per beat pattern; free
 /// pendulums step beat by beat) and hands `sink` each row; `sink` returns
 /// `false` to stop.

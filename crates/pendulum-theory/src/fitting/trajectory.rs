@@ -87,7 +87,34 @@ impl TrajectoryModel {
     }
 }
 
+/// The parameters the data do not determine, of `names` with `values` and
+/// standard `errors`: those whose error reaches their value (a phase: half
+/// a turn; an offset may be zero, so never). A NaN error determines
+/// nothing.
+pub fn undetermined(names: &[&'static str], values: &[f64], errors: &[f64]) -> Vec<&'static str> {
+    names
+        .iter()
+        .zip(values.iter().zip(errors))
+        .filter(|(name, (value, se))| match **name {
+            "offset_rad" => false,
+            "phase_rad" => se.is_nan() || **se >= std::f64::consts::PI,
+            _ => se.is_nan() || **se >= value.abs(),
+        })
+        .map(|(name, _)| *name)
+        .collect()
+}
+
 impl TrajectoryFit {
+    /// The fit's parameters the data do not determine (see
+    /// [`undetermined`]), by their JSON names.
+    pub fn undetermined(&self) -> Vec<&'static str> {
+        undetermined(
+            &self.names(),
+            &self.fit.parameters,
+            &self.fit.standard_errors,
+        )
+    }
+
     /// For people, when the nonlinear fit was rejected for the linear one:
     /// what happened and what to do.
     pub fn fallback_note(&self) -> Option<String> {
@@ -412,4 +439,32 @@ fn hermite(states: &[State], h: f64, t: f64) -> f64 {
         x * x * (x - 1.0),
     );
     h00 * a.angle + h10 * h * a.angular_velocity + h01 * b.angle + h11 * h * b.angular_velocity
+}
+
+#[cfg(test)]
+mod tests {
+    use super::undetermined;
+
+    #[test]
+    fn a_parameter_is_not_determined_when_its_error_exceeds_it() {
+        let names = [
+            "amplitude_rad",
+            "omega_n_rad_s",
+            "zeta",
+            "phase_rad",
+            "offset_rad",
+        ];
+        let values = [0.09, 3.2, 1e-5, 0.1, 0.0];
+        // A NaN error determines nothing; an offset of zero is a value.
+        let errors = [2e-4, f64::NAN, 2e-4, 0.5, 1e-4];
+        assert_eq!(
+            undetermined(&names, &values, &errors),
+            vec!["omega_n_rad_s", "zeta"]
+        );
+        let errors = [2e-4, 1e-3, 2e-4, 4.0, 1e-4];
+        assert_eq!(
+            undetermined(&names, &values, &errors),
+            vec!["zeta", "phase_rad"]
+        );
+    }
 }

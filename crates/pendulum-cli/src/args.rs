@@ -109,7 +109,7 @@ unless --channel says otherwise.")]
     /// A design's datasheet: parts, mass, inertia, equivalent length,
     /// period, temperature and barometric coefficients.
     #[command(after_help = "Example:
-  pendulum design examples/seconds-steel-brass.toml --pressure 1000hPa --temperature 25 --humidity 60")]
+  pendulum design examples/seconds-steel-brass.toml --pressure 1000 --temperature 25 --humidity 60")]
     Design(DesignArgs),
     /// A clock: the pendulum kept going by an escapement. Its steady
     /// amplitude and rate (circular and escapement errors), the isochronism
@@ -331,6 +331,10 @@ pub struct MeasurementArgs {
     /// [default: 0,0], or `fit` for the centre of the circle the bob traces.
     #[arg(long, value_name = "X,Y|fit", allow_hyphen_values = true)]
     pub pivot: Option<String>,
+    /// Fit a file estimated to need more than a few seconds of computing
+    /// (never one that would not end in a day).
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// `pendulum fit decay`.
@@ -808,9 +812,9 @@ pub struct RegulateArgs {
     #[arg(long, value_name = "N")]
     pub nut_tpi: Option<f64>,
     /// Divisions engraved round the nut.
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     pub nut_divisions: Option<u32>,
-    /// Where a regulating tray sits below the pivot [default: a third of the length].
+    /// Where a regulating tray sits below the pivot [default: a third of the length] (with --design).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub tray: Option<String>,
     /// Print one JSON object.
@@ -953,6 +957,10 @@ pub struct ClockArgs {
     /// With --duration: write the rows (time_s,beats,amplitude_rad,rate_s_per_day,time_error_s,drive_factor).
     #[arg(long, value_name = "FILE.csv", requires = "duration")]
     pub swings: Option<std::path::PathBuf>,
+    /// With --duration: run a long run estimated at more than a few
+    /// seconds (never one that would not end in a day or fit the disk).
+    #[arg(long, requires = "duration")]
+    pub force: bool,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Plot the isochronism curve (with --drive-range) or the long run (.svg or .png).

@@ -3,6 +3,8 @@
 //! writing a 16-bit WAV as a stream.
 
 use crate::error::CliError;
+use std::cell::Cell;
+use std::io::Read;
 use std::path::Path;
 use symphonia::core::audio::SampleBuffer;
 use symphonia::core::codecs::{DecoderOptions, CODEC_TYPE_NULL};
@@ -69,7 +71,14 @@ pub fn decode(
     let mut mono: Vec<f32> = Vec::new();
     decode_frames(path, extent, |frames, count| {
         mono.clear();
-        mono.extend(frames.iter().skip(channel).step_by(count));
+        // A float file's NaN or infinite sample is damage: heard as silence.
+        mono.extend(frames.iter().skip(channel).step_by(count).map(|&x| {
+            if x.is_finite() {
+                x
+            } else {
+                0.0
+            }
+        }));
         let drop = skip.min(mono.len() as u64) as usize;
         skip -= drop as u64;
         if drop < mono.len() {
@@ -78,8 +87,35 @@ pub fn decode(
     })
 }
 
+thread_local! {
+    /// Set while the decoder runs: a panic inside it is a damaged file,
+    /// reported as such, not a defect of ours.
+    static DECODING: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Whether a panic now is the decoder's on a damaged file (so the panic
+/// hook stays quiet and [`decode_frames`] reports it in one line).
+pub fn quiet_panics() -> bool {
+    DECODING.with(Cell::get)
+}
+
+/// The sound formats we decode, by their first bytes: RIFF/WAVE (and
+/// RF64), FLAC, Ogg, MP3 (an ID3 tag or an MPEG frame sync, which ADTS
+/// AAC shares) and MP4/M4A (an `ftyp` box). Anything else is refused at
+/// once, before the decoder would search the whole file for a frame.
+fn known_sound_format(head: &[u8]) -> bool {
+    let at = |offset: usize, magic: &[u8]| head.get(offset..offset + magic.len()) == Some(magic);
+    (at(0, b"RIFF") || at(0, b"RF64")) && at(8, b"WAVE")
+        || at(0, b"fLaC")
+        || at(0, b"OggS")
+        || at(0, b"ID3")
+        || at(4, b"ftyp")
+        || (head.len() >= 2 && head[0] == 0xFF && head[1] & 0xE0 == 0xE0)
+}
+
 /// Decodes `extent` of `path`, giving `each` interleaved frames and the
-/// number of channels.
+/// number of channels. A decoder that fails on a damaged file (a panic
+/// inside symphonia) is reported as a damaged file.
 fn decode_frames(
     path: &Path,
     extent: Extent,
@@ -87,7 +123,45 @@ fn decode_frames(
 ) -> Result<Info, CliError> {
     let file_name = path.display().to_string();
     let fail = |what: String| CliError::other(format!("{file_name}: {what}"));
-    let file = std::fs::File::open(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+    let mut file =
+        crate::file::open_input(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+    let regular = file.metadata().is_ok_and(|m| m.is_file());
+    if !regular {
+        return Err(fail(
+            "is not a regular file; give a sound file (WAV, FLAC, Ogg, MP3 or M4A)".into(),
+        ));
+    }
+    let mut head = Vec::with_capacity(16);
+    (&mut file)
+        .take(16)
+        .read_to_end(&mut head)
+        .map_err(|e| fail(format!("cannot read it: {e}")))?;
+    if !known_sound_format(&head) {
+        return Err(fail(
+            "not a sound file: its first bytes are none of WAV, FLAC, Ogg, MP3 or M4A".into(),
+        ));
+    }
+    drop(file);
+    let file = crate::file::open_input(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+    DECODING.with(|d| d.set(true));
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        decode_file(file, path, extent, &mut each, &fail)
+    }));
+    DECODING.with(|d| d.set(false));
+    result.unwrap_or_else(|_| {
+        Err(fail(
+            "the decoder failed on it: the file is damaged or its header is not valid".into(),
+        ))
+    })
+}
+
+fn decode_file(
+    file: std::fs::File,
+    path: &Path,
+    extent: Extent,
+    each: &mut impl FnMut(&[f32], usize),
+    fail: &impl Fn(String) -> CliError,
+) -> Result<Info, CliError> {
     let stream = MediaSourceStream::new(Box::new(file), Default::default());
     let mut hint = Hint::new();
     if let Some(ext) = path.extension().and_then(|e| e.to_str()) {
@@ -116,7 +190,8 @@ fn decode_frames(
     let sample_rate = track
         .codec_params
         .sample_rate
-        .ok_or_else(|| fail("its sample rate is not stated".into()))?;
+        .filter(|&r| r > 0)
+        .ok_or_else(|| fail("its sample rate is not stated (or is 0) in its header".into()))?;
     let channels = track.codec_params.channels.map_or(1, |c| c.count());
     let stated = track.codec_params.n_frames;
     let info = Info {
@@ -184,7 +259,6 @@ fn decode_frames(
 /// and `moov/trak/mdia/mdhd`): `(media time, timescale)`. `None` for
 /// other files, or an MP4 without an edit list.
 fn mp4_priming(path: &Path) -> Option<(u64, u32)> {
-    use std::io::Read;
     let mut head = [0_u8; 8];
     let mut file = std::fs::File::open(path).ok()?;
     file.read_exact(&mut head).ok()?;

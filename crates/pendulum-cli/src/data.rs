@@ -19,8 +19,17 @@
 
 use crate::error::CliError;
 use serde::Serialize;
-use std::io::{BufRead, BufReader};
+use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
+
+/// The longest line a measurement file may have (a row of a few hundred
+/// columns fits many times over); a longer one is not a table of numbers.
+pub const MAX_LINE_BYTES: u64 = 64 * 1024;
+/// The most bytes read from one measurement file (2 GiB: about 50 million
+/// rows of three numbers).
+pub const MAX_FILE_BYTES: u64 = 2 << 30;
+/// The most rows of numbers read from one measurement file.
+pub const MAX_ROWS: usize = 50_000_000;
 
 /// Degrees to radians.
 pub const DEG: f64 = std::f64::consts::PI / 180.0;
@@ -526,17 +535,35 @@ pub fn stream_table(
 ) -> Result<(String, Vec<Role>, Vec<String>, Format), CliError> {
     let file = path.display().to_string();
     let fail = |message: String| CliError::other(format!("{file}: {message}"));
-    let handle = std::fs::File::open(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
-    let mut reader = BufReader::new(handle);
+    let handle = crate::file::open_input(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+    if handle.metadata().is_ok_and(|m| m.is_dir()) {
+        return Err(fail("is a folder; give a file".to_string()));
+    }
+    let mut reader = BufReader::new(handle).take(MAX_FILE_BYTES + 1);
+    let mut total = 0_u64;
     let mut next_line = |number: &mut u64| -> Result<Option<String>, CliError> {
         let mut bytes = Vec::new();
-        let read = reader
+        let read = (&mut reader)
+            .take(MAX_LINE_BYTES + 1)
             .read_until(b'\n', &mut bytes)
             .map_err(|e| fail(format!("cannot read it: {e}")))?;
         if read == 0 {
             return Ok(None);
         }
         *number += 1;
+        total += read as u64;
+        if total > MAX_FILE_BYTES {
+            return Err(fail(format!(
+                "is larger than the {} GiB a measurement file may have",
+                MAX_FILE_BYTES >> 30
+            )));
+        }
+        if read as u64 > MAX_LINE_BYTES && bytes.last() != Some(&b'\n') {
+            return Err(fail(format!(
+                "line {number} is longer than {} KiB: not a table of numbers",
+                MAX_LINE_BYTES >> 10
+            )));
+        }
         let text = String::from_utf8_lossy(&bytes);
         let text = text.trim_start_matches('\u{feff}');
         Ok(Some(text.trim_end_matches(['\n', '\r']).to_string()))
@@ -669,6 +696,11 @@ pub fn stream_table(
             }
         }
         format.rows += 1;
+        if format.rows > MAX_ROWS {
+            return Err(fail(format!(
+                "has more than {MAX_ROWS} rows of numbers, the most a measurement file may have"
+            )));
+        }
         each(&row, line_number)
     };
     for (line_number, line) in sample.iter().skip(first_numeric) {

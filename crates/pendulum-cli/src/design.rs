@@ -20,6 +20,7 @@
 use crate::error::CliError;
 use crate::units::{parse_quantity, Dimension};
 use pendulum_theory::compound::{CompoundPendulum, Material, Part, Placement, Shape};
+use std::io::Read;
 use std::path::Path;
 
 /// The thread of a design's rating nut.
@@ -41,6 +42,11 @@ pub struct Design {
     pub thread: Option<Thread>,
 }
 
+/// The most bytes a design file may have.
+pub const MAX_DESIGN_BYTES: u64 = 4 << 20;
+/// The most parts a design may have.
+pub const MAX_PARTS: usize = 1000;
+
 /// The design in `path`, checked; every refusal names the file, the part
 /// and the field.
 pub fn read(path: &Path) -> Result<CompoundPendulum, CliError> {
@@ -51,7 +57,18 @@ pub fn read(path: &Path) -> Result<CompoundPendulum, CliError> {
 pub fn read_design(path: &Path) -> Result<Design, CliError> {
     let file = path.display().to_string();
     let fail = |what: String| CliError::other(format!("{file}: {what}"));
-    let text = std::fs::read_to_string(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+    let mut bytes = Vec::new();
+    crate::file::open_input(path)
+        .and_then(|f| f.take(MAX_DESIGN_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(|e| fail(format!("cannot read it: {e}")))?;
+    if bytes.len() as u64 > MAX_DESIGN_BYTES {
+        return Err(fail(format!(
+            "is larger than the {} MiB a design file may have",
+            MAX_DESIGN_BYTES >> 20
+        )));
+    }
+    let text = String::from_utf8(bytes)
+        .map_err(|_| fail("is not a text file (a design is TOML, in UTF-8)".to_string()))?;
     let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
         let first = e.message().lines().next().unwrap_or("").to_string();
         let line = e
@@ -73,6 +90,12 @@ pub fn read_design(path: &Path) -> Result<Design, CliError> {
         .get("part")
         .and_then(|p| p.as_array())
         .ok_or_else(|| fail("no [[part]] sections".into()))?;
+    if parts.len() > MAX_PARTS {
+        return Err(fail(format!(
+            "has {} parts; a design may have at most {MAX_PARTS}",
+            parts.len()
+        )));
+    }
     let mut names: Vec<String> = Vec::new();
     for (i, p) in parts.iter().enumerate() {
         let name = p

@@ -7,10 +7,11 @@
 //! path, a folder where a file is wanted, and two outputs to standard output.
 
 use crate::error::CliError;
-use crate::interrupt;
 use std::fs::File;
-use std::io::{BufWriter, Write};
+use std::io::{BufWriter, Seek, SeekFrom, Write};
+use std::os::unix::fs::MetadataExt;
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
 /// Whether `path` is `-`, standard output.
 pub fn is_stdout(path: &Path) -> bool {
@@ -18,22 +19,33 @@ pub fn is_stdout(path: &Path) -> bool {
 }
 
 /// Checks a command's output paths (flag and path, `None` when not asked
-/// for) before anything is computed or written: no two name the same file,
-/// none is an existing folder, at most one is `-` (standard output), and
-/// `-` only when the command's own summary does not also go there
-/// (`summary_on_stdout`: `--json`, or text that cannot move to standard
-/// error).
-pub fn check_outputs(outputs: &[(&'static str, Option<&Path>)]) -> Result<(), CliError> {
+/// for) before anything is read, computed or written: each names a file
+/// in an existing folder, none is an existing folder, none is one of the
+/// command's `inputs` (through links and hard links too), no two name the
+/// same file, and at most one is `-` (standard output).
+pub fn check_outputs(
+    outputs: &[(&'static str, Option<&Path>)],
+    inputs: &[(&'static str, Option<&Path>)],
+) -> Result<(), CliError> {
     let given: Vec<(&str, &Path)> = outputs
         .iter()
         .filter_map(|(flag, path)| path.map(|p| (*flag, p)))
         .collect();
     for (i, (flag, path)) in given.iter().enumerate() {
-        if !is_stdout(path) && path.is_dir() {
-            return Err(CliError::flag(
-                flag,
-                format!("'{}' is a folder; give a file name", path.display()),
-            ));
+        if !is_stdout(path) {
+            check_writable_place(flag, path)?;
+            for (input_flag, input) in inputs.iter().filter_map(|(f, p)| p.map(|p| (f, p))) {
+                if same_file(path, input) {
+                    return Err(CliError::flag(
+                        flag,
+                        format!(
+                            "'{}' is the file {input_flag} reads; an output never replaces \
+                             an input: give it another name",
+                            path.display()
+                        ),
+                    ));
+                }
+            }
         }
         for (other_flag, other) in &given[..i] {
             if is_stdout(path) && is_stdout(other) {
@@ -56,16 +68,46 @@ pub fn check_outputs(outputs: &[(&'static str, Option<&Path>)]) -> Result<(), Cl
     Ok(())
 }
 
+/// An output file's path: not a folder, a file name, in a folder that
+/// exists.
+fn check_writable_place(flag: &str, path: &Path) -> Result<(), CliError> {
+    let shown = path.display();
+    if path.is_dir() {
+        return Err(CliError::flag(
+            flag,
+            format!("'{shown}' is a folder; give a file name"),
+        ));
+    }
+    let real = resolve_link(path);
+    if real.file_name().is_none() {
+        return Err(CliError::flag(
+            flag,
+            format!("'{shown}' is not a file name"),
+        ));
+    }
+    let folder = real
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    if !folder.is_dir() {
+        return Err(CliError::flag(
+            flag,
+            format!("the folder '{}' does not exist", folder.display()),
+        ));
+    }
+    Ok(())
+}
+
 /// Whether two output paths name one file: the same folder (resolved) and
 /// the same name, or the same existing file through links.
 fn same_file(a: &Path, b: &Path) -> bool {
     if is_stdout(b) {
         return false;
     }
-    let (ra, rb) = (resolve_link(a), resolve_link(b));
-    if let (Ok(x), Ok(y)) = (ra.canonicalize(), rb.canonicalize()) {
-        return x == y;
+    if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
+        return x.dev() == y.dev() && x.ino() == y.ino();
     }
+    let (ra, rb) = (resolve_link(a), resolve_link(b));
     let folder = |p: &Path| {
         let parent = p.parent().filter(|q| !q.as_os_str().is_empty());
         parent
@@ -110,21 +152,257 @@ fn temporary_beside(target: &Path) -> Option<PathBuf> {
     Some(target.with_file_name(name))
 }
 
-/// Where the bytes go.
-enum Sink {
-    /// A temporary file beside the target, renamed into place at the end.
-    File {
-        target: PathBuf,
+// ---- The run's outputs, one transaction -------------------------------------
+//
+// Every output of a run (a file, a report folder, data for standard output)
+// is written to a temporary first and registered here. A command's
+// `commit` only marks its output ready; `main` puts them all in place
+// together once the command has succeeded ([`commit_all`]), or removes
+// them all when it failed, was interrupted, or panicked ([`abandon_all`]).
+// So an error found late (a bad value, a plot into a missing folder, a
+// full disk) never leaves an earlier output behind. The files the run read
+// are registered too ([`open_input`]): an output that would replace one of
+// them is refused at the commit, whatever path named it.
+
+/// One output of the run.
+#[derive(Debug)]
+enum Pending {
+    /// A temporary file or folder to rename over `target` (a folder that
+    /// holds an earlier report is moved aside first, then removed).
+    Path {
         temporary: PathBuf,
-        writer: BufWriter<File>,
+        target: PathBuf,
+        folder: bool,
+        ready: bool,
     },
-    /// Standard output.
-    Stdout(BufWriter<std::io::Stdout>),
+    /// Data for standard output, held in an unnamed temporary file.
+    Stdout { data: Option<File>, ready: bool },
 }
 
-/// A file being written; [`AtomicFile::commit`] puts it in place.
+/// The outputs of this run, in the order they were started.
+static PENDING: Mutex<Vec<Option<Pending>>> = Mutex::new(Vec::new());
+/// The files this run has read: (device, inode) and the path as given.
+static INPUTS: Mutex<Vec<(u64, u64, PathBuf)>> = Mutex::new(Vec::new());
+
+fn pending() -> std::sync::MutexGuard<'static, Vec<Option<Pending>>> {
+    PENDING
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+fn register(item: Pending) -> usize {
+    let mut list = pending();
+    list.push(Some(item));
+    list.len() - 1
+}
+
+/// Marks output `id` ready to be put in place.
+fn mark_ready(id: usize) {
+    if let Some(Some(Pending::Path { ready, .. } | Pending::Stdout { ready, .. })) =
+        pending().get_mut(id)
+    {
+        *ready = true;
+    }
+}
+
+/// Removes output `id`'s temporary (an output given up before it was ready).
+fn discard(id: usize) {
+    let item = pending().get_mut(id).and_then(Option::take);
+    if let Some(item) = item {
+        remove_temporary(&item);
+    }
+}
+
+fn remove_temporary(item: &Pending) {
+    if let Pending::Path {
+        temporary, folder, ..
+    } = item
+    {
+        if *folder {
+            let _ = std::fs::remove_dir_all(temporary);
+        } else {
+            let _ = std::fs::remove_file(temporary);
+        }
+    }
+}
+
+/// Opens a device or a pipe for writing without waiting for a reader (a
+/// FIFO nobody reads is an error, not a hang).
+fn open_special_for_writing(path: &Path) -> std::io::Result<File> {
+    use std::os::unix::fs::OpenOptionsExt;
+    let file = std::fs::OpenOptions::new()
+        .write(true)
+        .custom_flags(libc::O_NONBLOCK)
+        .open(path)?;
+    blocking(&file)?;
+    Ok(file)
+}
+
+/// Clears `O_NONBLOCK` on an open file, so that its reads and writes wait
+/// as usual.
+fn blocking(file: &File) -> std::io::Result<()> {
+    use std::os::unix::io::AsRawFd;
+    let fd = file.as_raw_fd();
+    // SAFETY: fcntl on a descriptor this process owns, with flags it
+    // returned.
+    let flags = unsafe { libc::fcntl(fd, libc::F_GETFL) };
+    if flags < 0 || unsafe { libc::fcntl(fd, libc::F_SETFL, flags & !libc::O_NONBLOCK) } < 0 {
+        return Err(std::io::Error::last_os_error());
+    }
+    Ok(())
+}
+
+/// Opens a file the run reads, and remembers it so that no output of the
+/// run may replace it. A FIFO is opened without waiting for a writer (one
+/// that has none then reads as empty), so a named pipe never hangs a run.
+pub fn open_input(path: &Path) -> std::io::Result<File> {
+    use std::os::unix::fs::OpenOptionsExt;
+    let file = std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NONBLOCK)
+        .open(path)?;
+    blocking(&file)?;
+    if let Ok(meta) = file.metadata() {
+        let mut inputs = INPUTS
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        inputs.push((meta.dev(), meta.ino(), path.to_path_buf()));
+    }
+    Ok(file)
+}
+
+/// The input (as its path was given) that `target` is, or that lies
+/// inside the folder `target`.
+fn input_at(target: &Path, folder: bool) -> Option<PathBuf> {
+    let inputs = INPUTS
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Ok(meta) = std::fs::metadata(target) {
+        if let Some((.., path)) = inputs
+            .iter()
+            .find(|(dev, ino, _)| *dev == meta.dev() && *ino == meta.ino())
+        {
+            return Some(path.clone());
+        }
+    }
+    if folder {
+        let root = target.canonicalize().ok()?;
+        return inputs
+            .iter()
+            .find(|(.., path)| path.canonicalize().is_ok_and(|p| p.starts_with(&root)))
+            .map(|(.., path)| path.clone());
+    }
+    None
+}
+
+/// Puts every ready output of the run in place, in the order they were
+/// started, folders last (a report's files before its folder), and writes
+/// the data meant for standard output. An output that would replace a file the run
+/// read is refused, and then nothing is put in place.
+pub fn commit_all() -> Result<(), CliError> {
+    let items: Vec<Pending> = pending().drain(..).flatten().collect();
+    let refused = items.iter().find_map(|item| match item {
+        Pending::Path {
+            target,
+            folder,
+            ready: true,
+            ..
+        } => input_at(target, *folder).map(|input| (target.clone(), input)),
+        _ => None,
+    });
+    if let Some((target, input)) = refused {
+        items.iter().for_each(remove_temporary);
+        return Err(CliError::other(format!(
+            "'{}' would replace '{}', which this command reads; give the output another name",
+            target.display(),
+            input.display()
+        )));
+    }
+    // Files first, folders last: a report's files are put in place inside
+    // its temporary folder before the folder takes its name.
+    let (folders, mut items): (Vec<Pending>, Vec<Pending>) = items
+        .into_iter()
+        .partition(|item| matches!(item, Pending::Path { folder: true, .. }));
+    items.extend(folders);
+    let mut first_error = None;
+    for item in items {
+        let result = match item {
+            Pending::Path {
+                ref temporary,
+                ref target,
+                folder,
+                ready: true,
+            } => put_in_place(temporary, target, folder),
+            Pending::Stdout {
+                data: Some(mut data),
+                ready: true,
+            } => copy_to_stdout(&mut data),
+            other => {
+                remove_temporary(&other);
+                Ok(())
+            }
+        };
+        if let Err(e) = result {
+            first_error.get_or_insert(e);
+        }
+    }
+    first_error.map_or(Ok(()), Err)
+}
+
+/// Removes every temporary of the run: nothing it started is left.
+pub fn abandon_all() {
+    let items: Vec<Pending> = pending().drain(..).flatten().collect();
+    items.iter().for_each(remove_temporary);
+}
+
+fn put_in_place(temporary: &Path, target: &Path, folder: bool) -> Result<(), CliError> {
+    let fail =
+        |e: std::io::Error| CliError::other(format!("writing '{}' failed: {e}", target.display()));
+    if folder && target.exists() {
+        let mut aside = temporary.as_os_str().to_owned();
+        aside.push(".old");
+        let aside = PathBuf::from(aside);
+        std::fs::rename(target, &aside).map_err(|e| {
+            let _ = std::fs::remove_dir_all(temporary);
+            fail(e)
+        })?;
+        if let Err(e) = std::fs::rename(temporary, target) {
+            let _ = std::fs::rename(&aside, target);
+            let _ = std::fs::remove_dir_all(temporary);
+            return Err(fail(e));
+        }
+        let _ = std::fs::remove_dir_all(&aside);
+        return Ok(());
+    }
+    std::fs::rename(temporary, target).map_err(|e| {
+        if folder {
+            let _ = std::fs::remove_dir_all(temporary);
+        } else {
+            let _ = std::fs::remove_file(temporary);
+        }
+        fail(e)
+    })
+}
+
+/// Writes the held data to standard output; a closed pipe is not an error.
+fn copy_to_stdout(data: &mut File) -> Result<(), CliError> {
+    let fail =
+        |e: std::io::Error| CliError::other(format!("could not write to standard output: {e}"));
+    data.seek(SeekFrom::Start(0)).map_err(fail)?;
+    let mut stdout = std::io::stdout().lock();
+    match std::io::copy(data, &mut stdout).and_then(|_| stdout.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(fail(e)),
+        _ => Ok(()),
+    }
+}
+
+/// A file being written; [`AtomicFile::commit`] marks it ready, and
+/// [`commit_all`] puts it in place with every other output of the run.
 pub struct AtomicFile {
-    sink: Option<Sink>,
+    /// The temporary file beside the target (unnamed for standard
+    /// output); `None` once committed.
+    sink: Option<BufWriter<File>>,
+    id: usize,
     shown: String,
     flag: &'static str,
 }
@@ -134,11 +412,25 @@ impl AtomicFile {
     /// writes to standard output.
     pub fn create(target: &Path, flag: &'static str) -> Result<Self, CliError> {
         if is_stdout(target) {
+            let data = tempfile::tempfile().map_err(|e| {
+                CliError::flag(
+                    flag,
+                    format!("cannot hold the data for standard output: {e}"),
+                )
+            })?;
+            let writer = data.try_clone().map_err(|e| {
+                CliError::flag(
+                    flag,
+                    format!("cannot hold the data for standard output: {e}"),
+                )
+            })?;
+            let id = register(Pending::Stdout {
+                data: Some(data),
+                ready: false,
+            });
             return Ok(Self {
-                sink: Some(Sink::Stdout(BufWriter::with_capacity(
-                    1 << 16,
-                    std::io::stdout(),
-                ))),
+                sink: Some(BufWriter::with_capacity(1 << 16, writer)),
+                id,
                 shown: "standard output".to_string(),
                 flag,
             });
@@ -151,6 +443,20 @@ impl AtomicFile {
             ));
         }
         let real = resolve_link(target);
+        // A device or a pipe (/dev/null, /dev/full, a FIFO) is written
+        // directly: it is no file to replace (renaming over it would put a
+        // regular file in place of /dev/null) and keeps nothing to lose.
+        let special = std::fs::metadata(&real).is_ok_and(|m| !m.is_file());
+        if special {
+            let file = open_special_for_writing(&real)
+                .map_err(|e| CliError::flag(flag, format!("cannot write to '{shown}': {e}")))?;
+            return Ok(Self {
+                sink: Some(BufWriter::with_capacity(1 << 16, file)),
+                id: usize::MAX,
+                shown,
+                flag,
+            });
+        }
         let temporary = temporary_beside(&real)
             .ok_or_else(|| CliError::flag(flag, format!("'{shown}' is not a file name")))?;
         let file = File::create(&temporary).map_err(|e| {
@@ -159,12 +465,15 @@ impl AtomicFile {
                 format!("cannot write in the folder of '{shown}': {e}"),
             )
         })?;
+        let id = register(Pending::Path {
+            temporary,
+            target: real,
+            folder: false,
+            ready: false,
+        });
         Ok(Self {
-            sink: Some(Sink::File {
-                target: real,
-                temporary,
-                writer: BufWriter::with_capacity(1 << 16, file),
-            }),
+            sink: Some(BufWriter::with_capacity(1 << 16, file)),
+            id,
             shown,
             flag,
         })
@@ -172,10 +481,7 @@ impl AtomicFile {
 
     /// The buffered writer.
     pub fn writer(&mut self) -> &mut dyn Write {
-        match self.sink.as_mut().expect("not yet committed") {
-            Sink::File { writer, .. } => writer,
-            Sink::Stdout(writer) => writer,
-        }
+        self.sink.as_mut().expect("not yet committed")
     }
 
     /// Turns a write error into a message that names the file.
@@ -183,41 +489,31 @@ impl AtomicFile {
         CliError::flag(self.flag, format!("writing '{}' failed: {e}", self.shown))
     }
 
-    /// Flushes and renames the file into place; returns its path (or
-    /// "standard output").
+    /// Flushes the file and marks it ready to be put in place with the
+    /// run's other outputs; returns its path (or "standard output").
     ///
     /// No `fsync`: it would cost more than a short simulation (2 ms measured
     /// against 4 ms of computing), and the rename alone already guarantees
     /// that a failed or interrupted run never leaves a half-written file
     /// under the target's name; only an operating-system crash could.
     pub fn commit(mut self) -> Result<String, CliError> {
-        match self.sink.take().expect("committed once") {
-            Sink::Stdout(mut writer) => {
-                writer.flush().map_err(|e| self.write_error(e))?;
-            }
-            Sink::File {
-                target,
-                temporary,
-                writer,
-            } => {
-                let flushed = writer.into_inner().map_err(|e| e.error().to_string());
-                let renamed = flushed
-                    .and_then(|_| std::fs::rename(&temporary, &target).map_err(|e| e.to_string()));
-                if let Err(e) = renamed {
-                    let _ = std::fs::remove_file(&temporary);
-                    return Err(self.write_error(e));
-                }
-            }
+        let Some(writer) = self.sink.take() else {
+            return Ok(self.shown.clone());
+        };
+        if let Err(e) = writer.into_inner().map_err(|e| e.error().to_string()) {
+            discard(self.id);
+            return Err(self.write_error(e));
         }
+        mark_ready(self.id);
         Ok(self.shown.clone())
     }
 }
 
 impl Drop for AtomicFile {
-    /// An uncommitted file is removed.
+    /// A file dropped before its commit is removed.
     fn drop(&mut self) {
-        if let Some(Sink::File { temporary, .. }) = self.sink.take() {
-            let _ = std::fs::remove_file(&temporary);
+        if self.sink.take().is_some() {
+            discard(self.id);
         }
     }
 }
@@ -300,79 +596,119 @@ impl CsvFile {
     }
 }
 
+/// The file a report writes into its folder, by which a later report
+/// recognises the folder as its own to replace.
+pub const REPORT_MARKER: &str = ".pendulum-report";
+
 /// A folder written whole or not at all: files go into a temporary folder
-/// beside the target, which replaces the target at [`AtomicFolder::commit`]
-/// (an older folder of that name is moved aside first, then removed).
+/// beside the target, which replaces the target with the run's other
+/// outputs ([`commit_all`]). The target must be new, empty, or a folder an
+/// earlier report wrote (it holds [`REPORT_MARKER`]): any other folder is
+/// refused before any work, so no folder of the user's is ever replaced.
 pub struct AtomicFolder {
-    target: PathBuf,
-    temporary: Option<PathBuf>,
+    id: Option<usize>,
+    temporary: PathBuf,
 }
 
 impl AtomicFolder {
-    /// Starts the folder `target` (named by `flag`).
-    pub fn create(target: &Path, flag: &'static str) -> Result<Self, CliError> {
+    /// Checks that `target` (named by `flag`) may be written: not `-`, not
+    /// a file, and new, empty or an earlier report.
+    pub fn check(target: &Path, flag: &'static str) -> Result<(), CliError> {
         let shown = target.display().to_string();
-        if target.exists() && !target.is_dir() {
+        if is_stdout(target) {
+            return Err(CliError::flag(
+                flag,
+                "a report is a folder of files and cannot go to standard output ('-'); give a folder name",
+            ));
+        }
+        let entry = std::fs::symlink_metadata(target);
+        if entry.is_ok() && !target.is_dir() {
             return Err(CliError::flag(
                 flag,
                 format!("'{shown}' exists and is not a folder"),
             ));
         }
+        if entry.is_ok_and(|m| m.file_type().is_symlink()) {
+            return Err(CliError::flag(
+                flag,
+                format!("'{shown}' is a symbolic link; give the folder itself"),
+            ));
+        }
+        if target.is_dir() {
+            let mut entries = std::fs::read_dir(target)
+                .map_err(|e| CliError::flag(flag, format!("cannot read '{shown}': {e}")))?;
+            let empty = entries.next().is_none();
+            if !empty && !target.join(REPORT_MARKER).is_file() {
+                return Err(CliError::flag(
+                    flag,
+                    format!(
+                        "'{shown}' is a folder that holds other files, not an earlier report; \
+                         give a new or empty folder"
+                    ),
+                ));
+            }
+        }
+        if temporary_beside(target).is_none() {
+            return Err(CliError::flag(
+                flag,
+                format!("'{shown}' is not a folder name"),
+            ));
+        }
+        if let Some(parent) = target.parent().filter(|p| !p.as_os_str().is_empty()) {
+            if !parent.is_dir() {
+                return Err(CliError::flag(
+                    flag,
+                    format!("the folder '{}' does not exist", parent.display()),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Starts the folder `target` (named by `flag`), with its marker.
+    pub fn create(target: &Path, flag: &'static str) -> Result<Self, CliError> {
+        Self::check(target, flag)?;
+        let shown = target.display().to_string();
         let temporary = temporary_beside(target)
             .ok_or_else(|| CliError::flag(flag, format!("'{shown}' is not a folder name")))?;
-        if let Some(parent) = target.parent().filter(|p| !p.as_os_str().is_empty()) {
-            std::fs::create_dir_all(parent)
-                .map_err(|e| CliError::flag(flag, format!("cannot create '{shown}': {e}")))?;
-        }
         std::fs::create_dir(&temporary)
             .map_err(|e| CliError::flag(flag, format!("cannot create '{shown}': {e}")))?;
-        Ok(Self {
+        let id = register(Pending::Path {
+            temporary: temporary.clone(),
             target: target.to_path_buf(),
-            temporary: Some(temporary),
+            folder: true,
+            ready: false,
+        });
+        std::fs::write(
+            temporary.join(REPORT_MARKER),
+            "This folder was written by `pendulum report`; a later report may replace it.\n",
+        )
+        .map_err(|e| CliError::flag(flag, format!("cannot write in '{shown}': {e}")))?;
+        Ok(Self {
+            id: Some(id),
+            temporary,
         })
     }
 
-    /// Where to write the folder's files until the commit.
+    /// Where to write the folder's files.
     pub fn path(&self) -> &Path {
-        self.temporary.as_deref().expect("not yet committed")
+        &self.temporary
     }
 
-    /// Puts the folder in place; returns its path.
-    pub fn commit(mut self, flag: &'static str) -> Result<PathBuf, CliError> {
-        let temporary = self.temporary.take().expect("committed once");
-        let fail = |e: std::io::Error| {
-            let _ = std::fs::remove_dir_all(&temporary);
-            CliError::flag(
-                flag,
-                format!("writing '{}' failed: {e}", self.target.display()),
-            )
-        };
-        if interrupt::requested() {
-            let _ = std::fs::remove_dir_all(&temporary);
-            return Err(interrupt::error());
+    /// Marks the folder ready, after every file in it; returns its path.
+    pub fn commit(mut self, target: &Path) -> PathBuf {
+        if let Some(id) = self.id.take() {
+            mark_ready(id);
         }
-        if self.target.exists() {
-            let mut aside = temporary.clone().into_os_string();
-            aside.push(".old");
-            let aside = PathBuf::from(aside);
-            std::fs::rename(&self.target, &aside).map_err(fail)?;
-            if let Err(e) = std::fs::rename(&temporary, &self.target) {
-                let _ = std::fs::rename(&aside, &self.target);
-                return Err(fail(e));
-            }
-            let _ = std::fs::remove_dir_all(&aside);
-        } else {
-            std::fs::rename(&temporary, &self.target).map_err(fail)?;
-        }
-        Ok(self.target.clone())
+        target.to_path_buf()
     }
 }
 
 impl Drop for AtomicFolder {
-    /// An uncommitted folder is removed with everything in it.
+    /// A folder dropped before its commit is removed with everything in it.
     fn drop(&mut self) {
-        if let Some(temporary) = self.temporary.take() {
-            let _ = std::fs::remove_dir_all(&temporary);
+        if let Some(id) = self.id.take() {
+            discard(id);
         }
     }
 }

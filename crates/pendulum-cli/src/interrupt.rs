@@ -16,6 +16,7 @@ pub fn install() {
     // Installing fails only if a handler exists already, which is harmless.
     let _ = ctrlc::set_handler(|| {
         if REQUESTED.swap(true, Ordering::SeqCst) {
+            crate::file::abandon_all();
             std::process::exit(i32::from(EXIT_INTERRUPTED));
         }
     });

@@ -16,6 +16,7 @@ mod interrupt;
 mod output;
 mod plot;
 mod units;
+mod work;
 
 use clap::error::ErrorKind;
 use clap::Parser;
@@ -30,6 +31,7 @@ fn main() -> ExitCode {
         Err(e) => return clap_exit(&e),
     };
     interrupt::install();
+    install_panic_cleanup();
     let result = commands::run(&cli.command).and_then(|out| {
         // A command that does not stop on Ctrl-C by itself is stopped here:
         // nothing of it is printed.
@@ -40,10 +42,26 @@ fn main() -> ExitCode {
         output::check_finite_text(&out.stderr)?;
         Ok(out)
     });
-    match result {
+    // The run's outputs are one transaction: all put in place, or none.
+    match result.and_then(|out| file::commit_all().map(|()| out)) {
         Ok(out) => print(&out),
-        Err(e) => fail(&e),
+        Err(e) => {
+            file::abandon_all();
+            fail(&e)
+        }
     }
+}
+
+/// A panic (a defect: every input error is an `Err`) still leaves no
+/// temporary file behind; the default report follows.
+fn install_panic_cleanup() {
+    let default = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if !audio::quiet_panics() {
+            file::abandon_all();
+            default(info);
+        }
+    }));
 }
 
 /// Help and version print as clap renders them; errors become one line.

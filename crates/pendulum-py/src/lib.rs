@@ -813,6 +813,24 @@ fn clock_run<'py>(
             },
         )
     });
+    match finish.ending {
+        pendulum_theory::clock::long_run::Ending::OverTheTop => {
+            return Err(PyValueError::new_err(format!(
+                "drive_schedule: {} days into the run the drive ({} × the given) carries the \
+                 pendulum over the top; give less drive",
+                finish.last.time / 86_400.0,
+                finish.last.drive
+            )))
+        }
+        pendulum_theory::clock::long_run::Ending::RateOutOfRange => {
+            return Err(PyValueError::new_err(format!(
+                "rate_schedule: {} days into the run the rate moves by a day per day or more: \
+                 no clock runs so",
+                finish.last.time / 86_400.0
+            )))
+        }
+        _ => {}
+    }
     let summary = PyDict::new(py);
     summary.set_item("duration_s", finish.last.time)?;
     summary.set_item("beats", finish.last.beats)?;
@@ -820,6 +838,7 @@ fn clock_run<'py>(
     summary.set_item("final_rate_s_per_day", finish.last.rate)?;
     summary.set_item("time_error_s", finish.last.time_error)?;
     summary.set_item("stopped", finish.stopped)?;
+    summary.set_item("ending", finish.ending.name())?;
     summary.set_item("nominal_period_s", start.period)?;
     Ok((
         columns.into_iter().map(|c| c.into_pyarray(py)).collect(),

@@ -22,13 +22,18 @@ fn dry_air_molar_mass(x_co2: f64) -> f64 {
     (28.965_46 + 12.011 * (x_co2 - 0.0004)) * 1e-3
 }
 
+/// The pressures CIPM-2007 holds for, Pa (600 to 1,100 hPa).
+pub const PRESSURE_RANGE_PA: (f64, f64) = (60_000.0, 110_000.0);
+/// The temperatures CIPM-2007 holds for, °C.
+pub const TEMPERATURE_RANGE_C: (f64, f64) = (-20.0, 60.0);
+
 /// The density of moist air, kg/m³, at pressure `p` Pa, temperature `t`
 /// °C and relative humidity `h` (0 to 1), by CIPM-2007 (see the module
 /// notes). NaN outside 600 to 1,100 hPa and -20 to 60 °C or for a
 /// humidity outside [0, 1] (beyond the formula's range).
 pub fn air_density(p: f64, t: f64, h: f64) -> f64 {
-    if !(60_000.0..=110_000.0).contains(&p)
-        || !(-20.0..=60.0).contains(&t)
+    if !(PRESSURE_RANGE_PA.0..=PRESSURE_RANGE_PA.1).contains(&p)
+        || !(TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(&t)
         || !(0.0..=1.0).contains(&h)
     {
         return f64::NAN;

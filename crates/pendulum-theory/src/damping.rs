@@ -37,10 +37,25 @@ impl Damping {
         })
     }
 
+    /// From a `ζ` computed from `value` of `quantity`: an overflow (or an
+    /// underflow to zero from a positive input) is said of that input.
+    fn derived(quantity: Quantity, value: f64, zeta: f64) -> Result<Self, InputError> {
+        if !zeta.is_finite() || zeta == 0.0 {
+            return Err(InputError::new(
+                quantity,
+                value,
+                crate::error::Problem::ResultOverflows {
+                    result: "the damping ratio ζ",
+                },
+            ));
+        }
+        Self::from_zeta(zeta)
+    }
+
     /// From the quality factor `Q > 0`: `ζ = 1/(2Q)`.
     pub fn from_q(q_factor: f64) -> Result<Self, InputError> {
         let q = require_positive(Quantity::QualityFactor, q_factor)?;
-        Self::from_zeta(0.5 / q)
+        Self::derived(Quantity::QualityFactor, q, 0.5 / q)
     }
 
     /// From the logarithmic decrement per full period `δ > 0`:
@@ -56,13 +71,24 @@ impl Damping {
     pub fn from_coefficient(c: f64, mass_kg: f64, pendulum: &Pendulum) -> Result<Self, InputError> {
         let c = require_positive(Quantity::DampingCoefficient, c)?;
         let m = require_positive(Quantity::Mass, mass_kg)?;
-        Self::from_zeta(c / (2.0 * m * (pendulum.g_m_s2() * pendulum.length_m()).sqrt()))
+        let zeta = c / (2.0 * m * (pendulum.g_m_s2() * pendulum.length_m()).sqrt());
+        // An overflow is the mass's fault when it is the extreme one.
+        let (quantity, value) = if m < 1e-6 && c <= 1e6 {
+            (Quantity::Mass, m)
+        } else {
+            (Quantity::DampingCoefficient, c)
+        };
+        Self::derived(quantity, value, zeta)
     }
 
     /// From the amplitude decay time `τ > 0` (s): `ζ = 1/(τ ω_n)`.
     pub fn from_decay_time(tau_s: f64, pendulum: &Pendulum) -> Result<Self, InputError> {
         let tau = require_positive(Quantity::DecayTime, tau_s)?;
-        Self::from_zeta(1.0 / (tau * pendulum.natural_angular_frequency()))
+        Self::derived(
+            Quantity::DecayTime,
+            tau,
+            1.0 / (tau * pendulum.natural_angular_frequency()),
+        )
     }
 
     /// The damping ratio `ζ`.

@@ -181,8 +181,10 @@ impl InputError {
     pub fn detail(&self) -> String {
         let got = if self.value.is_finite() {
             self.quantity.format_value(self.value)
+        } else if self.value.is_nan() {
+            "a value that is not a number".to_string()
         } else {
-            format!("{}", self.value)
+            "an infinite value".to_string()
         };
         let q = self.quantity;
         match self.problem {
@@ -232,6 +234,22 @@ pub(crate) fn require_non_negative(quantity: Quantity, value: f64) -> Result<f64
     } else {
         Ok(value)
     }
+}
+
+/// Checks a friction angle (rad): not negative, and below a half turn
+/// (friction that holds the pendulum at every angle is no friction law).
+pub(crate) fn require_friction_angle(value: f64) -> Result<f64, InputError> {
+    let r = require_non_negative(Quantity::FrictionAngle, value)?;
+    if r >= std::f64::consts::PI {
+        return Err(InputError::new(
+            Quantity::FrictionAngle,
+            r,
+            Problem::AboveMaximum {
+                maximum: std::f64::consts::PI,
+            },
+        ));
+    }
+    Ok(r)
 }
 
 /// Checks that `value` is finite.

@@ -15,7 +15,7 @@
 //! overdamped pendulums creep towards `r sign(A0)` without ever turning.
 
 use crate::damped::{DampedPendulum, Extremum, State};
-use crate::error::{require_non_negative, InputError, Quantity};
+use crate::error::InputError;
 use std::f64::consts::PI;
 
 /// A damped pendulum with a friction angle.
@@ -60,7 +60,7 @@ impl DryFriction {
     pub fn new(damped: DampedPendulum, friction_angle: f64) -> Result<Self, InputError> {
         Ok(Self {
             damped,
-            friction_angle: require_non_negative(Quantity::FrictionAngle, friction_angle)?,
+            friction_angle: crate::error::require_friction_angle(friction_angle)?,
         })
     }
 

@@ -221,7 +221,17 @@ const SECONDS_PER_HOUR: f64 = 3600.0;
 /// The period of a clock beating `beats_per_hour` times an hour: each beat
 /// is half a period, so `T = 7200 / bph` s.
 pub fn period_for_beat_rate(beats_per_hour: f64) -> Result<f64, InputError> {
-    Ok(2.0 * SECONDS_PER_HOUR / require_positive(Quantity::BeatRate, beats_per_hour)?)
+    let period = 2.0 * SECONDS_PER_HOUR / require_positive(Quantity::BeatRate, beats_per_hour)?;
+    if !period.is_finite() {
+        return Err(InputError::new(
+            Quantity::BeatRate,
+            beats_per_hour,
+            Problem::ResultOverflows {
+                result: "the period",
+            },
+        ));
+    }
+    Ok(period)
 }
 
 /// Beats per hour of a clock with period `period_s`: `7200 / T`.

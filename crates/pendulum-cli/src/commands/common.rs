@@ -132,6 +132,21 @@ pub fn finite(value: f64) -> Option<f64> {
     value.is_finite().then_some(value)
 }
 
+/// The flag the damping was given with.
+pub fn damping_flag(d: &crate::args::DampingArgs) -> &'static str {
+    if d.q.is_some() {
+        "--q"
+    } else if d.log_decrement.is_some() {
+        "--log-decrement"
+    } else if d.decay_time.is_some() {
+        "--decay-time"
+    } else if d.damping_coefficient.is_some() {
+        "--damping-coefficient"
+    } else {
+        "--zeta"
+    }
+}
+
 /// The damping form given, converted to ζ; `None` when none was given.
 pub fn damping(
     args: &DampingArgs,
@@ -220,7 +235,7 @@ pub fn sampling(
             flag,
             format!(
                 "{} samples requested; more than 10^8 needs --force (or a longer interval)",
-                crate::output::num(count, 4)
+                crate::work::count(count)
             ),
         ));
     }

@@ -70,6 +70,13 @@ fn positive_length(flag: &'static str, text: &str) -> Result<f64, CliError> {
             format!("must be positive, got {text}"),
         ));
     }
+    // A tube or a jar on a clock pendulum: under a metre across.
+    if v > 1.0 {
+        return Err(CliError::flag(
+            flag,
+            format!("must be at most 1 m for a pendulum's tube or jar, got {text}"),
+        ));
+    }
     Ok(v)
 }
 
@@ -213,9 +220,19 @@ pub fn run(args: &CompensateArgs) -> Result<String, CliError> {
                 None => bore + 3e-3,
             };
             if diameter <= bore {
+                // Said of the flag the user gave (the other is derived).
+                let flag = if args.tube_diameter.is_some() {
+                    "--tube-diameter"
+                } else {
+                    "--tube-bore"
+                };
                 return Err(CliError::flag(
-                    "--tube-diameter",
-                    "must be larger than the bore",
+                    flag,
+                    format!(
+                        "the tube's bore ({} mm) must be less than its diameter ({} mm)",
+                        num(bore * 1e3, 4),
+                        num(diameter * 1e3, 4)
+                    ),
                 ));
             }
             let (compensated, length) = design

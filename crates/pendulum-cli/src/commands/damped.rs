@@ -7,6 +7,7 @@ use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Points, Series, Target};
+use crate::work;
 use pendulum_theory::damped::{DampedPendulum, Extremum, Regime};
 use pendulum_theory::energy::{energy_budget, EnergyBudget};
 use pendulum_theory::friction::{DryFriction, RunDown};
@@ -60,6 +61,8 @@ struct DampedJson {
 const SMALL_ANGLE_LIMIT_DEG: f64 = 10.0;
 /// More turning points than this need `--force`.
 const MAX_EXTREMA: u64 = 100_000;
+/// More turning points than this are refused even with `--force`.
+const MAX_EXTREMA_FORCED: u64 = 10_000_000;
 
 #[derive(Serialize)]
 struct ExtremumJson {
@@ -95,6 +98,18 @@ struct Results {
 }
 
 pub fn run(args: &DampedArgs) -> Result<String, CliError> {
+    // The turning points are held and printed: past 10^7 (a few hundred
+    // MB of text) not even --force; a trajectory file streams instead.
+    if args.extrema > MAX_EXTREMA_FORCED {
+        return Err(CliError::flag(
+            "--extrema",
+            format!(
+                "{} turning points requested; at most {MAX_EXTREMA_FORCED} are printed \
+                 (--trajectory FILE streams a run of any length)",
+                args.extrema
+            ),
+        ));
+    }
     if args.extrema > MAX_EXTREMA && !args.force {
         return Err(CliError::flag(
             "--extrema",
@@ -360,6 +375,12 @@ fn text(r: &Results, j: &DampedJson) -> String {
     out
 }
 
+/// Computing time of one trajectory row, s (0.29 s for a million rows,
+/// measured on the machine of bench/RESULTS.md, rounded up).
+const SECONDS_PER_ROW: f64 = 0.4e-6;
+/// Bytes of one trajectory row (41.4 measured on a million rows, rounded up).
+const BYTES_PER_ROW: f64 = 45.0;
+
 /// Streams the closed-form motion to `path`, sample by sample.
 fn write_trajectory(
     args: &DampedArgs,
@@ -374,16 +395,29 @@ fn write_trajectory(
         duration,
         args.force,
     )?;
+    // Measured: 0.3 µs and about 42 bytes a row (bench/RESULTS.md).
+    let rows = samples as f64;
+    work::check_time(
+        "--duration",
+        format!("{} samples", num(rows, 3)),
+        rows * SECONDS_PER_ROW,
+        args.force,
+    )?;
+    work::check_space("--trajectory", path, rows * BYTES_PER_ROW)?;
     let mut file = CsvFile::create(
         path,
         "--trajectory",
         "time_s,angle_rad,angular_velocity_rad_s",
     )?;
+    let mut progress = work::Progress::new(rows, "sampled", false);
     let mut sampler = r.friction.sampler(r.amplitude.radians());
     for i in 0..samples {
         // Ctrl-C: the temporary file is removed, nothing is left.
-        if i % 4096 == 0 && crate::interrupt::requested() {
-            return Err(crate::interrupt::error());
+        if i % 4096 == 0 {
+            if crate::interrupt::requested() {
+                return Err(crate::interrupt::error());
+            }
+            progress.update(i as f64, || format!("{i} rows"));
         }
         let t = i as f64 * interval;
         let state = sampler.state_at(t);

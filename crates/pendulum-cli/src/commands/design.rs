@@ -90,9 +90,14 @@ impl Air {
         ];
         for (flag, value, low, high, unit) in ranges {
             if !(low..=high).contains(&value) {
+                let got = if value.is_finite() {
+                    format!(", got {}", num(value, 6))
+                } else {
+                    String::new()
+                };
                 return Err(CliError::flag(
                     flag,
-                    format!("must lie between {low} and {high} {unit}, got {value}"),
+                    format!("must lie between {low} and {high} {unit}{got}"),
                 ));
             }
         }
@@ -121,6 +126,7 @@ pub fn datasheet(
         .small_angle_period();
     let warmer = pendulum
         .at_temperature(t - air.regulated_at_c)
+        .map_err(|e| CliError::other(format!("{file}: {e}")))?
         .properties()
         .equivalent_length;
     let rates = pendulum.rate_in_air(rho);

@@ -54,7 +54,29 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             common::pendulum_of(l.as_deref(), d.as_deref(), &common::gravity_default())?.length_m(),
         ),
     };
+    if let (Some(l), None) = (given_length, &args.design) {
+        // A measured pendulum: from a 0.1 mm hair spring to a 10 km shaft.
+        if !(1e-4..=1e4).contains(&l) {
+            return Err(CliError::flag(
+                "--length",
+                format!(
+                    "must lie between 0.1 mm and 10 km for a measured pendulum, got {} m",
+                    crate::output::num(l, 6)
+                ),
+            ));
+        }
+    }
     let track = read_track(&args.file, &args.read)?;
+    // Measured: 2 million samples of a 10° swing in 29 s (nonlinear).
+    let fit_seconds = track.time.len() as f64 * 20e-6;
+    crate::work::check_time(
+        "FILE",
+        format!("{} has {} rows", args.file.display(), track.time.len()),
+        fit_seconds,
+        args.read.force,
+    )?;
+    let _spinner =
+        crate::work::Spinner::start(format!("fitting {} rows", track.time.len()), fit_seconds);
     // Without --length, a fitted pivot's radius is the length (in the
     // file's units, which Tracker calibrates to metres).
     let (length, length_source) = match (given_length, track.track_radius) {

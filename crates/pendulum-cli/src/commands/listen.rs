@@ -60,6 +60,15 @@ struct ListenJson {
 pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     let file = args.file.display().to_string();
     let nominal_period = common::period_or_beat_rate(args.period.as_deref(), args.bph.as_deref())?;
+    if let Some(p) = nominal_period {
+        let flag = if args.period.is_some() {
+            "--period"
+        } else {
+            "--bph"
+        };
+        pendulum_theory::listening::check_nominal_period(p, args.period.is_none())
+            .map_err(|e| CliError::input(flag, &e))?;
+    }
     let plot = args
         .plot
         .as_deref()
@@ -129,12 +138,25 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     let (ticks, _, sounds) = refiner.finish_with_sounds();
     let (ticks, _, _) = clean(ticks);
     if ticks.len() < 4 {
+        let expected = (duration / beat).round();
+        if expected < 4.0 {
+            return Err(CliError::other(format!(
+                "{file}: {} s of sound holds fewer than four beats of {} s; record at least a \
+                 minute",
+                num(duration, 3),
+                num(beat, 4)
+            )));
+        }
+        // Silence has no signal to noise ratio to speak of.
+        let snr = if snr_db.is_finite() {
+            format!(" (signal to noise {} dB)", num(snr_db, 2))
+        } else {
+            " (the recording is silent)".to_string()
+        };
         return Err(CliError::other(format!(
-            "{file}: {} of about {} beats stand out of the noise (signal to noise {} dB); \
+            "{file}: {} of about {expected} beats stand out of the noise{snr}; \
              record nearer the clock, or in a quieter room",
             ticks.len(),
-            (duration / beat).round(),
-            num(snr_db, 2)
         )));
     }
     let scale = 1.0 / (1.0 + ppm * 1e-6);

@@ -101,6 +101,35 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
     }
 }
 
+/// The files a command reads (flag and path, when given).
+fn inputs(command: &Command) -> Vec<(&'static str, Option<&Path>)> {
+    fn one<'a>(flag: &'static str, path: &'a Path) -> (&'static str, Option<&'a Path>) {
+        (flag, Some(path))
+    }
+    fn design(path: &Option<std::path::PathBuf>) -> (&'static str, Option<&Path>) {
+        ("--design", path.as_deref())
+    }
+    match command {
+        Command::Period(a) => vec![design(&a.design)],
+        Command::Amplitude(a) => vec![design(&a.design)],
+        Command::Damped(a) => vec![design(&a.swing.design)],
+        Command::Simulate(a) => vec![design(&a.swing.design)],
+        Command::Fit(f) => match &f.what {
+            FitCommand::Decay(a) => vec![one("FILE", &a.file), design(&a.design)],
+            FitCommand::Trajectory(a) => vec![one("FILE", &a.file), design(&a.design)],
+            FitCommand::Beats(a) => vec![one("FILE", &a.file)],
+        },
+        Command::Listen(a) => vec![one("FILE", &a.file)],
+        Command::Train(a) => vec![design(&a.design)],
+        Command::Regulate(a) => vec![design(&a.design)],
+        Command::Compensate(a) => vec![one("--design", &a.design)],
+        Command::Design(a) => vec![one("FILE.toml", &a.file)],
+        Command::Clock(a) => vec![design(&a.design), ("--drive-file", a.drive_file.as_deref())],
+        Command::Report(a) => vec![design(&a.design)],
+        Command::Length(_) | Command::Gravity(_) | Command::Synth(_) => Vec::new(),
+    }
+}
+
 /// Runs one subcommand and returns what it prints. Its output files are
 /// checked first, in one place: none a folder, no two the same, at most
 /// one `-`; with data on standard output, the command's own text goes to
@@ -108,7 +137,10 @@ fn outputs(command: &Command) -> (Vec<(&'static str, Option<&Path>)>, bool) {
 /// refused.
 pub fn run(command: &Command) -> Result<Output, CliError> {
     let (files, machine) = outputs(command);
-    check_outputs(&files)?;
+    check_outputs(&files, &inputs(command))?;
+    if let Command::Report(a) = command {
+        crate::file::AtomicFolder::check(&a.output, "--output")?;
+    }
     let data_on_stdout = files.iter().find(|(_, p)| p.is_some_and(is_stdout));
     if let (Some((flag, _)), true) = (data_on_stdout, machine) {
         return Err(CliError::flag(

@@ -6,7 +6,7 @@ use crate::args::RegulateArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
 use crate::units::{parse_number, Dimension};
-use pendulum_theory::compound::length_change_for_rate;
+use pendulum_theory::compound::{length_regulation, RegulationError};
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -51,14 +51,21 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
     let pitch = match (&args.nut_pitch, args.nut_tpi) {
         (Some(p), _) => {
             let p = common::quantity("--nut-pitch", p, Dimension::Length)?;
-            if p.is_nan() || p <= 0.0 {
-                return Err(CliError::flag("--nut-pitch", "must be positive"));
+            // Clock threads: 0.25 mm (M1) to a few millimetres.
+            if !(1e-5..=0.05).contains(&p) {
+                return Err(CliError::flag(
+                    "--nut-pitch",
+                    format!("must lie between 0.01 mm and 50 mm, got {} m", num(p, 6)),
+                ));
             }
             Some(p)
         }
         (None, Some(tpi)) => {
-            if !(tpi > 0.0 && tpi.is_finite()) {
-                return Err(CliError::flag("--nut-tpi", "must be positive"));
+            if !(0.5..=2540.0).contains(&tpi) {
+                return Err(CliError::flag(
+                    "--nut-tpi",
+                    "must lie between 0.5 and 2540 threads per inch",
+                ));
             }
             Some(0.0254 / tpi)
         }
@@ -89,36 +96,47 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
                     nut_divisions = nut_divisions.or(t.divisions);
                 }
             }
-            let shift = design.regulation(index, r).ok_or_else(|| {
-                CliError::flag(
-                    "--part",
-                    format!(
-                        "'{}' rests on another part; name the part it rests on",
-                        args.part
-                    ),
-                )
+            let shift = design.regulation(index, r).map_err(|e| match e {
+                RegulationError::RestsOnAnother { .. } => CliError::flag("--part", e),
+                _ => CliError::flag("--rate", e),
             })?;
             let at = match &args.tray {
                 Some(t) => common::quantity("--tray", t, Dimension::Length)?,
                 None => p.equivalent_length / 3.0,
             };
-            if !(at > 0.0 && at < p.equivalent_length) {
+            // A tray at the pivot does nothing: from 1% of the length down.
+            if !(at >= 0.01 * p.equivalent_length && at < p.equivalent_length) {
                 return Err(CliError::flag(
                     "--tray",
-                    "must lie between the pivot and the centre of oscillation",
+                    format!(
+                        "must lie between 1% of the length below the pivot ({} mm) and the \
+                         centre of oscillation ({} mm)",
+                        num(10.0 * p.equivalent_length, 4),
+                        num(1e3 * p.equivalent_length, 6)
+                    ),
                 ));
             }
-            (
-                p.equivalent_length,
-                shift,
-                Some((at, design.tray_mass(at, r))),
-            )
+            // A tray that cannot do it: refused when asked for, else left
+            // out of the advice.
+            let tray = match design.tray_mass(at, r) {
+                Ok(mass) => Some((at, mass)),
+                Err(e) if args.tray.is_some() => return Err(CliError::flag("--tray", e)),
+                Err(_) => None,
+            };
+            (p.equivalent_length, shift, tray)
         }
         None => {
+            if args.tray.is_some() {
+                return Err(CliError::flag(
+                    "--tray",
+                    "needs --design: what a tray's mass does depends on the pendulum's parts",
+                ));
+            }
             let gravity = common::gravity_default();
             let pendulum = common::pendulum(args.length.as_deref().unwrap_or(""), &gravity)?;
             let l = pendulum.length_m();
-            (l, length_change_for_rate(l, r), None)
+            let shift = length_regulation(l, r).map_err(|e| CliError::flag("--rate", e))?;
+            (l, shift, None)
         }
     };
     let turns = pitch.map(|p| shift / p);

@@ -88,7 +88,16 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         None => (None, None),
     };
     let mass = match (&args.mass, design_mass) {
-        (Some(t), _) => common::quantity("--mass", t, Dimension::Mass)?,
+        (Some(t), _) => {
+            let m = common::quantity("--mass", t, Dimension::Mass)?;
+            if !(m > 0.0 && m.is_finite()) {
+                return Err(CliError::flag(
+                    "--mass",
+                    format!("must be positive, got {t}"),
+                ));
+            }
+            m
+        }
         (None, Some(m)) => m,
         (None, None) => DEFAULT_MASS_KG,
     };
@@ -96,6 +105,18 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         Some(d) => d,
         None => Damping::from_q(DEFAULT_Q).expect("a valid default"),
     };
+    // Beyond these the report's figures and budget leave double precision
+    // (measured: ζ = 1e200 and 1e-320 overflow, 1e100 and 1e-308 do not).
+    let zeta = damping.zeta();
+    if !(zeta == 0.0 || (1e-300..=1e100).contains(&zeta)) {
+        return Err(CliError::flag(
+            common::damping_flag(&args.damping),
+            format!(
+                "gives ζ = {}; the report takes ζ from 1e-300 to 1e100, or none",
+                num(zeta, 4)
+            ),
+        ));
+    }
     let output = AtomicFolder::create(&args.output, "--output")?;
     let folder = output.path().to_path_buf();
 
@@ -348,7 +369,7 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         .write_all(page.as_bytes())
         .map_err(|e| file.write_error(e))?;
     file.commit()?;
-    let written = output.commit("--output")?;
+    let written = output.commit(&args.output);
     Ok(format!("{}\n", written.join("index.html").display()))
 }
 
@@ -362,10 +383,12 @@ fn decay_figure(damped: &DampedPendulum, a0: f64, span: f64) -> Figure {
     let (upper, lower) = envelope_points(damped, a0, span);
     Figure {
         panels: vec![Panel::new(
-            format!(
-                "Amplitude envelope, section 1-4 (Q = {})",
-                num(damped.damping.q_factor(), 6)
-            ),
+            match damped.damping.q_factor() {
+                q if q.is_finite() => {
+                    format!("Amplitude envelope, section 1-4 (Q = {})", num(q, 6))
+                }
+                _ => "Amplitude envelope, section 1-4 (undamped)".to_string(),
+            },
             "time (s)",
             "angle (°)",
             vec![

@@ -9,7 +9,7 @@ use crate::interrupt;
 use crate::output::{self, num, Output, Summary};
 use crate::plot::{render, thin, Figure, Panel, Series, Target};
 use crate::units::parse_number;
-use indicatif::{ProgressBar, ProgressStyle};
+use crate::work::{self, Progress};
 use pendulum_theory::damped::State;
 use pendulum_theory::damping::Damping;
 use pendulum_theory::simulation::{
@@ -18,7 +18,7 @@ use pendulum_theory::simulation::{
 };
 use pendulum_theory::{Amplitude, Pendulum, Quantity};
 use serde::Serialize;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 /// Whole periods drawn in the phase portrait (evenly chosen over the run).
 const PHASE_PERIODS: u64 = 60;
@@ -29,12 +29,6 @@ const PLOT_POINTS: usize = 4000;
 
 /// Longer simulated durations need `--force`, s.
 const MAX_DURATION: f64 = 1e9;
-/// Runs estimated to take longer than this need `--force`, s of computing.
-const MAX_WORK_SECONDS: f64 = 5.0;
-/// Runs estimated to take longer than this are refused even with
-/// `--force`: they would not end in a day, s of computing.
-const IMPOSSIBLE_WORK_SECONDS: f64 = 86_400.0;
-
 #[derive(Serialize)]
 struct SimulateJson {
     method: &'static str,
@@ -97,6 +91,9 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
     let outcome = simulate(&model, amplitude, &options, &mut observer).map_err(|e| match e {
         SimulationError::ExactWithDamping | SimulationError::AveragedUnsupported => {
             CliError::flag("--method", e)
+        }
+        SimulationError::AveragedNeedsWeakDamping { .. } => {
+            CliError::flag(common::damping_flag(&args.swing.damping), e)
         }
         SimulationError::Input(e) => CliError::input(flag_for(e.quantity), &e),
     })?;
@@ -189,8 +186,15 @@ fn check_work(
     options: &Options,
 ) -> Result<f64, CliError> {
     let work = work_estimate(model, amplitude, options);
-    if work.seconds <= MAX_WORK_SECONDS || (args.force && work.seconds <= IMPOSSIBLE_WORK_SECONDS) {
-        return Ok(work.steps);
+    // The files: a swings row (about 90 bytes) a half period, a trajectory
+    // row (about 60 bytes) a sample; refused, even with --force, when they
+    // would not fit the disk.
+    let half_swings = 2.0 * work.periods + 2.0;
+    if let Some(path) = &args.swings {
+        work::check_space("--swings", path, 90.0 * half_swings)?;
+    }
+    if let (Some(path), Some(h)) = (&args.trajectory, options.sample_interval) {
+        work::check_space("--trajectory", path, 60.0 * (options.duration / h + 1.0))?;
     }
     let (flag, why) = match work.limit {
         Limit::Oscillation => (
@@ -198,11 +202,11 @@ fn check_work(
             format!(
                 "{} s is {} periods of this pendulum",
                 num(options.duration, 6),
-                num(work.periods, 3)
+                work::count(work.periods)
             ),
         ),
         Limit::Viscous => (
-            damping_flag(&args.swing.damping),
+            common::damping_flag(&args.swing.damping),
             format!(
                 "ζ = {} makes the equation stiff for an explicit method (the overdamped \
                  creep has a closed form: pendulum damped)",
@@ -222,50 +226,13 @@ fn check_work(
             ),
         ),
     };
-    let hint = if work.seconds > IMPOSSIBLE_WORK_SECONDS {
-        "more than a day of computing; shorten the run"
-    } else {
-        "add --force if you mean it"
-    };
-    Err(CliError::flag(
+    work::check_time(
         flag,
-        format!(
-            "{why}: about {} integration steps, {} of computing; {hint}",
-            num(work.steps, 2),
-            human_seconds(work.seconds)
-        ),
-    ))
-}
-
-/// The flag the damping was given with.
-fn damping_flag(d: &crate::args::DampingArgs) -> &'static str {
-    if d.q.is_some() {
-        "--q"
-    } else if d.log_decrement.is_some() {
-        "--log-decrement"
-    } else if d.decay_time.is_some() {
-        "--decay-time"
-    } else if d.damping_coefficient.is_some() {
-        "--damping-coefficient"
-    } else {
-        "--zeta"
-    }
-}
-
-/// A computing time for people: "40 s", "3 minutes", "2e5 years".
-fn human_seconds(s: f64) -> String {
-    const YEAR: f64 = 3.156e7;
-    if s < 120.0 {
-        format!("{} s", num(s, 2))
-    } else if s < 7200.0 {
-        format!("{} minutes", num(s / 60.0, 2))
-    } else if s < 172_800.0 {
-        format!("{} hours", num(s / 3600.0, 2))
-    } else if s < YEAR {
-        format!("{} days", num(s / 86_400.0, 2))
-    } else {
-        format!("{} years", num(s / YEAR, 2))
-    }
+        format!("{why}: about {} integration steps", work::count(work.steps)),
+        work.seconds,
+        args.force,
+    )?;
+    Ok(work.steps)
 }
 
 fn flag_for(quantity: Quantity) -> &'static str {
@@ -288,11 +255,12 @@ fn options(args: &SimulateArgs, pendulum: &Pendulum) -> Result<Options, CliError
         ));
     }
     let tolerance = parse_number(&args.tolerance).map_err(|e| CliError::flag("--tolerance", e))?;
-    if tolerance <= 0.0 || tolerance >= 1.0 {
+    // Below 1e-15 the tolerance asks for more than double precision holds.
+    if !(1e-15..1.0).contains(&tolerance) {
         return Err(CliError::flag(
             "--tolerance",
             format!(
-                "must lie between 0 and 1 (e.g. 1e-10), got {}",
+                "must lie between 1e-15 (double precision) and 1 (e.g. 1e-10), got {}",
                 args.tolerance.trim()
             ),
         ));
@@ -378,7 +346,7 @@ impl CliObserver {
         Ok(Self {
             swings,
             trajectory,
-            progress: Progress::new(options.duration, args.quiet),
+            progress: Progress::new(options.duration, "simulated", args.quiet),
             error: None,
             previous_turn: 0.0,
             pendulum: *pendulum,
@@ -513,53 +481,8 @@ impl Observer for CliObserver {
     }
 
     fn progress(&mut self, time: f64) -> bool {
-        self.progress.update(time);
+        self.progress.update(time, || format!("{} s", num(time, 6)));
         !interrupt::requested() && self.error.is_none()
-    }
-}
-
-/// A progress bar on standard error, shown only after a second of work and
-/// only when standard error is a terminal (indicatif hides it otherwise).
-struct Progress {
-    bar: Option<ProgressBar>,
-    duration: f64,
-    started: Instant,
-    quiet: bool,
-}
-
-impl Progress {
-    fn new(duration: f64, quiet: bool) -> Self {
-        Self {
-            bar: None,
-            duration,
-            started: Instant::now(),
-            quiet,
-        }
-    }
-
-    fn update(&mut self, time: f64) {
-        if self.quiet || self.duration <= 0.0 {
-            return;
-        }
-        if self.bar.is_none() && self.started.elapsed() > Duration::from_secs(1) {
-            let bar = ProgressBar::new(1000);
-            if let Ok(style) = ProgressStyle::with_template(
-                "{spinner} simulated {msg} [{bar:40}] {percent}% (eta {eta})",
-            ) {
-                bar.set_style(style.progress_chars("=> "));
-            }
-            self.bar = Some(bar);
-        }
-        if let Some(bar) = &self.bar {
-            bar.set_position((1000.0 * time / self.duration) as u64);
-            bar.set_message(format!("{} s", num(time, 6)));
-        }
-    }
-
-    fn finish(&mut self) {
-        if let Some(bar) = self.bar.take() {
-            bar.finish_and_clear();
-        }
     }
 }
 
@@ -586,7 +509,13 @@ fn text(r: &SimulateJson, outcome: &Outcome) -> String {
             Stopped::Interrupted => "interrupted; files hold everything up to then".to_string(),
             Stopped::Event => "at an event".to_string(),
             Stopped::AmplitudeBelowTolerance => {
-                "the swing decayed below 1e-280 rad, the end of double precision".to_string()
+                format!(
+                    "the swing decayed below {} rad, the end of double precision",
+                    num(
+                        pendulum_theory::simulation::amplitude_floor(outcome.method),
+                        2
+                    )
+                )
             }
             Stopped::OverTheTop => "over the top (see the warning)".to_string(),
             Stopped::StepTooSmall => "the step size fell to nothing".to_string(),

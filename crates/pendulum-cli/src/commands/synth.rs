@@ -7,6 +7,7 @@ use crate::error::CliError;
 use crate::file::{AtomicFile, CsvFile};
 use crate::output::num;
 use crate::units::{parse_number, Dimension};
+use crate::work;
 use pendulum_theory::listening::synth::{Synthesizer, TickRecording};
 
 /// Longer recordings are refused (a WAV file holds at most 4 GiB).
@@ -82,6 +83,13 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
             ),
         )
     })?;
+    let samples = recording.len() as f64;
+    work::check_space("OUT.wav", &args.output, 2.0 * samples + 44.0)?;
+    if let Some(path) = &args.truth {
+        work::check_space("--truth", path, 24.0 * duration * bph / 3600.0)?;
+    }
+    let mut progress = work::Progress::new(samples, "synthesised", false);
+    let mut done = 0.0;
     let mut file = AtomicFile::create(&args.output, "OUT.wav")?;
     file.writer()
         .write_all(&header)
@@ -96,6 +104,10 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
         if n == 0 {
             break;
         }
+        done += n as f64;
+        progress.update(done, || {
+            format!("{} s", num(done / f64::from(args.sample_rate), 4))
+        });
         bytes.clear();
         pcm16(&block[..n], &mut bytes);
         file.writer()

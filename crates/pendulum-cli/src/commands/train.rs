@@ -5,6 +5,7 @@ use super::common;
 use crate::args::TrainArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
+use pendulum_theory::compound::RegulationError;
 use pendulum_theory::period::length_for_period;
 use pendulum_theory::train::{beats_per_hour, trains_for};
 use pendulum_theory::Amplitude;
@@ -35,10 +36,14 @@ struct Candidate {
 pub fn run(args: &TrainArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
     if let Some(bph) = args.bph {
-        if !(bph > 0.0 && bph.is_finite()) {
+        // A turret clock's minute jump (60 an hour) to 100 beats a second.
+        if !(1.0..=360_000.0).contains(&bph) {
             return Err(CliError::flag(
                 "--bph",
-                format!("must be positive, got {bph}"),
+                format!(
+                    "must lie between 1 and 360000 beats an hour, got {}",
+                    crate::work::count(bph)
+                ),
             ));
         }
         if !(args.tolerance > 0.0 && args.tolerance < 0.1) {
@@ -100,12 +105,12 @@ pub fn run(args: &TrainArgs) -> Result<String, CliError> {
         )
     })?;
     // No clock beats faster than 100 a second (a typing error otherwise).
-    if bph > 360_000.0 {
+    if bph.is_nan() || bph > 360_000.0 {
         return Err(CliError::flag(
             "--wheels",
             format!(
                 "give {} beats/hour: no clock beats faster than 100 a second",
-                num(bph, 6)
+                crate::work::count(bph)
             ),
         ));
     }
@@ -126,12 +131,21 @@ pub fn run(args: &TrainArgs) -> Result<String, CliError> {
                 .ok_or_else(|| {
                     CliError::flag("--design", "has no part named 'nut' or 'bob' to move")
                 })?;
-            Some(design.regulation(index, rate).ok_or_else(|| {
-                CliError::flag(
+            let shift = design.regulation(index, rate).map_err(|e| match e {
+                RegulationError::RestsOnAnother { .. } => CliError::flag(
                     "--design",
                     "its nut or bob is placed on another part; place it by its centre",
-                )
-            })?)
+                ),
+                _ => CliError::flag(
+                    "--design",
+                    format!(
+                        "cannot be brought to {} beats an hour by its {}: {e}",
+                        num(bph, 6),
+                        design.parts()[index].name
+                    ),
+                ),
+            })?;
+            Some(shift)
         }
         None => None,
     };

@@ -268,6 +268,16 @@ pub const PNG_DENSITY: u32 = 2;
 /// Draws `figure` into `target`; returns the file's path.
 pub fn render(target: &Target, figure: &Figure) -> Result<String, CliError> {
     register_font();
+    // Words in a figure are checked as printed text is: no "inf" or "NaN".
+    for panel in &figure.panels {
+        let words = [&panel.title, &panel.x_label, &panel.y_label];
+        for text in words
+            .into_iter()
+            .chain(panel.series.iter().map(|s| &s.label))
+        {
+            crate::output::check_finite_text(text)?;
+        }
+    }
     let fail = |e: String| CliError::flag(target.flag, format!("could not draw the plot: {e}"));
     let (w, h) = figure.size();
     let bytes = match target.format {

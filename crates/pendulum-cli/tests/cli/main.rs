@@ -1,9 +1,11 @@
 //! The real `pendulum` binary, run as a user would run it: one test target,
 //! one module per command family.
 
+mod audit;
 mod clock;
 mod damped;
 mod design;
+mod disk_full;
 mod extremes;
 mod figures;
 mod fit;

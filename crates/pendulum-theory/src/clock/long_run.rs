@@ -66,6 +66,36 @@ pub struct Row {
     pub drive: f64,
 }
 
+/// Why a long run ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ending {
+    /// It ran its whole duration.
+    Duration,
+    /// The sink asked it to stop (Ctrl-C, a write error).
+    Sink,
+    /// The swing fell below the escapement's unlocking: the clock stopped
+    /// (a drive run down, a weak drive).
+    PendulumStopped,
+    /// The drive carried the pendulum over the top.
+    OverTheTop,
+    /// The rate change (`stretch`) reached a day per day or more, or was
+    /// not a number: no clock runs so.
+    RateOutOfRange,
+}
+
+impl Ending {
+    /// A short name for output (`"duration"`, `"pendulum_stopped"`, …).
+    pub fn name(self) -> &'static str {
+        match self {
+            Ending::Duration => "duration",
+            Ending::Sink => "interrupted",
+            Ending::PendulumStopped => "pendulum_stopped",
+            Ending::OverTheTop => "over_the_top",
+            Ending::RateOutOfRange => "rate_out_of_range",
+        }
+    }
+}
+
 /// How a long run ended.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Finish {
@@ -77,6 +107,8 @@ pub struct Finish {
     pub multi_steps: u64,
     /// Whether it stopped early (the pendulum stopped, or the sink asked).
     pub stopped: bool,
+    /// Why it ended.
+    pub ending: Ending,
 }
 
 /// Options of a long run.
@@ -136,6 +168,7 @@ pub fn run(
         single_steps: 0,
         multi_steps: 0,
         stopped: false,
+        ending: Ending::Duration,
     };
     // True time as a compensated sum of the half swings.
     let mut carry = 0.0;
@@ -150,13 +183,35 @@ pub fn run(
     }
     if !sink(&row) {
         finish.stopped = true;
+        finish.ending = Ending::Sink;
         return finish;
     }
     let cycle = escapement.cycle();
     let relaxation_beats = (clock.q / std::f64::consts::PI * 2.0).max(1.0);
     let mut next_row = options.every.unwrap_or(0.0);
+    let end = |finish: &mut Finish, ending: Ending| {
+        finish.stopped = true;
+        finish.ending = ending;
+    };
+    // A half swing the map cannot make went over the top when the swing
+    // or the drive had grown, else it stopped short of the unlocking.
+    let drive_at_start = drive(0.0);
+    let failed = |a: f64, d: f64| {
+        if a > options.amplitude || d > drive_at_start {
+            Ending::OverTheTop
+        } else {
+            Ending::PendulumStopped
+        }
+    };
     while row.time < options.duration {
         let d = drive(row.time);
+        let s = stretch(row.time);
+        if !(s > 0.5 && s.is_finite()) {
+            // A factor past 2 or below 1/2 is a rate change of a day per
+            // day: no clock; the schedule is wrong.
+            end(&mut finish, Ending::RateOutOfRange);
+            break;
+        }
         let beat_estimate = std::f64::consts::PI / omega;
         // Beats until the next row (or the end).
         let target = match options.every {
@@ -182,14 +237,20 @@ pub fn run(
                 Some((g - 0.5 * g * dg, (m0.time - 0.5 * dtau * g) * s))
             };
             let (a, t) = (row.amplitude, row.time);
-            let Some(k1) = flow(a, t) else { break };
+            let Some(k1) = flow(a, t) else {
+                end(&mut finish, failed(a, drive(t)));
+                break;
+            };
             let Some(k2) = flow(a + 0.5 * n * k1.0, t + 0.5 * n * k1.1 / omega) else {
+                end(&mut finish, failed(a, drive(t + 0.5 * n * k1.1 / omega)));
                 break;
             };
             let Some(k3) = flow(a + 0.5 * n * k2.0, t + 0.5 * n * k2.1 / omega) else {
+                end(&mut finish, failed(a, drive(t + 0.5 * n * k2.1 / omega)));
                 break;
             };
             let Some(k4) = flow(a + n * k3.0, t + n * k3.1 / omega) else {
+                end(&mut finish, failed(a, drive(t + n * k3.1 / omega)));
                 break;
             };
             let da = n / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0);
@@ -202,7 +263,7 @@ pub fn run(
         } else {
             let beat = row.beats % cycle;
             let Some(h) = map(row.amplitude, beat, d) else {
-                finish.stopped = true;
+                end(&mut finish, failed(row.amplitude, d));
                 break;
             };
             let seconds = h.time * stretch(row.time) / omega;
@@ -215,7 +276,7 @@ pub fn run(
         row.drive = d;
         row.time_error = row.beats as f64 * nominal_beat - row.time;
         if row.amplitude < escapement.unlocking_amplitude() {
-            finish.stopped = true;
+            end(&mut finish, Ending::PendulumStopped);
             break;
         }
         let due = match options.every {
@@ -232,7 +293,7 @@ pub fn run(
             }
         };
         if due && !sink(&row) {
-            finish.stopped = true;
+            end(&mut finish, Ending::Sink);
             break;
         }
     }

@@ -86,6 +86,32 @@ pub struct DesignError {
     pub message: String,
 }
 
+/// The largest density a material may have, kg/m³: osmium, the densest
+/// element, is 22,590, but an assembly taken as one part is denser over
+/// its envelope (a gridiron's rods spread over its drop reach 10^5).
+pub const MAX_DENSITY: f64 = 1e6;
+
+/// A number from a design for a message: its digits, or words for NaN
+/// and infinity (which a TOML file can hold: `nan`, `inf`).
+fn shown(v: f64) -> String {
+    if v.is_nan() {
+        "a value that is not a number".to_string()
+    } else if v.is_infinite() {
+        "an infinite value".to_string()
+    } else {
+        crate::error::format_significant(v, 6)
+    }
+}
+
+/// The largest thermal expansion a material may have, 1/K, either sign
+/// (solids are 1e-6 to 3e-5; liquids' volume expansion up to about 1.5e-3).
+pub const MAX_EXPANSION: f64 = 2e-3;
+
+/// A design must stay valid warmed or cooled by this much from its
+/// reference temperature, K (any clock's room, and every temperature a
+/// command accepts, lies well within it).
+pub const TEMPERATURE_SPAN_K: f64 = 150.0;
+
 /// A pendulum of parts, with each part's centre resolved.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CompoundPendulum {
@@ -161,7 +187,10 @@ impl CompoundPendulum {
             for (field, v) in dims {
                 let may_be_zero = field == "bore" || field == "inner";
                 if !v.is_finite() || v < 0.0 || (v == 0.0 && !may_be_zero) {
-                    return Err(fail(field, format!("must be positive, got {v}")));
+                    return Err(fail(
+                        field,
+                        format!("must be a positive number, got {}", shown(v)),
+                    ));
                 }
             }
             if let Shape::Cylinder { diameter, bore, .. } = p.shape {
@@ -176,12 +205,27 @@ impl CompoundPendulum {
             }
             if !p.massless && p.shape != Shape::Point {
                 let d = p.material.density;
-                if !(d.is_finite() && d > 0.0) {
-                    return Err(fail("density", format!("must be positive, got {d}")));
+                if !(d > 0.0 && d <= MAX_DENSITY) {
+                    return Err(fail(
+                        "density",
+                        format!(
+                            "must lie between 0 and {MAX_DENSITY:e} kg/m³ (osmium, the densest \
+                             metal: 22,590), got {}",
+                            shown(d)
+                        ),
+                    ));
                 }
             }
-            if !p.material.expansion.is_finite() {
-                return Err(fail("expansion", "must be a finite number".into()));
+            let alpha = p.material.expansion;
+            if !(-MAX_EXPANSION..=MAX_EXPANSION).contains(&alpha) {
+                return Err(fail(
+                    "expansion",
+                    format!(
+                        "must be between -{MAX_EXPANSION:e} and {MAX_EXPANSION:e} per K \
+                         (steel 1.2e-5, mercury's volume 1.8e-4), got {}",
+                        shown(alpha)
+                    ),
+                ));
             }
             if p.material.liquid {
                 let fits = matches!(p.shape, Shape::Cylinder { .. })
@@ -196,6 +240,29 @@ impl CompoundPendulum {
         }
         let centres = resolve(&parts, 0.0, None)?;
         let pendulum = Self { parts, centres };
+        // Every size is linear in the temperature, so a design valid at both
+        // ends of the span is valid everywhere in it: the commands that warm
+        // or cool it (datasheets, coefficients, long runs with weather) can
+        // then never meet an invalid design.
+        for span in [-TEMPERATURE_SPAN_K, TEMPERATURE_SPAN_K] {
+            if pendulum.at_temperature(span).is_err() {
+                // Say where it first fails (bisection to 1e-6 of the span).
+                let (mut ok, mut bad) = (0.0, span);
+                for _ in 0..28 {
+                    let mid = 0.5 * (ok + bad);
+                    if pendulum.at_temperature(mid).is_ok() {
+                        ok = mid;
+                    } else {
+                        bad = mid;
+                    }
+                }
+                return Err(pendulum.at_temperature(bad).err().unwrap_or(DesignError {
+                    part: "-".into(),
+                    field: "part",
+                    message: format!("the design is not valid {span} °C from its reference"),
+                }));
+            }
+        }
         let props = pendulum.properties();
         if props.mass.is_nan() || props.mass <= 0.0 {
             return Err(DesignError {
@@ -253,8 +320,11 @@ impl CompoundPendulum {
     }
 
     /// The same pendulum `delta` °C warmer than its reference temperature
-    /// (see the module notes).
-    pub fn at_temperature(&self, delta: f64) -> Self {
+    /// (see the module notes). Within ±[`TEMPERATURE_SPAN_K`] of the
+    /// reference this never fails (checked when the design was made);
+    /// beyond it, a design whose parts would then reach above the pivot is
+    /// refused, saying at which temperature.
+    pub fn at_temperature(&self, delta: f64) -> Result<Self, DesignError> {
         let parts: Vec<Part> = self
             .parts
             .iter()
@@ -283,8 +353,17 @@ impl CompoundPendulum {
             })
             .collect();
         let rod = self.rod().map(|i| self.parts[i].material.expansion);
-        let centres = resolve(&parts, delta, rod).expect("a checked design stays valid");
-        Self { parts, centres }
+        let centres = resolve(&parts, delta, rod).map_err(|e| DesignError {
+            message: format!(
+                "{} when {} by {:.3} °C (a design must hold from -{TEMPERATURE_SPAN_K} to \
+                 +{TEMPERATURE_SPAN_K} °C about its reference)",
+                e.message,
+                if delta > 0.0 { "warmed" } else { "cooled" },
+                delta.abs()
+            ),
+            ..e
+        })?;
+        Ok(Self { parts, centres })
     }
 
     /// The index of the rod: the first upright cylinder hanging from the
@@ -303,7 +382,11 @@ impl CompoundPendulum {
     /// first order, by a central difference of ±0.5 °C on the exact model
     /// (its error is of order α², 1e-10 relative).
     pub fn temperature_coefficient(&self) -> f64 {
-        let l = |dt: f64| self.at_temperature(dt).properties().equivalent_length;
+        // ±0.5 °C lies inside the span checked when the design was made.
+        let l = |dt: f64| {
+            self.at_temperature(dt)
+                .map_or(f64::NAN, |p| p.properties().equivalent_length)
+        };
         rate_of_length_ratio(l(0.5) / l(-0.5))
     }
 
@@ -327,10 +410,21 @@ impl CompoundPendulum {
     /// (negative: to take off) to correct a clock gaining `rate` s/day:
     /// with `μ` there the equivalent length becomes `(I + μ at²) /
     /// (m d + μ at)`, set to `l (1 + rate/86400)²` and solved for `μ`.
-    pub fn tray_mass(&self, at: f64, rate: f64) -> f64 {
+    ///
+    /// A mass whose size exceeds the pendulum's own is refused: no tray
+    /// carries it, and none can give up more than it holds.
+    pub fn tray_mass(&self, at: f64, rate: f64) -> Result<f64, RegulationError> {
         let p = self.properties();
         let target = p.equivalent_length + length_change_for_rate(p.equivalent_length, rate);
-        (p.inertia - target * p.mass * p.centre_of_mass) / (target * at - at * at)
+        let mass = (p.inertia - target * p.mass * p.centre_of_mass) / (target * at - at * at);
+        if !(-p.mass..=p.mass).contains(&mass) {
+            return Err(RegulationError::TrayTooHeavy {
+                at,
+                mass,
+                pendulum_mass: p.mass,
+            });
+        }
+        Ok(mass)
     }
 
     /// The rate change per hPa of air pressure, s/day, at `pressure` Pa,
@@ -351,25 +445,148 @@ impl CompoundPendulum {
     /// `rate` s/day is brought to time. The equivalent length must become
     /// `l (1 + rate/86400)²`; the move is found by Newton's method on the
     /// exact model (derivative by central differences of ±0.1 mm).
-    pub fn regulation(&self, index: usize, rate: f64) -> Option<f64> {
+    ///
+    /// The move is checked as a clockmaker would: the moved design must be
+    /// a valid one (nothing at or above the pivot), and a part on the rod
+    /// must stay on it (its centre between the pivot and the rod's end).
+    pub fn regulation(&self, index: usize, rate: f64) -> Result<f64, RegulationError> {
+        let name = self
+            .parts
+            .get(index)
+            .map_or("?", |p| p.name.as_str())
+            .to_string();
+        if !matches!(
+            self.parts.get(index).map(|p| &p.placement),
+            Some(Placement::Centre(_))
+        ) {
+            return Err(RegulationError::RestsOnAnother { part: name });
+        }
+        if rate.is_nan() || rate.abs() >= DAY {
+            return Err(RegulationError::Unreachable {
+                part: name,
+                why: "a rate change of a day a day or more".into(),
+            });
+        }
         let l = self.properties().equivalent_length;
         let target = l + length_change_for_rate(l, rate);
         let length_at = |shift: f64| self.length_with_shift(index, shift);
+        let unreachable = |why: &str| RegulationError::Unreachable {
+            part: name.clone(),
+            why: why.to_string(),
+        };
         let mut shift = 0.0;
-        for _ in 0..8 {
+        for _ in 0..50 {
             let h = 1e-4;
-            let slope = (length_at(shift + h)? - length_at(shift - h)?) / (2.0 * h);
-            if slope.is_nan() || slope == 0.0 {
-                return None;
+            let (Some(up), Some(down), Some(here)) =
+                (length_at(shift + h), length_at(shift - h), length_at(shift))
+            else {
+                return Err(unreachable("the move would put a part above the pivot"));
+            };
+            let slope = (up - down) / (2.0 * h);
+            if !slope.is_finite() || slope == 0.0 {
+                return Err(unreachable("moving it does not change the length"));
             }
-            let step = (target - length_at(shift)?) / slope;
+            let step = (target - here) / slope;
             shift += step;
+            if !shift.is_finite() || shift.abs() > 1e3 * l {
+                return Err(unreachable("no move of it reaches that length"));
+            }
             if step.abs() < 1e-12 {
                 break;
             }
         }
-        Some(shift)
+        if length_at(shift).is_none_or(|got| (got - target).abs() > 1e-9 * l) {
+            return Err(unreachable("no move of it reaches that length"));
+        }
+        // The moved design, checked as a design; and a part on the rod
+        // stays on it.
+        let mut parts = self.parts.clone();
+        if let Placement::Centre(c) = parts[index].placement {
+            parts[index].placement = Placement::Centre(c + shift);
+            if let Some(rod) = self.rod().filter(|&r| r != index) {
+                let end = self.centres[rod] + 0.5 * self.parts[rod].shape.height();
+                if c + shift > end || c + shift < 0.0 {
+                    return Err(RegulationError::OffTheRod {
+                        part: name,
+                        shift,
+                        rod_end: end,
+                        centre: c,
+                    });
+                }
+            }
+        }
+        CompoundPendulum::new(parts).map_err(|e| RegulationError::Invalid {
+            part: name,
+            shift,
+            error: e,
+        })?;
+        Ok(shift)
     }
+}
+
+/// Why no regulation of a design gives a rate.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RegulationError {
+    /// The part rests on another: move that one.
+    #[error("'{part}' rests on another part; name the part it rests on")]
+    RestsOnAnother {
+        /// The part named.
+        part: String,
+    },
+    /// No move of the part reaches the length.
+    #[error("no move of '{part}' corrects that rate: {why}")]
+    Unreachable {
+        /// The part named.
+        part: String,
+        /// Why.
+        why: String,
+    },
+    /// The move takes the part off the end of the rod (or above the pivot).
+    #[error(
+        "correcting that rate would move '{part}' {} mm {}, its centre to {} mm below the pivot, \
+         off the rod (which ends {} mm below it)",
+        crate::error::significant(1e3 * shift.abs()),
+        if *shift >= 0.0 { "down" } else { "up" },
+        crate::error::significant(1e3 * (centre + shift)),
+        crate::error::significant(1e3 * rod_end)
+    )]
+    OffTheRod {
+        /// The part.
+        part: String,
+        /// The move, m (positive: down).
+        shift: f64,
+        /// The rod's lower end below the pivot, m.
+        rod_end: f64,
+        /// The part's centre before the move, m.
+        centre: f64,
+    },
+    /// The moved design is not a valid design.
+    #[error("correcting that rate would move '{part}' {} mm: {error}", crate::error::significant(1e3 * shift))]
+    Invalid {
+        /// The part.
+        part: String,
+        /// The move, m.
+        shift: f64,
+        /// What is wrong with the moved design.
+        error: DesignError,
+    },
+    /// A tray mass heavier than the pendulum (or taking off more than it
+    /// weighs).
+    #[error(
+        "correcting that rate on a tray {} mm below the pivot takes {} kg, more than the \
+         pendulum's {} kg: move the bob instead",
+        crate::error::significant(1e3 * at),
+        crate::error::significant(*mass),
+        crate::error::significant(*pendulum_mass)
+    )]
+    TrayTooHeavy {
+        /// The tray's place below the pivot, m.
+        at: f64,
+        /// The mass it would take, kg (negative: taken off).
+        mass: f64,
+        /// The pendulum's mass, kg.
+        pendulum_mass: f64,
+    },
 }
 
 impl CompoundPendulum {
@@ -411,6 +628,24 @@ pub struct AirRates {
     pub buoyancy: f64,
 }
 
+/// The move of a simple pendulum's bob, m (positive: down), that corrects
+/// a clock gaining `rate` s/day: [`length_change_for_rate`], refused when
+/// it would change the length by more than half (that is a new pendulum,
+/// not a regulation: rates beyond about ±19,000 s/day).
+pub fn length_regulation(length: f64, rate: f64) -> Result<f64, RegulationError> {
+    let change = length_change_for_rate(length, rate);
+    if !(-0.5 * length..=0.5 * length).contains(&change) {
+        return Err(RegulationError::Unreachable {
+            part: "bob".into(),
+            why: format!(
+                "the length would change by {}%: that is a new pendulum, not a regulation",
+                crate::error::significant((100.0 * change / length).round())
+            ),
+        });
+    }
+    Ok(change)
+}
+
 /// The change of length, m, that corrects a clock of equivalent length
 /// `length` m gaining `rate` s/day: `l ((1 + rate/86400)² - 1)` (positive:
 /// lengthen), since the period goes as the square root of the length.
@@ -427,12 +662,19 @@ pub fn rate_of_length_ratio(ratio: f64) -> f64 {
 /// Each part's centre, `delta` °C from the reference, carried by a rod of
 /// expansion `rod` (1/K) when there is one.
 fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, DesignError> {
+    // Each part's centre follows its chain of supports down to a part
+    // placed by its centre; every part is resolved once (linear in the
+    // number of parts), and a chain that comes back on itself is a circle.
     let mut centres: Vec<Option<f64>> = vec![None; parts.len()];
-    for _ in 0..=parts.len() {
-        for (i, p) in parts.iter().enumerate() {
-            if centres[i].is_some() {
-                continue;
+    let mut chain: Vec<usize> = Vec::new();
+    let mut on_chain = vec![false; parts.len()];
+    for start in 0..parts.len() {
+        let mut i = start;
+        let mut base = loop {
+            if let Some(c) = centres[i] {
+                break Some(c);
             }
+            let p = &parts[i];
             match p.placement {
                 Placement::Centre(c) => {
                     let carried = match rod {
@@ -440,6 +682,7 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
                         None => c,
                     };
                     centres[i] = Some(carried);
+                    break Some(carried);
                 }
                 Placement::RestsOn(j) => {
                     if j >= parts.len() || j == i {
@@ -449,11 +692,23 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
                             message: "names no other part".into(),
                         });
                     }
-                    if let Some(cj) = centres[j] {
-                        let top = cj - 0.5 * parts[j].shape.height();
-                        centres[i] = Some(top - 0.5 * p.shape.height());
+                    if on_chain[i] {
+                        break None;
                     }
+                    on_chain[i] = true;
+                    chain.push(i);
+                    i = j;
                 }
+            }
+        };
+        // Back up the chain: each part sits on the top of the one below.
+        while let Some(k) = chain.pop() {
+            on_chain[k] = false;
+            if let (Some(below), Placement::RestsOn(j)) = (base, &parts[k].placement) {
+                let top = below - 0.5 * parts[*j].shape.height();
+                let c = top - 0.5 * parts[k].shape.height();
+                centres[k] = Some(c);
+                base = Some(c);
             }
         }
     }
@@ -478,10 +733,15 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
             return Err(DesignError {
                 part: p.name.clone(),
                 field: "centre",
-                message: format!(
-                    "its top would be {:.4} m above the pivot; parts hang below it",
-                    -(c - 0.5 * p.shape.height())
-                ),
+                message: match -1e3 * (c - 0.5 * p.shape.height()) {
+                    above if above < 1e-3 => {
+                        "its top would reach the pivot; parts hang below it".to_string()
+                    }
+                    above => format!(
+                        "its top would be {} mm above the pivot; parts hang below it",
+                        crate::error::format_significant(above, 4)
+                    ),
+                },
             });
         }
         out.push(c);

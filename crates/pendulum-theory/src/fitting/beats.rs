@@ -87,6 +87,16 @@ pub enum BeatError {
         /// Its time, s.
         time: f64,
     },
+    /// Beats too far apart or too close together for a clock (or times in
+    /// the wrong unit).
+    #[error(
+        "the beats are {} s apart on average: no clock's beat (1 ms to an hour); are the times in seconds?",
+        crate::error::format_significant(*mean_beat, 4)
+    )]
+    NotABeat {
+        /// The mean interval, s.
+        mean_beat: f64,
+    },
     /// A pause in the record too long to fill with missed beats.
     #[error(
         "beat {index} at {time} s comes {gap} s after the one before, about {beats} beats: \
@@ -104,6 +114,13 @@ pub enum BeatError {
         beats: f64,
     },
 }
+
+/// The shortest mean beat a beat log may have, s: a watch at 36,000 beats
+/// an hour beats every 0.1 s; a thousandth of a second leaves room.
+pub const MIN_BEAT_S: f64 = 1e-3;
+/// The longest mean beat, s: an hour (a turret clock's minute jump is a
+/// minute; a log of anything slower is not beats).
+pub const MAX_BEAT_S: f64 = 3600.0;
 
 /// Analyses beat timestamps `times` (s); `nominal_beat` (s) is the beat the
 /// clock is meant to have, else the nearest standard rate within 2%.
@@ -331,6 +348,9 @@ impl BeatStream {
         }
         let mean_beat =
             self.typical + (self.co_nt[0] + self.co_nt[1]) / (self.co_nn[0] + self.co_nn[1]);
+        if !(MIN_BEAT_S..=MAX_BEAT_S).contains(&mean_beat) {
+            return Err(BeatError::NotABeat { mean_beat });
+        }
         let nominal_beat = nominal_beat.or_else(|| nearest_standard(mean_beat));
         let [tick, tock] = self.parity;
         let spread = (tick.m2 + tock.m2) / (tick.count + tock.count - 2.0).max(1.0);

@@ -173,6 +173,14 @@ pub fn fit_trajectory(
     time: &[f64],
     theta: &[f64],
 ) -> Result<TrajectoryFit, FitError> {
+    // Five parameters and a residual to judge them by.
+    let points = time.len().min(theta.len());
+    if points <= 5 {
+        return Err(FitError::TooFewPoints {
+            points,
+            parameters: 5,
+        });
+    }
     let t0 = time.first().copied().unwrap_or(0.0);
     let t: Vec<f64> = time.iter().map(|x| x - t0).collect();
     let start = initial_guess(&t, theta);

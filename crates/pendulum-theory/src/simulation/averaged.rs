@@ -63,7 +63,7 @@ pub(super) fn run_averaged(
             stopped = Stopped::Interrupted;
             break;
         }
-        if a < super::AMPLITUDE_FLOOR {
+        if a < super::AVERAGED_AMPLITUDE_FLOOR {
             stopped = Stopped::AmplitudeBelowTolerance;
             break;
         }

@@ -68,7 +68,7 @@ impl Model {
             pendulum,
             damping,
             quadratic_drag: require_non_negative(Quantity::QuadraticDrag, quadratic_drag)?,
-            friction_angle: require_non_negative(Quantity::FrictionAngle, friction_angle)?,
+            friction_angle: crate::error::require_friction_angle(friction_angle)?,
         })
     }
 
@@ -237,6 +237,26 @@ pub struct EnergyGain {
 /// stops with [`Stopped::AmplitudeBelowTolerance`].
 pub const AMPLITUDE_FLOOR: f64 = 1e-280;
 
+/// The smallest swing the averaged method follows, rad: its map works on
+/// the energy `2 sin²(A/2) ≈ A²/2`, which leaves double precision's normal
+/// range (2.2e-308) below an amplitude of about 2e-154, where the loss per
+/// half swing no longer changes it.
+pub const AVERAGED_AMPLITUDE_FLOOR: f64 = 1e-150;
+
+/// The smallest Q the averaged method takes: its map averages the loss
+/// over a half swing, right to third order in 1/Q; at Q = 10 a half swing
+/// loses a quarter of its energy and the third-order term is 1e-3.
+pub const AVERAGED_MIN_Q: f64 = 10.0;
+
+/// The smallest swing `method` follows before it stops with
+/// [`Stopped::AmplitudeBelowTolerance`].
+pub fn amplitude_floor(method: Method) -> f64 {
+    match method {
+        Method::Averaged => AVERAGED_AMPLITUDE_FLOOR,
+        _ => AMPLITUDE_FLOOR,
+    }
+}
+
 /// The relative change of energy (or of the period it implies) at a
 /// turning point that a method's own error explains at `tolerance`, beyond
 /// which [`Outcome::energy_gain`] is set. Measured on undamped runs of 1000
@@ -298,6 +318,14 @@ pub enum SimulationError {
     /// The averaged method's map has viscous damping only.
     #[error("the averaged method takes viscous damping only (no drag or dry friction), and gives turning points, not samples: choose symplectic or dop853")]
     AveragedUnsupported,
+    /// The averaged method's map holds for weak damping only.
+    #[error("the averaged method holds for Q of at least {minimum} (a half swing must lose a small part of its energy), got Q = {q:.4}: choose symplectic or dop853")]
+    AveragedNeedsWeakDamping {
+        /// The Q given.
+        q: f64,
+        /// The smallest Q taken.
+        minimum: f64,
+    },
 }
 
 /// The amplitude of the undamped swing with the energy of `state`:
@@ -352,6 +380,13 @@ pub fn simulate(
                 || observer.wants_zero_crossings()
             {
                 return Err(SimulationError::AveragedUnsupported);
+            }
+            let zeta = model.damping.zeta();
+            if zeta > 0.5 / AVERAGED_MIN_Q {
+                return Err(SimulationError::AveragedNeedsWeakDamping {
+                    q: 0.5 / zeta,
+                    minimum: AVERAGED_MIN_Q,
+                });
             }
             Ok(averaged::run_averaged(model, amplitude, options, observer))
         }

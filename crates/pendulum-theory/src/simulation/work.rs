@@ -3,7 +3,7 @@
 //! ζ = 10⁹, which makes the equation stiff for the explicit methods)
 //! instead of hanging.
 
-use super::{Method, Model, Options, Rates, AMPLITUDE_FLOOR};
+use super::{amplitude_floor, Method, Model, Options, Rates};
 use crate::pendulum::Amplitude;
 use std::f64::consts::{PI, TAU};
 
@@ -22,7 +22,8 @@ pub enum Limit {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WorkEstimate {
     /// Small-angle periods in the part of the run that is integrated (up to
-    /// the duration, or until the swing decays below [`AMPLITUDE_FLOOR`] or
+    /// the duration, or until the swing decays below the method's floor,
+    /// [`super::amplitude_floor`], or
     /// friction holds it).
     pub periods: f64,
     /// Integration steps (quarter periods for the closed form).
@@ -85,7 +86,7 @@ pub fn work_estimate(model: &Model, amplitude: Amplitude, options: &Options) -> 
         } else {
             1.0 / (zeta + (zeta * zeta - 1.0).sqrt())
         };
-        active = active.min((a0 / AMPLITUDE_FLOOR).ln() / slow);
+        active = active.min((a0 / amplitude_floor(options.method)).ln() / slow);
     }
     let r = model.friction_angle;
     if r > 0.0 {

@@ -74,6 +74,12 @@ pub struct SpecError {
     pub message: String,
 }
 
+/// The most beats a free pendulum may go between impulses: its steady
+/// state follows every beat of a cycle, so the work grows with the count;
+/// Shortt's clock impulses every 30 beats, and a pendulum of Q = 10⁶
+/// would lose most of its swing in far fewer than this.
+pub const MAX_EVERY_BEATS: u64 = 100_000;
+
 /// The largest swing a clock's escapement may need, rad (170°).
 const TOP: f64 = 170.0 * std::f64::consts::PI / 180.0;
 
@@ -104,8 +110,15 @@ impl Spec {
         if self.angle.is_nan() || self.angle.abs() >= TOP {
             return fail("impulse_angle", "must lie within 170° of the bottom".into());
         }
-        if self.every == 0 {
-            return fail("every_beats", "must be at least 1".into());
+        if self.every == 0 || self.every > MAX_EVERY_BEATS {
+            return fail(
+                "every_beats",
+                format!(
+                    "must lie between 1 and {MAX_EVERY_BEATS} (Shortt's free pendulum is \
+                     impulsed every 30 s, 30 beats), got {}",
+                    self.every
+                ),
+            );
         }
         let lift = self.lift;
         let (torque, energy) = match self.drive {
@@ -156,8 +169,8 @@ impl Spec {
             return fail(
                 "lift_angle",
                 format!(
-                    "the escapement unlocks only at {:.4}° either side, beyond the 170° a pendulum can swing",
-                    unlocking.to_degrees()
+                    "the escapement unlocks only at {}° either side, beyond the 170° a pendulum can swing",
+                    crate::error::format_significant(unlocking.to_degrees(), 5)
                 ),
             );
         }

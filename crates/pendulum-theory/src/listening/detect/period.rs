@@ -11,9 +11,12 @@ pub fn beat_period(envelope: &[f32], rate: f64, min: f64, max: f64) -> Option<f6
     // At least four beats in the record; 2% of margin below the shortest
     // beat and 3% above the longest, so that a 50 ms beat running fast
     // and a 2 s beat running slow are found.
+    if !(min > 0.0 && max > min && max.is_finite() && rate > 0.0 && rate.is_finite()) {
+        return None;
+    }
     let lo = ((0.98 * min * rate).floor() as usize).max(2);
     let hi = ((1.03 * max * rate).ceil() as usize).min(n / 4);
-    if hi <= lo + 2 {
+    if hi <= lo.saturating_add(2) {
         return None;
     }
     let values: Vec<f64> = envelope[..n].iter().map(|&v| f64::from(v)).collect();

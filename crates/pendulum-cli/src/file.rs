@@ -39,8 +39,8 @@ pub fn check_outputs(
                     return Err(CliError::flag(
                         flag,
                         format!(
-                            "'{}' is the file {input_flag} reads; an output never replaces \
-                             an input: give it another name",
+                            "'{}' is also the input of {input_flag}; an output never \
+                             replaces an input: give it another name",
                             path.display()
                         ),
                     ));

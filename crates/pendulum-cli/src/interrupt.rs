@@ -1,6 +1,9 @@
-//! Ctrl-C, in one place: the first press asks the running command to stop
+//! Ctrl-C (and SIGTERM, as `kill` and `timeout` send), in one place: the
+//! first asks the running command to stop
 //! at its next check (a simulation closes its files whole, a writer
-//! removes its temporary file), a second press ends the process at once.
+//! removes its temporary file); a command still running two seconds later
+//! (a fit has no check inside it), or a second signal, ends the process
+//! at once, its temporaries removed.
 //! An interrupted command exits with status 130, as Unix tools do.
 
 use crate::error::CliError;
@@ -15,10 +18,13 @@ static REQUESTED: AtomicBool = AtomicBool::new(false);
 pub fn install() {
     // Installing fails only if a handler exists already, which is harmless.
     let _ = ctrlc::set_handler(|| {
-        if REQUESTED.swap(true, Ordering::SeqCst) {
-            crate::file::abandon_all();
-            std::process::exit(i32::from(EXIT_INTERRUPTED));
+        if !REQUESTED.swap(true, Ordering::SeqCst) {
+            // The command's own checks end it well within this; one with
+            // none (a long fit) is ended here.
+            std::thread::sleep(std::time::Duration::from_secs(2));
         }
+        crate::file::abandon_all();
+        std::process::exit(i32::from(EXIT_INTERRUPTED));
     });
 }
 

@@ -578,14 +578,16 @@ fn run_long(
         "--drive"
     };
     let when = format!("{} days into the run", num(finish.last.time / 86_400.0, 4));
+    // The half swing that failed lies within a row's step of the last row.
+    let failed_at = (finish.last.time + every.unwrap_or(steady.period)).min(duration);
     match finish.ending {
         Ending::OverTheTop => {
             return Err(CliError::flag(
                 flag,
                 format!(
-                    "{when} the drive ({} × the given) carries the pendulum over the top; \
-                     give less drive",
-                    num(finish.last.drive, 4)
+                    "{when} the drive (rising to {} × the given) carries the pendulum over \
+                     the top; give less drive",
+                    num(drive_at(failed_at).max(finish.last.drive), 4)
                 ),
             ))
         }

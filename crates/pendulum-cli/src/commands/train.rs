@@ -94,7 +94,17 @@ pub fn run(args: &TrainArgs) -> Result<String, CliError> {
             "give the wheel counts, or --bph",
         ));
     }
-    let bph = beats_per_hour(&args.wheels, &args.pinions, args.arbor_turns_per_hour).ok_or_else(|| {
+    let turns = args.arbor_turns_per_hour;
+    if !(turns > 0.0 && turns <= 3600.0) {
+        return Err(CliError::flag(
+            "--arbor-turns-per-hour",
+            format!(
+                "must lie between 0 and 3600 (a turn a second), got {}",
+                crate::work::count(turns)
+            ),
+        ));
+    }
+    let bph = beats_per_hour(&args.wheels, &args.pinions, turns).ok_or_else(|| {
         CliError::flag(
             "--pinions",
             format!(
@@ -106,8 +116,14 @@ pub fn run(args: &TrainArgs) -> Result<String, CliError> {
     })?;
     // No clock beats faster than 100 a second (a typing error otherwise).
     if bph.is_nan() || bph > 360_000.0 {
+        // Said of the arbor's turns when they were given, else of the wheels.
+        let flag = if turns == 1.0 {
+            "--wheels"
+        } else {
+            "--arbor-turns-per-hour"
+        };
         return Err(CliError::flag(
-            "--wheels",
+            flag,
             format!(
                 "give {} beats/hour: no clock beats faster than 100 a second",
                 crate::work::count(bph)

@@ -1,10 +1,13 @@
-//! Files written whole or not at all: the data go to a temporary file in
-//! the target's own folder, which is renamed over the target only when
-//! everything has been written. An error, a refusal before any data, or
-//! Ctrl-C leaves nothing behind. `-` as a path means standard output; a
-//! symbolic link is written through (its target is replaced, the link
-//! stays). [`check_outputs`] refuses, before any work, two outputs to one
-//! path, a folder where a file is wanted, and two outputs to standard output.
+//! A run's outputs, written whole or not at all, and together: each goes
+//! to a temporary in the target's own folder (data for standard output to
+//! an unnamed temporary file), and [`commit_all`] puts every one in place
+//! only when the whole command has succeeded; an error, a refusal, Ctrl-C
+//! or SIGTERM, or a panic leaves nothing behind ([`abandon_all`]). `-` as
+//! a path means standard output; a symbolic link is written through (its
+//! target is replaced, the link stays); a device or a pipe is written
+//! directly. [`check_outputs`] refuses, before any work, two outputs to one
+//! path, an output that is an input, a folder where a file is wanted, a
+//! missing folder, and two outputs to standard output.
 
 use crate::error::CliError;
 use std::fs::File;

@@ -193,17 +193,25 @@ impl Schedule {
             } else {
                 values.to_vec()
             };
-            let (ok, range): (fn(f64) -> bool, &str) = match role {
-                Role::DriveFactor => (|v| v >= 0.0, "at least 0"),
+            // The weather's ranges are the library's air density's.
+            let (t, p) = (TEMPERATURE_RANGE_C, PRESSURE_RANGE_PA);
+            let (low, high, range) = match role {
+                Role::DriveFactor => (0.0, f64::INFINITY, "at least 0".to_string()),
                 Role::Temperature => (
-                    |v| (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(&v),
-                    "-20 to 60 °C, where the air's density is known (CIPM-2007)",
+                    t.0,
+                    t.1,
+                    format!(
+                        "{} to {} °C, where the air's density is known (CIPM-2007)",
+                        t.0, t.1
+                    ),
                 ),
                 _ => (
-                    |v| (PRESSURE_RANGE_PA.0..=PRESSURE_RANGE_PA.1).contains(&(100.0 * v)),
-                    "600 to 1100 hPa",
+                    p.0 / 100.0,
+                    p.1 / 100.0,
+                    format!("{} to {} hPa", p.0 / 100.0, p.1 / 100.0),
                 ),
             };
+            let ok = |v: f64| (low..=high).contains(&v);
             if let Some(i) = values.iter().position(|&v| !ok(v)) {
                 return Err(flag(table.error_at(
                     i,

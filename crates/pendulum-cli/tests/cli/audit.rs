@@ -323,26 +323,23 @@ fn every_odd_input_is_answered_safely() {
         .iter()
         .filter_map(|c| c.args.first().cloned())
         .collect();
-    for command in [
-        "period",
-        "length",
-        "amplitude",
-        "gravity",
-        "damped",
-        "simulate",
-        "fit",
-        "listen",
-        "synth",
-        "train",
-        "regulate",
-        "compensate",
-        "design",
-        "clock",
-        "report",
-    ] {
+    // Every subcommand the binary lists (read from its help, so a new one
+    // without audit cases fails here).
+    let binary = PathBuf::from(env!("CARGO_BIN_EXE_pendulum"));
+    let help = Command::new(&binary).arg("--help").output().unwrap();
+    let help = String::from_utf8_lossy(&help.stdout).into_owned();
+    let listed: Vec<&str> = help
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|c| *c != "help")
+        .collect();
+    assert!(listed.len() >= 15, "the help lists {listed:?}");
+    for command in listed {
         assert!(commands.contains(command), "no audit case runs '{command}'");
     }
-    let binary = PathBuf::from(env!("CARGO_BIN_EXE_pendulum"));
     let next = Mutex::new(0usize);
     let failures = Mutex::new(Vec::new());
     std::thread::scope(|scope| {

@@ -692,14 +692,10 @@ pub struct SimulateArgs {
     /// Integration method.
     #[arg(long, value_enum, default_value_t = MethodArg::Dop853)]
     pub method: MethodArg,
-    /// Local error tolerance of each step, relative to the size of the swing.
-    #[arg(
-        long,
-        value_name = "TOL",
-        allow_hyphen_values = true,
-        default_value = "1e-10"
-    )]
-    pub tolerance: String,
+    /// Local error tolerance of each step, relative to the size of the
+    /// swing [default: the library's, 1e-10].
+    #[arg(long, value_name = "TOL", allow_hyphen_values = true)]
+    pub tolerance: Option<String>,
     /// Write every turning point to this CSV file.
     #[arg(long, value_name = "FILE.csv")]
     pub swings: Option<std::path::PathBuf>,

@@ -232,14 +232,14 @@ impl Table {
                     crate::output::num(v[i] + self.origin(role), 12)
                 ),
             )),
+            // The library's sentence for the same times from Python.
             Some(i) => Err(self.error_at(
                 i,
                 role,
                 format!(
-                    "{} is not after the previous {}; sort the file by {}",
-                    crate::output::num(v[i] + self.origin(role), 12),
-                    crate::output::num(v[i - 1] + self.origin(role), 12),
-                    self.names[self.roles.iter().position(|&r| r == role).unwrap_or(0)]
+                    "{} is not after the previous {}; sort by time",
+                    v[i] + self.origin(role),
+                    v[i - 1] + self.origin(role),
                 ),
             )),
             None => Ok(()),
@@ -251,36 +251,6 @@ impl Table {
         match role {
             Role::Time => self.format.time_origin_s.unwrap_or(0.0),
             _ => 0.0,
-        }
-    }
-
-    /// Checks that the column of `role` is positive throughout.
-    pub fn require_positive(&self, role: Role) -> Result<(), CliError> {
-        let Some(v) = self.column(role) else {
-            return Ok(());
-        };
-        match v.iter().position(|&x| x <= 0.0) {
-            Some(i) => Err(self.error_at(i, role, format!("must be positive, got {}", v[i]))),
-            None => Ok(()),
-        }
-    }
-
-    /// Checks that the amplitudes of the column of `role` (radians) are
-    /// below 180°: a pendulum released at or past the top never swings back.
-    pub fn require_swing(&self, role: Role) -> Result<(), CliError> {
-        let Some(v) = self.column(role) else {
-            return Ok(());
-        };
-        match v.iter().position(|&x| x.abs() >= std::f64::consts::PI) {
-            Some(i) => Err(self.error_at(
-                i,
-                role,
-                format!(
-                    "an amplitude of {}° is not a swing (it must be below 180°)",
-                    crate::output::num(v[i].to_degrees(), 8)
-                ),
-            )),
-            None => Ok(()),
         }
     }
 }
@@ -671,11 +641,19 @@ pub fn stream_table(
                 Some(Some(v)) => row[k] = v * f.factor.unwrap_or(1.0),
                 Some(None) => blank = true,
                 None => {
+                    // A NaN or infinite cell in the library's words (the
+                    // same value from Python gets the same sentence).
+                    let what = match cell.trim().trim_matches('"').parse::<f64>() {
+                        Ok(v) if v.is_nan() => {
+                            "must be a finite number, got a value that is not a number".to_string()
+                        }
+                        Ok(_) => "must be a finite number, got an infinite value".to_string(),
+                        Err(_) => format!("'{cell}' is not a number (read as {shown_separator})"),
+                    };
                     return Err(fail(format!(
-                        "line {line_number}, column {}: '{cell}' is not a number (read as \
-                         {shown_separator})",
+                        "line {line_number}, column {}: {what}",
                         f.header
-                    )))
+                    )));
                 }
             }
         }

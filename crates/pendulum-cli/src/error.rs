@@ -1,11 +1,16 @@
 //! The one error type of the binary: a message that names the argument and
 //! the fix, printed once by `main` as `error: …` with exit status 2.
 
+use pendulum_theory::analysis::{Place, Refusal};
 use pendulum_theory::InputError;
 use std::fmt;
 
 /// Exit status for any error: bad arguments, bad input, failed writes.
 pub const EXIT_ERROR: i32 = 2;
+
+/// Says a refusal of the data (`None`) or of one sample (its array and
+/// index) of the file it came from.
+pub type DataError<'a> = dyn Fn(Option<(&'static str, usize)>, &str) -> CliError + 'a;
 
 /// An error with the name of the flag it concerns, when there is one.
 #[derive(Debug)]
@@ -49,6 +54,21 @@ impl CliError {
     /// The exit status: 2, or 130 after Ctrl-C.
     pub fn status(&self) -> u8 {
         self.status
+    }
+
+    /// An analysis's refusal: a field said of its flag (`flags` maps the
+    /// library's field names to flags; any other `name` is `--name`), a
+    /// sample or the data as a whole by `data` (which names the file,
+    /// and the line).
+    pub fn refused(refusal: &Refusal, flags: &[(&str, &str)], data: &DataError<'_>) -> Self {
+        match refusal.place {
+            Place::Field(field) => match flags.iter().find(|(f, _)| *f == field) {
+                Some((_, flag)) => Self::flag(flag, &refusal.reason),
+                None => Self::flag(&format!("--{}", field.replace('_', "-")), &refusal.reason),
+            },
+            Place::Sample(field, i) => data(Some((field, i)), &refusal.reason),
+            Place::Data => data(None, &refusal.reason),
+        }
     }
 
     /// A library refusal, attributed to `flag`.

@@ -272,7 +272,15 @@ impl fmt::Display for UnitError {
                 f,
                 "'{text}' is not a number; give a finite number (with a unit where one is wanted, like 0.994m or 3deg)"
             ),
-            UnitError::NotFinite(text) => write!(f, "must be a finite number, got '{text}'"),
+            // The library's words for the same value given from Python.
+            UnitError::NotFinite(text) => {
+                let what = if text.to_ascii_lowercase().contains("nan") {
+                    "a value that is not a number"
+                } else {
+                    "an infinite value"
+                };
+                write!(f, "must be a finite number, got {what}")
+            }
             UnitError::UnknownUnit { text, unit, wanted } => write!(
                 f,
                 "unknown unit '{unit}' in '{text}'; {} takes {}",
@@ -294,12 +302,30 @@ impl fmt::Display for UnitError {
     }
 }
 
+/// Refuses `nan`, `inf` and `infinity` (any case, signed, with or without
+/// a unit) as the value they name, not as text that is not a number: the
+/// same sentence as the library gives for the value from Python.
+fn non_finite_word(text: &str) -> Result<(), UnitError> {
+    let word: String = text
+        .trim_start_matches(['+', '-'])
+        .chars()
+        .take_while(|c| c.is_ascii_alphabetic())
+        .collect::<String>()
+        .to_ascii_lowercase();
+    if matches!(word.as_str(), "nan" | "inf" | "infinity") {
+        Err(UnitError::NotFinite(text.to_string()))
+    } else {
+        Ok(())
+    }
+}
+
 /// Reads `text` as a quantity of `dimension`, in SI.
 pub fn parse_quantity(text: &str, dimension: Dimension) -> Result<f64, UnitError> {
     let trimmed = text.trim();
     if trimmed.is_empty() {
         return Err(UnitError::Empty);
     }
+    non_finite_word(trimmed)?;
     let split = number_prefix_len(trimmed);
     if split == 0 {
         return Err(UnitError::NotANumber(trimmed.to_string()));
@@ -322,6 +348,7 @@ pub fn parse_number(text: &str) -> Result<f64, UnitError> {
     if trimmed.is_empty() {
         return Err(UnitError::Empty);
     }
+    non_finite_word(trimmed)?;
     let split = number_prefix_len(trimmed);
     if split == 0 || split != trimmed.len() {
         return Err(UnitError::NotANumber(trimmed.to_string()));
@@ -453,12 +480,18 @@ mod tests {
         );
         assert!(matches!(
             parse_quantity("nan", Dimension::Length),
-            Err(UnitError::NotANumber(_))
+            Err(UnitError::NotFinite(_))
         ));
         assert!(matches!(
-            parse_quantity("inf", Dimension::Length),
-            Err(UnitError::NotANumber(_))
+            parse_quantity("-inf m", Dimension::Length),
+            Err(UnitError::NotFinite(_))
         ));
+        assert_eq!(
+            parse_quantity("NaN", Dimension::Length)
+                .unwrap_err()
+                .to_string(),
+            "must be a finite number, got a value that is not a number"
+        );
         assert!(matches!(
             parse_quantity("1e999", Dimension::Length),
             Err(UnitError::NotFinite(_))

@@ -1,8 +1,8 @@
 //! How long a command will run and how much it will write, judged before
 //! it starts, in one place for every long path (a trajectory, a
 //! simulation, a clock's long run, a synthetic recording, a fit of
-//! millions of rows): a run estimated at more than [`FORCE_SECONDS`] of
-//! computing needs `--force`; one of more than [`IMPOSSIBLE_SECONDS`]
+//! millions of rows): a run estimated at more than the library's `FORCE_SECONDS` of
+//! computing needs `--force`; one of more than `IMPOSSIBLE_SECONDS`
 //! (it would not end in a day), or one whose output would not fit the
 //! free space of the disk it goes to, is refused even with it. A progress
 //! bar shows on anything that runs for more than a second.
@@ -13,35 +13,17 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-/// Runs estimated to take longer than this need `--force`, s of computing.
-pub const FORCE_SECONDS: f64 = 5.0;
-/// Runs estimated to take longer than this are refused even with
-/// `--force`: they would not end in a day, s of computing.
-pub const IMPOSSIBLE_SECONDS: f64 = 86_400.0;
-
 /// Refuses, naming `flag` and saying `why` the run is long, a run of
-/// `seconds` of computing beyond what `force` allows.
+/// `seconds` of computing beyond what `force` allows: the library's rule
+/// ([`pendulum_theory::analysis::judge_work`]), said of the flag.
 pub fn check_time(
     flag: &str,
     why: impl std::fmt::Display,
     seconds: f64,
     force: bool,
 ) -> Result<(), CliError> {
-    if seconds <= FORCE_SECONDS || (force && seconds <= IMPOSSIBLE_SECONDS) {
-        return Ok(());
-    }
-    let hint = if seconds > IMPOSSIBLE_SECONDS || seconds.is_nan() {
-        "more than a day of computing; shorten the run"
-    } else {
-        "add --force if you mean it"
-    };
-    Err(CliError::flag(
-        flag,
-        format!(
-            "{why}: about {} of computing; {hint}",
-            human_seconds(seconds)
-        ),
-    ))
+    pendulum_theory::analysis::judge_work("", why, seconds, force)
+        .map_err(|r| CliError::flag(flag, r.reason))
 }
 
 /// Refuses an output of about `bytes` to `path` (named by `flag`) that
@@ -87,32 +69,8 @@ fn free_bytes(folder: &Path) -> Option<u64> {
     })
 }
 
-/// A count for people: "4.2e7", or words for one past counting.
-pub fn count(n: f64) -> String {
-    if n.is_finite() {
-        num(n, 2)
-    } else {
-        "more than 10^308".to_string()
-    }
-}
-
-/// A computing time for people: "40 s", "3 minutes", "2e5 years".
-pub fn human_seconds(s: f64) -> String {
-    const YEAR: f64 = 3.156e7;
-    if !s.is_finite() {
-        "an unbounded time".to_string()
-    } else if s < 120.0 {
-        format!("{} s", num(s, 2))
-    } else if s < 7200.0 {
-        format!("{} minutes", num(s / 60.0, 2))
-    } else if s < 172_800.0 {
-        format!("{} hours", num(s / 3600.0, 2))
-    } else if s < YEAR {
-        format!("{} days", num(s / 86_400.0, 2))
-    } else {
-        format!("{} years", num(s / YEAR, 2))
-    }
-}
+pub use pendulum_theory::analysis::count;
+pub use pendulum_theory::analysis::human_seconds;
 
 /// A size for people: "12 MB", "3.1 GB", "4e6 TB".
 pub fn human_bytes(b: f64) -> String {

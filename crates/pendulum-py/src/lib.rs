@@ -7,6 +7,7 @@
 
 use ndarray::{ArrayD, Zip};
 use numpy::{IntoPyArray, PyArrayDyn, PyReadonlyArrayDyn, PyUntypedArrayMethods};
+use pendulum_theory::analysis::Refusal;
 use pendulum_theory::damped::DampedPendulum;
 use pendulum_theory::damping::Damping;
 use pendulum_theory::elliptic::{ellipe as ellipe_m, ellipk as ellipk_m, jacobi};
@@ -17,7 +18,7 @@ use pendulum_theory::period::{
 };
 use pendulum_theory::simulation;
 use pendulum_theory::{Amplitude, Pendulum};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyMemoryError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -45,7 +46,17 @@ macro_rules! elementwise {
         if false $(|| $x.shape() != $x0.shape())* {
             return Err(PyValueError::new_err("arrays must have one shape"));
         }
-        let mut out = ArrayD::<f64>::zeros($x0.raw_dim());
+        // An allocation the system refuses is MemoryError, not an abort.
+        let n = $x0.len();
+        let mut storage: Vec<f64> = Vec::new();
+        if storage.try_reserve_exact(n).is_err() {
+            return Err(PyMemoryError::new_err(format!(
+                "{n} results do not fit in memory"
+            )));
+        }
+        storage.resize(n, 0.0);
+        let mut out = ArrayD::<f64>::from_shape_vec($x0.raw_dim(), storage)
+            .map_err(|e| PyValueError::new_err(e.to_string()))?;
         let failed = AtomicBool::new(false);
         let parallel = out.len() >= PARALLEL_FROM;
         $py.detach(|| {
@@ -289,70 +300,51 @@ impl simulation::Observer for Turns {
 }
 
 /// The full nonlinear damped pendulum released from rest (the CLI's
-/// `simulate`): every turning point's time, signed angle and rate (NaN at
-/// the release), and a summary.
+/// `simulate`, the same library call): every turning point's time, signed
+/// angle and rate (NaN at the release), and the summary as JSON.
 #[pyfunction]
-#[pyo3(signature = (length, amplitude, duration, zeta, quadratic_drag, friction_angle, g, method, tolerance))]
+#[pyo3(signature = (length, amplitude, duration, damping, quadratic_drag, friction_angle, g, method, tolerance, force))]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 fn simulate<'py>(
     py: Python<'py>,
     length: f64,
     amplitude: f64,
     duration: f64,
-    zeta: f64,
-    quadratic_drag: f64,
-    friction_angle: f64,
-    g: f64,
-    method: &str,
-    tolerance: f64,
-) -> PyResult<(Array1<'py>, Array1<'py>, Array1<'py>, Bound<'py, PyDict>)> {
-    let value_error = |e: &dyn std::fmt::Display| PyValueError::new_err(e.to_string());
-    let pendulum = Pendulum::new(length, g).map_err(|e| value_error(&e))?;
-    let damping = Damping::from_zeta(zeta).map_err(|e| value_error(&e))?;
-    let model = simulation::Model::new(pendulum, damping, quadratic_drag, friction_angle)
-        .map_err(|e| value_error(&e))?;
-    let amplitude = Amplitude::from_radians(amplitude).map_err(|e| value_error(&e))?;
-    let method = match method {
-        "dop853" => simulation::Method::Dop853,
-        "vern9" => simulation::Method::Vern9,
-        "symplectic" => simulation::Method::Symplectic,
-        "exact" => simulation::Method::Exact,
-        "averaged" => simulation::Method::Averaged,
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "method: '{other}' is not one of dop853, vern9, symplectic, exact, averaged"
-            )))
-        }
-    };
-    let options = simulation::Options {
+    damping: Option<(String, f64)>,
+    quadratic_drag: Option<f64>,
+    friction_angle: Option<f64>,
+    g: Option<f64>,
+    method: Option<String>,
+    tolerance: Option<f64>,
+    force: bool,
+) -> PyResult<(Array1<'py>, Array1<'py>, Array1<'py>, String)> {
+    use simulation::analysis::{damping_of, prepare, SimulationInput};
+    let refused = |r: Refusal| PyValueError::new_err(r.to_string());
+    let damping = damping
+        .map(|(field, value)| damping_of(&field, value))
+        .transpose()
+        .map_err(refused)?;
+    let prepared = prepare(&SimulationInput {
+        length,
+        g,
+        amplitude,
         duration,
-        tolerance,
+        damping,
+        quadratic_drag,
+        friction_angle,
         method,
+        tolerance,
         sample_interval: None,
-    };
+        force,
+    })
+    .map_err(refused)?;
     let mut turns = Turns {
-        pendulum,
+        pendulum: prepared.model.pendulum,
         time: Vec::new(),
         angle: Vec::new(),
         rate: Vec::new(),
     };
-    let outcome = py
-        .detach(|| simulation::simulate(&model, amplitude, &options, &mut turns))
-        .map_err(|e| value_error(&e))?;
-    let summary = PyDict::new(py);
-    summary.set_item("method", outcome.method.name())?;
-    summary.set_item("swings", outcome.swings)?;
-    summary.set_item("final_time_s", outcome.final_time)?;
-    summary.set_item("final_angle_rad", outcome.final_state.angle)?;
-    summary.set_item(
-        "final_angular_velocity_rad_s",
-        outcome.final_state.angular_velocity,
-    )?;
-    summary.set_item("final_amplitude_rad", outcome.final_amplitude)?;
-    summary.set_item("steps", outcome.steps)?;
-    summary.set_item("rejected_steps", outcome.rejected_steps)?;
-    summary.set_item("function_evaluations", outcome.function_evaluations)?;
-    summary.set_item("stopped", outcome.stopped.name())?;
+    let summary = answer(py.detach(|| prepared.run(&mut turns)))?;
     Ok((
         turns.time.into_pyarray(py),
         turns.angle.into_pyarray(py),
@@ -372,223 +364,87 @@ fn values<'a>(a: &'a PyReadonlyArrayDyn<'_, f64>, name: &str) -> PyResult<&'a [f
         .map_err(|_| PyValueError::new_err(format!("{name}: must be contiguous")))
 }
 
-/// Fits the amplitude-decay laws (the CLI's `fit decay`) to amplitudes
-/// (rad) at times (s); the period (s), or the length (m) and g, add the
-/// physical parameters (ω = 2π/T, or the pendulum's at the record's
-/// amplitudes, as the CLI). Returns (models, preferred, omega): one dict
-/// per law with the CLI's JSON keys.
+/// The library's result as JSON (the command line's `--json`, key for key
+/// and bit for bit), or its refusal as `ValueError`.
+fn answer<T: serde::Serialize>(result: Result<T, Refusal>) -> PyResult<String> {
+    let value = result.map_err(|r| PyValueError::new_err(r.to_string()))?;
+    serde_json::to_string(&value).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+/// The run-down analysis (the CLI's `fit decay`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, amplitude, model, period, length, g))]
-#[allow(clippy::type_complexity)]
-fn fit_decay<'py>(
-    py: Python<'py>,
-    time: In<'py>,
-    amplitude: In<'py>,
-    model: &str,
+#[pyo3(signature = (time, amplitude, model, period, length, g, mass, force))]
+#[allow(clippy::too_many_arguments)]
+fn fit_decay(
+    py: Python<'_>,
+    time: In<'_>,
+    amplitude: In<'_>,
+    model: Option<&str>,
     period: Option<f64>,
     length: Option<f64>,
-    g: f64,
-) -> PyResult<(Vec<Bound<'py, PyDict>>, Option<&'static str>, Option<f64>)> {
-    use pendulum_theory::fitting::decay::{self, DecayModel};
-    let (t, a) = (values(&time, "time")?, values(&amplitude, "amplitude")?);
-    let omega = match (period, length) {
-        (Some(p), _) => {
-            if !(p > 0.0 && p.is_finite()) {
-                return Err(PyValueError::new_err(format!(
-                    "period: must be positive, got {p} s"
-                )));
-            }
-            Some(std::f64::consts::TAU / p)
-        }
-        (None, Some(l)) => {
-            let pendulum = Pendulum::new(l, g).map_err(|e| PyValueError::new_err(e.to_string()))?;
-            Some(decay::effective_angular_frequency(&pendulum, a))
-        }
+    g: Option<f64>,
+    mass: Option<f64>,
+    force: bool,
+) -> PyResult<String> {
+    use pendulum_theory::fitting::rundown::{analyse, RunDownInput};
+    let (time, amplitude) = (values(&time, "time")?, values(&amplitude, "amplitude")?);
+    answer(py.detach(|| {
+        analyse(&RunDownInput {
+            time,
+            amplitude,
+            model,
+            period,
+            turning_half_period: None,
+            length,
+            g,
+            mass,
+            force,
+        })
+    }))
+}
+
+/// The beat-log analysis (the CLI's `fit beats`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (time, bph, period))]
+fn fit_beats(
+    py: Python<'_>,
+    time: In<'_>,
+    bph: Option<f64>,
+    period: Option<f64>,
+) -> PyResult<String> {
+    use pendulum_theory::fitting::beat_log::{analyse, Nominal};
+    let time = values(&time, "time")?;
+    let nominal = match (bph, period) {
+        (Some(_), Some(_)) => return Err(PyValueError::new_err("give bph or period, not both")),
+        (Some(b), None) => Some(Nominal::BeatsPerHour(b)),
+        (None, Some(p)) => Some(Nominal::Period(p)),
         (None, None) => None,
     };
-    if t.len() != a.len() {
-        return Err(PyValueError::new_err(
-            "time and amplitude must have one length",
-        ));
-    }
-    let models: Vec<DecayModel> = match model {
-        "all" => DecayModel::ALL.to_vec(),
-        name => vec![DecayModel::from_name(name).ok_or_else(|| {
-            PyValueError::new_err(format!(
-                "model: '{name}' is not one of viscous, coulomb, quadratic, viscous+coulomb, viscous+quadratic, full, all"
-            ))
-        })?],
-    };
-    let results: Vec<(DecayModel, Result<decay::DecayFit, String>)> = py.detach(|| {
-        models
-            .iter()
-            .map(|&m| {
-                (
-                    m,
-                    decay::fit_decay(m, t, a, omega).map_err(|e| e.to_string()),
-                )
-            })
-            .collect()
-    });
-    let fits: Vec<decay::DecayFit> = results
-        .iter()
-        .filter_map(|(_, r)| r.as_ref().ok().cloned())
-        .collect();
-    if fits.is_empty() {
-        let message = results
-            .iter()
-            .find_map(|(_, r)| r.as_ref().err().cloned())
-            .unwrap_or_default();
-        return Err(PyValueError::new_err(message));
-    }
-    let weights = decay::akaike_weights(&fits);
-    let preferred = decay::preferred(&fits).map(DecayModel::name);
-    let mut out = Vec::new();
-    let mut k = 0;
-    for (m, r) in &results {
-        let d = PyDict::new(py);
-        d.set_item("model", m.name())?;
-        match r {
-            Err(e) => d.set_item("failed", e)?,
-            Ok(f) => {
-                let parameters = PyDict::new(py);
-                let errors = PyDict::new(py);
-                for e in &f.parameters {
-                    parameters.set_item(e.name, e.value)?;
-                    errors.set_item(e.name, e.standard_error)?;
-                }
-                d.set_item("parameters", parameters)?;
-                d.set_item("standard_errors", errors)?;
-                d.set_item("q_factor", f.q_factor)?;
-                d.set_item("q_factor_lower_bound", f.q_factor_lower_bound)?;
-                d.set_item("q_factor_mean", f.q_factor_mean)?;
-                d.set_item("at_bound", f.at_bound.clone())?;
-                d.set_item("residual_rms", f.fit.residual_rms)?;
-                d.set_item("aic", f.fit.aic)?;
-                d.set_item("bic", f.fit.bic)?;
-                d.set_item("akaike_weight", weights[k])?;
-                k += 1;
-            }
-        }
-        out.push(d);
-    }
-    Ok((out, preferred, omega))
+    answer(py.detach(|| analyse(time, nominal)))
 }
 
-/// The timegrapher's figures from one time per beat (the CLI's `fit
-/// beats`): a dict with the CLI's JSON keys.
+/// The tracked-swing analysis (the CLI's `fit trajectory`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, nominal_beat))]
-fn fit_beats<'py>(
-    py: Python<'py>,
-    time: In<'py>,
-    nominal_beat: Option<f64>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let t = values(&time, "time")?;
-    let r = py
-        .detach(|| pendulum_theory::fitting::beats::analyse_beats(t, nominal_beat))
-        .map_err(|e| PyValueError::new_err(e.to_string()))?;
-    let d = PyDict::new(py);
-    d.set_item("beats", r.beats)?;
-    d.set_item("mean_beat_s", r.mean_beat)?;
-    d.set_item("beats_per_hour", r.beats_per_hour)?;
-    d.set_item("nominal_beat_s", r.nominal_beat)?;
-    d.set_item("rate_s_per_day", r.rate_s_per_day)?;
-    d.set_item("beat_error_ms", r.beat_error_ms)?;
-    d.set_item("jitter_ms", r.jitter_ms)?;
-    let tau: Vec<f64> = r.allan_deviation.iter().map(|p| p.tau).collect();
-    let dev: Vec<f64> = r
-        .allan_deviation
-        .iter()
-        .map(|p| p.deviation * 86_400.0)
-        .collect();
-    d.set_item("allan_tau_s", tau.into_pyarray(py))?;
-    d.set_item("allan_deviation_s_per_day", dev.into_pyarray(py))?;
-    Ok(d)
-}
-
-/// Fits section 1-4's closed form (`linear`) or the nonlinear equation
-/// (`nonlinear`; `auto`: nonlinear above a 5° swing) to angles (rad) at
-/// times (s), as the CLI's `fit trajectory`; with the length (m), g.
-/// Returns a dict with the CLI's JSON keys (model, parameters,
-/// standard_errors, residual_rms_rad, warnings).
-#[pyfunction]
-#[pyo3(signature = (time, angle, model, length))]
-fn fit_trajectory<'py>(
-    py: Python<'py>,
-    time: In<'py>,
-    angle: In<'py>,
-    model: &str,
+#[pyo3(signature = (time, angle, model, length, force))]
+fn fit_trajectory(
+    py: Python<'_>,
+    time: In<'_>,
+    angle: In<'_>,
+    model: Option<&str>,
     length: Option<f64>,
-) -> PyResult<Bound<'py, PyDict>> {
-    use pendulum_theory::fitting::trajectory::{self, largest_swing, TrajectoryModel};
-    let (t, a) = (values(&time, "time")?, values(&angle, "angle")?);
-    if t.len() != a.len() {
-        return Err(PyValueError::new_err("time and angle must have one length"));
-    }
-    let chosen = match model {
-        "linear" => TrajectoryModel::Linear,
-        "nonlinear" => TrajectoryModel::Nonlinear,
-        "auto" => TrajectoryModel::auto(a),
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "model: '{other}' is not one of auto, linear, nonlinear"
-            )))
-        }
-    };
-    let fit = py
-        .detach(|| trajectory::fit_trajectory(chosen, t, a))
-        .map_err(|e| PyValueError::new_err(e.to_string()))?;
-    let parameters = PyDict::new(py);
-    let errors = PyDict::new(py);
-    for ((name, value), error) in fit
-        .names()
-        .iter()
-        .zip(&fit.fit.parameters)
-        .zip(&fit.fit.standard_errors)
-    {
-        // The envelope amplitude is a magnitude (the CLI's rule).
-        let value = if *name == "amplitude_rad" {
-            value.abs()
-        } else {
-            *value
-        };
-        parameters.set_item(*name, value)?;
-        errors.set_item(*name, *error)?;
-    }
-    let mut warnings: Vec<String> = fit.fallback_note().into_iter().collect();
-    if let Some(l) = length {
-        if !(l > 0.0 && l.is_finite()) {
-            return Err(PyValueError::new_err(format!(
-                "length: must be positive, got {l} m"
-            )));
-        }
-        if fit.model.gives_gravity(a) {
-            let (g, se) = fit.gravity(l);
-            parameters.set_item("g_m_s2", g)?;
-            errors.set_item("g_m_s2", se)?;
-        } else {
-            warnings.push(format!(
-                "g is not reported from the linear model at a {:.3}° swing: its finite-amplitude correction leaves a bias beyond the standard error; use model='nonlinear'",
-                largest_swing(a).to_degrees()
-            ));
-        }
-    }
-    let d = PyDict::new(py);
-    d.set_item(
-        "model",
-        match fit.model {
-            TrajectoryModel::Linear => "linear",
-            TrajectoryModel::Nonlinear => "nonlinear",
-        },
-    )?;
-    d.set_item("model_requested", model)?;
-    d.set_item("parameters", parameters)?;
-    d.set_item("standard_errors", errors)?;
-    d.set_item("residual_rms_rad", fit.fit.residual_rms)?;
-    d.set_item("length_m", length)?;
-    d.set_item("warnings", warnings)?;
-    Ok(d)
+    force: bool,
+) -> PyResult<String> {
+    use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
+    let (time, angle) = (values(&time, "time")?, values(&angle, "angle")?);
+    answer(py.detach(|| {
+        analyse(&TrackInput {
+            time,
+            angle,
+            model,
+            length: length.map(|l| (l, LengthSource::Given)),
+            force,
+        })
+    }))
 }
 
 /// A clock's description as the Python package passes it: length, g,
@@ -728,7 +584,7 @@ fn clock_steady<'py>(
 /// outside (times, s/day: a temperature or pressure coefficient times the
 /// change), against the clock as regulated at the start.
 #[pyfunction]
-#[pyo3(signature = (spec, duration, every, schedule_time, schedule_factor, rate_time, rate_change))]
+#[pyo3(signature = (spec, duration, every, schedule_time, schedule_factor, rate_time, rate_change, force))]
 #[allow(clippy::type_complexity, clippy::too_many_arguments)]
 fn clock_run<'py>(
     py: Python<'py>,
@@ -739,35 +595,29 @@ fn clock_run<'py>(
     schedule_factor: Vec<f64>,
     rate_time: Vec<f64>,
     rate_change: Vec<f64>,
+    force: bool,
 ) -> PyResult<(Vec<Array1<'py>>, Bound<'py, PyDict>)> {
     use pendulum_theory::clock::long_run::{period_factor, piecewise_linear, run, LongRun};
+    use pendulum_theory::clock::plan::{check_schedule, plan_run, MAX_RATE_S_PER_DAY};
     use pendulum_theory::clock::HalfSwingMethod;
     let clock = make_clock(spec)?;
-    if !(duration > 0.0 && duration <= 1e10) {
-        return Err(PyValueError::new_err(format!(
-            "duration: must lie between 0 and 300 years, got {duration} s"
-        )));
-    }
-    if schedule_time.len() != schedule_factor.len()
-        || schedule_time.windows(2).any(|w| w[1] <= w[0])
-        || schedule_factor
-            .iter()
-            .any(|f| !(*f >= 0.0 && f.is_finite()))
-    {
-        return Err(PyValueError::new_err(
-            "drive_schedule: times must increase, factors be at least 0, one of each",
-        ));
-    }
-    if rate_time.len() != rate_change.len()
-        || rate_time.windows(2).any(|w| w[1] <= w[0])
-        || rate_change
-            .iter()
-            .any(|r| !(r.is_finite() && *r > -86_400.0))
-    {
-        return Err(PyValueError::new_err(
-            "rate_schedule: times must increase, rates be finite and above -86400 s/day, one of each",
-        ));
-    }
+    let refused = |r: Refusal| PyValueError::new_err(r.to_string());
+    check_schedule(
+        "drive_schedule",
+        &schedule_time,
+        &schedule_factor,
+        0.0..=f64::MAX,
+        "a drive factor of at least 0",
+    )
+    .map_err(refused)?;
+    check_schedule(
+        "rate_schedule",
+        &rate_time,
+        &rate_change,
+        -MAX_RATE_S_PER_DAY..=MAX_RATE_S_PER_DAY,
+        "a rate change within a day per day (86400 s/day)",
+    )
+    .map_err(refused)?;
     let drive = |t: f64| piecewise_linear(&schedule_time, &schedule_factor, t);
     let stretch = |t: f64| {
         if rate_time.is_empty() {
@@ -779,18 +629,7 @@ fn clock_run<'py>(
     let start = clock
         .steady(HalfSwingMethod::Averaged, drive(0.0))
         .map_err(|e| PyValueError::new_err(format!("drive: {e}")))?;
-    if let Some(e) = every {
-        if e.is_nan() || e < start.period {
-            return Err(PyValueError::new_err(format!(
-                "every: must be at least a period ({} s), got {e} s",
-                start.period
-            )));
-        }
-    } else if duration / start.period > 5e7 {
-        return Err(PyValueError::new_err(
-            "every: every turning point of so long a run is more than 10^8 rows: give every",
-        ));
-    }
+    plan_run(&clock, start.period, duration, every, force).map_err(refused)?;
     let mut columns: [Vec<f64>; 6] = Default::default();
     let finish = py.detach(|| {
         run(

@@ -57,7 +57,7 @@ def test_methods_agree_and_bad_input():
         pt.simulate(-1.0, a0, 10.0)
     with pytest.raises(ValueError, match="method"):
         pt.simulate(1.0, a0, 10.0, method="euler")
-    with pytest.raises(ValueError, match="q or zeta"):
+    with pytest.raises(ValueError, match="give one of q, zeta"):
         pt.simulate(1.0, a0, 10.0, q=10, zeta=0.1)
     with pytest.raises(ValueError, match="exact method has no damping"):
         pt.simulate(1.0, a0, 10.0, q=10, method="exact")

@@ -38,6 +38,7 @@
 #![deny(missing_docs)]
 
 pub mod air;
+pub mod analysis;
 pub mod clock;
 pub mod compound;
 pub mod damped;

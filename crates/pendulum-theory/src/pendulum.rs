@@ -90,6 +90,9 @@ pub struct Amplitude {
 }
 
 impl Amplitude {
+    /// No swing: the pendulum at rest.
+    pub const ZERO: Amplitude = Amplitude { radians: 0.0 };
+
     /// An amplitude of `radians`.
     pub fn from_radians(radians: f64) -> Result<Self, InputError> {
         let q = Quantity::Amplitude;

@@ -15,6 +15,7 @@ use pendulum_theory::clock::escapement::spec::{Drive, Kind, Spec};
 use pendulum_theory::clock::long_run::{
     period_factor, piecewise_linear, run as long_run, Ending, LongRun,
 };
+use pendulum_theory::clock::plan::plan_run;
 use pendulum_theory::clock::{Clock, ClockError, HalfSwingMethod, Steady};
 use serde::Serialize;
 use std::path::Path;
@@ -430,11 +431,6 @@ fn isochronism_curve(clock: &Clock, text: &str, steps: usize) -> Result<Vec<IsoJ
 /// (time s, amplitude rad, time error s) of a long run, for its plot.
 type RunPoints = Vec<(f64, f64, f64)>;
 
-/// Computing time of one row of a long run, s (a week of turning points,
-/// 604,800 rows, in 0.2 s, rounded up).
-const SECONDS_PER_ROW: f64 = 0.5e-6;
-/// Computing time of one step of many beats, s (1.2 µs measured, rounded up).
-const SECONDS_PER_MULTI_STEP: f64 = 1.5e-6;
 /// Bytes of one row of a long run's file, rounded up.
 const BYTES_PER_ROW: f64 = 100.0;
 
@@ -445,53 +441,14 @@ fn run_long(
     steady: &Steady,
 ) -> Result<(RunJson, RunPoints), CliError> {
     let duration = common::quantity("--duration", text, Dimension::Time)?;
-    if duration.is_nan() || duration <= 0.0 || duration > 1e10 {
-        return Err(CliError::flag(
-            "--duration",
-            format!("must lie between 0 and 300 years, got {text}"),
-        ));
-    }
-    let every = match &args.every {
-        Some(t) => {
-            let e = common::quantity("--every", t, Dimension::Time)?;
-            if e.is_nan() || e < steady.period {
-                return Err(CliError::flag(
-                    "--every",
-                    format!(
-                        "must be at least a period ({} s), got {t}",
-                        num(steady.period, 6)
-                    ),
-                ));
-            }
-            Some(e)
-        }
-        None => None,
-    };
-    if every.is_none() && duration / steady.period > 5e7 {
-        return Err(CliError::flag(
-            "--duration",
-            "every turning point of so long a run is more than 10^8 rows: give --every",
-        ));
-    }
-    // The work: the rows, and the beats stepped between them (many at a
-    // time, up to 4096 or a twentieth of the relaxation, when rows are
-    // sparse and the escapement's cycle is one beat; one by one otherwise).
-    // Measured: a week of every turning point (604,800 rows) in 0.2 s; ten
-    // years of a row a day at Q = 10^4 (3.2e8 beats) in 1.2 s.
-    let rows = duration / every.unwrap_or(0.5 * steady.period);
-    let beats = duration / (0.5 * steady.period);
-    let per_step = (clock.q / (10.0 * std::f64::consts::PI)).min(4096.0);
-    let stepping = if every.is_some() && clock.escapement.cycle() == 1 && per_step >= 16.0 {
-        beats / per_step * SECONDS_PER_MULTI_STEP
-    } else {
-        beats * SECONDS_PER_ROW
-    };
-    crate::work::check_time(
-        "--duration",
-        format!("{} beats, {} rows", num(beats, 3), num(rows, 3)),
-        rows * SECONDS_PER_ROW + stepping,
-        args.force,
-    )?;
+    let every = args
+        .every
+        .as_deref()
+        .map(|t| common::quantity("--every", t, Dimension::Time))
+        .transpose()?;
+    let plan = plan_run(clock, steady.period, duration, every, args.force)
+        .map_err(|r| CliError::refused(&r, &[], &|_, reason| CliError::other(reason)))?;
+    let rows = plan.rows;
     if let Some(path) = &args.swings {
         crate::work::check_space("--swings", path, rows * BYTES_PER_ROW)?;
     }

@@ -9,50 +9,19 @@ use crate::plot::{render, Figure, Panel, Series, Target};
 
 /// Intervals kept for the plot, at most.
 const PLOT_LIMIT: usize = 8192;
-use pendulum_theory::fitting::beats::{AllanPoint, BeatStream};
-use pendulum_theory::period::{beat_of_period, beats_per_hour, SECONDS_PER_DAY};
+use crate::units::parse_number;
+use pendulum_theory::analysis::Refusal;
+use pendulum_theory::fitting::beat_log::{BeatLog, Beats, Nominal};
+use pendulum_theory::period::beats_per_hour;
 use serde::Serialize;
 
+/// What the command prints as JSON: the file read, then the analysis.
 #[derive(Serialize)]
 struct BeatsJson {
     file: String,
     format: crate::data::Format,
-    beats: usize,
-    mean_beat_s: f64,
-    beats_per_hour: f64,
-    nominal_beat_s: Option<f64>,
-    rate_s_per_day: Option<f64>,
-    beat_error_ms: f64,
-    jitter_ms: f64,
-    repaired: RepairedJson,
-    allan_deviation: Vec<AllanJson>,
-}
-
-#[derive(Serialize)]
-struct RepairedJson {
-    missed: usize,
-    doubled: usize,
-}
-
-#[derive(Serialize)]
-pub(crate) struct AllanJson {
-    tau_s: f64,
-    beats: usize,
-    deviation: f64,
-    deviation_s_per_day: f64,
-}
-
-/// The Allan deviation of an analysis, for JSON.
-pub(crate) fn allan_json(points: &[AllanPoint]) -> Vec<AllanJson> {
-    points
-        .iter()
-        .map(|p| AllanJson {
-            tau_s: p.tau,
-            beats: p.beats,
-            deviation: p.deviation,
-            deviation_s_per_day: SECONDS_PER_DAY * p.deviation,
-        })
-        .collect()
+    #[serde(flatten)]
+    analysis: Beats,
 }
 
 /// The rate for people: "12 s/day (gaining) against 3600 beats/hour".
@@ -81,19 +50,33 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let nominal = common::period_or_beat_rate(args.period.as_deref(), args.bph.as_deref())?
-        .map(|period| beat_of_period(period).map_err(|e| CliError::input("--period", &e)))
-        .transpose()?;
+    let nominal = match (&args.period, &args.bph) {
+        (Some(t), _) => Some(Nominal::Period(common::quantity(
+            "--period",
+            t,
+            crate::units::Dimension::Time,
+        )?)),
+        (None, Some(t)) => Some(Nominal::BeatsPerHour(
+            parse_number(t).map_err(|e| CliError::flag("--bph", e))?,
+        )),
+        (None, None) => None,
+    };
+    let file = args.file.display().to_string();
+    let refused = |r: &Refusal, line: Option<u64>| {
+        CliError::refused(r, &[], &|at, reason| match (at, line) {
+            (Some(_), Some(line)) => CliError::other(format!("{file}: line {line}: {reason}")),
+            _ => CliError::other(format!("{file}: {reason}")),
+        })
+    };
+    let mut log = BeatLog::new(nominal).map_err(|r| refused(&r, None))?;
     let options = ReadOptions {
         columns: super::measured::columns(args.columns.as_deref()),
         ..ReadOptions::default()
     };
     // Streamed: a log of 10^7 beats takes no more memory than one of ten.
-    let file = args.file.display().to_string();
-    let mut stream = BeatStream::new();
-    let mut previous = f64::NEG_INFINITY;
     // For the plot: every `stride`-th interval, the stride doubling whenever
     // the kept points reach their limit, so memory stays bounded.
+    let mut previous = f64::NEG_INFINITY;
     let mut intervals: Vec<(f64, f64)> = Vec::new();
     let (mut stride, mut seen) = (1_u64, 0_u64);
     let groups: &[&[Role]] = &[&[Role::Time]];
@@ -114,54 +97,26 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
             }
             seen += 1;
         }
-        if t <= previous {
-            return Err(CliError::other(format!(
-                "{file}: line {line}: the time {t} is not after the previous {previous}; sort the file by time"
-            )));
-        }
         previous = t;
-        stream
-            .push(t)
-            .map_err(|e| CliError::other(format!("{file}: line {line}: {e}")))
+        log.push(t).map_err(|r| refused(&r, Some(line)))
     })?;
-    let a = stream
-        .finish(nominal)
-        .map_err(|e| CliError::other(format!("{file}: {e}")))?;
-    // A nominal beat far from the measured one is a typing error (the rate
-    // would be meaningless, or overflow).
-    if let Some(n) = nominal {
-        let ratio = n / a.mean_beat;
-        if !(0.5..=2.0).contains(&ratio) {
-            let flag = if args.period.is_some() {
-                "--period"
-            } else {
-                "--bph"
-            };
-            return Err(CliError::flag(
-                flag,
-                format!(
-                    "a nominal beat of {} s is nowhere near the {} s measured in {file}",
-                    num(n, 6),
-                    num(a.mean_beat, 6)
-                ),
-            ));
-        }
-    }
+    let analysis = log.finish().map_err(|r| refused(&r, None))?;
+    let a = &analysis;
     if let Some(target) = &plot {
         let mean = vec![
-            (intervals.first().map_or(0.0, |p| p.0), 1e3 * a.mean_beat),
-            (intervals.last().map_or(1.0, |p| p.0), 1e3 * a.mean_beat),
+            (intervals.first().map_or(0.0, |p| p.0), 1e3 * a.mean_beat_s),
+            (intervals.last().map_or(1.0, |p| p.0), 1e3 * a.mean_beat_s),
         ];
         // Repaired gaps (missed beats) would squash the scale: show the
         // intervals within half a beat of the mean.
         let intervals: Vec<(f64, f64)> = intervals
             .into_iter()
-            .filter(|p| (p.1 - 1e3 * a.mean_beat).abs() < 500.0 * a.mean_beat)
+            .filter(|p| (p.1 - 1e3 * a.mean_beat_s).abs() < 500.0 * a.mean_beat_s)
             .collect();
         let allan = a
             .allan_deviation
             .iter()
-            .map(|p| (p.tau, SECONDS_PER_DAY * p.deviation))
+            .map(|p| (p.tau_s, p.deviation_s_per_day))
             .collect();
         let figure = Figure {
             panels: vec![
@@ -188,18 +143,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     let result = BeatsJson {
         file,
         format,
-        beats: a.beats,
-        mean_beat_s: a.mean_beat,
-        beats_per_hour: a.beats_per_hour,
-        nominal_beat_s: a.nominal_beat,
-        rate_s_per_day: a.rate_s_per_day,
-        beat_error_ms: a.beat_error_ms,
-        jitter_ms: a.jitter_ms,
-        repaired: RepairedJson {
-            missed: a.repaired.missed,
-            doubled: a.repaired.doubled,
-        },
-        allan_deviation: allan_json(&a.allan_deviation),
+        analysis: analysis.clone(),
     };
     if args.json {
         return output::json(&result);
@@ -216,11 +160,11 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         "Mean beat",
         format!(
             "{} s  ({} beats/hour)",
-            num(a.mean_beat, 10),
+            num(a.mean_beat_s, 10),
             num(a.beats_per_hour, 8)
         ),
     )
-    .row("Rate", rate_text(a.rate_s_per_day, a.nominal_beat))
+    .row("Rate", rate_text(a.rate_s_per_day, a.nominal_beat_s))
     .row("Beat error", format!("{} ms", num(a.beat_error_ms, 3)))
     .row("Jitter", format!("{} ms", num(a.jitter_ms, 3)));
     let mut out = s.render();
@@ -232,9 +176,9 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
             .map(|p| {
                 vec![
                     p.beats.to_string(),
-                    num(p.tau, 6),
+                    num(p.tau_s, 6),
                     num(p.deviation, 3),
-                    num(SECONDS_PER_DAY * p.deviation, 3),
+                    num(p.deviation_s_per_day, 3),
                 ]
             })
             .collect();

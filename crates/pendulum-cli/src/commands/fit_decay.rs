@@ -1,6 +1,6 @@
 //! `pendulum fit decay`: which damping, and how much, from a run-down.
 
-use super::common::{self, finite};
+use super::common;
 use super::measured::{has_track, read_options, track_of, track_roles};
 use crate::args::FitDecayArgs;
 use crate::data::{need, read_table, Format, Found, Role};
@@ -10,68 +10,24 @@ use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::Dimension;
 use crate::work;
-use pendulum_theory::energy::energy_budget;
-use pendulum_theory::fitting::decay::{
-    akaike_weights, effective_angular_frequency, fit_decay, half_swing_loss, preferred,
-    swings_to_time, DecayFit, DecayModel,
-};
+use pendulum_theory::fitting::decay::{swings_to_time, DecayFit, DecayModel};
+use pendulum_theory::fitting::rundown::{analyse, RunDown, RunDownInput, SECONDS_PER_ROW};
 use pendulum_theory::fitting::turning::{turning_points, Turns};
-use pendulum_theory::fitting::FitError;
-use pendulum_theory::Pendulum;
 use serde::Serialize;
-use std::collections::BTreeMap;
 
+/// What the command prints as JSON: the file read, then the analysis.
 #[derive(Serialize)]
 struct DecayJson {
     file: String,
-    points: usize,
     /// What was read.
     format: Format,
-    /// The angular frequency rates are converted with, rad/s.
-    omega_rad_s: Option<f64>,
-    /// `period` (--period), `turning_points` (their times) or `length`.
-    omega_source: Option<&'static str>,
     /// With a track: the zero of the swing removed from the turning angles.
     #[serde(skip_serializing_if = "Option::is_none")]
     zero_offset_rad: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     turning_points_file: Option<String>,
-    models: Vec<ModelJson>,
-    preferred: Option<&'static str>,
-}
-
-#[derive(Serialize)]
-struct ModelJson {
-    model: &'static str,
-    /// Why the law could not be fitted (then no other key).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    failed: Option<String>,
     #[serde(flatten)]
-    fitted: Option<FittedJson>,
-}
-
-#[derive(Serialize)]
-struct FittedJson {
-    parameters: BTreeMap<&'static str, f64>,
-    standard_errors: BTreeMap<&'static str, f64>,
-    q_factor: Option<f64>,
-    /// With no measurable viscous decay: the two-sigma lower bound on Q.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    q_factor_lower_bound: Option<f64>,
-    /// The Q of the exponential that decays as much over the record: what
-    /// a trajectory fit reports, for any law.
-    q_factor_mean: Option<f64>,
-    /// Damping coefficients held at their bound 0 (the law is then a
-    /// simpler one, never preferred).
-    at_bound: Vec<&'static str>,
-    residual_rms: f64,
-    aic: f64,
-    bic: f64,
-    akaike_weight: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    energy_loss_per_period_j: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    power_w: Option<f64>,
+    analysis: RunDown,
 }
 
 pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
@@ -89,43 +45,15 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         )?),
     };
     let mass = match (&args.mass, &args.design) {
-        (Some(t), _) if pendulum.is_none() => {
-            return Err(CliError::flag(
-                "--mass",
-                format!(
-                    "{t} given without --length or --design: the energy budget needs the pendulum"
-                ),
-            ))
-        }
         (Some(t), _) => Some(common::quantity("--mass", t, Dimension::Mass)?),
         (None, Some(path)) => Some(crate::design::read(path)?.properties().effective_mass()),
         (None, None) => None,
     };
-    if let Some(m) = mass {
-        if m <= 0.0 {
-            return Err(CliError::flag(
-                "--mass",
-                format!("must be positive, got {m} kg"),
-            ));
-        }
-    }
     let period = args
         .period
         .as_deref()
         .map(|t| common::quantity("--period", t, Dimension::Time))
         .transpose()?;
-    if let Some(p) = period {
-        // From a 1 cm pendulum (0.2 s) to Foucault's 67 m (16 s), with room.
-        if !(1e-3..=1e4).contains(&p) {
-            return Err(CliError::flag(
-                "--period",
-                format!(
-                    "must lie between 1 ms and 10^4 s for a pendulum, got {} s",
-                    num(p, 6)
-                ),
-            ));
-        }
-    }
     let options = read_options(&args.read)?;
     // A track (angle, or x and y, against time) to find the amplitudes in;
     // else a column of amplitudes. A track wins: Tracker files carry
@@ -144,26 +72,19 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         }
     };
     let table = read_table(&args.file, &options, &choose)?;
-    // Measured: 2 million rows of amplitudes in 41 s (six laws fitted); a
-    // track is fitted by its turning points, a few per period.
-    let fit_seconds = if table.column(Role::Amplitude).is_some() {
-        table.format.rows as f64 * 25e-6
-    } else {
-        0.0
-    };
-    work::check_time(
-        "FILE",
-        format!("{} has {} rows", table.file, table.format.rows),
-        fit_seconds,
-        args.read.force,
-    )?;
-    let _spinner = work::Spinner::start(format!("fitting {} rows", table.format.rows), fit_seconds);
     let file = table.file.clone();
     let format = table.format.clone();
-    let (time, amplitude, turns_found, half_period) = if table.column(Role::Amplitude).is_some() {
-        table.require_increasing(table.roles[0])?;
-        table.require_positive(Role::Amplitude)?;
-        table.require_swing(Role::Amplitude)?;
+    let input = RunDownInput {
+        model: Some(args.model.as_str()),
+        period,
+        length: pendulum.map(|p| p.length_m()),
+        g: pendulum.map(|p| p.g_m_s2()),
+        mass,
+        force: args.read.force,
+        ..RunDownInput::default()
+    };
+    let flags = [("time", "FILE"), ("g", "--g")];
+    let (analysis, time, amplitude, turns_found) = if table.column(Role::Amplitude).is_some() {
         let amplitude = table.column(Role::Amplitude).unwrap_or(&[]).to_vec();
         let first = table.values[0].clone();
         let time = if table.roles[0] == Role::Swing {
@@ -177,7 +98,29 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         } else {
             first
         };
-        (time, amplitude, None, None)
+        let _spinner = work::Spinner::start(
+            format!("fitting {} rows", time.len()),
+            time.len() as f64 * SECONDS_PER_ROW,
+        );
+        let analysis = analyse(&RunDownInput {
+            time: &time,
+            amplitude: &amplitude,
+            ..input
+        })
+        .map_err(|r| {
+            CliError::refused(&r, &flags, &|at, reason| match at {
+                Some((field, i)) => {
+                    let role = if field == "amplitude" {
+                        Role::Amplitude
+                    } else {
+                        table.roles[0]
+                    };
+                    table.error_at(i, role, reason)
+                }
+                None => CliError::other(format!("{file}: {reason}")),
+            })
+        })?;
+        (analysis, time, amplitude, None)
     } else {
         let track = track_of(table, args.read.pivot.as_deref())?;
         let found = turning_points(&track.time, &track.angle);
@@ -187,10 +130,25 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
                 found.turns.len()
             )));
         }
-        let half = found.half_period();
-        let time = found.turns.iter().map(|t| t.time).collect();
-        let amplitude = found.turns.iter().map(|t| t.amplitude).collect();
-        (time, amplitude, Some(found), half)
+        let time: Vec<f64> = found.turns.iter().map(|t| t.time).collect();
+        let amplitude: Vec<f64> = found.turns.iter().map(|t| t.amplitude).collect();
+        let analysis = analyse(&RunDownInput {
+            time: &time,
+            amplitude: &amplitude,
+            turning_half_period: found.half_period(),
+            ..input
+        })
+        .map_err(|r| {
+            CliError::refused(&r, &flags, &|at, reason| match at {
+                Some((_, i)) => CliError::other(format!(
+                    "{file}: turning point {} (at {} s): {reason}",
+                    i + 1,
+                    num(time[i], 8)
+                )),
+                None => CliError::other(format!("{file}: {reason}")),
+            })
+        })?;
+        (analysis, time, amplitude, Some(found))
     };
     let turning_points_file = match (&args.turning_points, &turns_found) {
         (Some(path), Some(found)) => Some(write_turns(path, found)?),
@@ -202,66 +160,22 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         }
         _ => None,
     };
-    let (omega, omega_source) = match (period, half_period, &pendulum) {
-        (Some(p), _, _) => (Some(std::f64::consts::TAU / p), Some("period")),
-        (None, Some(h), _) => (Some(std::f64::consts::PI / h), Some("turning_points")),
-        (None, None, Some(p)) => (
-            Some(effective_angular_frequency(p, &amplitude)),
-            Some("length"),
-        ),
-        (None, None, None) => (None, None),
-    };
-    let models: Vec<DecayModel> = match DecayModel::from_name(&args.model) {
-        Some(m) => vec![m],
-        None => DecayModel::ALL.to_vec(),
-    };
-    // Every law is listed: fitted, or failed with the reason.
-    let mut fits = Vec::new();
-    let mut failures: Vec<(DecayModel, FitError)> = Vec::new();
-    for model in models {
-        match fit_decay(model, &time, &amplitude, omega) {
-            Ok(fit) => fits.push(fit),
-            Err(e) => failures.push((model, e)),
-        }
-    }
-    if fits.is_empty() {
-        let e = failures
-            .into_iter()
-            .next()
-            .map_or(FitError::Singular, |(_, e)| e);
-        return Err(CliError::other(format!("{file}: {e}")));
-    }
-    let best = preferred(&fits);
-    let weights = akaike_weights(&fits);
     if let Some(target) = &plot {
-        render(target, &figure(&time, &amplitude, &fits, best))?;
+        let best = analysis
+            .fits
+            .iter()
+            .find(|f| Some(f.model.name()) == analysis.preferred);
+        render(
+            target,
+            &figure(&time, &amplitude, &analysis.fits, best.map(|f| f.model)),
+        )?;
     }
     let result = DecayJson {
         file,
-        points: time.len(),
         format,
-        omega_rad_s: omega,
-        omega_source,
         zero_offset_rad: turns_found.as_ref().map(|t| t.offset),
         turning_points_file,
-        models: DecayModel::ALL
-            .iter()
-            .filter_map(|&m| {
-                if let Some(i) = fits.iter().position(|f| f.model == m) {
-                    Some(model_json(&fits[i], weights[i], pendulum.as_ref(), mass))
-                } else {
-                    failures
-                        .iter()
-                        .find(|(f, _)| *f == m)
-                        .map(|(_, e)| ModelJson {
-                            model: m.name(),
-                            failed: Some(e.to_string()),
-                            fitted: None,
-                        })
-                }
-            })
-            .collect(),
-        preferred: best.map(DecayModel::name),
+        analysis,
     };
     if args.json {
         output::json(&result)
@@ -294,55 +208,11 @@ fn write_turns(path: &std::path::Path, found: &Turns) -> Result<String, CliError
     file.commit()
 }
 
-fn model_json(
-    f: &DecayFit,
-    weight: f64,
-    pendulum: Option<&Pendulum>,
-    mass: Option<f64>,
-) -> ModelJson {
-    let parameters = f.parameters.iter().map(|e| (e.name, e.value)).collect();
-    let standard_errors = f
-        .parameters
-        .iter()
-        .map(|e| (e.name, e.standard_error))
-        .collect();
-    let budget = match (pendulum, mass) {
-        (Some(p), Some(m)) => {
-            let a0 = f.fit.parameters[0];
-            let period = p.period(
-                pendulum_theory::Amplitude::from_radians(a0.abs().min(3.1)).unwrap_or_else(|_| {
-                    pendulum_theory::Amplitude::from_radians(0.0).expect("zero is valid")
-                }),
-            );
-            energy_budget(p, m, a0, half_swing_loss(f, a0, 0.5 * period), period).ok()
-        }
-        _ => None,
-    };
-    ModelJson {
-        model: f.model.name(),
-        failed: None,
-        fitted: Some(FittedJson {
-            parameters,
-            standard_errors,
-            q_factor: f.q_factor.and_then(finite),
-            q_factor_lower_bound: f.q_factor_lower_bound.and_then(finite),
-            q_factor_mean: f.q_factor_mean.and_then(finite),
-            at_bound: f.at_bound.clone(),
-            residual_rms: f.fit.residual_rms,
-            aic: f.fit.aic,
-            bic: f.fit.bic,
-            akaike_weight: weight,
-            energy_loss_per_period_j: budget.map(|b| b.loss_per_period),
-            power_w: budget.map(|b| b.power),
-        }),
-    }
-}
-
 fn text(r: &DecayJson) -> String {
     let mut out = format!(
         "{}: {} points ({})\n",
         r.file,
-        r.points,
+        r.analysis.points,
         r.format.describe()
     );
     if let Some(offset) = r.zero_offset_rad {
@@ -351,7 +221,7 @@ fn text(r: &DecayJson) -> String {
             num(offset.to_degrees(), 3)
         ));
     }
-    if let (Some(w), Some(source)) = (r.omega_rad_s, r.omega_source) {
+    if let (Some(w), Some(source)) = (r.analysis.omega_rad_s, r.analysis.omega_source) {
         let from = match source {
             "period" => "--period",
             "turning_points" => "the turning points' times",
@@ -363,7 +233,7 @@ fn text(r: &DecayJson) -> String {
             num(std::f64::consts::TAU / w, 6)
         ));
     }
-    for m in &r.models {
+    for m in &r.analysis.models {
         let Some(fitted) = &m.fitted else {
             out.push_str(&format!(
                 "\n{}: failed ({})\n",
@@ -372,7 +242,7 @@ fn text(r: &DecayJson) -> String {
             ));
             continue;
         };
-        let mark = if Some(m.model) == r.preferred {
+        let mark = if Some(m.model) == r.analysis.preferred {
             "  <- preferred (lowest BIC)".to_string()
         } else if !fitted.at_bound.is_empty() {
             format!(

@@ -2,7 +2,7 @@
 //! recording, as a timegrapher shows them.
 
 use super::common;
-use super::fit_beats::{allan_json, rate_text, AllanJson};
+use super::fit_beats::rate_text;
 use crate::args::ListenArgs;
 use crate::audio::{decode, info, louder_channel};
 use crate::error::CliError;
@@ -10,6 +10,8 @@ use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
 use crate::plot::{render, thin, Figure, Panel, Series, Target};
 use crate::units::{parse_number, Dimension};
+use pendulum_theory::fitting::beat_log::allan_row;
+use pendulum_theory::fitting::beat_log::AllanRow;
 use pendulum_theory::fitting::beats::{BeatAnalysis, BeatStream};
 use pendulum_theory::lift::amplitude_from_lift;
 use pendulum_theory::listening::detect::{
@@ -39,7 +41,7 @@ struct ListenJson {
     extra: usize,
     /// Tick envelope peak over the envelope's median, dB.
     snr_db: f64,
-    allan_deviation: Vec<AllanJson>,
+    allan_deviation: Vec<AllanRow>,
     /// From each beat's unlocking to its drop, ms: ticks, tocks (null when
     /// no second sound stands out).
     drop_ms: [Option<f64>; 2],
@@ -232,7 +234,7 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         missed: (coarse.onsets.len() + coarse.missed).saturating_sub(ticks.len()),
         extra: a.repaired.doubled,
         snr_db,
-        allan_deviation: allan_json(&a.allan_deviation),
+        allan_deviation: a.allan_deviation.iter().map(allan_row).collect(),
         drop_ms: drops.map(|d| d.map(|d| d * 1e3)),
         lift_angle_deg: lift.map(|l| l.0.to_degrees()),
         amplitude_deg: lift.map(|l| l.1.map(|a| a.amplitude.to_degrees())),

@@ -1,8 +1,8 @@
 //! `pendulum simulate`: the nonlinear damped pendulum over days of swings,
 //! with every turning point streamed to a CSV file.
 
-use super::common::{self, finite};
-use crate::args::{MethodArg, SimulateArgs};
+use super::common;
+use crate::args::SimulateArgs;
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::interrupt;
@@ -10,13 +10,13 @@ use crate::output::{self, num, Output, Summary};
 use crate::plot::{render, thin, Figure, Panel, Series, Target};
 use crate::units::parse_number;
 use crate::work::{self, Progress};
+use clap::ValueEnum;
 use pendulum_theory::damped::State;
-use pendulum_theory::damping::Damping;
+use pendulum_theory::simulation::analysis::{prepare, Prepared, Simulation, SimulationInput};
 use pendulum_theory::simulation::{
-    half_swing_rate, simulate, work_estimate, Action, Limit, Method, Model, Observer, Options,
-    Outcome, SimulationError, Stopped, TurningPoint,
+    half_swing_rate, Action, Observer, Options, Stopped, TurningPoint,
 };
-use pendulum_theory::{Amplitude, Pendulum, Quantity};
+use pendulum_theory::Pendulum;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -27,35 +27,13 @@ const PHASE_SAMPLES: usize = 360;
 /// Points kept for the amplitude and rate plot.
 const PLOT_POINTS: usize = 4000;
 
-/// Longer simulated durations need `--force`, s.
-const MAX_DURATION: f64 = 1e9;
+/// What the command prints as JSON: the library's summary, the time it
+/// took and the files written.
 #[derive(Serialize)]
 struct SimulateJson {
-    method: &'static str,
-    swings: u64,
-    final_time_s: f64,
-    final_angle_rad: f64,
-    final_angular_velocity_rad_s: f64,
-    final_amplitude_rad: f64,
-    steps: u64,
-    /// The steps estimated before the run (what `--force` is judged on).
-    estimated_steps: f64,
-    rejected_steps: u64,
-    function_evaluations: u64,
-    stopped: &'static str,
-    duration_s: f64,
-    tolerance: f64,
-    length_m: f64,
-    g_m_s2: f64,
-    amplitude_rad: f64,
-    zeta: f64,
-    q_factor: Option<f64>,
-    quadratic_drag: f64,
-    friction_angle_rad: f64,
+    #[serde(flatten)]
+    run: Simulation,
     elapsed_s: f64,
-    /// Problems a person must see: an energy gain no damping explains, a
-    /// pendulum over the top, a step that fell to nothing.
-    warnings: Vec<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     swings_file: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -70,201 +48,18 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         }
     }
     let swing = common::swing(&args.swing)?;
-    let (pendulum, amplitude) = (swing.pendulum, swing.amplitude);
-    let damping = swing.damping.unwrap_or(Damping::NONE);
-    let friction_angle = swing.friction_angle;
-    let quadratic_drag = match &args.quadratic_drag {
-        Some(t) => parse_number(t).map_err(|e| CliError::flag("--quadratic-drag", e))?,
-        None => 0.0,
-    };
-    let model =
-        Model::new(pendulum, damping, quadratic_drag, friction_angle).map_err(|e| {
-            match e.quantity {
-                Quantity::QuadraticDrag => CliError::input("--quadratic-drag", &e),
-                _ => CliError::input("--friction-angle", &e),
-            }
-        })?;
-    let options = options(args, &pendulum)?;
-    let estimated_steps = check_work(args, &model, amplitude, &options)?;
-    let mut observer = CliObserver::new(args, &pendulum, &options)?;
-    let started = Instant::now();
-    let outcome = simulate(&model, amplitude, &options, &mut observer).map_err(|e| match e {
-        SimulationError::ExactWithDamping | SimulationError::AveragedUnsupported => {
-            CliError::flag("--method", e)
-        }
-        SimulationError::AveragedNeedsWeakDamping { .. } => {
-            CliError::flag(common::damping_flag(&args.swing.damping), e)
-        }
-        SimulationError::Input(e) => CliError::input(flag_for(e.quantity), &e),
-    })?;
-    let elapsed = started.elapsed().as_secs_f64();
-    observer.draw(args)?;
-    let files = observer.close()?;
-    let result = SimulateJson {
-        method: outcome.method.name(),
-        swings: outcome.swings,
-        final_time_s: outcome.final_time,
-        final_angle_rad: outcome.final_state.angle,
-        final_angular_velocity_rad_s: outcome.final_state.angular_velocity,
-        final_amplitude_rad: outcome.final_amplitude,
-        steps: outcome.steps,
-        estimated_steps,
-        rejected_steps: outcome.rejected_steps,
-        function_evaluations: outcome.function_evaluations,
-        stopped: outcome.stopped.name(),
-        duration_s: options.duration,
-        tolerance: options.tolerance,
-        length_m: pendulum.length_m(),
-        g_m_s2: pendulum.g_m_s2(),
-        amplitude_rad: amplitude.radians(),
-        zeta: damping.zeta(),
-        q_factor: finite(damping.q_factor()),
-        quadratic_drag,
-        friction_angle_rad: friction_angle,
-        elapsed_s: elapsed,
-        warnings: warnings(&outcome, args.method),
-        swings_file: files.0,
-        trajectory_file: files.1,
-    };
-    let status = if outcome.stopped == Stopped::Interrupted && interrupt::requested() {
-        interrupt::EXIT_INTERRUPTED
-    } else {
-        0
-    };
-    let stdout = if args.json {
-        output::json(&result)?
-    } else {
-        text(&result, &outcome)
-    };
-    Ok(Output {
-        stdout,
-        status,
-        ..Output::default()
-    })
-}
-
-/// What a person must be told about a run's numerics.
-fn warnings(outcome: &Outcome, method: MethodArg) -> Vec<String> {
-    let mut out = Vec::new();
-    let exact_hint = if method == MethodArg::Exact {
-        ""
-    } else {
-        " (without damping, --method exact is exact at any amplitude)"
-    };
-    if let Some(gain) = outcome.energy_gain {
-        out.push(format!(
-            "the energy at a turning point changed by {} of itself (or of the period it \
-             implies) at {} s, which the damping does not explain: the tolerance is too \
-             loose for this motion; tighten --tolerance{exact_hint}",
-            num(gain.relative, 3),
-            num(gain.time, 8)
-        ));
-    }
-    match outcome.stopped {
-        Stopped::OverTheTop => out.push(format!(
-            "the pendulum passed over the top at {} s, impossible from rest below 180°: \
-             the release is too close to 180° for this method and tolerance; \
-             the run was stopped there{exact_hint}",
-            num(outcome.final_time, 8)
-        )),
-        Stopped::StepTooSmall => out.push(format!(
-            "the step size fell to nothing at {} s; the run was stopped there",
-            num(outcome.final_time, 8)
-        )),
-        _ => {}
-    }
-    out
-}
-
-/// Refuses, before any file is made, a run that would take more than a few
-/// seconds (unless `--force`) or more than a day, naming what makes it
-/// long; returns the estimated steps.
-fn check_work(
-    args: &SimulateArgs,
-    model: &Model,
-    amplitude: Amplitude,
-    options: &Options,
-) -> Result<f64, CliError> {
-    let work = work_estimate(model, amplitude, options);
-    // The files: a swings row (about 90 bytes) a half period, a trajectory
-    // row (about 60 bytes) a sample; refused, even with --force, when they
-    // would not fit the disk.
-    let half_swings = 2.0 * work.periods + 2.0;
-    if let Some(path) = &args.swings {
-        work::check_space("--swings", path, 90.0 * half_swings)?;
-    }
-    if let (Some(path), Some(h)) = (&args.trajectory, options.sample_interval) {
-        work::check_space("--trajectory", path, 60.0 * (options.duration / h + 1.0))?;
-    }
-    let (flag, why) = match work.limit {
-        Limit::Oscillation => (
-            "--duration",
-            format!(
-                "{} s is {} periods of this pendulum",
-                num(options.duration, 6),
-                work::count(work.periods)
-            ),
-        ),
-        Limit::Viscous => (
-            common::damping_flag(&args.swing.damping),
-            format!(
-                "ζ = {} makes the equation stiff for an explicit method (the overdamped \
-                 creep has a closed form: pendulum damped)",
-                num(model.damping.zeta(), 4)
-            ),
-        ),
-        Limit::Drag => (
-            "--quadratic-drag",
-            format!(
-                "a drag of {} makes the equation stiff{}",
-                num(model.quadratic_drag, 4),
-                if args.method == MethodArg::Symplectic {
-                    " (--method dop853 often takes fewer steps in the drag-limited creep)"
-                } else {
-                    ""
-                }
-            ),
-        ),
-    };
-    work::check_time(
-        flag,
-        format!("{why}: about {} integration steps", work::count(work.steps)),
-        work.seconds,
-        args.force,
-    )?;
-    Ok(work.steps)
-}
-
-fn flag_for(quantity: Quantity) -> &'static str {
-    match quantity {
-        Quantity::Tolerance => "--tolerance",
-        Quantity::SampleInterval => "--sample-interval",
-        _ => "--duration",
-    }
-}
-
-fn options(args: &SimulateArgs, pendulum: &Pendulum) -> Result<Options, CliError> {
+    let pendulum = swing.pendulum;
+    let quadratic_drag = args
+        .quadratic_drag
+        .as_deref()
+        .map(|t| parse_number(t).map_err(|e| CliError::flag("--quadratic-drag", e)))
+        .transpose()?;
     let duration = common::duration(Some(&args.duration), 0.0)?;
-    if duration > MAX_DURATION && !args.force {
-        return Err(CliError::flag(
-            "--duration",
-            format!(
-                "{} s is over 10^9 s (32 years); add --force if you mean it",
-                num(duration, 4)
-            ),
-        ));
-    }
-    let tolerance = parse_number(&args.tolerance).map_err(|e| CliError::flag("--tolerance", e))?;
-    // Below 1e-15 the tolerance asks for more than double precision holds.
-    if !(1e-15..1.0).contains(&tolerance) {
-        return Err(CliError::flag(
-            "--tolerance",
-            format!(
-                "must lie between 1e-15 (double precision) and 1 (e.g. 1e-10), got {}",
-                args.tolerance.trim()
-            ),
-        ));
-    }
+    let tolerance = args
+        .tolerance
+        .as_deref()
+        .map(|t| parse_number(t).map_err(|e| CliError::flag("--tolerance", e)))
+        .transpose()?;
     let sample_interval = match &args.trajectory {
         // The phase portrait alone: PHASE_SAMPLES a period, from the
         // dense output (with --trajectory it uses the trajectory's).
@@ -283,19 +78,85 @@ fn options(args: &SimulateArgs, pendulum: &Pendulum) -> Result<Options, CliError
             Some(h)
         }
     };
-    let method = match args.method {
-        MethodArg::Dop853 => Method::Dop853,
-        MethodArg::Symplectic => Method::Symplectic,
-        MethodArg::Vern9 => Method::Vern9,
-        MethodArg::Exact => Method::Exact,
-        MethodArg::Averaged => Method::Averaged,
-    };
-    Ok(Options {
+    let damping_field = common::damping_flag(&args.swing.damping)
+        .trim_start_matches("--")
+        .replace('-', "_");
+    let input = SimulationInput {
+        length: pendulum.length_m(),
+        g: Some(pendulum.g_m_s2()),
+        amplitude: swing.amplitude.radians(),
         duration,
+        damping: swing
+            .damping
+            .map(|d| (d, damping_field_name(&damping_field))),
+        quadratic_drag,
+        friction_angle: Some(swing.friction_angle),
+        method: args
+            .method
+            .to_possible_value()
+            .map(|v| v.get_name().to_string()),
         tolerance,
-        method,
         sample_interval,
+        force: args.force,
+    };
+    let refused = |r: pendulum_theory::analysis::Refusal| {
+        CliError::refused(&r, &[], &|_, reason| CliError::other(reason))
+    };
+    let prepared = prepare(&input).map_err(refused)?;
+    check_space(args, &prepared)?;
+    let mut observer = CliObserver::new(args, &pendulum, &prepared.options)?;
+    let started = Instant::now();
+    let run = prepared.run(&mut observer).map_err(refused)?;
+    let elapsed = started.elapsed().as_secs_f64();
+    observer.draw(args)?;
+    let files = observer.close()?;
+    let status = if run.outcome.stopped == Stopped::Interrupted && interrupt::requested() {
+        interrupt::EXIT_INTERRUPTED
+    } else {
+        0
+    };
+    let result = SimulateJson {
+        run,
+        elapsed_s: elapsed,
+        swings_file: files.0,
+        trajectory_file: files.1,
+    };
+    let stdout = if args.json {
+        output::json(&result)?
+    } else {
+        text(&result)
+    };
+    Ok(Output {
+        stdout,
+        status,
+        ..Output::default()
     })
+}
+
+/// The library's name of a damping input, for its refusals.
+fn damping_field_name(name: &str) -> &'static str {
+    match name {
+        "q" => "q",
+        "log_decrement" => "log_decrement",
+        "decay_time" => "decay_time",
+        "damping_coefficient" => "damping_coefficient",
+        _ => "zeta",
+    }
+}
+
+/// Refuses, before any file is made, files that would not fit the disk
+/// (a swings row of about 90 bytes a half period, a trajectory row of
+/// about 60 bytes a sample); even with --force.
+fn check_space(args: &SimulateArgs, prepared: &Prepared) -> Result<(), CliError> {
+    let half_swings = 2.0 * prepared.work.periods + 2.0;
+    if let Some(path) = &args.swings {
+        work::check_space("--swings", path, 90.0 * half_swings)?;
+    }
+    let options = &prepared.options;
+    if let (Some(path), Some(h)) = (&args.trajectory, options.sample_interval) {
+        work::check_space("--trajectory", path, 60.0 * (options.duration / h + 1.0))?;
+    }
+    Ok(())
 }
 
 /// Streams turning points and samples to their files, shows progress and
@@ -486,7 +347,11 @@ impl Observer for CliObserver {
     }
 }
 
-fn text(r: &SimulateJson, outcome: &Outcome) -> String {
+fn text(r: &SimulateJson) -> String {
+    let outcome = &r.run.outcome;
+    let elapsed_s = r.elapsed_s;
+    let (swings_file, trajectory_file) = (&r.swings_file, &r.trajectory_file);
+    let r = &r.run;
     let deg = |x: f64| format!("{}°", num(x.to_degrees(), 8));
     let mut s = Summary::default();
     s.row(
@@ -545,16 +410,16 @@ fn text(r: &SimulateJson, outcome: &Outcome) -> String {
             r.steps,
             r.rejected_steps,
             r.function_evaluations,
-            num(r.elapsed_s, 3)
+            num(elapsed_s, 3)
         ),
     );
     for w in &r.warnings {
-        s.row("WARNING", w.clone());
+        s.row("WARNING", w.to_string());
     }
-    if let Some(f) = &r.swings_file {
+    if let Some(f) = swings_file {
         s.row("Swings file", f.clone());
     }
-    if let Some(f) = &r.trajectory_file {
+    if let Some(f) = trajectory_file {
         s.row("Trajectory file", f.clone());
     }
     s.render()
@@ -564,7 +429,12 @@ fn text(r: &SimulateJson, outcome: &Outcome) -> String {
 /// `(time s, amplitude °, rate s/day)`, thinned for drawing.
 pub fn rundown_figure(turns: &[(f64, f64, f64)]) -> Figure {
     let amplitude = thin(turns.iter().map(|&(t, a, _)| (t, a)).collect(), PLOT_POINTS);
-    let rate = thin(turns.iter().map(|&(t, _, r)| (t, r)).collect(), PLOT_POINTS);
+    // The loss is the rate with its sign turned (the rate is positive when
+    // the clock gains; a free swing always loses).
+    let loss = thin(
+        turns.iter().map(|&(t, _, r)| (t, -r)).collect(),
+        PLOT_POINTS,
+    );
     Figure {
         panels: vec![
             Panel::new(
@@ -578,7 +448,7 @@ pub fn rundown_figure(turns: &[(f64, f64, f64)]) -> Figure {
                 "What each half swing loses against the small-angle beat",
                 "time (s)",
                 "loss (s/day)",
-                vec![Series::line("86400 s × (1 − (T₀/2) / half period)", rate)],
+                vec![Series::line("86400 s × (1 − (T₀/2) / half period)", loss)],
             )
             .log_y_beyond(1.5),
         ],

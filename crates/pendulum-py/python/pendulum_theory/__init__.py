@@ -14,6 +14,8 @@ An input the library refuses raises ``ValueError`` with its message.
 
 from __future__ import annotations
 
+import json as _json
+
 import numpy as _np
 
 from . import _native
@@ -165,39 +167,37 @@ def simulate(
     *,
     q=None,
     zeta=None,
-    quadratic_drag=0.0,
-    friction_angle=0.0,
-    g=STANDARD_GRAVITY,
-    method="dop853",
-    tolerance=1e-10,
+    log_decrement=None,
+    quadratic_drag=None,
+    friction_angle=None,
+    g=None,
+    method=None,
+    tolerance=None,
+    force=False,
 ):
     """The full nonlinear damped pendulum θ'' + 2ζω θ' + b θ'|θ'| + ω²(sin θ
     + r sign θ') = 0, released from rest at ``amplitude`` rad, for
-    ``duration`` s: the CLI's ``simulate`` (methods ``dop853``, ``vern9``,
-    ``symplectic``, ``exact``, ``averaged``; ``tolerance`` relative to the
-    swing). Damping by ``q`` or ``zeta`` (none: undamped), quadratic drag b
-    per radian, dry friction angle r rad.
+    ``duration`` s: the CLI's ``simulate``, the same library call (methods
+    ``dop853`` (the default), ``vern9``, ``symplectic``, ``exact``,
+    ``averaged``; ``tolerance`` relative to the swing, the library's
+    default if not given). Damping by ``q``, ``zeta`` or ``log_decrement``
+    (none: undamped), quadratic drag b per radian, dry friction angle r
+    rad. A run estimated at more than a few seconds of computing is
+    refused unless ``force``; one of more than a day always.
 
     Returns ``(time_s, angle_rad, rate_s_per_day, summary)``: every turning
     point's time and signed angle, the rate a clock would keep over the
-    half swing that ends there (NaN at the release), and a dict with the
-    CLI's JSON keys (method, swings, final_time_s, final_angle_rad,
-    final_angular_velocity_rad_s, final_amplitude_rad, steps,
-    rejected_steps, function_evaluations, stopped)."""
-    if q is not None and zeta is not None:
-        raise ValueError("give q or zeta, not both")
-    z = 0.0 if q is None and zeta is None else (zeta if zeta is not None else float(zeta_from_q(q)))
-    return _native.simulate(
-        float(length),
-        float(amplitude),
-        float(duration),
-        float(z),
-        float(quadratic_drag),
-        float(friction_angle),
-        float(g),
-        str(method),
-        float(tolerance),
-    )
+    half swing that ends there (positive when it gains; NaN at the
+    release), and the CLI's JSON summary as a dict."""
+    given = [(k, v) for k, v in (("q", q), ("zeta", zeta), ("log_decrement", log_decrement))
+             if v is not None]
+    if len(given) > 1:
+        raise ValueError("give one of q, zeta, log_decrement")
+    damping = (given[0][0], float(given[0][1])) if given else None
+    t, a, r, summary = _native.simulate(
+        float(length), float(amplitude), float(duration), damping, _number(quadratic_drag),
+        _number(friction_angle), _number(g), _text(method), _number(tolerance), bool(force))
+    return t, a, r, _json.loads(summary)
 
 
 class FitResult(dict):
@@ -220,52 +220,56 @@ def _array(x):
     return _np.ascontiguousarray(x, dtype=_np.float64)
 
 
-def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=STANDARD_GRAVITY):
+def _number(x):
+    """A keyword's number as a float (``None`` stays ``None``: the library
+    chooses the default)."""
+    return None if x is None else float(x)
+
+
+def _text(x):
+    return None if x is None else str(x)
+
+
+def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=None, mass=None,
+              force=False):
     """Fits the amplitude-decay laws (viscous, coulomb, quadratic,
     viscous+coulomb, viscous+quadratic, full; ``model="all"`` for every one)
-    to ``amplitude`` (rad) at ``time`` (s), every rate held at least 0, as
-    the CLI's ``fit decay``. With ``period`` (s) or ``length`` (m) the
-    rates become ζ, Q, the friction angle and the drag. Keys: omega_rad_s,
-    models (each: model, parameters, standard_errors, q_factor,
-    q_factor_lower_bound, q_factor_mean, at_bound, residual_rms, aic, bic,
-    akaike_weight; or model and failed), preferred."""
-    models, preferred, omega = _native.fit_decay(
-        _array(time), _array(amplitude), str(model),
-        None if period is None else float(period),
-        None if length is None else float(length), float(g),
-    )
-    best = next((m for m in models if m["model"] == preferred), {})
-    data = {"omega_rad_s": omega, "models": models, "preferred": preferred}
-    return FitResult(data, best.get("parameters", {}), best.get("standard_errors", {}), preferred)
+    to ``amplitude`` (rad) at ``time`` (s), every rate held at least 0: the
+    CLI's ``fit decay``, the same library call. With ``period`` (s) or
+    ``length`` (m; ``g`` m/s², standard gravity if not given) the rates
+    become ζ, Q, the friction angle and the drag; with ``mass`` (kg) too,
+    the energy each law says is lost. Returns the CLI's JSON as a dict
+    (points, omega_rad_s, omega_source, models, preferred), every key and
+    number the same."""
+    d = _json.loads(_native.fit_decay(
+        _array(time), _array(amplitude), _text(model), _number(period), _number(length),
+        _number(g), _number(mass), bool(force)))
+    best = next((m for m in d["models"] if m["model"] == d["preferred"]), {})
+    return FitResult(d, best.get("parameters", {}), best.get("standard_errors", {}),
+                     d["preferred"])
 
 
-def fit_trajectory(time, angle, model="auto", *, length=None):
+def fit_trajectory(time, angle, model="auto", *, length=None, force=False):
     """Fits section 1-4's closed form (``"linear"``) or the nonlinear
     damped equation integrated inside the fit (``"nonlinear"``; ``"auto"``:
-    nonlinear above a 5° swing) to ``angle`` (rad) at ``time`` (s), as the
-    CLI's ``fit trajectory``; with ``length`` (m), g. Keys: model,
-    model_requested, parameters (amplitude_rad, omega_d_rad_s or
-    omega_n_rad_s, zeta, phase_rad, offset_rad, g_m_s2), standard_errors,
-    residual_rms_rad, length_m, warnings."""
-    d = _native.fit_trajectory(_array(time), _array(angle), str(model),
-                               None if length is None else float(length))
+    nonlinear above a 5° swing) to ``angle`` (rad) at ``time`` (s): the
+    CLI's ``fit trajectory``, the same library call; with ``length`` (m),
+    g. Returns the CLI's JSON as a dict (points, model, model_requested,
+    parameters, standard_errors, residual_rms_rad, length_m, length_source,
+    warnings)."""
+    d = _json.loads(_native.fit_trajectory(_array(time), _array(angle), _text(model),
+                                           _number(length), bool(force)))
     return FitResult(d, d["parameters"], d["standard_errors"], d["model"])
 
 
 def fit_beats(time, *, bph=None, period=None):
-    """What a timegrapher shows, from one time per beat (s), as the CLI's
-    ``fit beats``. Keys: beats, mean_beat_s, beats_per_hour,
-    nominal_beat_s, rate_s_per_day (against ``bph`` or ``period``, else the
-    nearest standard beat), beat_error_ms, jitter_ms, allan_tau_s,
-    allan_deviation_s_per_day."""
-    if bph is not None and period is not None:
-        raise ValueError("give bph or period, not both")
-    nominal = None
-    if bph is not None:
-        nominal = 3600.0 / float(bph)
-    elif period is not None:
-        nominal = 0.5 * float(period)
-    d = _native.fit_beats(_array(time), nominal)
+    """What a timegrapher shows, from one time per beat (s): the CLI's
+    ``fit beats``, the same library call. The rate is against ``bph`` or
+    ``period`` (s), else the nearest standard beat within 2%. Returns the
+    CLI's JSON as a dict (beats, mean_beat_s, beats_per_hour,
+    nominal_beat_s, rate_s_per_day, beat_error_ms, jitter_ms, repaired,
+    allan_deviation)."""
+    d = _json.loads(_native.fit_beats(_array(time), _number(bph), _number(period)))
     keys = ["rate_s_per_day", "beat_error_ms", "jitter_ms", "beats_per_hour"]
     return FitResult(d, {k: d[k] for k in keys}, {}, None)
 
@@ -340,6 +344,7 @@ def clock_run(
     impulse_angle=0.0,
     every_beats=30,
     g=STANDARD_GRAVITY,
+    force=False,
 ):
     """A long run of the clock (the CLI's ``clock --duration``), started in
     its steady state and regulated to it: a row at every turning point, or
@@ -362,7 +367,7 @@ def clock_run(
         _clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
                      friction, recoil, impulse_angle, every_beats),
         float(duration), None if every is None else float(every), times, factors,
-        rate_times, rates,
+        rate_times, rates, bool(force),
     )
     names = ["time_s", "beats", "amplitude_rad", "rate_s_per_day", "time_error_s", "drive_factor"]
     return dict(zip(names, columns)), summary

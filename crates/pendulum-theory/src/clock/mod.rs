@@ -19,6 +19,7 @@ pub mod averaged;
 pub mod direct;
 pub mod escapement;
 pub mod long_run;
+pub mod plan;
 
 use crate::pendulum::Pendulum;
 use escapement::Escapement;

@@ -10,9 +10,12 @@
 //! `AIC = n ln(RSS/n) + 2k`, `BIC = n ln(RSS/n) + k ln n` used to choose
 //! between models.
 
+pub mod beat_log;
 pub mod beats;
 pub mod decay;
+pub mod rundown;
 pub mod track;
+pub mod tracked;
 pub mod trajectory;
 pub mod turning;
 

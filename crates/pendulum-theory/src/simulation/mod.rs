@@ -25,6 +25,7 @@
 //! own start, and the last step lands on the duration exactly.
 
 mod adaptive;
+pub mod analysis;
 mod averaged;
 mod closed_form;
 pub mod forces;
@@ -338,16 +339,47 @@ pub fn energy_amplitude(pendulum: &Pendulum, state: &State) -> f64 {
 
 /// The rate a clock would keep if every beat took `half_period` seconds,
 /// against the small-angle beat `T0/2` of `pendulum`, in s/day:
-/// `86400 (1 - (T0/2) / half_period)`; positive when the swing is slower
-/// than the small-angle one (the clock loses that much). This is the
-/// circular error a half swing shows, the column `rate_s_per_day` of a
-/// swings file.
+/// `86400 ((T0/2) / half_period - 1)`; positive when the clock gains, as
+/// every `rate_s_per_day` of the tool: a swing slower than the small-angle
+/// one gives a negative rate (the clock loses its circular error). The
+/// column `rate_s_per_day` of a swings file.
 pub fn half_swing_rate(pendulum: &Pendulum, half_period: f64) -> f64 {
-    crate::period::SECONDS_PER_DAY * (1.0 - 0.5 * pendulum.small_angle_period() / half_period)
+    crate::period::SECONDS_PER_DAY * (0.5 * pendulum.small_angle_period() / half_period - 1.0)
 }
 
 /// Steps between calls to [`Observer::progress`].
 const PROGRESS_EVERY: u64 = 4096;
+
+/// Checks that `options.method` can run `model`: the closed form knows
+/// no damping; the averaged map takes weak viscous damping only, and gives
+/// neither samples nor (for an observer that wants them) zero crossings.
+pub fn check_method(
+    model: &Model,
+    options: &Options,
+    zero_crossings: bool,
+) -> Result<(), SimulationError> {
+    match options.method {
+        Method::Exact if !model.is_undamped() => Err(SimulationError::ExactWithDamping),
+        Method::Averaged => {
+            if model.quadratic_drag > 0.0
+                || model.friction_angle > 0.0
+                || options.sample_interval.is_some()
+                || zero_crossings
+            {
+                return Err(SimulationError::AveragedUnsupported);
+            }
+            let zeta = model.damping.zeta();
+            if zeta > 0.5 / AVERAGED_MIN_Q {
+                return Err(SimulationError::AveragedNeedsWeakDamping {
+                    q: 0.5 / zeta,
+                    minimum: AVERAGED_MIN_Q,
+                });
+            }
+            Ok(())
+        }
+        _ => Ok(()),
+    }
+}
 
 /// Runs `model` released from rest at `amplitude` for `options.duration`.
 pub fn simulate(
@@ -361,34 +393,12 @@ pub fn simulate(
     if let Some(h) = options.sample_interval {
         require_positive(Quantity::SampleInterval, h)?;
     }
-    match options.method {
-        Method::Exact => {
-            if !model.is_undamped() {
-                return Err(SimulationError::ExactWithDamping);
-            }
-            Ok(closed_form::run_exact(model, amplitude, options, observer))
-        }
-        Method::Dop853 => Ok(adaptive::run_dop853(model, amplitude, options, observer)),
-        Method::Symplectic => Ok(symplectic::run_symplectic(
-            model, amplitude, options, observer,
-        )),
-        Method::Vern9 => Ok(adaptive::run_vern9(model, amplitude, options, observer)),
-        Method::Averaged => {
-            if model.quadratic_drag > 0.0
-                || model.friction_angle > 0.0
-                || options.sample_interval.is_some()
-                || observer.wants_zero_crossings()
-            {
-                return Err(SimulationError::AveragedUnsupported);
-            }
-            let zeta = model.damping.zeta();
-            if zeta > 0.5 / AVERAGED_MIN_Q {
-                return Err(SimulationError::AveragedNeedsWeakDamping {
-                    q: 0.5 / zeta,
-                    minimum: AVERAGED_MIN_Q,
-                });
-            }
-            Ok(averaged::run_averaged(model, amplitude, options, observer))
-        }
-    }
+    check_method(model, options, observer.wants_zero_crossings())?;
+    Ok(match options.method {
+        Method::Exact => closed_form::run_exact(model, amplitude, options, observer),
+        Method::Dop853 => adaptive::run_dop853(model, amplitude, options, observer),
+        Method::Symplectic => symplectic::run_symplectic(model, amplitude, options, observer),
+        Method::Vern9 => adaptive::run_vern9(model, amplitude, options, observer),
+        Method::Averaged => averaged::run_averaged(model, amplitude, options, observer),
+    })
 }

@@ -1,0 +1,400 @@
+"""One analysis, one library call: the binary (``--json``) and Python give
+the same answer to the same question, key for key and bit for bit, and
+refuse the same inputs with the same sentence.
+
+Each table below lists at least 20 cases per analysis: ordinary, edge
+and refused, with every failure issue 22 found among them. A case is the
+Python call's keywords; the command line is built from the same values
+(numbers written with ``repr``, so the binary reads the very same
+doubles). Data go to the binary as a CSV file written here.
+
+For an answer: the binary's JSON less the keys that describe the file it
+read (``READER_KEYS``) equals Python's dict exactly. For a refusal: the
+binary exits 2 with one line on standard error and nothing on standard
+output, and that line ends with the sentence of Python's ValueError
+(after its ``keyword:`` or ``keyword[i]:``), and names the same keyword as
+its flag when the refusal is of a keyword.
+"""
+
+import json
+import math
+import re
+import subprocess
+
+import numpy as np
+import pytest
+
+import pendulum_theory as pt
+from test_simulate import binary
+
+#: Keys of the binary's JSON about the file it read, not the analysis.
+READER_KEYS = {"file", "format", "zero_offset_rad", "turning_points_file", "residuals_file",
+               "pivot", "track_radius", "swings_file", "trajectory_file", "elapsed_s"}
+
+#: Flags whose name is not ``--`` and the keyword.
+FLAG = {"time": "FILE", "amplitude": "FILE", "angle": "FILE"}
+
+NAN, INF = float("nan"), float("inf")
+
+
+def write_csv(path, header, columns):
+    with open(path, "w") as f:
+        f.write(",".join(header) + "\n")
+        for row in zip(*columns):
+            f.write(",".join(repr(float(v)) for v in row) + "\n")
+
+
+def cli_value(v, unit=""):
+    if isinstance(v, float) and math.isnan(v):
+        return "nan"
+    if isinstance(v, float) and math.isinf(v):
+        return "inf" if v > 0 else "-inf"
+    return f"{v!r}{unit}" if isinstance(v, float) else str(v)
+
+
+def split_refusal(message):
+    """(keyword, sentence) of a ValueError's message."""
+    m = re.match(r"^([a-z_]+)(\[\d+\])?: (.*)$", message, re.S)
+    return (m.group(1), m.group(3)) if m else (None, message)
+
+
+def check(cli_args, call, reader_refuses=False):
+    """Runs the binary and the Python call and compares them whole. With
+    ``reader_refuses`` the file itself is refused by the binary's reader
+    (a file with no rows of numbers), before any analysis: both must
+    refuse, in their own words."""
+    out = subprocess.run([str(binary()), *cli_args], capture_output=True, text=True)
+    try:
+        ours, refused = call(), None
+    except ValueError as e:
+        ours, refused = None, str(e)
+    if refused is not None:
+        assert out.returncode == 2, (cli_args, refused, out.stdout[:300])
+        assert out.stdout == ""
+        line = out.stderr.strip()
+        assert "\n" not in line, line
+        if reader_refuses:
+            return "refused"
+        keyword, sentence = split_refusal(refused)
+        assert line.endswith(sentence), (line, refused)
+        if keyword is not None and keyword not in FLAG and "[" not in refused.split(":")[0]:
+            assert line.startswith(f"error: --{keyword.replace('_', '-')}:"), (line, refused)
+        return "refused"
+    assert out.returncode == 0, (cli_args, out.stderr)
+    cli = json.loads(out.stdout)
+    for k in READER_KEYS:
+        cli.pop(k, None)
+    assert dict(ours) == cli
+    return "answered"
+
+
+# --- fit decay --------------------------------------------------------------
+
+def decay_data(kind, n=60, seed=1):
+    rng = np.random.default_rng(seed)
+    t = np.linspace(0.0, 600.0, n)
+    if kind == "viscous":
+        a = 0.1 * np.exp(-t / 400)
+    elif kind == "quadratic":
+        a = 0.3 / (1 + 0.01 * t)
+    elif kind == "coulomb":
+        a = 0.2 - 2e-4 * t
+    elif kind == "air":
+        a = 0.05 * np.exp(-2e-4 * t) / (1 + 0.002 * t)
+    else:
+        raise ValueError(kind)
+    return t, a * (1 + rng.normal(0, 1e-3, n))
+
+
+def decay_case(t, a, **kw):
+    return (t, a, kw)
+
+
+def _decay_cases():
+    t, a = decay_data("viscous")
+    tq, aq = decay_data("quadratic")
+    tc, ac = decay_data("coulomb")
+    ta, aa = decay_data("air")
+    unsorted = t.copy()
+    unsorted[[5, 6]] = unsorted[[6, 5]]
+    negative = a.copy()
+    negative[3] = -0.0426
+    nan_amplitude = a.copy()
+    nan_amplitude[7] = NAN
+    wide = np.full_like(a, math.radians(229.0))
+    return {
+        "viscous_all": decay_case(t, a),
+        "quadratic_all": decay_case(tq, aq),
+        "coulomb_all": decay_case(tc, ac),
+        "air_all_length": decay_case(ta, aa, length=0.99362),
+        "air_length_mass": decay_case(ta, aa, length=0.99362, mass=5.0),
+        "air_period": decay_case(ta, aa, period=2.0),
+        "air_period_g": decay_case(ta, aa, length=0.25, g=9.81),
+        "one_law_viscous": decay_case(t, a, model="viscous", period=2.0),
+        "one_law_full": decay_case(ta, aa, model="full", length=1.0),
+        "one_law_coulomb": decay_case(tc, ac, model="coulomb"),
+        "four_points": decay_case(t[:4], a[:4], model="viscous"),
+        "near_180": decay_case(t, np.minimum(a * 31.0, math.radians(179.9)), model="viscous"),
+        "tiny": decay_case(t, a * 1e-9, model="viscous", period=2.0),
+        "unsorted": decay_case(unsorted, a),
+        "negative_amplitude": decay_case(t, negative),
+        "all_zero": decay_case(t, np.zeros_like(a)),
+        "229_degrees": decay_case(t, wide),
+        "nan_amplitude": decay_case(t, nan_amplitude),
+        "period_negative": decay_case(t, a, period=-2.0),
+        "period_huge": decay_case(t, a, period=1e5),
+        "period_nan": decay_case(t, a, period=NAN),
+        "mass_without_length": decay_case(t, a, mass=2.0),
+        "mass_negative": decay_case(t, a, length=1.0, mass=-1.0),
+        "length_negative": decay_case(t, a, length=-1.0),
+        "length_inf": decay_case(t, a, length=INF),
+        "model_unknown": decay_case(t, a, model="cubic"),
+        "two_points": decay_case(t[:2], a[:2]),
+        "one_point": decay_case(t[:1], a[:1]),
+    }
+
+
+DECAY = _decay_cases()
+DECAY_UNITS = {"period": "s", "length": "m", "g": "", "mass": "kg"}
+
+
+@pytest.mark.parametrize("name", sorted(DECAY))
+def test_fit_decay(name, tmp_path):
+    t, a, kw = DECAY[name]
+    path = tmp_path / "decay.csv"
+    write_csv(path, ["time_s", "amplitude_rad"], [t, a])
+    args = ["fit", "decay", str(path), "--json"]
+    for k, v in kw.items():
+        args += [f"--{k}", cli_value(v, DECAY_UNITS.get(k, ""))]
+    if kw.get("model") == "cubic":
+        # The binary's parser offers the laws by name; the library's
+        # sentence is Python's.
+        with pytest.raises(ValueError, match="'cubic' is not one of viscous"):
+            pt.fit_decay(t, a, **kw)
+        return
+    check(args, lambda: pt.fit_decay(t, a, **kw))
+
+
+def test_fit_decay_table_has_every_kind():
+    kinds = {}
+    for name in DECAY:
+        t, a, kw = DECAY[name]
+        try:
+            pt.fit_decay(t, a, **kw)
+            kinds["answered"] = kinds.get("answered", 0) + 1
+        except ValueError:
+            kinds["refused"] = kinds.get("refused", 0) + 1
+    assert len(DECAY) >= 20 and kinds["answered"] >= 8 and kinds["refused"] >= 8
+
+
+# --- fit trajectory ---------------------------------------------------------
+
+def swing(amplitude_deg=8.0, seconds=30.0, fps=60.0, zeta=2e-3, noise=1e-4, seed=2, length=0.5):
+    rng = np.random.default_rng(seed)
+    t = np.arange(0.0, seconds, 1.0 / fps)
+    w = math.sqrt(9.80665 / length)
+    theta = math.radians(amplitude_deg) * np.exp(-zeta * w * t) * np.cos(w * math.sqrt(1 - zeta**2) * t)
+    return t, theta + rng.normal(0, noise, t.size)
+
+
+def _trajectory_cases():
+    t, th = swing()
+    t3, th3 = swing(seconds=3.0, zeta=1e-5)
+    tw, thw = swing(amplitude_deg=30.0, seconds=20.0)
+    ts, ths = swing(amplitude_deg=2.0)
+    unsorted = t.copy()
+    unsorted[[10, 11]] = unsorted[[11, 10]]
+    nan_angle = th.copy()
+    nan_angle[4] = NAN
+    return {
+        "linear_auto": (t, th, {}),
+        "linear_length": (t, th, {"length": 0.5}),
+        "three_seconds": (t3, th3, {}),
+        "three_seconds_length": (t3, th3, {"length": 0.5}),
+        "wide_auto": (tw, thw, {}),
+        "wide_length": (tw, thw, {"length": 0.5}),
+        "wide_linear_length": (tw, thw, {"model": "linear", "length": 0.5}),
+        "small_nonlinear": (ts, ths, {"model": "nonlinear", "length": 0.5}),
+        "small_linear": (ts, ths, {"model": "linear"}),
+        "flat": (t, np.zeros_like(t), {}),
+        "six_points": (t[:6], th[:6], {}),
+        "five_points": (t[:5], th[:5], {}),
+        "empty": (t[:0], th[:0], {}),
+        "unsorted": (unsorted, th, {}),
+        "nan_angle": (t, nan_angle, {}),
+        "length_zero": (t, th, {"length": 0.0}),
+        "length_negative": (t, th, {"length": -1.0}),
+        "length_1mm_in_range": (t, th, {"length": 1e-3}),
+        "length_below_range": (t, th, {"length": 1e-5}),
+        "length_above_range": (t, th, {"length": 1e5}),
+        "length_nan": (t, th, {"length": NAN}),
+        "length_inf": (t, th, {"length": INF}),
+    }
+
+
+TRAJECTORY = _trajectory_cases()
+
+
+@pytest.mark.parametrize("name", sorted(TRAJECTORY))
+def test_fit_trajectory(name, tmp_path):
+    t, th, kw = TRAJECTORY[name]
+    path = tmp_path / "track.csv"
+    write_csv(path, ["time_s", "angle_rad"], [t, th])
+    args = ["fit", "trajectory", str(path), "--json"]
+    for k, v in kw.items():
+        args += [f"--{k}", cli_value(v, "m" if k == "length" else "")]
+    check(args, lambda: pt.fit_trajectory(t, th, **kw), reader_refuses=t.size == 0)
+
+
+def test_a_three_second_track_warns_from_python_too():
+    t, th, kw = TRAJECTORY["three_seconds"]
+    warnings = pt.fit_trajectory(t, th, **kw)["warnings"]
+    assert any(w.startswith("zeta not determined") for w in warnings)
+
+
+# --- fit beats --------------------------------------------------------------
+
+def beats(n=400, beat=1.0, rate=12.0, beat_error=0.002, jitter=1e-4, seed=3):
+    rng = np.random.default_rng(seed)
+    b = beat / (1 + rate / 86400)
+    d = np.where(np.arange(n) % 2 == 0, b + beat_error, b - beat_error) + rng.normal(0, jitter, n)
+    return np.concatenate([[0.0], np.cumsum(d)])
+
+
+def _beats_cases():
+    t = beats()
+    fast = beats(beat=0.5, n=2000)
+    missed = np.delete(t, [50, 120, 121])
+    doubled = np.sort(np.append(t, [t[30] + 0.01]))
+    unsorted = t.copy()
+    unsorted[[8, 9]] = unsorted[[9, 8]]
+    nan_time = t.copy()
+    nan_time[9] = NAN
+    return {
+        "seconds": (t, {}),
+        "seconds_bph": (t, {"bph": 3600.0}),
+        "seconds_period": (t, {"period": 2.0}),
+        "half_seconds": (fast, {}),
+        "half_seconds_bph": (fast, {"bph": 7200.0}),
+        "missed": (missed, {}),
+        "doubled": (doubled, {}),
+        "four_beats": (t[:4], {}),
+        "odd_rate_unknown": (beats(beat=1.3), {}),
+        "three_beats": (t[:3], {}),
+        "empty": (t[:0], {}),
+        "unsorted": (unsorted, {}),
+        "nan_time": (nan_time, {}),
+        "period_negative": (t, {"period": -2.0}),
+        "period_nan": (t, {"period": NAN}),
+        "bph_nan": (t, {"bph": NAN}),
+        "bph_zero": (t, {"bph": 0.0}),
+        "bph_tiny": (t, {"bph": 1e-308}),
+        "bph_far": (t, {"bph": 36000.0}),
+        "period_far": (t, {"period": 20.0}),
+        "not_beats": (t * 1e4, {}),
+        "milliseconds": (t * 1e-4, {}),
+    }
+
+
+BEATS = _beats_cases()
+
+
+@pytest.mark.parametrize("name", sorted(BEATS))
+def test_fit_beats(name, tmp_path):
+    t, kw = BEATS[name]
+    path = tmp_path / "beats.csv"
+    write_csv(path, ["time_s"], [t])
+    args = ["fit", "beats", str(path), "--json"]
+    for k, v in kw.items():
+        args += [f"--{k}", cli_value(v, "s" if k == "period" else "")]
+    check(args, lambda: pt.fit_beats(t, **kw), reader_refuses=t.size == 0)
+
+
+# --- simulate ---------------------------------------------------------------
+
+SIMULATE = {
+    "ordinary": (0.99362, 0.05, 100.0, {"q": 300.0}),
+    "undamped": (0.99362, 0.17, 60.0, {}),
+    "zeta": (0.5, 0.3, 30.0, {"zeta": 0.01}),
+    "log_decrement": (0.5, 0.3, 30.0, {"log_decrement": 0.05}),
+    "drag_friction": (0.99362, 0.5, 60.0, {"quadratic_drag": 0.01, "friction_angle": 1e-4}),
+    "vern9": (0.99362, 0.2, 30.0, {"q": 1000.0, "method": "vern9", "tolerance": 1e-12}),
+    "symplectic": (0.99362, 0.2, 60.0, {"q": 1000.0, "method": "symplectic"}),
+    "exact": (0.99362, 3.0, 60.0, {"method": "exact"}),
+    "averaged_week": (0.99362, 0.05, 604800.0, {"q": 1e4, "method": "averaged"}),
+    "near_top": (0.99362, math.radians(179.999999), 60.0, {}),
+    "zero_duration": (0.99362, 0.05, 0.0, {"q": 300.0}),
+    "other_g": (0.25, 0.1, 10.0, {"g": 1.62, "zeta": 0.001}),
+    "loose_tolerance": (0.99362, 1.0, 100.0, {"tolerance": 1e-3}),
+    "a_billion_seconds": (0.99362, 0.05, 1e9, {}),
+    "stiff_zeta": (0.99362, 0.05, 100.0, {"zeta": 1e6}),
+    "averaged_1e12": (0.99362, 0.05, 1e12, {"q": 1e4, "method": "averaged"}),
+    "exact_with_damping": (0.99362, 0.05, 10.0, {"q": 100.0, "method": "exact"}),
+    "averaged_strong": (0.99362, 0.05, 10.0, {"q": 3.0, "method": "averaged"}),
+    "averaged_drag": (0.99362, 0.05, 10.0, {"quadratic_drag": 0.1, "method": "averaged"}),
+    "negative_duration": (0.99362, 0.05, -1.0, {}),
+    "nan_duration": (0.99362, 0.05, NAN, {}),
+    "length_zero": (0.0, 0.05, 10.0, {}),
+    "amplitude_180": (0.99362, math.pi, 10.0, {}),
+    "q_negative": (0.99362, 0.05, 10.0, {"q": -3.0}),
+    "tolerance_tiny": (0.99362, 0.05, 10.0, {"tolerance": 1e-16}),
+    "tolerance_one": (0.99362, 0.05, 10.0, {"tolerance": 1.0}),
+    "friction_half_turn": (0.99362, 0.05, 10.0, {"friction_angle": 3.2}),
+    "drag_negative": (0.99362, 0.05, 10.0, {"quadratic_drag": -1.0}),
+    "method_unknown": (0.99362, 0.05, 10.0, {"method": "euler"}),
+}
+SIMULATE_UNITS = {"g": "", "friction_angle": "rad", "quadratic_drag": "", "q": "", "zeta": "",
+                  "log_decrement": "", "tolerance": "", "method": ""}
+
+
+@pytest.mark.parametrize("name", sorted(SIMULATE))
+def test_simulate(name, tmp_path):
+    length, amplitude, duration, kw = SIMULATE[name]
+    args = ["simulate", "--length", cli_value(length, "m"), "--amplitude",
+            cli_value(amplitude, "rad"), "--duration", cli_value(duration, "s"), "--json", "--quiet"]
+    for k, v in kw.items():
+        args += [f"--{k.replace('_', '-')}", cli_value(v, SIMULATE_UNITS[k])]
+    if kw.get("method") == "euler":
+        # The binary's parser offers the methods by name.
+        with pytest.raises(ValueError, match="'euler' is not one of dop853"):
+            pt.simulate(length, amplitude, duration, **kw)
+        return
+    check(args, lambda: pt.simulate(length, amplitude, duration, **kw)[3])
+
+
+def test_simulate_rates_gain_positive():
+    t, a, rate, summary = pt.simulate(0.99362, math.radians(10), 100.0, q=300.0)
+    # A free pendulum at 10° loses about 165 s/day: its rate is negative.
+    assert -170 < rate[1] < -150
+
+
+# --- clock long runs: what Python accepted and the binary refused -----------
+
+@pytest.mark.parametrize("kw, sentence", [
+    ({"duration": 3 * 365.25 * 86400}, "of computing; force it"),
+    ({"duration": 4 * 365.25 * 86400}, "more than 10^8 rows"),
+    ({"duration": 86400.0, "every": INF}, "must be a finite number"),
+    ({"duration": 86400.0, "every": NAN}, "must be a finite number"),
+    ({"duration": 86400.0, "every": 0.5}, "must be at least a period"),
+    ({"duration": 1e11, "every": 86400.0}, "between 0 and 300 years"),
+    ({"duration": 86400.0, "every": 3600.0, "rate_schedule": ([0.0, 86400.0], [0.0, 1e300])},
+     "within a day per day"),
+    ({"duration": 86400.0, "every": 3600.0, "drive_schedule": ([0.0, 86400.0], [1.0, INF])},
+     "at least 0"),
+])
+def test_clock_run_refuses_what_the_binary_refuses(kw, sentence):
+    with pytest.raises(ValueError, match=re.escape(sentence)):
+        pt.clock_run(0.99362, drive_energy=5e-4, **kw)
+
+
+@pytest.mark.parametrize("args, sentence", [
+    (["--duration", "3years"], "of computing; force it"),
+    (["--duration", "4years"], "more than 10^8 rows"),
+    (["--duration", "1day", "--every", "inf"], "must be a finite number"),
+    (["--duration", "1day", "--every", "0.5s"], "must be at least a period"),
+    (["--duration", "1e11s", "--every", "1day"], "between 0 and 300 years"),
+])
+def test_the_binary_refuses_the_same_runs(args, sentence):
+    out = subprocess.run([str(binary()), "clock", "--length", "0.99362m", "--drive", "0.5mJ",
+                          *args], capture_output=True, text=True)
+    assert out.returncode == 2 and out.stdout == "" and sentence in out.stderr, out.stderr

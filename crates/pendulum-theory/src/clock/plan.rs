@@ -1,0 +1,141 @@
+//! A clock's long run judged before it starts: its duration, how often a
+//! row is kept, how many rows and beats that makes and how long they take
+//! to compute, and the schedules that drive it. The command line's
+//! `clock --duration` and Python's `clock_run` both plan here, so neither
+//! can start a run the other would refuse.
+
+use super::Clock;
+use crate::analysis::{judge_work, require_finite, Refusal};
+use crate::error::format_significant;
+
+/// The longest run, s (about 300 years).
+pub const MAX_DURATION_S: f64 = 1e10;
+/// The most rows a run at every turning point may have (then a row
+/// interval must be given).
+pub const MAX_TURNING_POINT_ROWS: f64 = 1e8;
+/// The largest rate change a schedule may give, s/day: a clock that gains
+/// or loses a day per day is not running.
+pub const MAX_RATE_S_PER_DAY: f64 = 86_400.0;
+/// Computing time of one row of a long run, s (a week of turning points,
+/// 604,800 rows, in 0.2 s, rounded up).
+pub const SECONDS_PER_ROW: f64 = 0.5e-6;
+/// Computing time of one step of many beats, s (1.2 µs measured, rounded
+/// up).
+pub const SECONDS_PER_MULTI_STEP: f64 = 1.5e-6;
+
+/// A long run's size, judged.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RunPlan {
+    /// Rows the run will give.
+    pub rows: f64,
+    /// Beats it steps through.
+    pub beats: f64,
+    /// Estimated computing time, s.
+    pub seconds: f64,
+}
+
+/// Plans a run of `clock`, whose steady period is `period` (s), for
+/// `duration` s with a row every `every` s (else at every turning point);
+/// refuses what cannot run, and what would take too long unless `force`.
+pub fn plan_run(
+    clock: &Clock,
+    period: f64,
+    duration: f64,
+    every: Option<f64>,
+    force: bool,
+) -> Result<RunPlan, Refusal> {
+    let duration = require_finite("duration", duration)?;
+    if duration <= 0.0 || duration > MAX_DURATION_S {
+        return Err(Refusal::field(
+            "duration",
+            format!(
+                "must lie between 0 and 300 years, got {} s",
+                format_significant(duration, 6)
+            ),
+        ));
+    }
+    if let Some(e) = every {
+        if require_finite("every", e)? < period {
+            return Err(Refusal::field(
+                "every",
+                format!(
+                    "must be at least a period ({} s), got {} s",
+                    format_significant(period, 6),
+                    format_significant(e, 6)
+                ),
+            ));
+        }
+    } else if 2.0 * duration / period > MAX_TURNING_POINT_ROWS {
+        return Err(Refusal::field(
+            "duration",
+            "every turning point of so long a run is more than 10^8 rows: give a row interval \
+             (every)",
+        ));
+    }
+    // The rows, and the beats stepped between them (many at a time, up to
+    // 4096 or a twentieth of the relaxation, when rows are sparse and the
+    // escapement's cycle is one beat; one by one otherwise). Measured: a
+    // week of every turning point in 0.2 s; ten years of a row a day at
+    // Q = 10^4 (3.2e8 beats) in 1.2 s.
+    let rows = duration / every.unwrap_or(0.5 * period);
+    let beats = duration / (0.5 * period);
+    let per_step = (clock.q / (10.0 * std::f64::consts::PI)).min(4096.0);
+    let stepping = if every.is_some() && clock.escapement.cycle() == 1 && per_step >= 16.0 {
+        beats / per_step * SECONDS_PER_MULTI_STEP
+    } else {
+        beats * SECONDS_PER_ROW
+    };
+    let seconds = rows * SECONDS_PER_ROW + stepping;
+    judge_work(
+        "duration",
+        format!(
+            "{} beats, {} rows",
+            format_significant(beats, 3),
+            format_significant(rows, 3)
+        ),
+        seconds,
+        force,
+    )?;
+    Ok(RunPlan {
+        rows,
+        beats,
+        seconds,
+    })
+}
+
+/// Checks a schedule `field` of `values` at `times` (s): one of each,
+/// times finite and increasing, values finite and within `range`
+/// (described as `what`).
+pub fn check_schedule(
+    field: &'static str,
+    times: &[f64],
+    values: &[f64],
+    range: std::ops::RangeInclusive<f64>,
+    what: &str,
+) -> Result<(), Refusal> {
+    if times.len() != values.len() {
+        return Err(Refusal::field(
+            field,
+            format!(
+                "{} times and {} values: give one of each",
+                times.len(),
+                values.len()
+            ),
+        ));
+    }
+    for (i, (&t, &v)) in times.iter().zip(values).enumerate() {
+        if !t.is_finite() || (i > 0 && t <= times[i - 1]) {
+            return Err(Refusal::field(
+                field,
+                format!("time {} must be finite and after the one before", i + 1),
+            ));
+        }
+        if !(v.is_finite() && range.contains(&v)) {
+            return Err(Refusal::field(
+                field,
+                format!("value {} must be {what}", i + 1),
+            ));
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,189 @@
+//! The analysis of a beat log, as one call (or a stream of calls): one
+//! time per beat in, what a timegrapher shows out ([`super::beats`]),
+//! against the beat the clock is meant to keep, given or found among the
+//! standard rates. The command line's `fit beats` and Python's
+//! `fit_beats` are this call.
+
+use super::beats::{AllanPoint, BeatAnalysis, BeatError, BeatStream};
+use crate::analysis::{require_finite_sample, Refusal};
+use crate::error::format_significant;
+use crate::period::{beat_of_period, period_for_beat_rate, SECONDS_PER_DAY};
+use serde::Serialize;
+
+/// The beat the clock is meant to keep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Nominal {
+    /// Beats per hour (field `bph`).
+    BeatsPerHour(f64),
+    /// The pendulum's full period, s (field `period`).
+    Period(f64),
+}
+
+impl Nominal {
+    /// The input's field name.
+    pub fn field(self) -> &'static str {
+        match self {
+            Nominal::BeatsPerHour(_) => "bph",
+            Nominal::Period(_) => "period",
+        }
+    }
+
+    /// The nominal beat, s, or the refusal of the value.
+    pub fn beat(self) -> Result<f64, Refusal> {
+        match self {
+            Nominal::BeatsPerHour(b) => period_for_beat_rate(b)
+                .and_then(beat_of_period)
+                .map_err(|e| Refusal::input("bph", &e)),
+            Nominal::Period(p) => beat_of_period(p).map_err(|e| Refusal::input("period", &e)),
+        }
+    }
+}
+
+/// The Allan deviation at one averaging time.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct AllanRow {
+    /// Averaging time, s.
+    pub tau_s: f64,
+    /// The same in beats.
+    pub beats: usize,
+    /// Fractional frequency deviation.
+    pub deviation: f64,
+    /// The same as a rate, s/day.
+    pub deviation_s_per_day: f64,
+}
+
+/// Beats dropped and filled in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Repaired {
+    /// Missed beats filled in.
+    pub missed: usize,
+    /// Doubled beats dropped.
+    pub doubled: usize,
+}
+
+/// What a timegrapher shows, from a beat log.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Beats {
+    /// Beats after repair.
+    pub beats: usize,
+    /// Mean beat, s.
+    pub mean_beat_s: f64,
+    /// Beats per hour at the mean beat.
+    pub beats_per_hour: f64,
+    /// The beat the rate is measured against, s.
+    pub nominal_beat_s: Option<f64>,
+    /// Gain per day against it, s/day (positive: the clock gains).
+    pub rate_s_per_day: Option<f64>,
+    /// Half the tick-tock difference, ms.
+    pub beat_error_ms: f64,
+    /// Spread of the intervals about their tick or tock mean, ms.
+    pub jitter_ms: f64,
+    /// What was repaired.
+    pub repaired: Repaired,
+    /// The overlapping Allan deviation of the rate.
+    pub allan_deviation: Vec<AllanRow>,
+}
+
+impl Beats {
+    fn of(a: BeatAnalysis) -> Self {
+        Self {
+            beats: a.beats,
+            mean_beat_s: a.mean_beat,
+            beats_per_hour: a.beats_per_hour,
+            nominal_beat_s: a.nominal_beat,
+            rate_s_per_day: a.rate_s_per_day,
+            beat_error_ms: a.beat_error_ms,
+            jitter_ms: a.jitter_ms,
+            repaired: Repaired {
+                missed: a.repaired.missed,
+                doubled: a.repaired.doubled,
+            },
+            allan_deviation: a.allan_deviation.iter().map(allan_row).collect(),
+        }
+    }
+}
+
+/// One point of the Allan deviation, with its rate in s/day.
+pub fn allan_row(p: &AllanPoint) -> AllanRow {
+    AllanRow {
+        tau_s: p.tau,
+        beats: p.beats,
+        deviation: p.deviation,
+        deviation_s_per_day: SECONDS_PER_DAY * p.deviation,
+    }
+}
+
+/// A beat log read one time at a time, in fixed memory.
+pub struct BeatLog {
+    stream: BeatStream,
+    nominal: Option<(Nominal, f64)>,
+    pushed: usize,
+    previous: f64,
+}
+
+impl BeatLog {
+    /// A log to be measured against `nominal` (else the nearest standard
+    /// rate within 2%); the nominal value is checked now, before any time.
+    pub fn new(nominal: Option<Nominal>) -> Result<Self, Refusal> {
+        let nominal = nominal.map(|n| n.beat().map(|b| (n, b))).transpose()?;
+        Ok(Self {
+            stream: BeatStream::new(),
+            nominal,
+            pushed: 0,
+            previous: f64::NEG_INFINITY,
+        })
+    }
+
+    /// Adds the next beat's time, s.
+    pub fn push(&mut self, t: f64) -> Result<(), Refusal> {
+        let i = self.pushed;
+        require_finite_sample("time", i, t)?;
+        if t <= self.previous {
+            return Err(Refusal::sample(
+                "time",
+                i,
+                format!(
+                    "the time {t} is not after the previous {}; sort by time",
+                    self.previous
+                ),
+            ));
+        }
+        self.previous = t;
+        self.pushed += 1;
+        self.stream
+            .push(t)
+            .map_err(|e| Refusal::sample("time", i, e.to_string()))
+    }
+
+    /// The analysis of every time pushed.
+    pub fn finish(self) -> Result<Beats, Refusal> {
+        let a = self
+            .stream
+            .finish(self.nominal.map(|(_, b)| b))
+            .map_err(|e: BeatError| Refusal::data(e.to_string()))?;
+        // A nominal beat far from the measured one is a typing error (the
+        // rate would be meaningless, or overflow).
+        if let Some((n, beat)) = self.nominal {
+            if !(0.5..=2.0).contains(&(beat / a.mean_beat)) {
+                return Err(Refusal::field(
+                    n.field(),
+                    format!(
+                        "a nominal beat of {} s is nowhere near the {} s measured",
+                        format_significant(beat, 6),
+                        format_significant(a.mean_beat, 6)
+                    ),
+                ));
+            }
+        }
+        Ok(Beats::of(a))
+    }
+}
+
+/// Analyses beat times `time` (s) against `nominal`.
+pub fn analyse(time: &[f64], nominal: Option<Nominal>) -> Result<Beats, Refusal> {
+    let mut log = BeatLog::new(nominal)?;
+    for &t in time {
+        log.push(t)?;
+    }
+    log.finish()
+}

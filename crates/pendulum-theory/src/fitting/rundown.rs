@@ -1,0 +1,341 @@
+//! The analysis of a run-down, as one call: amplitudes at times in, every
+//! decay law of [`super::decay`] fitted (or the one asked for), the law
+//! the data prefer, and with the pendulum and its bob the energy each law
+//! says is lost. The command line's `fit decay` and Python's `fit_decay`
+//! are this call.
+
+use super::decay::{
+    akaike_weights, effective_angular_frequency, fit_decay, half_swing_loss, preferred, DecayFit,
+    DecayModel,
+};
+use super::FitError;
+use crate::analysis::{
+    finite, judge_work, require_finite, require_finite_sample, require_finite_samples, Refusal,
+};
+use crate::energy::energy_budget;
+use crate::pendulum::{Amplitude, Pendulum, STANDARD_GRAVITY};
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// Computing time a row of amplitudes takes (all six laws), s: measured,
+/// 2 million rows in 41 s.
+pub const SECONDS_PER_ROW: f64 = 25e-6;
+/// The periods a pendulum can have, s: from a 1 cm pendulum (0.2 s) to
+/// Foucault's 67 m (16 s), with room.
+pub const PERIOD_RANGE_S: std::ops::RangeInclusive<f64> = 1e-3..=1e4;
+
+/// A run-down to analyse. Every field but the data is optional.
+#[derive(Clone, Debug, Default)]
+pub struct RunDownInput<'a> {
+    /// Times, s, strictly increasing.
+    pub time: &'a [f64],
+    /// The amplitude at each time, rad, in (0, π).
+    pub amplitude: &'a [f64],
+    /// One law by name ([`DecayModel::name`]), or `all` (the default).
+    pub model: Option<&'a str>,
+    /// The pendulum's period, s: its angular frequency turns the rates
+    /// into ζ, Q, the friction angle and the drag.
+    pub period: Option<f64>,
+    /// The mean half period between the turning points the amplitudes
+    /// came from, s (when they came from a track): used when no period is
+    /// given.
+    pub turning_half_period: Option<f64>,
+    /// The pendulum's length, m: ω from the exact period at the record's
+    /// median amplitude, when neither of the above is given; with `mass`,
+    /// the energy each law says is lost.
+    pub length: Option<f64>,
+    /// Gravity, m/s² (default standard gravity).
+    pub g: Option<f64>,
+    /// The bob's mass, kg (needs the length).
+    pub mass: Option<f64>,
+    /// Runs estimated beyond [`crate::analysis::FORCE_SECONDS`] anyway.
+    pub force: bool,
+}
+
+/// The analysis of a run-down.
+#[derive(Clone, Debug, Serialize)]
+pub struct RunDown {
+    /// Points fitted.
+    pub points: usize,
+    /// The angular frequency the rates are converted with, rad/s.
+    pub omega_rad_s: Option<f64>,
+    /// Where ω came from: `period`, `turning_points` or `length`.
+    pub omega_source: Option<&'static str>,
+    /// Every law asked for, fitted or failed, simplest first.
+    pub models: Vec<LawFit>,
+    /// The law the data prefer (lowest BIC with no rate at its bound).
+    pub preferred: Option<&'static str>,
+    /// The fits themselves (residuals, for plots).
+    #[serde(skip)]
+    pub fits: Vec<DecayFit>,
+}
+
+/// One law's fit, or why it failed.
+#[derive(Clone, Debug, Serialize)]
+pub struct LawFit {
+    /// The law's name.
+    pub model: &'static str,
+    /// Why the law could not be fitted (then no other key).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub failed: Option<String>,
+    /// The fit.
+    #[serde(flatten)]
+    pub fitted: Option<Fitted>,
+}
+
+/// The figures of one fitted law.
+#[derive(Clone, Debug, Serialize)]
+pub struct Fitted {
+    /// The fitted parameters by name.
+    pub parameters: BTreeMap<&'static str, f64>,
+    /// Their standard errors.
+    pub standard_errors: BTreeMap<&'static str, f64>,
+    /// Q of the viscous part, when measurable.
+    pub q_factor: Option<f64>,
+    /// With no measurable viscous decay: the two-sigma lower bound on Q.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q_factor_lower_bound: Option<f64>,
+    /// The Q of the exponential that decays as much over the record.
+    pub q_factor_mean: Option<f64>,
+    /// Rates held at their bound 0 (the law is then a simpler one).
+    pub at_bound: Vec<&'static str>,
+    /// Root mean square of the residuals, rad.
+    pub residual_rms: f64,
+    /// Akaike's information criterion.
+    pub aic: f64,
+    /// The Bayesian information criterion.
+    pub bic: f64,
+    /// The law's Akaike weight among the laws fitted.
+    pub akaike_weight: f64,
+    /// Energy lost per period at the first amplitude, J (length and mass).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub energy_loss_per_period_j: Option<f64>,
+    /// Power lost at the first amplitude, W (length and mass).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub power_w: Option<f64>,
+}
+
+/// The law names [`RunDownInput::model`] takes.
+pub fn model_names() -> String {
+    let mut names: Vec<&str> = DecayModel::ALL.iter().map(|m| m.name()).collect();
+    names.push("all");
+    names.join(", ")
+}
+
+/// Checks a series of times: finite and strictly increasing.
+pub(crate) fn check_times(field: &'static str, time: &[f64]) -> Result<(), Refusal> {
+    require_finite_samples(field, time)?;
+    match (1..time.len()).find(|&i| time[i] <= time[i - 1]) {
+        Some(i) => Err(Refusal::sample(
+            field,
+            i,
+            format!(
+                "{} is not after the previous {}; sort by time",
+                time[i],
+                time[i - 1]
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
+/// Checks two arrays given as pairs.
+pub(crate) fn check_pairs(
+    first: &'static str,
+    second: &'static str,
+    a: &[f64],
+    b: &[f64],
+) -> Result<(), Refusal> {
+    if a.len() == b.len() {
+        Ok(())
+    } else {
+        Err(Refusal::field(
+            second,
+            format!(
+                "has {} values and {first} {}: give one of each",
+                b.len(),
+                a.len()
+            ),
+        ))
+    }
+}
+
+/// The pendulum of a length and g (default standard gravity).
+pub(crate) fn pendulum_of(length: f64, g: Option<f64>) -> Result<Pendulum, Refusal> {
+    let g = g.unwrap_or(STANDARD_GRAVITY);
+    Pendulum::new(length, g).map_err(|e| match e.quantity {
+        crate::Quantity::Gravity => Refusal::input("g", &e),
+        _ => Refusal::input("length", &e),
+    })
+}
+
+/// Analyses a run-down (see the module notes).
+pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
+    let (time, amplitude) = (input.time, input.amplitude);
+    check_pairs("time", "amplitude", time, amplitude)?;
+    check_times("time", time)?;
+    for (i, &a) in amplitude.iter().enumerate() {
+        require_finite_sample("amplitude", i, a)?;
+        if a <= 0.0 {
+            return Err(Refusal::sample(
+                "amplitude",
+                i,
+                format!("must be positive, got {a}"),
+            ));
+        }
+        if a >= std::f64::consts::PI {
+            return Err(Refusal::sample(
+                "amplitude",
+                i,
+                format!(
+                    "an amplitude of {}° is not a swing (it must be below 180°)",
+                    crate::error::format_significant(a.to_degrees(), 8)
+                ),
+            ));
+        }
+    }
+    let models: Vec<DecayModel> = match input.model {
+        None | Some("all") => DecayModel::ALL.to_vec(),
+        Some(name) => vec![DecayModel::from_name(name).ok_or_else(|| {
+            Refusal::field("model", format!("'{name}' is not one of {}", model_names()))
+        })?],
+    };
+    if let Some(p) = input.period {
+        require_finite("period", p)?;
+        if !PERIOD_RANGE_S.contains(&p) {
+            return Err(Refusal::field(
+                "period",
+                format!(
+                    "must lie between 1 ms and 10^4 s for a pendulum, got {} s",
+                    crate::error::format_significant(p, 6)
+                ),
+            ));
+        }
+    }
+    if let Some(h) = input.turning_half_period {
+        if !(h > 0.0 && h.is_finite()) {
+            return Err(Refusal::data(format!(
+                "the turning points' half period must be positive, got {h} s"
+            )));
+        }
+    }
+    let pendulum = input.length.map(|l| pendulum_of(l, input.g)).transpose()?;
+    if input.length.is_none() {
+        if let Some(g) = input.g {
+            pendulum_of(1.0, Some(g))?;
+        }
+    }
+    if let Some(m) = input.mass {
+        require_finite("mass", m)?;
+    }
+    let mass = match (input.mass, &pendulum) {
+        (Some(m), None) => {
+            return Err(Refusal::field(
+                "mass",
+                format!(
+                    "{} kg given without the length: the energy budget needs the pendulum",
+                    crate::error::significant(m)
+                ),
+            ))
+        }
+        (Some(m), Some(_)) if m <= 0.0 => {
+            return Err(Refusal::field(
+                "mass",
+                format!("must be positive, got {m} kg"),
+            ))
+        }
+        (m, _) => m,
+    };
+    let rows = amplitude.len();
+    judge_work(
+        "time",
+        format!("{rows} rows"),
+        rows as f64 * SECONDS_PER_ROW,
+        input.force,
+    )?;
+    let (omega, omega_source) = match (input.period, input.turning_half_period, &pendulum) {
+        (Some(p), _, _) => (Some(std::f64::consts::TAU / p), Some("period")),
+        (None, Some(h), _) => (Some(std::f64::consts::PI / h), Some("turning_points")),
+        (None, None, Some(p)) => (
+            Some(effective_angular_frequency(p, amplitude)),
+            Some("length"),
+        ),
+        (None, None, None) => (None, None),
+    };
+    // Every law is listed: fitted, or failed with the reason.
+    let mut fits = Vec::new();
+    let mut failures: Vec<(DecayModel, FitError)> = Vec::new();
+    for model in models {
+        match fit_decay(model, time, amplitude, omega) {
+            Ok(fit) => fits.push(fit),
+            Err(e) => failures.push((model, e)),
+        }
+    }
+    if fits.is_empty() {
+        let e = failures
+            .into_iter()
+            .next()
+            .map_or(FitError::Singular, |(_, e)| e);
+        return Err(Refusal::data(e.to_string()));
+    }
+    let best = preferred(&fits);
+    let weights = akaike_weights(&fits);
+    let models = DecayModel::ALL
+        .iter()
+        .filter_map(|&m| {
+            if let Some(i) = fits.iter().position(|f| f.model == m) {
+                Some(law_fit(&fits[i], weights[i], pendulum.as_ref(), mass))
+            } else {
+                failures.iter().find(|(f, _)| *f == m).map(|(_, e)| LawFit {
+                    model: m.name(),
+                    failed: Some(e.to_string()),
+                    fitted: None,
+                })
+            }
+        })
+        .collect();
+    Ok(RunDown {
+        points: time.len(),
+        omega_rad_s: omega,
+        omega_source,
+        models,
+        preferred: best.map(DecayModel::name),
+        fits,
+    })
+}
+
+fn law_fit(f: &DecayFit, weight: f64, pendulum: Option<&Pendulum>, mass: Option<f64>) -> LawFit {
+    let parameters = f.parameters.iter().map(|e| (e.name, e.value)).collect();
+    let standard_errors = f
+        .parameters
+        .iter()
+        .map(|e| (e.name, e.standard_error))
+        .collect();
+    let budget = match (pendulum, mass) {
+        (Some(p), Some(m)) => {
+            let a0 = f.fit.parameters[0];
+            let period =
+                p.period(Amplitude::from_radians(a0.abs().min(3.1)).unwrap_or(Amplitude::ZERO));
+            energy_budget(p, m, a0, half_swing_loss(f, a0, 0.5 * period), period).ok()
+        }
+        _ => None,
+    };
+    LawFit {
+        model: f.model.name(),
+        failed: None,
+        fitted: Some(Fitted {
+            parameters,
+            standard_errors,
+            q_factor: f.q_factor.and_then(finite),
+            q_factor_lower_bound: f.q_factor_lower_bound.and_then(finite),
+            q_factor_mean: f.q_factor_mean.and_then(finite),
+            at_bound: f.at_bound.clone(),
+            residual_rms: f.fit.residual_rms,
+            aic: f.fit.aic,
+            bic: f.fit.bic,
+            akaike_weight: weight,
+            energy_loss_per_period_j: budget.map(|b| b.loss_per_period),
+            power_w: budget.map(|b| b.power),
+        }),
+    }
+}

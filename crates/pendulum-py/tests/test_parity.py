@@ -290,6 +290,8 @@ def _beats_cases():
         "bph_zero": (t, {"bph": 0.0}),
         "bph_tiny": (t, {"bph": 1e-308}),
         "bph_far": (t, {"bph": 36000.0}),
+        "bph_double": (t, {"bph": 7200.0}),
+        "bph_half": (t, {"bph": 1800.0}),
         "period_far": (t, {"period": 20.0}),
         "not_beats": (t * 1e4, {}),
         "milliseconds": (t * 1e-4, {}),

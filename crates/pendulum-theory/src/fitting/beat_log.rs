@@ -10,6 +10,12 @@ use crate::error::format_significant;
 use crate::period::{beat_of_period, period_for_beat_rate, SECONDS_PER_DAY};
 use serde::Serialize;
 
+/// The ratios of nominal to measured beat taken: within the geometric
+/// middle (√2) of the beat and its half or double, so that half or double
+/// the beat is never read as a rate of ±43,200 s/day.
+pub const NOMINAL_RATIO_RANGE: std::ops::RangeInclusive<f64> =
+    std::f64::consts::FRAC_1_SQRT_2..=std::f64::consts::SQRT_2;
+
 /// The beat the clock is meant to keep.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Nominal {
@@ -161,14 +167,23 @@ impl BeatLog {
             .stream
             .finish(self.nominal.map(|(_, b)| b))
             .map_err(|e: BeatError| Refusal::data(e.to_string()))?;
-        // A nominal beat far from the measured one is a typing error (the
-        // rate would be meaningless, or overflow).
+        // A nominal beat far from the measured one is a typing error or
+        // half or double the beat (the rate would be meaningless): refused
+        // beyond the geometric middle between the beat and its double.
         if let Some((n, beat)) = self.nominal {
-            if !(0.5..=2.0).contains(&(beat / a.mean_beat)) {
+            let ratio = beat / a.mean_beat;
+            if !(NOMINAL_RATIO_RANGE).contains(&ratio) {
+                let hint = if (ratio / 2.0 - 1.0).abs() < 0.1 {
+                    " (twice the measured beat: is the nominal rate half the clock's?)"
+                } else if (ratio * 2.0 - 1.0).abs() < 0.1 {
+                    " (half the measured beat: is the nominal rate double the clock's?)"
+                } else {
+                    ""
+                };
                 return Err(Refusal::field(
                     n.field(),
                     format!(
-                        "a nominal beat of {} s is nowhere near the {} s measured",
+                        "a nominal beat of {} s is nowhere near the {} s measured{hint}",
                         format_significant(beat, 6),
                         format_significant(a.mean_beat, 6)
                     ),

@@ -3,6 +3,7 @@
 //! in each command, so every refusal names its flag in our own words.
 
 use clap::{Args, Parser, Subcommand};
+use pendulum_theory::clock::analysis as clock;
 
 /// The theory of the clock pendulum: exact period and circular error, damping,
 /// simulation over weeks of swings, fitting to measurements, and reports.
@@ -871,29 +872,19 @@ pub struct ClockArgs {
     /// A pendulum designed as parts (TOML), in place of --length.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
     pub design: Option<std::path::PathBuf>,
-    /// Bob mass [default: 5 kg; with --design its effective mass M d / l].
-    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    /// Bob mass, kg (with --design its effective mass M d / l).
+    #[arg(long, value_name = "M", allow_hyphen_values = true, help = with_default("Bob mass, kg (with --design its effective mass M d / l)", clock::DEFAULT_MASS_KG))]
     pub mass: Option<String>,
     /// Quality factor of the free pendulum.
-    #[arg(
-        long,
-        value_name = "Q",
-        default_value = "10000",
-        allow_hyphen_values = true
-    )]
-    pub q: String,
-    /// The escapement.
-    #[arg(long, value_enum, default_value_t = EscapementArg::Deadbeat)]
-    pub escapement: EscapementArg,
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = with_default("Quality factor of the free pendulum", clock::DEFAULT_Q))]
+    pub q: Option<String>,
+    /// The escapement [default: deadbeat].
+    #[arg(long, value_enum)]
+    pub escapement: Option<EscapementArg>,
     /// The lift angle, the whole angle over which the escapement impulses
     /// (a bare number is degrees).
-    #[arg(
-        long,
-        value_name = "A",
-        default_value = "2",
-        allow_hyphen_values = true
-    )]
-    pub lift_angle: String,
+    #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("The lift angle, the whole angle over which the escapement impulses (a bare number is degrees)", clock::DEFAULT_LIFT_DEG))]
+    pub lift_angle: Option<String>,
     /// The drive: the torque at the pallets (e.g. 2e-4Nm) or the energy
     /// per beat (e.g. 20uJ; the torque is that over the lift). For
     /// impulse and free: the energy of each impulse; for constant-force,
@@ -901,39 +892,24 @@ pub struct ClockArgs {
     #[arg(long, value_name = "DRIVE", allow_hyphen_values = true)]
     pub drive: String,
     /// Dead-face (locking) friction coefficient: deadbeat, constant-force.
-    #[arg(
-        long,
-        value_name = "MU",
-        default_value = "0.15",
-        allow_hyphen_values = true
-    )]
-    pub friction: String,
+    #[arg(long, value_name = "MU", allow_hyphen_values = true, help = with_default("Dead-face (locking) friction coefficient: deadbeat, constant-force", clock::DEFAULT_FRICTION))]
+    pub friction: Option<String>,
     /// Recoil: the pushing-back torque one lift angle past the lift, over the drive torque.
-    #[arg(
-        long,
-        value_name = "R",
-        default_value = "1",
-        allow_hyphen_values = true
-    )]
-    pub recoil: String,
+    #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("Recoil: the pushing-back torque one lift angle past the lift, over the drive torque", clock::DEFAULT_RECOIL))]
+    pub recoil: Option<String>,
     /// Where the impulse falls before the bottom (negative: after): for
     /// impulse and free the impulse's angle, for deadbeat the lift's centre.
-    #[arg(
-        long,
-        value_name = "A",
-        default_value = "0",
-        allow_hyphen_values = true
-    )]
-    pub impulse_angle: String,
+    #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("Where the impulse falls before the bottom (negative: after): for impulse and free the impulse's angle, for deadbeat the lift's centre (degrees)", clock::DEFAULT_IMPULSE_ANGLE_DEG))]
+    pub impulse_angle: Option<String>,
     /// Free pendulum: beats between impulses (Shortt's: 30).
-    #[arg(long, value_name = "N", default_value_t = 30)]
-    pub every_beats: u64,
+    #[arg(long, value_name = "N", help = with_default("Free pendulum: beats between impulses (Shortt's)", clock::DEFAULT_EVERY_BEATS))]
+    pub every_beats: Option<u64>,
     /// The isochronism curve: drive factors from..to (e.g. 0.5x..2x).
-    #[arg(long, value_name = "A..B")]
+    #[arg(long, value_name = "A..B", allow_hyphen_values = true)]
     pub drive_range: Option<String>,
     /// Points on the isochronism curve.
-    #[arg(long, value_name = "N", default_value_t = 7)]
-    pub steps: usize,
+    #[arg(long, value_name = "N", help = with_default("Points on the isochronism curve", clock::DEFAULT_STEPS))]
+    pub steps: Option<usize>,
     /// A long run of this length (e.g. 8days, 1year).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub duration: Option<String>,
@@ -1015,4 +991,10 @@ pub struct DesignArgs {
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
+}
+
+/// A flag's help with the library's default at its end, so the default is
+/// shown without the command line holding one.
+fn with_default(help: &str, default: impl std::fmt::Display) -> String {
+    format!("{help} [default: {default}]")
 }

@@ -20,7 +20,6 @@ use pendulum_theory::simulation;
 use pendulum_theory::{Amplitude, Pendulum};
 use pyo3::exceptions::{PyMemoryError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Seconds in a day.
@@ -447,242 +446,109 @@ fn fit_trajectory(
     }))
 }
 
-/// A clock's description as the Python package passes it: length, g,
-/// mass, q, escapement, lift angle, drive torque, drive energy, friction,
-/// recoil, impulse angle, beats between a free pendulum's impulses.
-type ClockArgs = (
-    f64,
-    f64,
-    f64,
-    f64,
-    String,
+/// A long run as the Python package passes it: duration, row interval,
+/// drive schedule (times, factors), rate schedule (times, s/day), force.
+type RunArgs = (
     f64,
     Option<f64>,
-    Option<f64>,
-    f64,
-    f64,
-    f64,
-    u64,
+    Option<(Vec<f64>, Vec<f64>)>,
+    Option<(Vec<f64>, Vec<f64>)>,
+    bool,
 );
 
-/// A clock from its description (see `pendulum_theory.clock`).
-fn make_clock(args: ClockArgs) -> PyResult<pendulum_theory::clock::Clock> {
-    let (
-        length,
+/// A long run's rows, column by column.
+#[derive(Default)]
+struct Columns([Vec<f64>; 6]);
+
+impl pendulum_theory::clock::analysis::RunSink for Columns {
+    fn row(&mut self, r: &pendulum_theory::clock::long_run::Row) -> bool {
+        let values = [
+            r.time,
+            r.beats as f64,
+            r.amplitude,
+            r.rate,
+            r.time_error,
+            r.drive,
+        ];
+        for (c, v) in self.0.iter_mut().zip(values) {
+            c.push(v);
+        }
+        true
+    }
+}
+
+/// The clock analysis (the CLI's `clock`): its JSON, and a long run's
+/// rows (time_s, beats, amplitude_rad, rate_s_per_day, time_error_s,
+/// drive_factor) when one was asked for. `None` is the library's default.
+#[pyfunction]
+#[pyo3(signature = (length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, drive_factor, drive_range, steps, run))]
+#[allow(clippy::too_many_arguments)]
+fn clock<'py>(
+    py: Python<'py>,
+    length: f64,
+    g: Option<f64>,
+    mass: Option<f64>,
+    q: Option<f64>,
+    escapement: Option<String>,
+    lift_angle: Option<f64>,
+    drive_torque: Option<f64>,
+    drive_energy: Option<f64>,
+    friction: Option<f64>,
+    recoil: Option<f64>,
+    impulse_angle: Option<f64>,
+    every_beats: Option<i64>,
+    drive_factor: Option<Vec<f64>>,
+    drive_range: Option<(f64, f64)>,
+    steps: Option<usize>,
+    run: Option<RunArgs>,
+) -> PyResult<(String, Option<Vec<Array1<'py>>>)> {
+    use pendulum_theory::clock::analysis::{
+        analyse, drive_of, escapement_named, ClockInput, ClockPendulum, DriveFactors, RunInput,
+        Schedule,
+    };
+    let refused = |r: Refusal| PyValueError::new_err(r.to_string());
+    let schedule =
+        |s: Option<(Vec<f64>, Vec<f64>)>| s.map(|(time, value)| Schedule { time, value });
+    let isochronism = match (drive_factor, drive_range) {
+        (Some(f), _) => Some(DriveFactors::List(f)),
+        (None, Some((from, to))) => Some(DriveFactors::Range { from, to, steps }),
+        (None, None) => None,
+    };
+    let input = ClockInput {
+        pendulum: ClockPendulum::Length(length),
         g,
         mass,
         q,
-        escapement,
+        escapement: escapement
+            .as_deref()
+            .map(escapement_named)
+            .transpose()
+            .map_err(refused)?,
         lift_angle,
-        drive_torque,
-        drive_energy,
+        drive: drive_of(drive_torque, drive_energy).map_err(refused)?,
         friction,
         recoil,
         impulse_angle,
-        every_beats,
-    ) = args;
-    let escapement = escapement.as_str();
-    use pendulum_theory::clock::escapement::spec::{Drive, Kind, Spec};
-    let error = |e: &dyn std::fmt::Display| PyValueError::new_err(e.to_string());
-    let pendulum = Pendulum::new(length, g).map_err(|e| error(&e))?;
-    if !(mass > 0.0 && mass.is_finite()) {
-        return Err(PyValueError::new_err(format!(
-            "mass: must be positive, got {mass} kg"
-        )));
-    }
-    if !(q > 0.5 && q.is_finite()) {
-        return Err(PyValueError::new_err(format!(
-            "q: must exceed 0.5 (an underdamped pendulum), got {q}"
-        )));
-    }
-    let kind = Kind::from_name(escapement).ok_or_else(|| {
-        PyValueError::new_err(format!(
-            "escapement: '{escapement}' is not one of impulse, deadbeat, recoil, constant-force, free"
-        ))
-    })?;
-    let drive = match (drive_torque, drive_energy) {
-        (Some(t), None) => Drive::Torque(t),
-        (None, Some(e)) => Drive::Energy(e),
-        _ => {
-            return Err(PyValueError::new_err(
-                "drive: give drive_torque (N m) or drive_energy (J per beat), one of them",
-            ))
-        }
+        // A negative count is refused as none.
+        every_beats: every_beats.map(|n| u64::try_from(n).unwrap_or(0)),
+        isochronism,
+        run: run.map(|(duration, every, drive, rate, force)| RunInput {
+            duration,
+            every,
+            drive_schedule: schedule(drive),
+            weather: None,
+            rate_schedule: schedule(rate),
+            force,
+        }),
     };
-    let scale = mass * g * length;
-    let spec = Spec {
-        kind,
-        lift: lift_angle,
-        drive,
-        friction,
-        recoil,
-        angle: impulse_angle,
-        every: every_beats,
-    };
-    Ok(pendulum_theory::clock::Clock {
-        pendulum,
-        q,
-        escapement: spec.build(scale).map_err(|e| error(&e))?,
-        torque_scale: scale,
-    })
-}
-
-/// The steady states of a clock at each drive factor (the CLI's `clock`
-/// and its isochronism curve): one dict per factor with the CLI's keys, or
-/// `{"drive_factor": f, "stops": True}`.
-#[pyfunction]
-fn clock_steady<'py>(
-    py: Python<'py>,
-    spec: ClockArgs,
-    factors: Vec<f64>,
-) -> PyResult<Vec<Bound<'py, PyDict>>> {
-    use pendulum_theory::clock::{ClockError, HalfSwingMethod};
-    let clock = make_clock(spec)?;
-    let results: Vec<_> = py.detach(|| {
-        factors
-            .iter()
-            .map(|&f| clock.steady(HalfSwingMethod::Direct, f))
-            .collect()
-    });
-    let mut out = Vec::new();
-    for (f, r) in factors.iter().zip(results) {
-        let d = PyDict::new(py);
-        d.set_item("drive_factor", *f)?;
-        match r {
-            Ok(s) => {
-                d.set_item("stops", false)?;
-                d.set_item("amplitude_rad", s.amplitude)?;
-                d.set_item("period_s", s.period)?;
-                d.set_item("free_period_s", s.free_period)?;
-                d.set_item("small_angle_period_s", s.small_angle_period)?;
-                d.set_item("rate_s_per_day", s.rate)?;
-                d.set_item("circular_rate_s_per_day", s.circular_rate)?;
-                d.set_item("circular_error_s_per_day", -s.circular_rate)?;
-                d.set_item("escapement_rate_s_per_day", s.escapement_rate)?;
-                d.set_item(
-                    "escapement_rate_airy_s_per_day",
-                    s.escapement_rate_first_order,
-                )?;
-                d.set_item("energy_per_beat_j", s.energy_per_beat)?;
-                d.set_item("power_w", s.power)?;
-            }
-            // One drive that stops the clock is an error; on a curve, a point.
-            Err(e @ ClockError::Stops { .. }) if factors.len() == 1 => {
-                return Err(PyValueError::new_err(format!("drive: {e}")))
-            }
-            Err(ClockError::Stops { .. }) => d.set_item("stops", true)?,
-            Err(e) => return Err(PyValueError::new_err(format!("drive: {e}"))),
-        }
-        out.push(d);
-    }
-    Ok(out)
-}
-
-/// A long run of a clock (the CLI's `clock --duration`): rows at every
-/// turning point or every `every` s, the drive factor from a schedule
-/// (times, factors; linear between, held beyond) and a rate change from
-/// outside (times, s/day: a temperature or pressure coefficient times the
-/// change), against the clock as regulated at the start.
-#[pyfunction]
-#[pyo3(signature = (spec, duration, every, schedule_time, schedule_factor, rate_time, rate_change, force))]
-#[allow(clippy::type_complexity, clippy::too_many_arguments)]
-fn clock_run<'py>(
-    py: Python<'py>,
-    spec: ClockArgs,
-    duration: f64,
-    every: Option<f64>,
-    schedule_time: Vec<f64>,
-    schedule_factor: Vec<f64>,
-    rate_time: Vec<f64>,
-    rate_change: Vec<f64>,
-    force: bool,
-) -> PyResult<(Vec<Array1<'py>>, Bound<'py, PyDict>)> {
-    use pendulum_theory::clock::long_run::{period_factor, piecewise_linear, run, LongRun};
-    use pendulum_theory::clock::plan::{check_schedule, plan_run, MAX_RATE_S_PER_DAY};
-    use pendulum_theory::clock::HalfSwingMethod;
-    let clock = make_clock(spec)?;
-    let refused = |r: Refusal| PyValueError::new_err(r.to_string());
-    check_schedule(
-        "drive_schedule",
-        &schedule_time,
-        &schedule_factor,
-        0.0..=f64::MAX,
-        "a drive factor of at least 0",
-    )
-    .map_err(refused)?;
-    check_schedule(
-        "rate_schedule",
-        &rate_time,
-        &rate_change,
-        -MAX_RATE_S_PER_DAY..=MAX_RATE_S_PER_DAY,
-        "a rate change within a day per day (86400 s/day)",
-    )
-    .map_err(refused)?;
-    let drive = |t: f64| piecewise_linear(&schedule_time, &schedule_factor, t);
-    let stretch = |t: f64| {
-        if rate_time.is_empty() {
-            1.0
-        } else {
-            period_factor(piecewise_linear(&rate_time, &rate_change, t))
-        }
-    };
-    let start = clock
-        .steady(HalfSwingMethod::Averaged, drive(0.0))
-        .map_err(|e| PyValueError::new_err(format!("drive: {e}")))?;
-    plan_run(&clock, start.period, duration, every, force).map_err(refused)?;
-    let mut columns: [Vec<f64>; 6] = Default::default();
-    let finish = py.detach(|| {
-        run(
-            &clock,
-            &drive,
-            &stretch,
-            &LongRun::from_steady(&start, duration, every),
-            &mut |r| {
-                for (c, v) in columns.iter_mut().zip([
-                    r.time,
-                    r.beats as f64,
-                    r.amplitude,
-                    r.rate,
-                    r.time_error,
-                    r.drive,
-                ]) {
-                    c.push(v);
-                }
-                true
-            },
-        )
-    });
-    match finish.ending {
-        pendulum_theory::clock::long_run::Ending::OverTheTop => {
-            return Err(PyValueError::new_err(format!(
-                "drive_schedule: {} days into the run the drive ({} × the given) carries the \
-                 pendulum over the top; give less drive",
-                finish.last.time / 86_400.0,
-                finish.last.drive
-            )))
-        }
-        pendulum_theory::clock::long_run::Ending::RateOutOfRange => {
-            return Err(PyValueError::new_err(format!(
-                "rate_schedule: {} days into the run the rate moves by a day per day or more: \
-                 no clock runs so",
-                finish.last.time / 86_400.0
-            )))
-        }
-        _ => {}
-    }
-    let summary = PyDict::new(py);
-    summary.set_item("duration_s", finish.last.time)?;
-    summary.set_item("beats", finish.last.beats)?;
-    summary.set_item("final_amplitude_rad", finish.last.amplitude)?;
-    summary.set_item("final_rate_s_per_day", finish.last.rate)?;
-    summary.set_item("time_error_s", finish.last.time_error)?;
-    summary.set_item("stopped", finish.stopped)?;
-    summary.set_item("ending", finish.ending.name())?;
-    summary.set_item("nominal_period_s", start.period)?;
-    Ok((
-        columns.into_iter().map(|c| c.into_pyarray(py)).collect(),
-        summary,
-    ))
+    let mut rows = Columns::default();
+    let result = py.detach(|| analyse(&input, &mut rows));
+    let text = answer(result)?;
+    let columns = input
+        .run
+        .is_some()
+        .then(|| rows.0.into_iter().map(|c| c.into_pyarray(py)).collect());
+    Ok((text, columns))
 }
 
 /// The extension module behind the `pendulum_theory` package.
@@ -704,7 +570,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fit_decay, m)?)?;
     m.add_function(wrap_pyfunction!(fit_beats, m)?)?;
     m.add_function(wrap_pyfunction!(fit_trajectory, m)?)?;
-    m.add_function(wrap_pyfunction!(clock_steady, m)?)?;
-    m.add_function(wrap_pyfunction!(clock_run, m)?)?;
+    m.add_function(wrap_pyfunction!(clock, m)?)?;
     Ok(())
 }

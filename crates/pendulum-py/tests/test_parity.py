@@ -77,8 +77,10 @@ def check(cli_args, call, reader_refuses=False):
             return "refused"
         keyword, sentence = split_refusal(refused)
         assert line.endswith(sentence), (line, refused)
-        if keyword is not None and keyword not in FLAG and "[" not in refused.split(":")[0]:
-            assert line.startswith(f"error: --{keyword.replace('_', '-')}:"), (line, refused)
+        if keyword is not None and "[" not in refused.split(":")[0]:
+            flag = FLAG.get(keyword, f"--{keyword.replace('_', '-')}")
+            if flag.startswith("--"):
+                assert line.startswith(f"error: {flag}:"), (line, refused)
         return "refused"
     assert out.returncode == 0, (cli_args, out.stderr)
     cli = json.loads(out.stdout)
@@ -381,7 +383,7 @@ def test_simulate_rates_gain_positive():
     ({"duration": 1e11, "every": 86400.0}, "between 0 and 300 years"),
     ({"duration": 86400.0, "every": 3600.0, "rate_schedule": ([0.0, 86400.0], [0.0, 1e300])},
      "within a day per day"),
-    ({"duration": 86400.0, "every": 3600.0, "drive_schedule": ([0.0, 86400.0], [1.0, INF])},
+    ({"duration": 86400.0, "every": 3600.0, "drive_schedule": ([0.0, 86400.0], [1.0, -1.0])},
      "at least 0"),
 ])
 def test_clock_run_refuses_what_the_binary_refuses(kw, sentence):
@@ -400,3 +402,161 @@ def test_the_binary_refuses_the_same_runs(args, sentence):
     out = subprocess.run([str(binary()), "clock", "--length", "0.99362m", "--drive", "0.5mJ",
                           *args], capture_output=True, text=True)
     assert out.returncode == 2 and out.stdout == "" and sentence in out.stderr, out.stderr
+
+
+# --- clock: steady state, isochronism, long run ----------------------------
+
+#: The binary's flag and unit for each of Python's clock keywords.
+CLOCK_FLAGS = {"drive_energy": ("--drive", "J"), "drive_torque": ("--drive", "Nm"),
+               "q": ("--q", ""), "escapement": ("--escapement", ""),
+               "lift_angle": ("--lift-angle", "rad"), "mass": ("--mass", "kg"),
+               "friction": ("--friction", ""), "recoil": ("--recoil", ""),
+               "impulse_angle": ("--impulse-angle", "rad"), "every_beats": ("--every-beats", ""),
+               "g": ("--g", ""), "steps": ("--steps", ""), "duration": ("--duration", "s"),
+               "every": ("--every", "s")}
+FLAG.update({"drive_schedule": "--drive-file"})
+
+SECONDS = 0.99362
+
+
+def clock_args(length, kw, tmp_path):
+    args = ["clock", "--length", cli_value(length, "m"), "--json"]
+    for k, v in kw.items():
+        if k == "drive_range":
+            args += ["--drive-range", f"{v[0]!r}x..{v[1]!r}x"]
+        elif k == "drive_schedule":
+            path = tmp_path / "drive.csv"
+            write_csv(path, ["time_s", "drive_factor"], v)
+            args += ["--drive-file", str(path)]
+        elif k == "force":
+            args += ["--force"] if v else []
+        else:
+            flag, unit = CLOCK_FLAGS[k]
+            args += [flag, cli_value(v, unit)]
+    return args
+
+
+CLOCK = {
+    "deadbeat": {"drive_energy": 2e-5},
+    "deadbeat_torque": {"drive_torque": 2e-4},
+    "recoil": {"drive_energy": 2e-5, "escapement": "recoil"},
+    "recoil_torque": {"drive_torque": 2e-4, "escapement": "recoil"},
+    "recoil_half": {"drive_energy": 2e-5, "escapement": "recoil", "recoil": 0.5},
+    "impulse": {"drive_energy": 2e-5, "escapement": "impulse"},
+    "impulse_early": {"drive_energy": 2e-5, "escapement": "impulse", "impulse_angle": 0.02},
+    "free": {"drive_energy": 5e-4, "escapement": "free", "every_beats": 30},
+    "free_every_5": {"drive_energy": 1e-4, "escapement": "free", "every_beats": 5},
+    "constant_force": {"drive_energy": 2e-5, "escapement": "constant-force"},
+    "low_q": {"drive_energy": 2e-4, "q": 300.0},
+    "high_q": {"drive_energy": 1e-6, "q": 1e6},
+    "heavy_bob": {"drive_energy": 2e-5, "mass": 10.0},
+    "small_lift": {"drive_energy": 2e-5, "lift_angle": math.radians(1.0)},
+    "no_friction": {"drive_energy": 2e-5, "friction": 0.0},
+    "lunar_g": {"drive_energy": 2e-5, "g": 1.62},
+    "q_half": {"drive_energy": 2e-5, "q": 0.5},
+    "q_nan": {"drive_energy": 2e-5, "q": NAN},
+    "mass_negative": {"drive_energy": 2e-5, "mass": -1.0},
+    "stops": {"drive_energy": 1e-9},
+    "over_the_top": {"drive_energy": 50.0},
+    "lift_zero": {"drive_energy": 2e-5, "lift_angle": 0.0},
+    "friction_negative": {"drive_energy": 2e-5, "friction": -1.0},
+    "impulse_by_torque": {"drive_torque": 2e-4, "escapement": "impulse"},
+    "every_beats_zero": {"drive_energy": 5e-4, "escapement": "free", "every_beats": 0},
+    "impulse_angle_past_170": {"drive_energy": 2e-5, "impulse_angle": 3.0},
+    "drive_negative": {"drive_energy": -2e-5},
+    "g_nan": {"drive_energy": 2e-5, "g": NAN},
+}
+
+
+@pytest.mark.parametrize("name", sorted(CLOCK))
+def test_clock_steady(name, tmp_path):
+    kw = CLOCK[name]
+    check(clock_args(SECONDS, kw, tmp_path), lambda: pt.clock(SECONDS, **kw))
+
+
+def test_a_length_of_zero_is_refused_alike(tmp_path):
+    check(clock_args(0.0, {"drive_energy": 2e-5}, tmp_path),
+          lambda: pt.clock(0.0, drive_energy=2e-5))
+
+
+ISOCHRONISM = {
+    "deadbeat": {"drive_range": (0.5, 2.0)},
+    "deadbeat_steps_2": {"drive_range": (0.5, 2.0), "steps": 2},
+    "deadbeat_steps_15": {"drive_range": (0.8, 1.25), "steps": 15},
+    "recoil": {"drive_range": (0.5, 2.0), "escapement": "recoil"},
+    "recoil_torque": {"drive_range": (0.5, 4.0), "escapement": "recoil", "drive_torque": 2e-4,
+                      "drive_energy": None},
+    "impulse": {"drive_range": (0.25, 4.0), "escapement": "impulse"},
+    "constant_force": {"drive_range": (0.5, 2.0), "escapement": "constant-force"},
+    "free": {"drive_range": (0.5, 2.0), "escapement": "free", "drive_energy": 5e-4},
+    "with_stops": {"drive_range": (0.01, 1.0), "steps": 5},
+    "low_q": {"drive_range": (0.5, 2.0), "q": 300.0, "drive_energy": 2e-4},
+    "narrow": {"drive_range": (0.999, 1.001), "steps": 3},
+    "wide": {"drive_range": (0.1, 10.0), "steps": 9},
+    "heavy": {"drive_range": (0.5, 2.0), "mass": 20.0},
+    "reversed": {"drive_range": (2.0, 0.5)},
+    "equal": {"drive_range": (1.0, 1.0)},
+    "negative": {"drive_range": (-1.0, 2.0)},
+    "nan": {"drive_range": (NAN, 2.0)},
+    "infinite": {"drive_range": (0.5, INF)},
+    "steps_one": {"drive_range": (0.5, 2.0), "steps": 1},
+    "steps_too_many": {"drive_range": (0.5, 2.0), "steps": 1001},
+    "over_the_top": {"drive_range": (1.0, 1e7), "steps": 3},
+    "stops_at_the_drive": {"drive_range": (0.5, 2.0), "drive_energy": 1e-9},
+}
+
+
+@pytest.mark.parametrize("name", sorted(ISOCHRONISM))
+def test_clock_isochronism(name, tmp_path):
+    kw = {k: v for k, v in {"drive_energy": 2e-5, **ISOCHRONISM[name]}.items() if v is not None}
+    check(clock_args(SECONDS, kw, tmp_path), lambda: pt.clock(SECONDS, **kw))
+
+
+DAY = 86400.0
+RUNS = {
+    "every_turning_point": {"duration": 600.0},
+    "a_day_hourly": {"duration": DAY, "every": 3600.0},
+    "a_week_hourly": {"duration": 7 * DAY, "every": 3600.0},
+    "a_year_daily": {"duration": 365.25 * DAY, "every": DAY},
+    "recoil_week": {"duration": 7 * DAY, "every": 3600.0, "escapement": "recoil"},
+    "free_day": {"duration": DAY, "every": 600.0, "escapement": "free", "drive_energy": 5e-4},
+    "running_down": {"duration": 8 * DAY, "every": 3600.0,
+                     "drive_schedule": ([0.0, 8 * DAY], [1.0, 0.7])},
+    "stops_on_the_way": {"duration": 8 * DAY, "every": 3600.0,
+                         "drive_schedule": ([0.0, 2 * DAY], [1.0, 0.0])},
+    "a_step_up": {"duration": 2 * DAY, "every": 3600.0,
+                  "drive_schedule": ([0.0, DAY, DAY + 1], [1.0, 1.0, 1.5])},
+    "held_beyond": {"duration": 3 * DAY, "every": 3600.0,
+                    "drive_schedule": ([DAY], [1.2])},
+    "low_q": {"duration": DAY, "every": 3600.0, "q": 300.0, "drive_energy": 2e-4},
+    "forced": {"duration": 10 * DAY, "force": True},
+    "three_years_unforced": {"duration": 3 * 365.25 * DAY},
+    "four_years": {"duration": 4 * 365.25 * DAY},
+    "every_inf": {"duration": DAY, "every": INF},
+    "every_nan": {"duration": DAY, "every": NAN},
+    "every_below_a_period": {"duration": DAY, "every": 0.5},
+    "too_long": {"duration": 1e11, "every": DAY},
+    "duration_zero": {"duration": 0.0},
+    "duration_negative": {"duration": -1.0},
+    "drive_factor_negative": {"duration": DAY, "every": 3600.0,
+                              "drive_schedule": ([0.0, DAY], [1.0, -0.5])},
+    "drive_factor_inf": {"duration": DAY, "every": 3600.0,
+                         "drive_schedule": ([0.0, DAY], [1.0, INF])},
+    "unsorted_schedule": {"duration": DAY, "every": 3600.0,
+                          "drive_schedule": ([0.0, DAY, 100.0], [1.0, 1.0, 1.0])},
+    "over_the_top_later": {"duration": 4 * DAY, "every": 3600.0,
+                           "drive_schedule": ([0.0, DAY, 2 * DAY], [1.0, 1.0, 1e7])},
+    "no_drive_at_the_start": {"duration": DAY, "every": 3600.0,
+                              "drive_schedule": ([0.0, DAY], [0.0, 1.0])},
+}
+
+
+@pytest.mark.parametrize("name", sorted(RUNS))
+def test_clock_long_run(name, tmp_path):
+    kw = {"drive_energy": 2e-5, **RUNS[name]}
+    args = clock_args(SECONDS, kw, tmp_path)
+    duration = kw.pop("duration")
+
+    def call():
+        return pt.clock_run(SECONDS, duration, **kw)[1]
+    check(args, call)

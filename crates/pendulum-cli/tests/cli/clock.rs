@@ -258,7 +258,7 @@ fn a_warm_spell() {
         ],
         "--drive-file",
     );
-    assert!(e.contains("need --design"), "{e}");
+    assert!(e.contains("need a design"), "{e}");
 }
 
 /// `simulate --method averaged`: the same turning points as the

@@ -274,12 +274,18 @@ def fit_beats(time, *, bph=None, period=None):
     return FitResult(d, {k: d[k] for k in keys}, {}, None)
 
 
-def _clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
-                friction, recoil, impulse_angle, every_beats):
-    return (float(length), float(g), float(mass), float(q), str(escapement), float(lift_angle),
-            None if drive_torque is None else float(drive_torque),
-            None if drive_energy is None else float(drive_energy),
-            float(friction), float(recoil), float(impulse_angle), int(every_beats))
+def _clock(length, *, drive_energy=None, drive_torque=None, q=None, escapement=None,
+           lift_angle=None, mass=None, friction=None, recoil=None, impulse_angle=None,
+           every_beats=None, g=None, drive_factor=None, drive_range=None, steps=None, run=None):
+    factors = None if drive_factor is None else [
+        float(f) for f in _np.atleast_1d(_np.asarray(drive_factor, dtype=_np.float64)).ravel()]
+    span = None if drive_range is None else (float(drive_range[0]), float(drive_range[1]))
+    text, columns = _native.clock(
+        float(length), _number(g), _number(mass), _number(q), _text(escapement),
+        _number(lift_angle), _number(drive_torque), _number(drive_energy), _number(friction),
+        _number(recoil), _number(impulse_angle), None if every_beats is None else int(every_beats),
+        factors, span, None if steps is None else int(steps), run)
+    return _json.loads(text), columns
 
 
 def clock(
@@ -287,87 +293,60 @@ def clock(
     *,
     drive_energy=None,
     drive_torque=None,
-    q=10_000.0,
-    escapement="deadbeat",
-    lift_angle=_np.radians(2.0),
-    mass=5.0,
-    friction=0.15,
-    recoil=1.0,
-    impulse_angle=0.0,
-    every_beats=30,
-    g=STANDARD_GRAVITY,
-    drive_factor=1.0,
+    q=None,
+    escapement=None,
+    lift_angle=None,
+    mass=None,
+    friction=None,
+    recoil=None,
+    impulse_angle=None,
+    every_beats=None,
+    g=None,
+    drive_factor=None,
+    drive_range=None,
+    steps=None,
 ):
-    """The steady state of a pendulum kept going by an escapement (the
-    CLI's ``clock``): ``escapement`` is impulse, deadbeat, recoil,
+    """A pendulum kept going by an escapement (the CLI's ``clock``, the
+    same library call): ``escapement`` is impulse, deadbeat, recoil,
     constant-force or free; the drive is ``drive_energy`` (J per beat) or
-    ``drive_torque`` (N m at the pallets); angles in radians. Returns a
-    dict with the CLI's keys (amplitude_rad, period_s, free_period_s,
-    small_angle_period_s, rate_s_per_day, circular_rate_s_per_day,
-    circular_error_s_per_day, escapement_rate_s_per_day,
-    escapement_rate_airy_s_per_day, energy_per_beat_j, power_w). With an
-    array of ``drive_factor`` values: the isochronism curve, a dict of
-    arrays (NaN where the pendulum stops, and a boolean ``stops``). A single
-    drive too weak raises ValueError ("the pendulum stops: ...")."""
-    factors = _np.atleast_1d(_np.asarray(drive_factor, dtype=_np.float64))
-    rows = _native.clock_steady(
-        _clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
-                     friction, recoil, impulse_angle, every_beats),
-        [float(f) for f in factors.ravel()],
-    )
-    if _np.ndim(drive_factor) == 0:
-        return rows[0]
-    running = next((r for r in rows if not r["stops"]), {})
-    keys = [k for k in running if k not in ("stops", "drive_factor")]
-    out = {"drive_factor": factors.reshape(_np.shape(drive_factor)),
-           "stops": _np.array([r["stops"] for r in rows]).reshape(_np.shape(drive_factor))}
-    for k in keys:
-        out[k] = _np.array([r.get(k, _np.nan) for r in rows]).reshape(_np.shape(drive_factor))
-    return out
+    ``drive_torque`` (N m at the pallets); angles in radians; a keyword
+    left out is the library's default (``pendulum clock --help`` lists
+    them). Returns the command's ``--json`` object as a dict: the clock
+    (escapement, q, length_m, mass_kg, lift_angle_rad, the drive,
+    minimum_drive_factor), ``steady`` (amplitude_rad, period_s, rate_s_per_day,
+    its circular and escapement parts, energy_per_beat_j, power_w, ...)
+    and, with ``drive_factor`` (factors) or ``drive_range=(a, b)`` and
+    ``steps``, ``isochronism``: one dict per factor, ``stops`` where the
+    pendulum stops. A drive too weak raises ValueError ("the pendulum
+    stops: ...")."""
+    result, _ = _clock(length, drive_energy=drive_energy, drive_torque=drive_torque, q=q,
+                       escapement=escapement, lift_angle=lift_angle, mass=mass, friction=friction,
+                       recoil=recoil, impulse_angle=impulse_angle, every_beats=every_beats, g=g,
+                       drive_factor=drive_factor, drive_range=drive_range, steps=steps)
+    return result
 
 
-def clock_run(
-    length,
-    duration,
-    *,
-    every=None,
-    drive_schedule=None,
-    rate_schedule=None,
-    drive_energy=None,
-    drive_torque=None,
-    q=10_000.0,
-    escapement="deadbeat",
-    lift_angle=_np.radians(2.0),
-    mass=5.0,
-    friction=0.15,
-    recoil=1.0,
-    impulse_angle=0.0,
-    every_beats=30,
-    g=STANDARD_GRAVITY,
-    force=False,
-):
+def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedule=None,
+              force=False, **clock_keywords):
     """A long run of the clock (the CLI's ``clock --duration``), started in
     its steady state and regulated to it: a row at every turning point, or
     every ``every`` s (then many beats per step: a year in a fraction of a
-    second). ``drive_schedule`` is ``(times_s, factors)``, linear between,
+    second); ``clock_keywords`` are those of :func:`clock` (the drive, the
+    escapement, ...). ``drive_schedule`` is ``(times_s, factors)``, linear between,
     held beyond. ``rate_schedule`` is ``(times_s, rate_change_s_per_day)``,
     a change of rate from outside (positive: gaining), as the CLI's drive
-    file makes from temperature and pressure: for a coefficient of -0.5
-    s/day per °C and a 10 °C warm spell, ``([0, 86400, 86401], [0, 0,
-    -5])``. Returns a dict of arrays (time_s, beats, amplitude_rad,
-    rate_s_per_day, time_error_s, drive_factor) and a summary dict."""
+    file makes from temperature and pressure with a design: for a
+    coefficient of -0.5 s/day per °C and a 10 °C warm spell, ``([0, 86400,
+    86401], [0, 0, -5])``. Returns a dict of arrays (time_s, beats,
+    amplitude_rad, rate_s_per_day, time_error_s, drive_factor) and the
+    command's ``--json`` object (its ``long_run`` the run's summary)."""
     def pairs(schedule):
         if schedule is None:
-            return [], []
+            return None
         return [float(x) for x in schedule[0]], [float(x) for x in schedule[1]]
 
-    times, factors = pairs(drive_schedule)
-    rate_times, rates = pairs(rate_schedule)
-    columns, summary = _native.clock_run(
-        _clock_args(length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy,
-                     friction, recoil, impulse_angle, every_beats),
-        float(duration), None if every is None else float(every), times, factors,
-        rate_times, rates, bool(force),
-    )
+    run = (float(duration), _number(every), pairs(drive_schedule), pairs(rate_schedule),
+           bool(force))
+    result, columns = _clock(length, run=run, **clock_keywords)
     names = ["time_s", "beats", "amplitude_rad", "rate_s_per_day", "time_error_s", "drive_factor"]
-    return dict(zip(names, columns)), summary
+    return dict(zip(names, columns)), result

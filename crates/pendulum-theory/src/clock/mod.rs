@@ -15,6 +15,7 @@
 //! [`airy::time_shift`] predicts to first order.
 
 pub mod airy;
+pub mod analysis;
 pub mod averaged;
 pub mod direct;
 pub mod escapement;

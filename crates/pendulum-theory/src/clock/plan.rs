@@ -5,7 +5,7 @@
 //! can start a run the other would refuse.
 
 use super::Clock;
-use crate::analysis::{judge_work, require_finite, Refusal};
+use crate::analysis::{judge_work, require_finite, require_finite_sample, Refusal};
 use crate::error::format_significant;
 
 /// The longest run, s (about 300 years).
@@ -105,7 +105,7 @@ pub fn plan_run(
 
 /// Checks a schedule `field` of `values` at `times` (s): one of each,
 /// times finite and increasing, values finite and within `range`
-/// (described as `what`).
+/// (described as `what`); a refusal names the sample at fault.
 pub fn check_schedule(
     field: &'static str,
     times: &[f64],
@@ -125,15 +125,18 @@ pub fn check_schedule(
     }
     for (i, (&t, &v)) in times.iter().zip(values).enumerate() {
         if !t.is_finite() || (i > 0 && t <= times[i - 1]) {
-            return Err(Refusal::field(
+            return Err(Refusal::sample(
                 field,
-                format!("time {} must be finite and after the one before", i + 1),
+                i,
+                "its time must be finite and after the one before (sort by time)",
             ));
         }
-        if !(v.is_finite() && range.contains(&v)) {
-            return Err(Refusal::field(
+        require_finite_sample(field, i, v)?;
+        if !range.contains(&v) {
+            return Err(Refusal::sample(
                 field,
-                format!("value {} must be {what}", i + 1),
+                i,
+                format!("must be {what}, got {}", format_significant(v, 6)),
             ));
         }
     }

@@ -1,0 +1,846 @@
+//! A clock as one analysis: a pendulum described as a clockmaker would
+//! (its length or design, its mass, Q, the escapement by name, the lift,
+//! the drive), its steady state, its isochronism curve and a long run,
+//! checked, computed and returned as one result. The command line's
+//! `clock` and Python's `clock` and `clock_run` are this call; the
+//! defaults, the ranges, the `m g l` scale of the escapement's torques and
+//! the weather's effect on the rate live here and nowhere else.
+
+use super::escapement::spec::{Drive, Kind, Spec};
+use super::long_run::{period_factor, piecewise_linear, run, Ending, LongRun, Row};
+use super::plan::{check_schedule, plan_run, RunPlan, MAX_RATE_S_PER_DAY};
+use super::{Clock, ClockError, HalfSwingMethod, Steady};
+use crate::air::{PRESSURE_RANGE_PA, TEMPERATURE_RANGE_C};
+use crate::analysis::{require_finite, require_finite_sample, Refusal};
+use crate::compound::CompoundPendulum;
+use crate::error::format_significant;
+use crate::pendulum::{Pendulum, STANDARD_GRAVITY};
+use serde::Serialize;
+
+/// Quality factor of the free pendulum when none is given (a good
+/// regulator in air).
+pub const DEFAULT_Q: f64 = 10_000.0;
+/// Bob mass when neither a mass nor a design is given, kg.
+pub const DEFAULT_MASS_KG: f64 = 5.0;
+/// Lift angle when none is given, degrees (a regulator's deadbeat).
+pub const DEFAULT_LIFT_DEG: f64 = 2.0;
+/// Dead-face friction coefficient when none is given (steel on brass,
+/// oiled).
+pub const DEFAULT_FRICTION: f64 = 0.15;
+/// Recoil (pushing-back torque one lift past the lift, over the drive)
+/// when none is given.
+pub const DEFAULT_RECOIL: f64 = 1.0;
+/// Where the impulse falls before the bottom when not given, degrees.
+pub const DEFAULT_IMPULSE_ANGLE_DEG: f64 = 0.0;
+/// Beats between a free pendulum's impulses when none is given (Shortt's).
+pub const DEFAULT_EVERY_BEATS: u64 = 30;
+/// Points on an isochronism curve when none is given.
+pub const DEFAULT_STEPS: usize = 7;
+/// The points an isochronism curve may have.
+pub const STEPS_RANGE: std::ops::RangeInclusive<usize> = 2..=1000;
+/// The weather a clock is regulated in when a schedule gives no
+/// temperature or no pressure at its start: °C, Pa, relative humidity.
+pub const REFERENCE_WEATHER: (f64, f64, f64) = (20.0, 101_325.0, 0.5);
+
+/// The pendulum of a clock.
+#[derive(Clone, Debug)]
+pub enum ClockPendulum {
+    /// A simple pendulum of this length, m.
+    Length(f64),
+    /// A pendulum designed as parts (its equivalent length, effective mass
+    /// and temperature and pressure coefficients).
+    Design(CompoundPendulum),
+}
+
+/// Which drive factors an isochronism curve visits.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DriveFactors {
+    /// These factors.
+    List(Vec<f64>),
+    /// `steps` factors from `from` to `to` in geometric steps.
+    Range {
+        /// The smallest factor.
+        from: f64,
+        /// The largest factor.
+        to: f64,
+        /// How many (default [`DEFAULT_STEPS`]).
+        steps: Option<usize>,
+    },
+}
+
+/// A quantity that changes with time: `value[i]` at `time[i]` s, linear
+/// between, held beyond.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Schedule {
+    /// Times, s, increasing.
+    pub time: Vec<f64>,
+    /// Values.
+    pub value: Vec<f64>,
+}
+
+/// The weather through a long run, at times `time` s: temperature (°C)
+/// and pressure (Pa), either or both; the design's coefficients turn them
+/// into a rate change against the weather at the start.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Weather {
+    /// Times, s, increasing.
+    pub time: Vec<f64>,
+    /// Temperature, °C.
+    pub temperature_c: Option<Vec<f64>>,
+    /// Pressure, Pa.
+    pub pressure_pa: Option<Vec<f64>>,
+}
+
+/// A long run's request.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RunInput {
+    /// Simulated time, s.
+    pub duration: f64,
+    /// A row this often, s (default: every turning point).
+    pub every: Option<f64>,
+    /// The drive factor through the run (default 1 throughout).
+    pub drive_schedule: Option<Schedule>,
+    /// The weather (needs a design).
+    pub weather: Option<Weather>,
+    /// A rate change from outside, s/day, positive gaining.
+    pub rate_schedule: Option<Schedule>,
+    /// Run what is estimated beyond a few seconds of computing anyway.
+    pub force: bool,
+}
+
+/// A clock, described as a clockmaker would. Every `None` is the
+/// library's default.
+#[derive(Clone, Debug)]
+pub struct ClockInput {
+    /// The pendulum.
+    pub pendulum: ClockPendulum,
+    /// Gravity, m/s² (default standard gravity).
+    pub g: Option<f64>,
+    /// The bob's (effective) mass, kg (default: the design's effective
+    /// mass, else [`DEFAULT_MASS_KG`]).
+    pub mass: Option<f64>,
+    /// Quality factor of the free pendulum (default [`DEFAULT_Q`]).
+    pub q: Option<f64>,
+    /// The escapement (default the deadbeat).
+    pub escapement: Option<Kind>,
+    /// Lift angle, rad (default [`DEFAULT_LIFT_DEG`]).
+    pub lift_angle: Option<f64>,
+    /// The drive: a torque at the pallets or an energy per beat.
+    pub drive: Option<Drive>,
+    /// Dead-face friction (default [`DEFAULT_FRICTION`]).
+    pub friction: Option<f64>,
+    /// Recoil ratio (default [`DEFAULT_RECOIL`]).
+    pub recoil: Option<f64>,
+    /// Where the impulse falls before the bottom, rad (default
+    /// [`DEFAULT_IMPULSE_ANGLE_DEG`]).
+    pub impulse_angle: Option<f64>,
+    /// Free pendulum: beats between impulses (default
+    /// [`DEFAULT_EVERY_BEATS`]).
+    pub every_beats: Option<u64>,
+    /// The isochronism curve, if wanted.
+    pub isochronism: Option<DriveFactors>,
+    /// A long run, if wanted.
+    pub run: Option<RunInput>,
+}
+
+/// A steady state, with the units in its keys.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SteadyState {
+    /// The drive factor.
+    pub drive_factor: f64,
+    /// Amplitude, rad.
+    pub amplitude_rad: f64,
+    /// Amplitude, degrees.
+    pub amplitude_deg: f64,
+    /// The clock's period, s.
+    pub period_s: f64,
+    /// The free pendulum's exact period at that amplitude, s.
+    pub free_period_s: f64,
+    /// The small-angle period, s.
+    pub small_angle_period_s: f64,
+    /// Against a small-angle clock, s/day, positive gaining.
+    pub rate_s_per_day: f64,
+    /// The circular error's part of the rate, s/day (negative: it loses).
+    pub circular_rate_s_per_day: f64,
+    /// The circular error as `period` gives it: positive, lost.
+    pub circular_error_s_per_day: f64,
+    /// The escapement's part of the rate, s/day.
+    pub escapement_rate_s_per_day: f64,
+    /// The escapement's part by Airy's first-order integral, s/day.
+    pub escapement_rate_airy_s_per_day: f64,
+    /// Energy given per beat, J.
+    pub energy_per_beat_j: f64,
+    /// Mean power, W.
+    pub power_w: f64,
+}
+
+impl From<&Steady> for SteadyState {
+    fn from(s: &Steady) -> Self {
+        Self {
+            drive_factor: s.drive,
+            amplitude_rad: s.amplitude,
+            amplitude_deg: s.amplitude.to_degrees(),
+            period_s: s.period,
+            free_period_s: s.free_period,
+            small_angle_period_s: s.small_angle_period,
+            rate_s_per_day: s.rate,
+            circular_rate_s_per_day: s.circular_rate,
+            circular_error_s_per_day: -s.circular_rate,
+            escapement_rate_s_per_day: s.escapement_rate,
+            escapement_rate_airy_s_per_day: s.escapement_rate_first_order,
+            energy_per_beat_j: s.energy_per_beat,
+            power_w: s.power,
+        }
+    }
+}
+
+/// One point of an isochronism curve.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct IsochronismPoint {
+    /// The drive factor.
+    pub drive_factor: f64,
+    /// The steady state there; `None` where the pendulum stops.
+    #[serde(flatten)]
+    pub steady: Option<SteadyState>,
+    /// Whether the pendulum stops at this drive.
+    pub stops: bool,
+}
+
+/// How a long run went.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct RunSummary {
+    /// Time run, s (the last row's).
+    pub duration_s: f64,
+    /// Beats counted.
+    pub beats: u64,
+    /// Amplitude at the end, rad.
+    pub final_amplitude_rad: f64,
+    /// Rate at the end, s/day, positive gaining.
+    pub final_rate_s_per_day: f64,
+    /// Indicated less true time at the end, s.
+    pub time_error_s: f64,
+    /// Whether it stopped early.
+    pub stopped: bool,
+    /// Why it ended: duration, pendulum_stopped, interrupted.
+    pub ending: &'static str,
+    /// Half swings computed one by one.
+    pub half_swings_stepped: u64,
+    /// Steps of many beats.
+    pub multi_beat_steps: u64,
+    /// The period the clock was regulated to at the start, s.
+    pub nominal_period_s: f64,
+}
+
+/// A clock's analysis.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ClockResult {
+    /// The escapement's name.
+    pub escapement: &'static str,
+    /// Quality factor.
+    pub q: f64,
+    /// The (equivalent) length, m.
+    pub length_m: f64,
+    /// The (effective) mass, kg.
+    pub mass_kg: f64,
+    /// Lift angle, rad.
+    pub lift_angle_rad: f64,
+    /// The drive as a torque, N m, when so given.
+    pub drive_torque_n_m: Option<f64>,
+    /// The drive as an energy per beat, J, when so given.
+    pub drive_energy_j: Option<f64>,
+    /// The smallest drive factor that keeps it going.
+    pub minimum_drive_factor: f64,
+    /// The steady state at the drive given.
+    pub steady: SteadyState,
+    /// The isochronism curve, if asked for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub isochronism: Option<Vec<IsochronismPoint>>,
+    /// The long run, if asked for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub long_run: Option<RunSummary>,
+}
+
+/// What a long run tells its caller as it goes.
+pub trait RunSink {
+    /// The run is planned (`plan`); `false` stops it before it starts (a
+    /// disk too small for its rows).
+    fn begin(&mut self, _plan: &RunPlan) -> bool {
+        true
+    }
+    /// A row; `false` stops the run (Ctrl-C, a failed write).
+    fn row(&mut self, row: &Row) -> bool;
+    /// Whether to go on between the points of an isochronism curve.
+    fn proceed(&mut self) -> bool {
+        true
+    }
+}
+
+/// A sink that keeps nothing.
+pub struct NoRows;
+
+impl RunSink for NoRows {
+    fn row(&mut self, _row: &Row) -> bool {
+        true
+    }
+}
+
+/// A clock built from its description, with what the result reports of it.
+pub struct Built {
+    /// The clock.
+    pub clock: Clock,
+    /// The (effective) mass, kg.
+    pub mass: f64,
+    /// The lift angle, rad.
+    pub lift: f64,
+    /// The drive.
+    pub drive: Drive,
+    /// The design, when the pendulum is one.
+    pub design: Option<CompoundPendulum>,
+}
+
+/// Builds the clock: the pendulum at `g`, the mass, Q, and the escapement
+/// in units of `m g l` (for a design `M g d`).
+pub fn build(input: &ClockInput) -> Result<Built, Refusal> {
+    let g = require_finite("g", input.g.unwrap_or(STANDARD_GRAVITY))?;
+    let (length, field, design) = match &input.pendulum {
+        ClockPendulum::Length(l) => (require_finite("length", *l)?, "length", None),
+        ClockPendulum::Design(d) => (d.properties().equivalent_length, "design", Some(d.clone())),
+    };
+    let pendulum = Pendulum::new(length, g).map_err(|e| match e.quantity {
+        crate::error::Quantity::Gravity => Refusal::input("g", &e),
+        _ => Refusal::input(field, &e),
+    })?;
+    let mass = match (input.mass, &design) {
+        (Some(m), _) => {
+            let m = require_finite("mass", m)?;
+            if m <= 0.0 {
+                return Err(Refusal::field(
+                    "mass",
+                    format!("must be positive, got {} kg", format_significant(m, 6)),
+                ));
+            }
+            m
+        }
+        (None, Some(d)) => d.properties().effective_mass(),
+        (None, None) => DEFAULT_MASS_KG,
+    };
+    let q = require_finite("q", input.q.unwrap_or(DEFAULT_Q))?;
+    if q <= 0.5 {
+        return Err(Refusal::field(
+            "q",
+            format!(
+                "must exceed 0.5 (an underdamped pendulum), got {}",
+                format_significant(q, 6)
+            ),
+        ));
+    }
+    let drive = input.drive.ok_or_else(|| {
+        Refusal::field(
+            "drive",
+            "give the drive: a torque at the pallets (N m) or an energy per beat (J)",
+        )
+    })?;
+    let lift = input.lift_angle.unwrap_or(DEFAULT_LIFT_DEG.to_radians());
+    let spec = Spec {
+        kind: input.escapement.unwrap_or(Kind::Deadbeat),
+        lift,
+        drive,
+        friction: input.friction.unwrap_or(DEFAULT_FRICTION),
+        recoil: input.recoil.unwrap_or(DEFAULT_RECOIL),
+        angle: input
+            .impulse_angle
+            .unwrap_or(DEFAULT_IMPULSE_ANGLE_DEG.to_radians()),
+        every: input.every_beats.unwrap_or(DEFAULT_EVERY_BEATS),
+    };
+    let scale = mass * g * pendulum.length_m();
+    let escapement = spec
+        .build(scale)
+        .map_err(|e| Refusal::field(e.field, e.message))?;
+    Ok(Built {
+        clock: Clock {
+            pendulum,
+            q,
+            escapement,
+            torque_scale: scale,
+        },
+        mass,
+        lift,
+        drive,
+        design,
+    })
+}
+
+/// The escapement named `name` (`impulse`, `deadbeat`, `recoil`,
+/// `constant-force`, `free`).
+pub fn escapement_named(name: &str) -> Result<Kind, Refusal> {
+    Kind::from_name(name).ok_or_else(|| {
+        Refusal::field(
+            "escapement",
+            format!("'{name}' is not one of impulse, deadbeat, recoil, constant-force, free"),
+        )
+    })
+}
+
+/// The drive from a torque (N m) or an energy per beat (J), at most one
+/// of them given.
+pub fn drive_of(torque: Option<f64>, energy: Option<f64>) -> Result<Option<Drive>, Refusal> {
+    match (torque, energy) {
+        (Some(_), Some(_)) => Err(Refusal::field(
+            "drive",
+            "give a torque or an energy per beat, not both",
+        )),
+        (Some(t), None) => Ok(Some(Drive::Torque(t))),
+        (None, Some(e)) => Ok(Some(Drive::Energy(e))),
+        (None, None) => Ok(None),
+    }
+}
+
+/// A clock's failure to find a steady state, said of the input at fault
+/// (`drive` is the field the drive came from).
+pub fn refusal_of(e: ClockError, drive: &'static str) -> Refusal {
+    match e {
+        ClockError::Stops {
+            minimum_factor,
+            unlocking_deg,
+        } if minimum_factor.is_finite() => Refusal::field(
+            drive,
+            format!(
+                "the pendulum stops: drive below {} × the one given; it must carry the swing \
+                 past {}° to unlock the escapement",
+                format_significant(minimum_factor, 4),
+                format_significant(unlocking_deg, 4)
+            ),
+        ),
+        ClockError::Stops { unlocking_deg, .. } => Refusal::field(
+            drive,
+            format!(
+                "the pendulum stops: at the start there is no drive (its factor is 0) to carry \
+                 the swing past {}° and unlock the escapement",
+                format_significant(unlocking_deg, 4)
+            ),
+        ),
+        ClockError::OverTheTop => Refusal::field(drive, e.to_string()),
+        ClockError::Undamped => Refusal::field("q", e.to_string()),
+        ClockError::Integration(a) => Refusal::field(
+            drive,
+            format!(
+                "at a {}° swing the pendulum cannot complete a half swing: the escapement's \
+                 friction or recoil holds it, or it goes over the top; give less drive",
+                format_significant(a.to_degrees(), 4)
+            ),
+        ),
+    }
+}
+
+/// The factors of an isochronism curve, checked: positive and finite; a
+/// range increasing, in geometric steps (factors span a ratio).
+pub fn drive_factors(factors: &DriveFactors) -> Result<Vec<f64>, Refusal> {
+    match factors {
+        DriveFactors::List(list) => {
+            if list.is_empty() || list.len() > *STEPS_RANGE.end() {
+                return Err(Refusal::field(
+                    "drive_factor",
+                    format!("give 1 to {} factors", STEPS_RANGE.end()),
+                ));
+            }
+            for (i, &v) in list.iter().enumerate() {
+                if require_finite_sample("drive_factor", i, v)? <= 0.0 {
+                    return Err(Refusal::sample(
+                        "drive_factor",
+                        i,
+                        format!("must be positive, got {}", format_significant(v, 6)),
+                    ));
+                }
+            }
+            Ok(list.clone())
+        }
+        &DriveFactors::Range { from, to, steps } => {
+            for v in [from, to] {
+                if require_finite("drive_range", v)? <= 0.0 {
+                    return Err(Refusal::field(
+                        "drive_range",
+                        format!("factors must be positive, got {}", format_significant(v, 6)),
+                    ));
+                }
+            }
+            if from >= to {
+                return Err(Refusal::field(
+                    "drive_range",
+                    "the first factor must be the smaller",
+                ));
+            }
+            let steps = steps.unwrap_or(DEFAULT_STEPS);
+            if !STEPS_RANGE.contains(&steps) {
+                return Err(Refusal::field(
+                    "steps",
+                    format!(
+                        "must lie between {} and {}",
+                        STEPS_RANGE.start(),
+                        STEPS_RANGE.end()
+                    ),
+                ));
+            }
+            Ok((0..steps)
+                .map(|i| from * (to / from).powf(i as f64 / (steps - 1) as f64))
+                .collect())
+        }
+    }
+}
+
+/// Checks the weather's columns: one value per time, each within the range
+/// where the air's density is known (CIPM-2007).
+fn check_weather(w: &Weather) -> Result<(), Refusal> {
+    let (t, p) = (TEMPERATURE_RANGE_C, PRESSURE_RANGE_PA);
+    let columns = [
+        (
+            "temperature_c",
+            &w.temperature_c,
+            t,
+            1.0,
+            format!(
+                "{} to {} °C, where the air's density is known (CIPM-2007)",
+                t.0, t.1
+            ),
+        ),
+        (
+            "pressure",
+            &w.pressure_pa,
+            p,
+            100.0,
+            format!("{} to {} hPa", p.0 / 100.0, p.1 / 100.0),
+        ),
+    ];
+    for (name, column, range, per_unit, words) in columns {
+        let Some(values) = column else { continue };
+        check_schedule("weather", &w.time, values, f64::MIN..=f64::MAX, "a number")?;
+        if let Some(i) = values.iter().position(|v| !(range.0..=range.1).contains(v)) {
+            return Err(Refusal::sample(
+                name,
+                i,
+                format!(
+                    "{name} {} out of range ({words})",
+                    format_significant(values[i] / per_unit, 6)
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The rate change the weather makes, s/day, at each of its times,
+/// against its first row (where the clock was regulated), by the design's
+/// temperature coefficient and its barometric coefficient at the first
+/// row's weather.
+fn weather_rates(design: &CompoundPendulum, w: &Weather) -> Vec<f64> {
+    let first = |c: &Option<Vec<f64>>| c.as_ref().and_then(|v| v.first().copied());
+    let (t0, p0) = (
+        first(&w.temperature_c).unwrap_or(REFERENCE_WEATHER.0),
+        first(&w.pressure_pa).unwrap_or(REFERENCE_WEATHER.1),
+    );
+    let per_c = design.temperature_coefficient();
+    let per_pa = design.pressure_coefficient(p0, t0, REFERENCE_WEATHER.2) / 100.0;
+    (0..w.time.len())
+        .map(|i| {
+            let at = |c: &Option<Vec<f64>>, c0: f64| c.as_ref().map_or(0.0, |v| v[i] - c0);
+            per_c * at(&w.temperature_c, t0) + per_pa * at(&w.pressure_pa, p0)
+        })
+        .collect()
+}
+
+/// The analysis: builds the clock, finds its steady state at the drive
+/// given (integrated half swings), the isochronism curve if asked, and a
+/// long run if asked (planned by [`plan_run`], started in the steady state
+/// of the drive at its start by the closed-form map and regulated to it;
+/// the rows go to `sink`).
+pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult, Refusal> {
+    let built = build(input)?;
+    let clock = &built.clock;
+    let steady = clock
+        .steady(HalfSwingMethod::Direct, 1.0)
+        .map_err(|e| refusal_of(e, "drive"))?;
+    let isochronism = match &input.isochronism {
+        Some(f) => {
+            let mut rows = Vec::new();
+            for f in drive_factors(f)? {
+                if !sink.proceed() {
+                    break;
+                }
+                rows.push(match clock.steady(HalfSwingMethod::Direct, f) {
+                    Ok(s) => IsochronismPoint {
+                        drive_factor: f,
+                        steady: Some(SteadyState::from(&s)),
+                        stops: false,
+                    },
+                    Err(ClockError::Stops { .. }) => IsochronismPoint {
+                        drive_factor: f,
+                        steady: None,
+                        stops: true,
+                    },
+                    Err(e) => return Err(refusal_of(e, "drive_range")),
+                });
+            }
+            Some(rows)
+        }
+        None => None,
+    };
+    let long_run = match &input.run {
+        Some(r) => Some(long(&built, r, &steady, sink)?),
+        None => None,
+    };
+    Ok(ClockResult {
+        escapement: clock.escapement.name(),
+        q: clock.q,
+        length_m: clock.pendulum.length_m(),
+        mass_kg: built.mass,
+        lift_angle_rad: built.lift,
+        drive_torque_n_m: match built.drive {
+            Drive::Torque(t) => Some(t),
+            Drive::Energy(_) => None,
+        },
+        drive_energy_j: match built.drive {
+            Drive::Energy(e) => Some(e),
+            Drive::Torque(_) => None,
+        },
+        minimum_drive_factor: clock.minimum_drive(),
+        steady: SteadyState::from(&steady),
+        isochronism,
+        long_run,
+    })
+}
+
+/// The long run of [`analyse`].
+fn long(
+    built: &Built,
+    input: &RunInput,
+    steady: &Steady,
+    sink: &mut dyn RunSink,
+) -> Result<RunSummary, Refusal> {
+    let clock = &built.clock;
+    let plan = plan_run(
+        clock,
+        steady.period,
+        input.duration,
+        input.every,
+        input.force,
+    )?;
+    let empty = Schedule::default();
+    let drive = input.drive_schedule.as_ref().unwrap_or(&empty);
+    check_schedule(
+        "drive_schedule",
+        &drive.time,
+        &drive.value,
+        0.0..=f64::MAX,
+        "a drive factor of at least 0",
+    )?;
+    let rates = match (&input.weather, &built.design, &input.rate_schedule) {
+        (Some(_), _, Some(_)) => {
+            return Err(Refusal::field(
+                "weather",
+                "give the weather or a rate schedule, not both",
+            ))
+        }
+        (Some(w), Some(design), None) => {
+            check_weather(w)?;
+            Some(Schedule {
+                time: w.time.clone(),
+                value: weather_rates(design, w),
+            })
+        }
+        (Some(w), None, None) if w.temperature_c.is_some() || w.pressure_pa.is_some() => {
+            return Err(Refusal::field(
+                "weather",
+                "temperature and pressure need a design (the pendulum's own coefficients)",
+            ))
+        }
+        (_, _, Some(r)) => {
+            check_schedule(
+                "rate_schedule",
+                &r.time,
+                &r.value,
+                -MAX_RATE_S_PER_DAY..=MAX_RATE_S_PER_DAY,
+                "a rate change within a day per day (86400 s/day)",
+            )?;
+            Some(r.clone())
+        }
+        _ => None,
+    };
+    let drive_at = |t: f64| piecewise_linear(&drive.time, &drive.value, t);
+    let stretch = |t: f64| match &rates {
+        Some(r) => period_factor(piecewise_linear(&r.time, &r.value, t)),
+        None => 1.0,
+    };
+    // The field a failure during the run is of.
+    let drive_field = if input.drive_schedule.is_some() {
+        "drive_schedule"
+    } else {
+        "drive"
+    };
+    let start = clock
+        .steady(HalfSwingMethod::Averaged, drive_at(0.0))
+        .map_err(|e| refusal_of(e, drive_field))?;
+    let nominal_period = start.period;
+    if !sink.begin(&plan) {
+        return Ok(summary(&empty_finish(&start), nominal_period));
+    }
+    let finish = run(
+        clock,
+        &drive_at,
+        &stretch,
+        &LongRun::from_steady(&start, input.duration, input.every),
+        &mut |row| sink.row(row),
+    );
+    let when = format!(
+        "{} days into the run",
+        format_significant(finish.last.time / 86_400.0, 4)
+    );
+    // The half swing that failed lies within a row's step of the last row.
+    let failed_at = (finish.last.time + input.every.unwrap_or(steady.period)).min(input.duration);
+    match finish.ending {
+        Ending::OverTheTop => Err(Refusal::field(
+            drive_field,
+            format!(
+                "{when} the drive (rising to {} × the given) carries the pendulum over the top; \
+                 give less drive",
+                format_significant(drive_at(failed_at).max(finish.last.drive), 4)
+            ),
+        )),
+        Ending::RateOutOfRange => Err(Refusal::field(
+            if input.weather.is_some() {
+                "weather"
+            } else {
+                "rate_schedule"
+            },
+            format!(
+                "{when} the rate moves by a day per day or more: no clock runs so; check the \
+                 units"
+            ),
+        )),
+        Ending::Duration | Ending::Sink | Ending::PendulumStopped => {
+            Ok(summary(&finish, nominal_period))
+        }
+    }
+}
+
+/// A run that never started: its first row.
+fn empty_finish(start: &Steady) -> super::long_run::Finish {
+    super::long_run::Finish {
+        last: Row {
+            time: 0.0,
+            beats: 0,
+            amplitude: start.amplitude,
+            rate: 0.0,
+            time_error: 0.0,
+            drive: start.drive,
+        },
+        single_steps: 0,
+        multi_steps: 0,
+        stopped: true,
+        ending: Ending::Sink,
+    }
+}
+
+fn summary(finish: &super::long_run::Finish, nominal_period: f64) -> RunSummary {
+    let last = finish.last;
+    RunSummary {
+        duration_s: last.time,
+        beats: last.beats,
+        final_amplitude_rad: last.amplitude,
+        final_rate_s_per_day: last.rate,
+        time_error_s: last.time_error,
+        stopped: finish.stopped,
+        ending: finish.ending.name(),
+        half_swings_stepped: finish.single_steps,
+        multi_beat_steps: finish.multi_steps,
+        nominal_period_s: nominal_period,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn seconds_clock() -> ClockInput {
+        ClockInput {
+            pendulum: ClockPendulum::Length(0.99362),
+            g: None,
+            mass: None,
+            q: None,
+            escapement: None,
+            lift_angle: None,
+            drive: Some(Drive::Energy(20e-6)),
+            friction: None,
+            recoil: None,
+            impulse_angle: None,
+            every_beats: None,
+            isochronism: None,
+            run: None,
+        }
+    }
+
+    #[test]
+    fn defaults_are_the_documented_ones() {
+        let r = analyse(&seconds_clock(), &mut NoRows).unwrap();
+        assert_eq!(r.q, DEFAULT_Q);
+        assert_eq!(r.mass_kg, DEFAULT_MASS_KG);
+        assert_eq!(r.escapement, "deadbeat");
+        assert_eq!(r.lift_angle_rad, DEFAULT_LIFT_DEG.to_radians());
+        // The escapement's torques are over m g l: twice the mass with
+        // twice the drive swings alike.
+        let mut heavy = seconds_clock();
+        heavy.mass = Some(2.0 * DEFAULT_MASS_KG);
+        heavy.drive = Some(Drive::Energy(40e-6));
+        let h = analyse(&heavy, &mut NoRows).unwrap();
+        assert!((h.steady.amplitude_rad / r.steady.amplitude_rad - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_inputs_are_refused_by_name() {
+        let refused = |f: &dyn Fn(&mut ClockInput)| {
+            let mut c = seconds_clock();
+            f(&mut c);
+            analyse(&c, &mut NoRows).unwrap_err().to_string()
+        };
+        assert!(refused(&|c| c.q = Some(0.5)).starts_with("q: must exceed 0.5"));
+        assert!(refused(&|c| c.mass = Some(-1.0)).starts_with("mass: must be positive"));
+        assert!(refused(&|c| c.drive = None).starts_with("drive: give the drive"));
+        assert!(refused(&|c| c.drive = Some(Drive::Energy(1e-9))).contains("the pendulum stops"));
+        assert!(refused(&|c| c.g = Some(f64::NAN)).starts_with("g: must be a finite number"));
+        assert!(refused(&|c| c.isochronism = Some(DriveFactors::Range {
+            from: 2.0,
+            to: 1.0,
+            steps: None
+        }))
+        .starts_with("drive_range: the first factor"));
+        assert!(refused(&|c| c.run = Some(RunInput {
+            duration: 86_400.0,
+            weather: Some(Weather {
+                time: vec![0.0],
+                temperature_c: Some(vec![20.0]),
+                pressure_pa: None
+            }),
+            ..RunInput::default()
+        }))
+        .starts_with("weather: temperature and pressure need a design"));
+    }
+
+    #[test]
+    fn a_rate_schedule_moves_the_time_error_by_its_rate() {
+        // 2 s/day from outside for 4 days: 8 s more ahead than without.
+        let mut c = seconds_clock();
+        let run = |schedule: Option<Schedule>| RunInput {
+            duration: 4.0 * 86_400.0,
+            every: Some(3600.0),
+            rate_schedule: schedule,
+            ..RunInput::default()
+        };
+        c.run = Some(run(None));
+        let plain = analyse(&c, &mut NoRows).unwrap().long_run.unwrap();
+        c.run = Some(run(Some(Schedule {
+            time: vec![0.0],
+            value: vec![2.0],
+        })));
+        let gaining = analyse(&c, &mut NoRows).unwrap().long_run.unwrap();
+        let expected = 2.0 * gaining.duration_s / 86_400.0;
+        assert!((gaining.time_error_s - plain.time_error_s - expected).abs() < 1e-6);
+    }
+}

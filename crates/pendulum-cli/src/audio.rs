@@ -421,3 +421,26 @@ pub fn pcm16(samples: &[f32], bytes: &mut Vec<u8>) {
         bytes.extend_from_slice(&v.to_le_bytes());
     }
 }
+
+/// One channel (0-based) of a sound file as the listening analysis's
+/// source of sample blocks, decoded anew at each pass.
+pub struct FileSource<'a> {
+    /// The file.
+    pub path: &'a Path,
+    /// The channel, from 0.
+    pub channel: usize,
+    /// What the file is.
+    pub info: Info,
+}
+
+impl pendulum_theory::listening::analysis::SampleSource for FileSource<'_> {
+    type Error = CliError;
+
+    fn sample_rate(&self) -> u32 {
+        self.info.sample_rate
+    }
+
+    fn read(&mut self, seconds: Option<f64>, each: &mut dyn FnMut(&[f32])) -> Result<(), CliError> {
+        decode(self.path, self.channel, seconds, each).map(|_| ())
+    }
+}

@@ -551,6 +551,50 @@ fn clock<'py>(
     Ok((text, columns))
 }
 
+/// Listening to a recording in memory (the CLI's `listen`) as JSON, and
+/// the ticks kept (time_s, side, amplitude).
+#[pyfunction]
+#[pyo3(signature = (samples, sample_rate, bph, period, sample_rate_error_ppm, lift_angle))]
+#[allow(clippy::type_complexity)]
+fn listen<'py>(
+    py: Python<'py>,
+    samples: numpy::PyReadonlyArray1<'py, f32>,
+    sample_rate: f64,
+    bph: Option<f64>,
+    period: Option<f64>,
+    sample_rate_error_ppm: Option<f64>,
+    lift_angle: Option<f64>,
+) -> PyResult<(String, [Array1<'py>; 3])> {
+    use pendulum_theory::fitting::beat_log::Nominal;
+    use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput};
+    let samples = samples
+        .as_slice()
+        .map_err(|_| PyValueError::new_err("samples: must be contiguous"))?;
+    let input = ListenInput {
+        nominal: match (period, bph) {
+            (Some(p), _) => Some(Nominal::Period(p)),
+            (None, Some(b)) => Some(Nominal::BeatsPerHour(b)),
+            (None, None) => None,
+        },
+        sample_rate_error_ppm,
+        lift_angle,
+    };
+    let result = py.detach(|| listen_to_samples(samples, sample_rate, &input));
+    let ticks = result.as_ref().map(|r| r.ticks.clone()).unwrap_or_default();
+    let text = answer(result)?;
+    let column = |f: &dyn Fn(&pendulum_theory::listening::detect::Tick) -> f64| {
+        ticks.iter().map(f).collect::<Vec<f64>>().into_pyarray(py)
+    };
+    Ok((
+        text,
+        [
+            column(&|t| t.time),
+            column(&|t| f64::from(t.side)),
+            column(&|t| t.amplitude),
+        ],
+    ))
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -571,5 +615,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fit_beats, m)?)?;
     m.add_function(wrap_pyfunction!(fit_trajectory, m)?)?;
     m.add_function(wrap_pyfunction!(clock, m)?)?;
+    m.add_function(wrap_pyfunction!(listen, m)?)?;
     Ok(())
 }

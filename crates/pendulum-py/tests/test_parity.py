@@ -29,7 +29,8 @@ from test_simulate import binary
 
 #: Keys of the binary's JSON about the file it read, not the analysis.
 READER_KEYS = {"file", "format", "zero_offset_rad", "turning_points_file", "residuals_file",
-               "pivot", "track_radius", "swings_file", "trajectory_file", "elapsed_s"}
+               "pivot", "track_radius", "swings_file", "trajectory_file", "elapsed_s",
+               "channel", "plot_file", "ticks_file"}
 
 #: Flags whose name is not ``--`` and the keyword.
 FLAG = {"time": "FILE", "amplitude": "FILE", "angle": "FILE"}
@@ -560,3 +561,72 @@ def test_clock_long_run(name, tmp_path):
     def call():
         return pt.clock_run(SECONDS, duration, **kw)[1]
     check(args, call)
+
+
+# --- listen -------------------------------------------------------------------
+
+def read_wav(path):
+    """The samples of a 16-bit mono WAV as the binary's decoder gives them
+    (each integer over 32768, in single precision)."""
+    import wave
+    with wave.open(str(path)) as w:
+        assert w.getsampwidth() == 2 and w.getnchannels() == 1
+        data = np.frombuffer(w.readframes(w.getnframes()), dtype="<i2")
+        return data.astype(np.float32) / np.float32(32768.0), w.getframerate()
+
+
+#: (synth ticks options, listen keywords).
+LISTEN = {
+    "seconds_clock": ([], {}),
+    "seconds_clock_bph": ([], {"bph": 3600.0}),
+    "seconds_clock_period": ([], {"period": 2.0}),
+    "gaining": (["--rate", "12"], {"bph": 3600.0}),
+    "losing_out_of_beat": (["--rate", "-20", "--beat-error", "1.5"], {}),
+    "watch_18000": (["--bph", "18000", "--duration", "20s"], {}),
+    "watch_28800": (["--bph", "28800", "--duration", "15s"], {"bph": 28800.0}),
+    "at_8_khz": (["--sample-rate", "8000"], {}),
+    "noisy": (["--snr-db", "12", "--seed", "4"], {"bph": 3600.0}),
+    "missing_ticks": (["--missing", "0.05", "--seed", "5"], {}),
+    "lift_angle": (["--bph", "14400", "--duration", "30s"], {"lift_angle": math.radians(50)}),
+    "sound_card_fast": ([], {"sample_rate_error_ppm": 20.0}),
+    "sound_card_slow": ([], {"sample_rate_error_ppm": -150.0, "bph": 3600.0}),
+    "dry_room": (["--reverb", "0s", "--hum-db", "-60"], {}),
+    "five_seconds": (["--duration", "5s"], {"bph": 3600.0}),
+    "bph_nan": ([], {"bph": NAN}),
+    "bph_zero": ([], {"bph": 0.0}),
+    "bph_too_high": ([], {"bph": 1e6}),
+    "period_negative": ([], {"period": -2.0}),
+    "period_too_long": ([], {"period": 60.0}),
+    "ppm_too_large": ([], {"sample_rate_error_ppm": 2e4}),
+    "ppm_inf": ([], {"sample_rate_error_ppm": INF}),
+    "lift_zero": ([], {"lift_angle": 0.0}),
+    "lift_half_turn": ([], {"lift_angle": 3.5}),
+}
+LISTEN_UNITS = {"bph": "", "period": "s", "sample_rate_error_ppm": "", "lift_angle": "rad"}
+FLAG.update({"samples": "FILE"})
+
+
+@pytest.mark.parametrize("name", sorted(LISTEN))
+def test_listen(name, tmp_path):
+    synth, kw = LISTEN[name]
+    path = tmp_path / "ticks.wav"
+    made = subprocess.run([str(binary()), "synth", "ticks", str(path), *synth],
+                          capture_output=True, text=True)
+    assert made.returncode == 0, made.stderr
+    samples, rate = read_wav(path)
+    args = ["listen", str(path), "--json"]
+    for k, v in kw.items():
+        args += [f"--{k.replace('_', '-')}", cli_value(v, LISTEN_UNITS[k])]
+    check(args, lambda: pt.listen(samples, rate, **kw)[0])
+
+
+def test_listen_noise_and_bad_arrays():
+    rng = np.random.default_rng(1)
+    with pytest.raises(ValueError, match="no regular ticking"):
+        pt.listen(rng.normal(0, 0.1, 44100 * 10).astype(np.float32), 44100)
+    with pytest.raises(ValueError, match=r"samples\[3\]: must be a finite number"):
+        pt.listen(np.array([0, 0, 0, np.nan] + [0] * 100, dtype=np.float32), 44100)
+    with pytest.raises(ValueError, match="sample_rate: must be a whole number"):
+        pt.listen(np.zeros(100, dtype=np.float32), 44100.5)
+    with pytest.raises(ValueError, match="sample_rate: must be a whole number"):
+        pt.listen(np.zeros(100, dtype=np.float32), 0)

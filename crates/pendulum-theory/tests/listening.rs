@@ -3,10 +3,10 @@
 //! second generator written here (noise-burst ticks, a drop louder than
 //! the tick) so that the detector is not tuned to one shape.
 
+use pendulum_theory::fitting::beat_log::Nominal;
 use pendulum_theory::fitting::beats::analyse_beats;
-use pendulum_theory::listening::detect::{
-    beat_period, clean, envelope_rate, Envelope, OnsetTracker, Refiner, Tick,
-};
+use pendulum_theory::listening::analysis::{listen, ListenFailure, ListenInput, SliceSource};
+use pendulum_theory::listening::detect::Tick;
 use pendulum_theory::listening::synth::{synthesize, Synthesized, TickRecording};
 
 /// What the detector found.
@@ -18,38 +18,38 @@ struct Found {
     reported: usize,
 }
 
-/// Runs the detector as `pendulum listen` does: the beat from the first
-/// five minutes' envelope, the onsets streamed in blocks of 4096 samples
-/// (as a decoder feeds them), then the refinement and the clean-up.
+/// Runs the detector `pendulum listen` and Python's `listen` run (the one
+/// library call), over the samples in blocks of 4096 (as a decoder feeds
+/// them). `None` when no beat is found; no ticks when fewer than four
+/// stand out of the noise (the call refuses the recording).
 fn detect(samples: &[f32], rate: f64, nominal_beat: Option<f64>) -> Option<Found> {
-    let mut envelope = Envelope::new(rate);
-    for block in samples[..samples.len().min((300.0 * rate) as usize)].chunks(4096) {
-        envelope.push(block);
-    }
-    let env_rate = envelope_rate(&envelope, rate);
-    let beat = match nominal_beat {
-        Some(b) => beat_period(&envelope.values, env_rate, 0.97 * b, 1.03 * b).unwrap_or(b),
-        None => beat_period(&envelope.values, env_rate, 0.05, 2.0)?,
+    let mut source = SliceSource {
+        samples,
+        rate: rate as u32,
     };
-    let mut envelope = Envelope::new(rate);
-    let mut tracker = OnsetTracker::new(env_rate, beat);
-    for block in samples.chunks(4096) {
-        envelope.push(block);
-        tracker.push(&envelope.values);
-        envelope.values.clear();
+    let input = ListenInput {
+        nominal: nominal_beat.map(|b| Nominal::Period(2.0 * b)),
+        ..ListenInput::default()
+    };
+    match listen(&mut source, &input) {
+        Ok(r) => Some(Found {
+            ticks: r.ticks,
+            drops: r.drop_ms.map(|d| d.map(|d| d * 1e-3)),
+            reported: r.missed,
+        }),
+        Err(ListenFailure::Refused(r)) if r.reason.contains("stand out of the noise") => {
+            Some(Found {
+                ticks: Vec::new(),
+                drops: [None, None],
+                reported: 0,
+            })
+        }
+        Err(ListenFailure::Refused(r)) => {
+            eprintln!("refused: {r}");
+            None
+        }
+        Err(ListenFailure::Source(never)) => match never {},
     }
-    let coarse = tracker.finish();
-    let mut refiner = Refiner::new(rate, &coarse);
-    for block in samples.chunks(4096) {
-        refiner.push(block);
-    }
-    let (ticks, rejected) = refiner.finish();
-    let (ticks, dropped, _) = clean(ticks);
-    Some(Found {
-        ticks,
-        drops: coarse.drops,
-        reported: coarse.missed + rejected + dropped,
-    })
 }
 
 struct Score {

@@ -299,3 +299,18 @@ pub fn period_or_beat_rate(
         (None, None) => Ok(None),
     }
 }
+
+/// The beat a clock is meant to keep, from `--period` or `--bph`.
+pub fn nominal(
+    period: Option<&str>,
+    bph: Option<&str>,
+) -> Result<Option<pendulum_theory::fitting::beat_log::Nominal>, CliError> {
+    use pendulum_theory::fitting::beat_log::Nominal;
+    Ok(match (period, bph) {
+        (Some(t), _) => Some(Nominal::Period(quantity("--period", t, Dimension::Time)?)),
+        (None, Some(t)) => Some(Nominal::BeatsPerHour(
+            parse_number(t).map_err(|e| CliError::flag("--bph", e))?,
+        )),
+        (None, None) => None,
+    })
+}

@@ -9,9 +9,8 @@ use crate::plot::{render, Figure, Panel, Series, Target};
 
 /// Intervals kept for the plot, at most.
 const PLOT_LIMIT: usize = 8192;
-use crate::units::parse_number;
 use pendulum_theory::analysis::Refusal;
-use pendulum_theory::fitting::beat_log::{BeatLog, Beats, Nominal};
+use pendulum_theory::fitting::beat_log::{BeatLog, Beats};
 use pendulum_theory::period::beats_per_hour;
 use serde::Serialize;
 
@@ -50,17 +49,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let nominal = match (&args.period, &args.bph) {
-        (Some(t), _) => Some(Nominal::Period(common::quantity(
-            "--period",
-            t,
-            crate::units::Dimension::Time,
-        )?)),
-        (None, Some(t)) => Some(Nominal::BeatsPerHour(
-            parse_number(t).map_err(|e| CliError::flag("--bph", e))?,
-        )),
-        (None, None) => None,
-    };
+    let nominal = common::nominal(args.period.as_deref(), args.bph.as_deref())?;
     let file = args.file.display().to_string();
     let refused = |r: &Refusal, line: Option<u64>| {
         CliError::refused(r, &[], &|at, reason| match (at, line) {

@@ -91,7 +91,8 @@ pub struct Beats {
 }
 
 impl Beats {
-    fn of(a: BeatAnalysis) -> Self {
+    /// The result of an analysis of beat times.
+    pub fn of(a: BeatAnalysis) -> Self {
         Self {
             beats: a.beats,
             mean_beat_s: a.mean_beat,

@@ -70,6 +70,7 @@ pub fn check_nominal_period(period: f64, as_beat_rate: bool) -> Result<(), Input
     Err(error)
 }
 
+pub mod analysis;
 pub mod detect;
 pub mod filter;
 pub mod synth;

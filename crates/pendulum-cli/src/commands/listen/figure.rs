@@ -1,0 +1,66 @@
+//! `pendulum listen --plot`: the timegrapher's picture.
+
+use crate::error::CliError;
+use crate::output::num;
+use crate::plot::{render, thin, Figure, Panel, Series, Target};
+use pendulum_theory::listening::analysis::Listening;
+use pendulum_theory::listening::detect::MedianSound;
+
+/// Points of the paper strip kept, at most.
+const STRIP_LIMIT: usize = 8192;
+
+/// The timegrapher's picture: the paper strip (each beat's offset from the
+/// nominal beat against time, ticks and tocks apart: the rate is the
+/// slope, the beat error the gap between the two traces) and the median
+/// tick and tock sounds overlaid.
+pub(super) fn draw(target: &Target, r: &Listening) -> Result<String, CliError> {
+    let ticks = &r.ticks;
+    let rate = f64::from(r.sample_rate_hz);
+    let beat = r.beats.nominal_beat_s.unwrap_or(r.beats.mean_beat_s);
+    let (first_beat, first_time) = ticks.first().map_or((0, 0.0), |t| (t.beat, t.time));
+    let strip = |side: u8| -> Vec<(f64, f64)> {
+        let points = ticks
+            .iter()
+            .filter(|t| t.side == side)
+            .map(|t| {
+                let time = t.time;
+                let expected = first_time + (t.beat - first_beat) as f64 * beat;
+                (time, 1e3 * (time - expected))
+            })
+            .collect();
+        thin(points, STRIP_LIMIT)
+    };
+    let against = match r.beats.nominal_beat_s {
+        Some(_) => format!("{} beats/hour", num(3600.0 / beat, 6)),
+        None => "the mean beat".to_string(),
+    };
+    let strip = Panel::new(
+        format!("Paper strip: each beat against {against}"),
+        "time (s)",
+        "offset (ms)",
+        vec![
+            Series::dots("ticks", strip(0)),
+            Series::dots("tocks", strip(1)),
+        ],
+    );
+    let mut panels = vec![strip];
+    if let Some(sounds) = &r.sounds {
+        let wave = |s: &MedianSound| -> Vec<(f64, f64)> {
+            s.samples
+                .iter()
+                .enumerate()
+                .map(|(i, &v)| (1e3 * (i as f64 - s.onset) / rate, f64::from(v)))
+                .collect()
+        };
+        panels.push(Panel::new(
+            "Median tick and tock sounds (band-passed)",
+            "time from the onset (ms)",
+            "sound (full scale)",
+            vec![
+                Series::line("tick", wave(&sounds[0])),
+                Series::line("tock", wave(&sounds[1])),
+            ],
+        ));
+    }
+    render(target, &Figure { panels })
+}

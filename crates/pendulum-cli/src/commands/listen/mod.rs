@@ -1,0 +1,98 @@
+//! `pendulum listen`: a clock's rate, beat error and jitter from a sound
+//! recording, as a timegrapher shows them. The listening is one library
+//! call ([`pendulum_theory::listening::analysis::listen`]) over the
+//! decoded file; this reads the arguments, writes the ticks and renders.
+
+mod figure;
+mod text;
+
+use super::common;
+use crate::args::ListenArgs;
+use crate::audio::{info, louder_channel, FileSource};
+use crate::error::CliError;
+use crate::file::CsvFile;
+use crate::output;
+use crate::plot::Target;
+use crate::units::{parse_number, Dimension};
+use pendulum_theory::listening::analysis::{listen, ListenFailure, ListenInput, Listening};
+use serde::Serialize;
+
+/// The command's JSON: the file's keys around the library's result.
+#[derive(Serialize)]
+struct ListenJson<'a> {
+    file: String,
+    channel: usize,
+    #[serde(flatten)]
+    listening: &'a Listening,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    ticks_file: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    plot_file: Option<String>,
+}
+
+pub fn run(args: &ListenArgs) -> Result<String, CliError> {
+    let file = args.file.display().to_string();
+    let input = ListenInput {
+        nominal: common::nominal(args.period.as_deref(), args.bph.as_deref())?,
+        sample_rate_error_ppm: args
+            .sample_rate_error_ppm
+            .as_deref()
+            .map(|t| parse_number(t).map_err(|e| CliError::flag("--sample-rate-error-ppm", e)))
+            .transpose()?,
+        lift_angle: args
+            .lift_angle
+            .as_deref()
+            .map(|t| common::quantity("--lift-angle", t, Dimension::Angle))
+            .transpose()?,
+    };
+    let plot = args
+        .plot
+        .as_deref()
+        .map(|p| Target::new(p, "--plot"))
+        .transpose()?;
+    let channel = match args.channel {
+        Some(0) => return Err(CliError::flag("--channel", "channels count from 1")),
+        Some(c) => c - 1,
+        None => louder_channel(&args.file)?,
+    };
+    let info = info(&args.file)?;
+    let mut source = FileSource {
+        path: &args.file,
+        channel,
+        info,
+    };
+    let result = listen(&mut source, &input).map_err(|f| match f {
+        ListenFailure::Source(e) => e,
+        ListenFailure::Refused(r) => CliError::refused(&r, &[], &|_, reason| {
+            CliError::other(format!("{file}: {reason}"))
+        }),
+    })?;
+    let plot_file = match &plot {
+        Some(target) => Some(figure::draw(target, &result)?),
+        None => None,
+    };
+    let ticks_file = match &args.ticks {
+        Some(path) => {
+            let mut out = CsvFile::create(path, "--ticks", "time_s,side,amplitude")?;
+            for t in &result.ticks {
+                out.number(Some(t.time))
+                    .integer(u64::from(t.side))
+                    .number(Some(t.amplitude))
+                    .end_row()?;
+            }
+            Some(out.commit()?)
+        }
+        None => None,
+    };
+    let json = ListenJson {
+        file,
+        channel: channel + 1,
+        listening: &result,
+        ticks_file,
+        plot_file,
+    };
+    if args.json {
+        return output::json(&json);
+    }
+    Ok(text::render(&json, info.channels))
+}

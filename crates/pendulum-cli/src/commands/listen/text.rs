@@ -1,0 +1,89 @@
+//! `pendulum listen`'s text: what a timegrapher's screen shows.
+
+use super::super::fit_beats::rate_text;
+use super::ListenJson;
+use crate::output::{num, Summary};
+
+/// The summary of `r`, a recording of `channels` channels.
+pub(super) fn render(r: &ListenJson, channels: usize) -> String {
+    let mut s = Summary::default();
+    s.row(
+        "Recording",
+        format!(
+            "{} s at {} Hz, channel {} of {}",
+            num(r.listening.duration_s, 6),
+            r.listening.sample_rate_hz,
+            r.channel,
+            channels
+        ),
+    )
+    .row(
+        "Beats",
+        format!(
+            "{} ({} missed, {} extra), {} beats/hour",
+            r.listening.beats.beats,
+            r.listening.missed,
+            r.listening.extra,
+            num(r.listening.beats.beats_per_hour, 7)
+        ),
+    )
+    .row(
+        "Rate",
+        rate_text(
+            r.listening.beats.rate_s_per_day,
+            r.listening.beats.nominal_beat_s,
+        ),
+    )
+    .row(
+        "Beat error",
+        format!(
+            "{} ms (in beat {}/{} %)",
+            num(r.listening.beats.beat_error_ms, 3),
+            num(r.listening.in_beat_percent[0], 3),
+            num(r.listening.in_beat_percent[1], 3)
+        ),
+    )
+    .row(
+        "Jitter",
+        format!("{} ms", num(r.listening.beats.jitter_ms, 3)),
+    )
+    .row(
+        "Drop",
+        match r.listening.drop_ms {
+            [Some(t), Some(u)] => format!(
+                "{} ms after the unlocking (ticks), {} ms (tocks)",
+                num(t, 3),
+                num(u, 3)
+            ),
+            [Some(t), None] | [None, Some(t)] => {
+                format!("{} ms after the unlocking (one side only)", num(t, 3))
+            }
+            [None, None] => "not determined (no second sound stands out)".to_string(),
+        },
+    );
+    if let (Some(lift), Some(amplitude)) = (r.listening.lift_angle_deg, r.listening.amplitude_deg) {
+        s.row(
+            "Amplitude",
+            match (amplitude, r.listening.amplitude_first_order_deg.flatten()) {
+                (Some(exact), Some(first)) => format!(
+                    "{}° from the {}° lift (first order: {}°)",
+                    num(exact, 4),
+                    num(lift, 4),
+                    num(first, 4)
+                ),
+                _ => "not determined (no drop sound to time the lift by)".to_string(),
+            },
+        );
+    }
+    s.row(
+        "Signal to noise",
+        format!("{} dB", num(r.listening.snr_db, 3)),
+    );
+    if let Some(f) = &r.ticks_file {
+        s.row("Ticks file", f.clone());
+    }
+    if let Some(f) = &r.plot_file {
+        s.row("Plot", f.clone());
+    }
+    s.render()
+}

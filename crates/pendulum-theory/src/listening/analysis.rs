@@ -1,0 +1,373 @@
+//! Listening as one analysis: a recording (any source of sample blocks
+//! that can be read more than once) in, what a timegrapher shows out. The
+//! command line's `listen` (its source decodes a sound file) and Python's
+//! `listen` (its source is an array) are this call, and so are the
+//! library's listening tests.
+//!
+//! The passes ([`super::detect`]): the beat from the envelope of the first
+//! [`PERIOD_SPAN_S`] s, near the nominal beat when one is given
+//! ([`NOMINAL_SLACK`]); each beat's onset on the envelope, streamed; each
+//! tick refined on the samples; outliers dropped; then the beat analysis
+//! ([`crate::fitting::beats`]) of the tick times, rescaled by the sound
+//! card's clock error, with missed beats filled in up to
+//! [`MAX_FILLED_BEATS`]. The lift angle, if given, turns the time from the
+//! unlocking to the drop into an amplitude ([`crate::lift`]).
+
+use super::detect::{
+    beat_period, clean, envelope_rate, Envelope, MedianSound, OnsetTracker, Refiner, Tick,
+};
+use super::{check_nominal_period, BEAT_RANGE_S};
+use crate::analysis::{require_finite, require_finite_sample, Refusal};
+use crate::error::format_significant;
+use crate::fitting::beat_log::{Beats, Nominal};
+use crate::fitting::beats::{BeatAnalysis, BeatStream};
+use crate::lift::amplitude_from_lift;
+use crate::period::period_for_beat_rate;
+use serde::Serialize;
+
+/// Seconds of the recording the beat is found from.
+pub const PERIOD_SPAN_S: f64 = 300.0;
+/// How far from a nominal beat the beat is looked for, as a fraction (a
+/// clock 3% off is 43 minutes a day off).
+pub const NOMINAL_SLACK: f64 = 0.03;
+/// Gaps of up to this many beats are missed beats, not pauses: the ticks
+/// were followed beat by beat through any stretch the noise covered.
+pub const MAX_FILLED_BEATS: usize = 1000;
+/// The largest sound-card clock error taken, ppm.
+pub const MAX_SAMPLE_RATE_ERROR_PPM: f64 = 1e4;
+/// The fewest ticks analysed.
+pub const MIN_TICKS: usize = 4;
+/// Samples per block of [`SliceSource`] (as a decoder's packets).
+pub const SLICE_BLOCK: usize = 4096;
+
+/// A recording, read from its start as often as the analysis needs.
+pub trait SampleSource {
+    /// What reading can fail with.
+    type Error;
+    /// Samples per second.
+    fn sample_rate(&self) -> u32;
+    /// Hands `each` the samples in blocks from the start: all of them, or
+    /// at least the first `seconds` (more is cut off here).
+    fn read(
+        &mut self,
+        seconds: Option<f64>,
+        each: &mut dyn FnMut(&[f32]),
+    ) -> Result<(), Self::Error>;
+}
+
+/// Samples in memory as a source, in blocks of [`SLICE_BLOCK`].
+pub struct SliceSource<'a> {
+    /// The samples.
+    pub samples: &'a [f32],
+    /// Samples per second.
+    pub rate: u32,
+}
+
+impl SampleSource for SliceSource<'_> {
+    type Error = std::convert::Infallible;
+
+    fn sample_rate(&self) -> u32 {
+        self.rate
+    }
+
+    fn read(
+        &mut self,
+        seconds: Option<f64>,
+        each: &mut dyn FnMut(&[f32]),
+    ) -> Result<(), Self::Error> {
+        let n = seconds.map_or(self.samples.len(), |s| {
+            self.samples
+                .len()
+                .min((s * f64::from(self.rate)).ceil() as usize)
+        });
+        for block in self.samples[..n].chunks(SLICE_BLOCK) {
+            each(block);
+        }
+        Ok(())
+    }
+}
+
+/// What to listen for.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ListenInput {
+    /// The beat the clock is meant to keep (else found, and the rate
+    /// against the nearest standard rate).
+    pub nominal: Option<Nominal>,
+    /// The sound card's clock error, ppm (positive: its clock runs fast),
+    /// default 0.
+    pub sample_rate_error_ppm: Option<f64>,
+    /// The escapement's lift angle, rad, for the amplitude.
+    pub lift_angle: Option<f64>,
+}
+
+/// Why listening failed: the input, or the source.
+#[derive(Debug)]
+pub enum ListenFailure<E> {
+    /// An input or the recording refused.
+    Refused(Refusal),
+    /// The source could not be read.
+    Source(E),
+}
+
+impl<E> From<Refusal> for ListenFailure<E> {
+    fn from(r: Refusal) -> Self {
+        ListenFailure::Refused(r)
+    }
+}
+
+/// What listening found, with the units in its keys.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Listening {
+    /// Samples per second.
+    pub sample_rate_hz: u32,
+    /// The recording's length, s.
+    pub duration_s: f64,
+    /// What a timegrapher shows of the tick times (its `repaired` the
+    /// same as `missed` by the stream's own count and `extra`).
+    #[serde(flatten)]
+    pub beats: Beats,
+    /// The split of the two intervals, % (50/50 is in beat).
+    pub in_beat_percent: [f64; 2],
+    /// Beats followed with no tick kept (no sound, or noise dropped).
+    pub missed: usize,
+    /// Doubled beats dropped.
+    pub extra: usize,
+    /// Tick envelope peak over the envelope's median, dB.
+    pub snr_db: f64,
+    /// From each beat's unlocking to its drop, ms: ticks, tocks (null when
+    /// no second sound stands out).
+    pub drop_ms: [Option<f64>; 2],
+    /// The lift angle given, degrees.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lift_angle_deg: Option<f64>,
+    /// From the exact motion; null when no drop was heard.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplitude_deg: Option<Option<f64>>,
+    /// From the first-order formula lift / (2 sin(π Δt / T)).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplitude_first_order_deg: Option<Option<f64>>,
+    /// The ticks kept, their times rescaled by the sound card's error.
+    #[serde(skip)]
+    pub ticks: Vec<Tick>,
+    /// The median tick and tock sounds, band-passed.
+    #[serde(skip)]
+    pub sounds: Option<[MedianSound; 2]>,
+}
+
+/// Listens to samples in memory at `sample_rate` Hz (a whole number of
+/// samples per second), every one a finite number (Python's `listen`).
+pub fn listen_to_samples(
+    samples: &[f32],
+    sample_rate: f64,
+    input: &ListenInput,
+) -> Result<Listening, Refusal> {
+    let rate = require_finite("sample_rate", sample_rate)?;
+    if !(rate >= 1.0 && rate <= f64::from(u32::MAX) && rate.fract() == 0.0) {
+        return Err(Refusal::field(
+            "sample_rate",
+            format!(
+                "must be a whole number of samples per second, got {}",
+                format_significant(rate, 6)
+            ),
+        ));
+    }
+    if let Some(i) = samples.iter().position(|x| !x.is_finite()) {
+        require_finite_sample("samples", i, f64::from(samples[i]))?;
+    }
+    let mut source = SliceSource {
+        samples,
+        rate: rate as u32,
+    };
+    listen(&mut source, input).map_err(|f| match f {
+        ListenFailure::Refused(r) => r,
+        ListenFailure::Source(never) => match never {},
+    })
+}
+
+/// The nominal period, s, checked against the beats listening finds.
+fn nominal_period(nominal: Nominal) -> Result<f64, Refusal> {
+    let field = nominal.field();
+    let period = match nominal {
+        Nominal::Period(p) => require_finite(field, p)?,
+        Nominal::BeatsPerHour(b) => period_for_beat_rate(require_finite(field, b)?)
+            .map_err(|e| Refusal::input(field, &e))?,
+    };
+    check_nominal_period(period, matches!(nominal, Nominal::BeatsPerHour(_)))
+        .map_err(|e| Refusal::input(field, &e))?;
+    Ok(period)
+}
+
+/// Listens to `source`: see the module notes.
+pub fn listen<S: SampleSource>(
+    source: &mut S,
+    input: &ListenInput,
+) -> Result<Listening, ListenFailure<S::Error>> {
+    let nominal = input.nominal.map(nominal_period).transpose()?;
+    let ppm = require_finite(
+        "sample_rate_error_ppm",
+        input.sample_rate_error_ppm.unwrap_or(0.0),
+    )?;
+    if ppm.abs() > MAX_SAMPLE_RATE_ERROR_PPM {
+        return Err(Refusal::field(
+            "sample_rate_error_ppm",
+            format!(
+                "must be within ±{MAX_SAMPLE_RATE_ERROR_PPM} ppm, got {}",
+                format_significant(ppm, 6)
+            ),
+        )
+        .into());
+    }
+    if let Some(lift) = input.lift_angle {
+        if !(lift > 0.0 && lift < std::f64::consts::PI) {
+            return Err(Refusal::field(
+                "lift_angle",
+                format!(
+                    "must be between 0 and 180°, got {}°",
+                    format_significant(lift.to_degrees(), 6)
+                ),
+            )
+            .into());
+        }
+    }
+    let sample_rate = source.sample_rate();
+    let rate = f64::from(sample_rate);
+    // Pass 1: the beat, from the envelope of the first minutes (cut at
+    // the same sample whatever the source's blocks).
+    let span = (PERIOD_SPAN_S * rate) as usize;
+    let mut env = Envelope::new(rate);
+    let mut pushed = 0usize;
+    source
+        .read(Some(PERIOD_SPAN_S), &mut |block| {
+            let keep = block.len().min(span - pushed);
+            env.push(&block[..keep]);
+            pushed += keep;
+        })
+        .map_err(ListenFailure::Source)?;
+    let env_rate = envelope_rate(&env, rate);
+    let beat = match nominal {
+        Some(p) => {
+            let b = 0.5 * p;
+            beat_period(
+                &env.values,
+                env_rate,
+                (1.0 - NOMINAL_SLACK) * b,
+                (1.0 + NOMINAL_SLACK) * b,
+            )
+            .unwrap_or(b)
+        }
+        None => {
+            beat_period(&env.values, env_rate, BEAT_RANGE_S.0, BEAT_RANGE_S.1).ok_or_else(|| {
+                Refusal::data(
+                    "no regular ticking found (silence, noise, or fewer than four beats); give the \
+                     beat rate (bph) if the clock is there",
+                )
+            })?
+        }
+    };
+    // Pass 2: each beat's onset on the envelope, streamed (a recording
+    // within the first pass is not read again).
+    let mut tracker = OnsetTracker::new(env_rate, beat);
+    let samples = if pushed < span {
+        tracker.push(&env.values);
+        env.samples
+    } else {
+        let mut env = Envelope::new(rate);
+        source
+            .read(None, &mut |block| {
+                env.push(block);
+                tracker.push(&env.values);
+                env.values.clear();
+            })
+            .map_err(ListenFailure::Source)?;
+        env.samples
+    };
+    let duration = samples as f64 / rate;
+    let coarse = tracker.finish();
+    let snr_db = 20.0 * (coarse.peak / coarse.floor.max(f64::MIN_POSITIVE)).log10();
+    // Pass 3: each tick refined on the samples.
+    let mut refiner = Refiner::new(rate, &coarse);
+    source
+        .read(None, &mut |block| refiner.push(block))
+        .map_err(ListenFailure::Source)?;
+    // (What the refiner and the clean-up drop is counted below as missed.)
+    let (ticks, _, sounds) = refiner.finish_with_sounds();
+    let (mut ticks, _, _) = clean(ticks);
+    if ticks.len() < MIN_TICKS {
+        return Err(too_few(ticks.len(), duration, beat, snr_db).into());
+    }
+    let scale = 1.0 / (1.0 + ppm * 1e-6);
+    for t in &mut ticks {
+        t.time *= scale;
+    }
+    let mut stream = BeatStream::filling_up_to(MAX_FILLED_BEATS);
+    for t in &ticks {
+        stream
+            .push(t.time)
+            .map_err(|e| Refusal::data(e.to_string()))?;
+    }
+    let a = stream
+        .finish(nominal.map(|p| 0.5 * p))
+        .map_err(|e| Refusal::data(e.to_string()))?;
+    // The drop: the mean of the two sides' (a clock's pallets may differ).
+    let drops = coarse.drops.map(|d| d.map(|d| d * scale));
+    let heard: Vec<f64> = drops.iter().flatten().copied().collect();
+    let crossing = (!heard.is_empty()).then(|| heard.iter().sum::<f64>() / heard.len() as f64);
+    let amplitude = match (input.lift_angle, crossing) {
+        (Some(lift), Some(dt)) => Some(
+            amplitude_from_lift(lift, dt, 2.0 * a.mean_beat)
+                .map_err(|e| Refusal::field("lift_angle", e.detail()))?,
+        ),
+        _ => None,
+    };
+    let lifted = |f: &dyn Fn(&crate::lift::LiftAmplitude) -> f64| {
+        input
+            .lift_angle
+            .map(|_| amplitude.as_ref().map(|x| f(x).to_degrees()))
+    };
+    Ok(Listening {
+        sample_rate_hz: sample_rate,
+        duration_s: duration,
+        in_beat_percent: in_beat(&a),
+        // Every beat the tracker followed, less the ticks kept: missed,
+        // whether no sound was there or it was dropped as noise (counted
+        // once, though the analysis fills the same gaps).
+        missed: (coarse.onsets.len() + coarse.missed).saturating_sub(ticks.len()),
+        extra: a.repaired.doubled,
+        beats: Beats::of(a),
+        snr_db,
+        drop_ms: drops.map(|d| d.map(|d| d * 1e3)),
+        lift_angle_deg: input.lift_angle.map(f64::to_degrees),
+        amplitude_deg: lifted(&|x| x.amplitude),
+        amplitude_first_order_deg: lifted(&|x| x.first_order),
+        ticks,
+        sounds,
+    })
+}
+
+/// The split of the tick and tock intervals, %.
+fn in_beat(a: &BeatAnalysis) -> [f64; 2] {
+    let half = 50.0 * a.beat_error_ms * 1e-3 / a.mean_beat;
+    [50.0 + half, 50.0 - half]
+}
+
+/// Fewer than [`MIN_TICKS`] ticks: too short a recording, or too noisy.
+fn too_few(found: usize, duration: f64, beat: f64, snr_db: f64) -> Refusal {
+    let expected = (duration / beat).round();
+    if expected < MIN_TICKS as f64 {
+        return Refusal::data(format!(
+            "{} s of sound holds fewer than four beats of {} s; record at least a minute",
+            format_significant(duration, 3),
+            format_significant(beat, 4)
+        ));
+    }
+    // Silence has no signal to noise ratio to speak of.
+    let snr = if snr_db.is_finite() {
+        format!(" (signal to noise {} dB)", format_significant(snr_db, 2))
+    } else {
+        " (the recording is silent)".to_string()
+    };
+    Refusal::data(format!(
+        "{found} of about {expected} beats stand out of the noise{snr}; record nearer the clock, \
+         or in a quieter room"
+    ))
+}

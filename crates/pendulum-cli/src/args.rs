@@ -4,6 +4,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use pendulum_theory::clock::analysis as clock;
+use pendulum_theory::period::table as period_table;
 
 /// The theory of the clock pendulum: exact period and circular error, damping,
 /// simulation over weeks of swings, fitting to measurements, and reports.
@@ -492,11 +493,11 @@ pub struct PeriodArgs {
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: String,
     /// Rows in the table when --amplitude is a range (at least 2).
-    #[arg(long, value_name = "N", default_value_t = 10)]
-    pub steps: u32,
+    #[arg(long, value_name = "N", help = with_default("Rows in the table when --amplitude is a range (at least 2)", period_table::DEFAULT_STEPS))]
+    pub steps: Option<u32>,
     /// Terms of the power series of K in sin²(A0/2) (section 1-6) to compare with.
-    #[arg(long, value_name = "N", default_value_t = 3)]
-    pub series_terms: u32,
+    #[arg(long, value_name = "N", help = with_default("Terms of the power series of K in sin²(A0/2) (section 1-6) to compare with", period_table::DEFAULT_SERIES_TERMS))]
+    pub series_terms: Option<u32>,
     /// Plot T/T0 (exact, series of 1 to 5 terms, small-angle) and the
     /// circular error against amplitude to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]

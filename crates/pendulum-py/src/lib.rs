@@ -595,6 +595,40 @@ fn listen<'py>(
     ))
 }
 
+/// The period at one amplitude or over a range (the CLI's `period`) as
+/// JSON: one row, or a list of rows.
+#[pyfunction]
+#[pyo3(signature = (length, g, amplitude, amplitude_range, steps, series_terms))]
+fn period_table(
+    length: f64,
+    g: Option<f64>,
+    amplitude: Option<f64>,
+    amplitude_range: Option<(f64, f64)>,
+    steps: Option<i64>,
+    series_terms: Option<i64>,
+) -> PyResult<String> {
+    use pendulum_theory::period::table::{table, Amplitudes, PeriodInput};
+    let amplitudes = match (amplitude, amplitude_range) {
+        (Some(a), None) => Amplitudes::One(a),
+        (None, Some((from, to))) => Amplitudes::Range { from, to, steps },
+        _ => {
+            return Err(PyValueError::new_err(
+                "amplitude: give one amplitude or amplitude_range=(from, to)",
+            ))
+        }
+    };
+    let input = PeriodInput {
+        length,
+        g,
+        amplitudes,
+        series_terms,
+    };
+    match table(&input) {
+        Ok(rows) if matches!(amplitudes, Amplitudes::One(_)) => answer(Ok(rows[0])),
+        result => answer(result),
+    }
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -616,5 +650,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fit_trajectory, m)?)?;
     m.add_function(wrap_pyfunction!(clock, m)?)?;
     m.add_function(wrap_pyfunction!(listen, m)?)?;
+    m.add_function(wrap_pyfunction!(period_table, m)?)?;
     Ok(())
 }

@@ -630,3 +630,68 @@ def test_listen_noise_and_bad_arrays():
         pt.listen(np.zeros(100, dtype=np.float32), 44100.5)
     with pytest.raises(ValueError, match="sample_rate: must be a whole number"):
         pt.listen(np.zeros(100, dtype=np.float32), 0)
+
+
+# --- period -------------------------------------------------------------------
+
+#: (length, amplitude or (from, to), keywords).
+PERIOD = {
+    "seconds_3deg": (0.99362, math.radians(3), {}),
+    "small": (0.99362, 1e-9, {}),
+    "zero": (0.99362, 0.0, {}),
+    "large": (0.5, math.radians(170), {}),
+    "near_top": (0.5, math.pi - 1e-9, {}),
+    "lunar": (1.0, 0.1, {"g": 1.62}),
+    "series_1": (1.0, 0.5, {"series_terms": 1}),
+    "series_50": (1.0, 2.0, {"series_terms": 50}),
+    "metronome": (0.05, 0.3, {}),
+    "tower": (15.0, 0.05, {}),
+    "table": (0.994, (math.radians(1), math.radians(10)), {}),
+    "table_steps_2": (0.994, (math.radians(1), math.radians(90)), {"steps": 2}),
+    "table_down": (0.994, (math.radians(30), math.radians(5)), {"steps": 6}),
+    "table_wide": (2.0, (0.0, math.radians(179)), {"steps": 50, "series_terms": 5}),
+    "length_zero": (0.0, 0.05, {}),
+    "length_negative": (-1.0, 0.05, {}),
+    "amplitude_pi": (1.0, math.pi, {}),
+    "amplitude_nan": (1.0, NAN, {}),
+    "g_negative": (1.0, 0.05, {"g": -9.8}),
+    "series_0": (1.0, 0.05, {"series_terms": 0}),
+    "series_too_many": (1.0, 0.05, {"series_terms": 200000}),
+    "steps_1": (1.0, (0.01, 0.1), {"steps": 1}),
+    "steps_too_many": (1.0, (0.01, 0.1), {"steps": 2000000}),
+    "range_past_pi": (1.0, (0.01, 4.0), {}),
+}
+
+
+@pytest.mark.parametrize("name", sorted(PERIOD))
+def test_period(name, tmp_path):
+    length, amplitude, kw = PERIOD[name]
+    if isinstance(amplitude, tuple):
+        shown = f"{cli_value(amplitude[0], 'rad')}..{cli_value(amplitude[1], 'rad')}"
+        call = lambda: pt.period_table(length, amplitude_range=amplitude, **kw)  # noqa: E731
+    else:
+        shown = cli_value(amplitude, "rad")
+        call = lambda: pt.period_table(length, amplitude, **kw)  # noqa: E731
+    args = ["period", "--length", cli_value(length, "m"), "--amplitude", shown, "--json"]
+    for k, v in kw.items():
+        args += [f"--{k.replace('_', '-')}", cli_value(v)]
+    if isinstance(amplitude, tuple):
+        # A table: a list of rows, each less the command's g_source.
+        out = subprocess.run([str(binary()), *args], capture_output=True, text=True)
+        try:
+            ours = call()
+        except ValueError as e:
+            assert out.returncode == 2 and out.stdout == "", out.stdout
+            assert out.stderr.strip().endswith(split_refusal(str(e))[1]), (out.stderr, str(e))
+            return
+        assert out.returncode == 0, out.stderr
+        cli = json.loads(out.stdout)
+        for row in cli:
+            row.pop("g_source")
+        assert ours == cli
+        return
+    READER_KEYS.add("g_source")
+    try:
+        check(args, call)
+    finally:
+        READER_KEYS.discard("g_source")

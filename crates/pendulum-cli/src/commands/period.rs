@@ -7,34 +7,18 @@ use crate::error::CliError;
 use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::{parse_range, Dimension};
-use pendulum_theory::period::{circular_error, period_ratio, period_ratio_series, PeriodAnalysis};
+use pendulum_theory::period::table::{table, Amplitudes, PeriodInput, PeriodRow};
+use pendulum_theory::period::{circular_error, period_ratio, period_ratio_series};
 use pendulum_theory::{Amplitude, Pendulum};
 use serde::Serialize;
 
-/// The JSON object for one amplitude. Keys are part of the interface.
+/// One row as the command prints it: where g came from, and the
+/// library's row.
 #[derive(Serialize)]
-struct PeriodJson {
-    length_m: f64,
-    g_m_s2: f64,
+struct PeriodJson<'a> {
     g_source: &'static str,
-    amplitude_rad: f64,
-    amplitude_deg: f64,
-    period_s: f64,
-    small_angle_period_s: f64,
-    period_ratio: f64,
-    beats_per_hour: f64,
-    circular_error: f64,
-    circular_error_s_per_day: f64,
-    circular_error_s_per_day_per_deg: f64,
-    series: SeriesJson,
-}
-
-#[derive(Serialize)]
-struct SeriesJson {
-    terms: u32,
-    period_s: f64,
-    relative_error: f64,
-    truncation_bound: f64,
+    #[serde(flatten)]
+    row: &'a PeriodRow,
 }
 
 /// One CSV row: the JSON keys, with the series flattened.
@@ -56,9 +40,6 @@ struct PeriodCsv {
     series_relative_error: f64,
 }
 
-/// The most rows a table may have.
-const MAX_STEPS: u32 = 1_000_000;
-
 pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
     let plot = args
         .plot
@@ -67,29 +48,49 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
         .transpose()?;
     let gravity = common::gravity(&args.gravity)?;
     let pendulum = common::pendulum_of(args.length.as_deref(), args.design.as_deref(), &gravity)?;
-    let amplitudes = amplitudes(args)?;
+    let flag = "--amplitude";
+    let amplitudes = match parse_range(&args.amplitude, Dimension::Angle) {
+        Some(range) => {
+            let (from, to) = range.map_err(|e| CliError::flag(flag, e))?;
+            Amplitudes::Range {
+                from,
+                to,
+                steps: args.steps.map(i64::from),
+            }
+        }
+        None => Amplitudes::One(common::quantity(flag, &args.amplitude, Dimension::Angle)?),
+    };
+    let input = PeriodInput {
+        length: pendulum.length_m(),
+        g: Some(pendulum.g_m_s2()),
+        amplitudes,
+        series_terms: args.series_terms.map(i64::from),
+    };
+    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
+    let rows = table(&input).map_err(|r| CliError::refused(&r, &[], &no_file))?;
     if let Some(target) = &plot {
-        let first = amplitudes[0].degrees();
-        let last = amplitudes[amplitudes.len() - 1].degrees();
-        let (from, to, working) = if amplitudes.len() > 1 {
+        let first = rows[0].amplitude_deg;
+        let last = rows[rows.len() - 1].amplitude_deg;
+        let (from, to, working) = if rows.len() > 1 {
             (first.min(last), first.max(last), None)
         } else {
             (0.0, (2.0 * first).clamp(10.0, 170.0), Some(first))
         };
         render(target, &figure(&pendulum, from, to, working))?;
     }
-    let analyses = amplitudes
-        .iter()
-        .map(|&a| PeriodAnalysis::new(pendulum, a, args.series_terms))
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| CliError::input("--series-terms", &e))?;
-    let is_table = parse_range(&args.amplitude, Dimension::Angle).is_some();
+    let is_table = matches!(amplitudes, Amplitudes::Range { .. });
     if args.format.csv {
-        let rows: Vec<PeriodCsv> = analyses.iter().map(csv_row).collect();
+        let rows: Vec<PeriodCsv> = rows.iter().map(csv_row).collect();
         return output::csv(&rows);
     }
     if args.format.json {
-        let rows: Vec<PeriodJson> = analyses.iter().map(|a| json_row(a, &gravity)).collect();
+        let rows: Vec<PeriodJson> = rows
+            .iter()
+            .map(|row| PeriodJson {
+                g_source: gravity.g_source,
+                row,
+            })
+            .collect();
         return if is_table {
             output::json(&rows)
         } else {
@@ -97,96 +98,41 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
         };
     }
     Ok(if is_table {
-        text_table(&pendulum, &gravity, &analyses)
+        text_table(&pendulum, &gravity, &rows)
     } else {
-        text_summary(&analyses[0], &gravity)
+        text_summary(&rows[0], &gravity)
     })
 }
 
-/// One amplitude, or `steps` evenly spaced over `from..to` (both included).
-fn amplitudes(args: &PeriodArgs) -> Result<Vec<Amplitude>, CliError> {
-    let flag = "--amplitude";
-    let Some(range) = parse_range(&args.amplitude, Dimension::Angle) else {
-        return Ok(vec![common::amplitude(flag, &args.amplitude)?]);
-    };
-    let (from, to) = range.map_err(|e| CliError::flag(flag, e))?;
-    // A range has two ends: at least two rows.
-    if args.steps < 2 || args.steps > MAX_STEPS {
-        return Err(CliError::flag(
-            "--steps",
-            format!(
-                "must be between 2 and {MAX_STEPS} with a range of amplitudes, got {}",
-                args.steps
-            ),
-        ));
-    }
-    common::amplitude_from_radians(flag, from)?;
-    common::amplitude_from_radians(flag, to)?;
-    // Spaced in degrees, the unit people type, so 1deg..10deg gives 1, 2, … 10
-    // exactly rather than 2.0000000000000004.
-    let (from_deg, to_deg) = (from.to_degrees(), to.to_degrees());
-    let last = f64::from(args.steps - 1);
-    (0..args.steps)
-        .map(|i| {
-            let t = f64::from(i) / last;
-            let degrees = from_deg + (to_deg - from_deg) * t;
-            common::amplitude_from_radians(flag, degrees.to_radians())
-        })
-        .collect()
-}
-
-fn json_row(a: &PeriodAnalysis, gravity: &ResolvedGravity) -> PeriodJson {
-    PeriodJson {
-        length_m: a.pendulum.length_m(),
-        g_m_s2: a.pendulum.g_m_s2(),
-        g_source: gravity.g_source,
-        amplitude_rad: a.amplitude.radians(),
-        amplitude_deg: a.amplitude.degrees(),
-        period_s: a.period_s,
-        small_angle_period_s: a.small_angle_period_s,
-        period_ratio: a.period_ratio,
-        beats_per_hour: a.beats_per_hour,
-        circular_error: a.circular_error,
-        circular_error_s_per_day: a.circular_error_s_per_day(),
-        circular_error_s_per_day_per_deg: a.circular_error_s_per_day_per_deg(),
-        series: SeriesJson {
-            terms: a.series.terms,
-            period_s: a.series_period_s(),
-            relative_error: a.series.relative_error,
-            truncation_bound: a.series.truncation_bound,
-        },
-    }
-}
-
-fn csv_row(a: &PeriodAnalysis) -> PeriodCsv {
+fn csv_row(a: &PeriodRow) -> PeriodCsv {
     PeriodCsv {
-        length_m: a.pendulum.length_m(),
-        g_m_s2: a.pendulum.g_m_s2(),
-        amplitude_rad: a.amplitude.radians(),
-        amplitude_deg: a.amplitude.degrees(),
+        length_m: a.length_m,
+        g_m_s2: a.g_m_s2,
+        amplitude_rad: a.amplitude_rad,
+        amplitude_deg: a.amplitude_deg,
         period_s: a.period_s,
         small_angle_period_s: a.small_angle_period_s,
         period_ratio: a.period_ratio,
         beats_per_hour: a.beats_per_hour,
         circular_error: a.circular_error,
-        circular_error_s_per_day: a.circular_error_s_per_day(),
-        circular_error_s_per_day_per_deg: a.circular_error_s_per_day_per_deg(),
+        circular_error_s_per_day: a.circular_error_s_per_day,
+        circular_error_s_per_day_per_deg: a.circular_error_s_per_day_per_deg,
         series_terms: a.series.terms,
-        series_period_s: a.series_period_s(),
+        series_period_s: a.series.period_s,
         series_relative_error: a.series.relative_error,
     }
 }
 
-fn text_summary(a: &PeriodAnalysis, gravity: &ResolvedGravity) -> String {
+fn text_summary(a: &PeriodRow, gravity: &ResolvedGravity) -> String {
     let mut s = Summary::default();
-    s.row("Length", format!("{} m", num(a.pendulum.length_m(), 10)))
+    s.row("Length", format!("{} m", num(a.length_m, 10)))
         .row("Gravity", gravity.describe())
         .row(
             "Amplitude",
             format!(
                 "{}° ({} rad)",
-                num(a.amplitude.degrees(), 10),
-                num(a.amplitude.radians(), 6)
+                num(a.amplitude_deg, 10),
+                num(a.amplitude_rad, 6)
             ),
         )
         .row("Period", format!("{} s", num(a.period_s, 12)))
@@ -203,22 +149,22 @@ fn text_summary(a: &PeriodAnalysis, gravity: &ResolvedGravity) -> String {
             "Circular error",
             format!(
                 "{} s/day lost against a vanishing swing; {} s/day more per degree",
-                num(a.circular_error_s_per_day(), 6),
-                num(a.circular_error_s_per_day_per_deg(), 6)
+                num(a.circular_error_s_per_day, 6),
+                num(a.circular_error_s_per_day_per_deg, 6)
             ),
         )
         .row(
             &format!("Series, {} terms", a.series.terms),
             format!(
                 "{} s  (relative error {})",
-                num(a.series_period_s(), 12),
+                num(a.series.period_s, 12),
                 num(a.series.relative_error, 3)
             ),
         );
     s.render()
 }
 
-fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodAnalysis]) -> String {
+fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodRow]) -> String {
     let mut out = format!(
         "Pendulum of {} m under {}\n",
         num(pendulum.length_m(), 10),
@@ -239,12 +185,12 @@ fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodAnal
         .iter()
         .map(|a| {
             vec![
-                num(a.amplitude.degrees(), 6),
+                num(a.amplitude_deg, 6),
                 num(a.period_s, 10),
                 num(a.period_ratio, 10),
                 num(a.beats_per_hour, 8),
-                num(a.circular_error_s_per_day(), 6),
-                num(a.circular_error_s_per_day_per_deg(), 6),
+                num(a.circular_error_s_per_day, 6),
+                num(a.circular_error_s_per_day_per_deg, 6),
                 num(a.series.relative_error, 3),
             ]
         })

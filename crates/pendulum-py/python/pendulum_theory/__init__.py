@@ -365,3 +365,20 @@ def listen(samples, sample_rate, *, bph=None, period=None, sample_rate_error_ppm
         _np.ascontiguousarray(samples, dtype=_np.float32), float(sample_rate), _number(bph),
         _number(period), _number(sample_rate_error_ppm), _number(lift_angle))
     return _json.loads(result), {"time_s": time, "side": side, "amplitude": amplitude}
+
+
+def period_table(length, amplitude=None, *, amplitude_range=None, steps=None, g=None,
+                 series_terms=None):
+    """The command's ``period`` (the same library call): at one
+    ``amplitude`` (rad) a dict, over ``amplitude_range=(from, to)`` (rad,
+    ``steps`` rows spaced evenly in degrees) a list of dicts, with the
+    command's ``--json`` keys (period_s, small_angle_period_s,
+    period_ratio, beats_per_hour, circular_error, circular_error_s_per_day,
+    the power series to ``series_terms`` terms, ...; not its ``g_source``).
+    For arrays of periods use :func:`period`."""
+    span = None if amplitude_range is None else (float(amplitude_range[0]),
+                                                 float(amplitude_range[1]))
+    return _json.loads(_native.period_table(
+        float(length), _number(g), _number(amplitude), span,
+        None if steps is None else int(steps),
+        None if series_terms is None else int(series_terms)))

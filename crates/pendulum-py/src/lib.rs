@@ -629,6 +629,47 @@ fn period_table(
     }
 }
 
+/// The length for a period or a beat rate (the CLI's `length`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (period, bph, amplitude, g))]
+fn length(
+    period: Option<f64>,
+    bph: Option<f64>,
+    amplitude: Option<f64>,
+    g: Option<f64>,
+) -> PyResult<String> {
+    use pendulum_theory::fitting::beat_log::Nominal;
+    let nominal = match (period, bph) {
+        (Some(p), None) => Nominal::Period(p),
+        (None, Some(b)) => Nominal::BeatsPerHour(b),
+        _ => {
+            return Err(PyValueError::new_err(
+                "period: give the period or the beat rate (bph), one of them",
+            ))
+        }
+    };
+    answer(pendulum_theory::period::inverse::length(
+        nominal, amplitude, g,
+    ))
+}
+
+/// The amplitude a period implies (the CLI's `amplitude`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (length, period, period_uncertainty, g))]
+fn amplitude(
+    length: f64,
+    period: f64,
+    period_uncertainty: Option<f64>,
+    g: Option<f64>,
+) -> PyResult<String> {
+    answer(pendulum_theory::period::inverse::amplitude(
+        length,
+        g,
+        period,
+        period_uncertainty,
+    ))
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -651,5 +692,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(clock, m)?)?;
     m.add_function(wrap_pyfunction!(listen, m)?)?;
     m.add_function(wrap_pyfunction!(period_table, m)?)?;
+    m.add_function(wrap_pyfunction!(length, m)?)?;
+    m.add_function(wrap_pyfunction!(amplitude, m)?)?;
     Ok(())
 }

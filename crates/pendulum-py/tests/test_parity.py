@@ -695,3 +695,81 @@ def test_period(name, tmp_path):
         check(args, call)
     finally:
         READER_KEYS.discard("g_source")
+
+
+# --- length and amplitude: the period's inverses ------------------------------
+
+LENGTH = {
+    "seconds": {"period": 2.0},
+    "seconds_at_5deg": {"period": 2.0, "amplitude": math.radians(5)},
+    "bph_3600": {"bph": 3600.0},
+    "bph_4800_lunar": {"bph": 4800.0, "g": 1.62},
+    "bph_18000": {"bph": 18000.0},
+    "long_period": {"period": 60.0},
+    "large_amplitude": {"period": 2.0, "amplitude": math.radians(170)},
+    "tiny_period": {"period": 1e-6},
+    "period_zero": {"period": 0.0},
+    "period_negative": {"period": -2.0},
+    "period_nan": {"period": NAN},
+    "period_inf": {"period": INF},
+    "bph_zero": {"bph": 0.0},
+    "bph_negative": {"bph": -3600.0},
+    "bph_tiny": {"bph": 1e-300},
+    "amplitude_pi": {"period": 2.0, "amplitude": math.pi},
+    "amplitude_negative": {"period": 2.0, "amplitude": -0.1},
+    "g_zero": {"period": 2.0, "g": 0.0},
+    "g_nan": {"period": 2.0, "g": NAN},
+    "huge_period": {"period": 1e200},
+}
+LENGTH_UNITS = {"period": "s", "bph": "", "amplitude": "rad", "g": ""}
+
+
+@pytest.mark.parametrize("name", sorted(LENGTH))
+def test_length(name):
+    kw = LENGTH[name]
+    args = ["length", "--json"]
+    for k, v in kw.items():
+        args += [f"--{k}", cli_value(v, LENGTH_UNITS[k])]
+    READER_KEYS.add("g_source")
+    try:
+        check(args, lambda: pt.length(**kw))
+    finally:
+        READER_KEYS.discard("g_source")
+
+
+AMPLITUDE = {
+    "seconds_at_3deg": (0.99362, 2.0015, {}),
+    "with_uncertainty": (0.99362, 2.0015, {"period_uncertainty": 1e-4}),
+    "clipped": (0.99362, 1.99948, {"period_uncertainty": 1e-3}),
+    "near_t0": (1.0, 2.0064092925890407 * (1 + 1e-13), {}),
+    "large": (0.5, 2.5, {}),
+    "lunar": (1.0, 5.0, {"g": 1.62}),
+    "exactly_t0": (1.0, 2.0 * math.pi * math.sqrt(1.0 / 9.80665), {}),
+    "zero_uncertainty": (0.99362, 2.0015, {"period_uncertainty": 0.0}),
+    "big_uncertainty": (0.99362, 2.1, {"period_uncertainty": 0.5}),
+    "long": (10.0, 7.0, {}),
+    "below_t0": (0.99362, 1.9, {}),
+    "period_zero": (0.99362, 0.0, {}),
+    "period_negative": (0.99362, -2.0, {}),
+    "period_nan": (0.99362, NAN, {}),
+    "uncertainty_negative": (0.99362, 2.0015, {"period_uncertainty": -1e-4}),
+    "uncertainty_nan": (0.99362, 2.0015, {"period_uncertainty": NAN}),
+    "length_zero": (0.0, 2.0, {}),
+    "length_negative": (-1.0, 2.0, {}),
+    "g_negative": (1.0, 2.0, {"g": -9.8}),
+    "period_inf": (1.0, INF, {}),
+}
+
+
+@pytest.mark.parametrize("name", sorted(AMPLITUDE))
+def test_amplitude(name):
+    length, period, kw = AMPLITUDE[name]
+    args = ["amplitude", "--length", cli_value(length, "m"), "--period", cli_value(period, "s"),
+            "--json"]
+    for k, v in kw.items():
+        args += [f"--{k.replace('_', '-')}", cli_value(v, "s" if k != "g" else "")]
+    READER_KEYS.add("g_source")
+    try:
+        check(args, lambda: pt.amplitude(length, period, **kw))
+    finally:
+        READER_KEYS.discard("g_source")

@@ -282,24 +282,6 @@ pub fn swing(args: &SwingArgs) -> Result<Swing, CliError> {
     })
 }
 
-/// The period given as `--period` or as `--bph` (a beat is half a period),
-/// checked by the library; `None` when neither was given.
-pub fn period_or_beat_rate(
-    period: Option<&str>,
-    bph: Option<&str>,
-) -> Result<Option<f64>, CliError> {
-    match (period, bph) {
-        (Some(text), _) => Ok(Some(quantity("--period", text, Dimension::Time)?)),
-        (None, Some(text)) => {
-            let bph = parse_number(text).map_err(|e| CliError::flag("--bph", e))?;
-            pendulum_theory::period::period_for_beat_rate(bph)
-                .map(Some)
-                .map_err(|e| CliError::input("--bph", &e))
-        }
-        (None, None) => Ok(None),
-    }
-}
-
 /// The beat a clock is meant to keep, from `--period` or `--bph`.
 pub fn nominal(
     period: Option<&str>,

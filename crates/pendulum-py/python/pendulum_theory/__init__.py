@@ -382,3 +382,22 @@ def period_table(length, amplitude=None, *, amplitude_range=None, steps=None, g=
         float(length), _number(g), _number(amplitude), span,
         None if steps is None else int(steps),
         None if series_terms is None else int(series_terms)))
+
+
+def length(period=None, *, bph=None, amplitude=None, g=None):
+    """The command's ``length`` (the same library call): the length for a
+    ``period`` (s) or a beat rate ``bph`` at ``amplitude`` (rad, default
+    0). Returns its ``--json`` object as a dict (without ``g_source``).
+    For arrays use :func:`length_for_period`."""
+    return _json.loads(_native.length(_number(period), _number(bph), _number(amplitude),
+                                      _number(g)))
+
+
+def amplitude(length, period, *, period_uncertainty=None, g=None):
+    """The command's ``amplitude`` (the same library call): the amplitude
+    (rad) a pendulum of ``length`` m swings at to keep ``period`` s, its
+    conditioning, and with ``period_uncertainty`` (s) its interval.
+    Returns its ``--json`` object as a dict (without ``g_source``). For
+    arrays use :func:`amplitude_for_period`."""
+    return _json.loads(_native.amplitude(float(length), float(period),
+                                         _number(period_uncertainty), _number(g)))

@@ -21,6 +21,7 @@
 //! the length for a period ([`length_for_period`]) and the amplitude a
 //! measured period implies ([`amplitude_for_period`]).
 
+pub mod inverse;
 pub mod table;
 
 use crate::elliptic::{agm_deficit, agm_with_derivative, ellipk_modulus};

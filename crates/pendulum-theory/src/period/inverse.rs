@@ -1,0 +1,166 @@
+//! The period's inverses as analyses: the length a period (or a beat
+//! rate) needs at an amplitude, and the amplitude a measured period
+//! implies, with its interval from the period's uncertainty and its
+//! conditioning. The command line's `length` and `amplitude` and Python's
+//! `length` and `amplitude` are these calls.
+
+use super::table::pendulum;
+use super::{amplitude_for_period, beats_per_hour, length_for_period};
+use crate::analysis::{finite, require_finite, Refusal};
+use crate::error::format_significant;
+use crate::fitting::beat_log::Nominal;
+use crate::pendulum::{Amplitude, STANDARD_GRAVITY};
+use crate::period::period_for_beat_rate;
+use serde::Serialize;
+
+/// The length a period needs.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct LengthResult {
+    /// Length, m.
+    pub length_m: f64,
+    /// The period, s.
+    pub period_s: f64,
+    /// Beats per hour.
+    pub beats_per_hour: f64,
+    /// The amplitude it swings at, rad.
+    pub amplitude_rad: f64,
+    /// Gravity, m/s².
+    pub g_m_s2: f64,
+}
+
+/// The length for `nominal` (a period or a beat rate) at `amplitude` rad
+/// (default 0) under `g` (default standard gravity).
+pub fn length(
+    nominal: Nominal,
+    amplitude: Option<f64>,
+    g: Option<f64>,
+) -> Result<LengthResult, Refusal> {
+    let field = nominal.field();
+    let period = match nominal {
+        Nominal::Period(p) => p,
+        Nominal::BeatsPerHour(b) => {
+            period_for_beat_rate(b).map_err(|e| Refusal::input(field, &e))?
+        }
+    };
+    let amplitude = Amplitude::from_radians(amplitude.unwrap_or(0.0))
+        .map_err(|e| Refusal::input("amplitude", &e))?;
+    let g = require_finite("g", g.unwrap_or(STANDARD_GRAVITY))?;
+    let length = length_for_period(period, amplitude, g).map_err(|e| match e.quantity {
+        crate::error::Quantity::Gravity => Refusal::input("g", &e),
+        crate::error::Quantity::Period if matches!(nominal, Nominal::BeatsPerHour(_)) => {
+            Refusal::field(
+                field,
+                format!(
+                    "out of range: the length it gives is beyond double precision, got {} \
+                     beats/h",
+                    format_significant(beats_per_hour(period), 6)
+                ),
+            )
+        }
+        _ => Refusal::input(field, &e),
+    })?;
+    Ok(LengthResult {
+        length_m: length,
+        period_s: period,
+        beats_per_hour: beats_per_hour(period),
+        amplitude_rad: amplitude.radians(),
+        g_m_s2: g,
+    })
+}
+
+/// The relative uncertainty double precision alone leaves in an amplitude
+/// beyond which it is a warning.
+pub const PRECISION_WARNING: f64 = 1e-6;
+
+/// The amplitude a period implies.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct AmplitudeResult {
+    /// Amplitude, rad.
+    pub amplitude_rad: f64,
+    /// Amplitude, degrees.
+    pub amplitude_deg: f64,
+    /// `|d ln A0 / d ln T|`; null when infinite (the period equal to T0).
+    pub condition_number: Option<f64>,
+    /// Half the interval's width, rad, with an uncertainty.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplitude_uncertainty_rad: Option<f64>,
+    /// The amplitude of the period less its uncertainty (0 where that is
+    /// below the small-angle period), rad.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplitude_low_rad: Option<f64>,
+    /// The amplitude of the period plus its uncertainty, rad.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplitude_high_rad: Option<f64>,
+    /// Set when the period less its uncertainty is below the small-angle
+    /// period: the measurement only bounds the amplitude from above.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplitude_upper_bound_rad: Option<f64>,
+    /// The period, s.
+    pub period_s: f64,
+    /// The small-angle period, s.
+    pub small_angle_period_s: f64,
+    /// Length, m.
+    pub length_m: f64,
+    /// Gravity, m/s².
+    pub g_m_s2: f64,
+    /// The relative uncertainty double precision alone leaves in the
+    /// amplitude (`κ ε`); null when infinite.
+    pub precision_relative: Option<f64>,
+    /// What to know before trusting the amplitude.
+    pub warnings: Vec<String>,
+}
+
+/// The amplitude a pendulum of `length` m under `g` swings at to keep
+/// `period` s, with the interval of `period ± uncertainty` if given.
+pub fn amplitude(
+    length: f64,
+    g: Option<f64>,
+    period: f64,
+    uncertainty: Option<f64>,
+) -> Result<AmplitudeResult, Refusal> {
+    let pendulum = pendulum(length, g, "length")?;
+    let solve =
+        |t: f64| amplitude_for_period(&pendulum, t).map_err(|e| Refusal::input("period", &e));
+    let estimate = solve(period)?;
+    let interval = match uncertainty {
+        Some(dt) => {
+            if require_finite("period_uncertainty", dt)? < 0.0 {
+                return Err(Refusal::field(
+                    "period_uncertainty",
+                    format!("must not be negative, got {} s", format_significant(dt, 6)),
+                ));
+            }
+            let t0 = pendulum.small_angle_period();
+            let high = solve(period + dt)?.amplitude.radians();
+            let clipped = period - dt <= t0;
+            let low = solve((period - dt).max(t0))?.amplitude.radians();
+            Some((low, high, clipped))
+        }
+        None => None,
+    };
+    let a = estimate.amplitude;
+    let relative = estimate.condition_number * f64::EPSILON;
+    let mut warnings = Vec::new();
+    if relative.is_finite() && relative > PRECISION_WARNING {
+        warnings.push(format!(
+            "the period is so close to T0 that double precision alone leaves the amplitude \
+             uncertain by {}%",
+            format_significant(100.0 * relative, 2)
+        ));
+    }
+    Ok(AmplitudeResult {
+        amplitude_rad: a.radians(),
+        amplitude_deg: a.degrees(),
+        condition_number: finite(estimate.condition_number),
+        amplitude_uncertainty_rad: interval.map(|i| 0.5 * (i.1 - i.0)),
+        amplitude_low_rad: interval.map(|i| i.0),
+        amplitude_high_rad: interval.map(|i| i.1),
+        amplitude_upper_bound_rad: interval.filter(|i| i.2).map(|i| i.1),
+        period_s: period,
+        small_angle_period_s: pendulum.small_angle_period(),
+        length_m: pendulum.length_m(),
+        g_m_s2: pendulum.g_m_s2(),
+        precision_relative: finite(relative),
+        warnings,
+    })
+}

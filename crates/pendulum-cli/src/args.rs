@@ -688,6 +688,10 @@ pub struct SimulateArgs {
     /// Quadratic air drag b in θ'' = … - b θ'|θ'| (per radian).
     #[arg(long, value_name = "B", allow_hyphen_values = true)]
     pub quadratic_drag: Option<String>,
+    /// A drag law by name and its coefficient, NAME=VALUE (repeat for
+    /// more); the laws are the library's list.
+    #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true, help = drag_laws_help())]
+    pub drag: Vec<String>,
     /// How long to simulate (e.g. 7day, 600s).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub duration: String,
@@ -998,4 +1002,17 @@ pub struct DesignArgs {
 /// shown without the command line holding one.
 fn with_default(help: &str, default: impl std::fmt::Display) -> String {
     format!("{help} [default: {default}]")
+}
+
+/// The help of `--drag`: the library's drag laws, each with its
+/// coefficient.
+fn drag_laws_help() -> String {
+    let laws: Vec<String> = pendulum_theory::simulation::forces::DRAG_LAWS
+        .iter()
+        .map(|l| format!("{} ({})", l.name(), l.describe()))
+        .collect();
+    format!(
+        "A drag law and its coefficient, NAME=VALUE (repeat for more): {}",
+        laws.join(", ")
+    )
 }

@@ -302,7 +302,7 @@ impl simulation::Observer for Turns {
 /// `simulate`, the same library call): every turning point's time, signed
 /// angle and rate (NaN at the release), and the summary as JSON.
 #[pyfunction]
-#[pyo3(signature = (length, amplitude, duration, damping, quadratic_drag, friction_angle, g, method, tolerance, force))]
+#[pyo3(signature = (length, amplitude, duration, damping, quadratic_drag, friction_angle, drag, g, method, tolerance, force))]
 #[allow(clippy::too_many_arguments, clippy::type_complexity)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -312,6 +312,7 @@ fn simulate<'py>(
     damping: Option<(String, f64)>,
     quadratic_drag: Option<f64>,
     friction_angle: Option<f64>,
+    drag: Vec<(String, f64)>,
     g: Option<f64>,
     method: Option<String>,
     tolerance: Option<f64>,
@@ -331,6 +332,7 @@ fn simulate<'py>(
         damping,
         quadratic_drag,
         friction_angle,
+        drag,
         method,
         tolerance,
         sample_interval: None,

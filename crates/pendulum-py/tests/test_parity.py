@@ -347,7 +347,23 @@ SIMULATE = {
     "friction_half_turn": (0.99362, 0.05, 10.0, {"friction_angle": 3.2}),
     "drag_negative": (0.99362, 0.05, 10.0, {"quadratic_drag": -1.0}),
     "method_unknown": (0.99362, 0.05, 10.0, {"method": "euler"}),
+    "three_halves": (0.99362, 0.2, 100.0, {"drag": {"three_halves_drag": 0.002}}),
+    "three_halves_symplectic": (0.99362, 0.2, 100.0, {"drag": {"three_halves_drag": 0.002},
+                                                      "method": "symplectic"}),
+    "quadratic_by_name": (0.99362, 0.5, 60.0, {"drag": {"quadratic_drag": 0.01}}),
+    "two_laws_dop853": (0.99362, 0.5, 60.0, {"drag": {"three_halves_drag": 0.001},
+                                            "quadratic_drag": 0.01, "q": 1000.0}),
+    "two_laws_symplectic": (0.99362, 0.5, 60.0, {"drag": {"three_halves_drag": 0.001},
+                                                "quadratic_drag": 0.01, "method": "symplectic"}),
+    "three_halves_averaged": (0.99362, 0.05, 60.0, {"drag": {"three_halves_drag": 0.001},
+                                                   "method": "averaged"}),
+    "three_halves_negative": (0.99362, 0.05, 10.0, {"drag": {"three_halves_drag": -1.0}}),
+    "three_halves_stiff": (0.99362, 0.05, 600.0, {"drag": {"three_halves_drag": 1e8}}),
+    "drag_law_unknown": (0.99362, 0.05, 10.0, {"drag": {"stokes": 1.0}}),
+    "quadratic_twice": (0.99362, 0.05, 10.0, {"drag": {"quadratic_drag": 0.1},
+                                             "quadratic_drag": 0.1}),
 }
+FLAG.update({law: f"--drag {law}" for law in ("three_halves_drag",)})
 SIMULATE_UNITS = {"g": "", "friction_angle": "rad", "quadratic_drag": "", "q": "", "zeta": "",
                   "log_decrement": "", "tolerance": "", "method": ""}
 
@@ -358,7 +374,11 @@ def test_simulate(name, tmp_path):
     args = ["simulate", "--length", cli_value(length, "m"), "--amplitude",
             cli_value(amplitude, "rad"), "--duration", cli_value(duration, "s"), "--json", "--quiet"]
     for k, v in kw.items():
-        args += [f"--{k.replace('_', '-')}", cli_value(v, SIMULATE_UNITS[k])]
+        if k == "drag":
+            for law, value in v.items():
+                args += ["--drag", f"{law}={value!r}"]
+        else:
+            args += [f"--{k.replace('_', '-')}", cli_value(v, SIMULATE_UNITS[k])]
     if kw.get("method") == "euler":
         # The binary's parser offers the methods by name.
         with pytest.raises(ValueError, match="'euler' is not one of dop853"):

@@ -463,3 +463,83 @@ fn a_swing_decayed_to_nothing_stops_the_run() {
         }
     }
 }
+
+/// The drag of power 3/2 (`simulation::forces::ThreeHalvesDrag`): its
+/// exact flow with viscous decay against the classical Runge-Kutta method
+/// at 10^5 steps (to 1e-12), and the simulated decay of a 1° swing against
+/// the first-order averaged law `A(τ) = (A0^{-1/2} + k B τ/(2π))^{-2}`,
+/// `B = sqrt(π) Γ(7/4)/Γ(9/4) = 1.43776828...` (the energy lost in a half
+/// swing `k A^{5/2} B` over the energy `A²/2`), within 1e-4 after 200
+/// periods (measured 6.3e-6), by DOP853 and by the symplectic method alike.
+#[test]
+fn the_three_halves_drag_law() {
+    use pendulum_theory::simulation::forces::{drag_law, DragLaw, DRAG_LAWS};
+    let law: &dyn DragLaw = DRAG_LAWS[drag_law("three_halves_drag").unwrap()];
+    for (c, k, v, tau) in [
+        (0.0, 0.7, 0.9, 0.4),
+        (0.3, 0.7, -0.9, 0.4),
+        (2.0, 5.0, 1e-3, 1.0),
+    ] {
+        let rhs = |v: f64| -c * v + law.acceleration(k, v);
+        let (n, mut x) = (100_000, v);
+        let h = tau / n as f64;
+        for _ in 0..n {
+            let k1 = rhs(x);
+            let k2 = rhs(x + 0.5 * h * k1);
+            let k3 = rhs(x + 0.5 * h * k2);
+            let k4 = rhs(x + h * k3);
+            x += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+        }
+        let exact = law.flow(k, v, v * (-c * tau).exp(), law.flow_constant(c, tau));
+        eprintln!(
+            "three-halves flow: {:e} relative to RK4",
+            (exact - x).abs() / v.abs()
+        );
+        assert!(
+            (exact - x).abs() <= 1e-12 * v.abs(),
+            "{c} {k} {v}: {exact} against {x}"
+        );
+    }
+    let pendulum = Pendulum::with_standard_gravity(0.99362).unwrap();
+    let omega = pendulum.natural_angular_frequency();
+    let a0 = 1f64.to_radians();
+    let k_scaled = 0.005;
+    let model = Model::new(pendulum, Damping::NONE, 0.0, 0.0)
+        .unwrap()
+        .with_drag(
+            drag_law("three_halves_drag").unwrap(),
+            k_scaled * omega.sqrt(),
+        )
+        .unwrap();
+    let b = 1.437_768_281_682_710_9;
+    let periods = 200.0;
+    let tau = periods * std::f64::consts::TAU;
+    let expected = (a0.powf(-0.5) + k_scaled * b * tau / std::f64::consts::TAU).powi(-2);
+    for method in [Method::Dop853, Method::Symplectic] {
+        let options = Options {
+            duration: tau / omega,
+            tolerance: 1e-10,
+            method,
+            sample_interval: None,
+        };
+        let out = simulate(
+            &model,
+            Amplitude::from_radians(a0).unwrap(),
+            &options,
+            &mut Silent,
+        )
+        .unwrap();
+        let relative = out.final_amplitude / expected - 1.0;
+        eprintln!("three-halves drag, {method:?}: {relative:e} from the averaged law");
+        assert!(
+            relative.abs() < 1e-4,
+            "{method:?}: {} against {expected} ({relative:e})",
+            out.final_amplitude
+        );
+        assert!(
+            out.final_amplitude < 0.75 * a0,
+            "the swing decays: {}",
+            out.final_amplitude
+        );
+    }
+}

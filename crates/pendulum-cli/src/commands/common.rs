@@ -134,16 +134,27 @@ pub fn finite(value: f64) -> Option<f64> {
 
 /// The flag the damping was given with.
 pub fn damping_flag(d: &crate::args::DampingArgs) -> &'static str {
+    match damping_field(d) {
+        "q" => "--q",
+        "log_decrement" => "--log-decrement",
+        "decay_time" => "--decay-time",
+        "damping_coefficient" => "--damping-coefficient",
+        _ => "--zeta",
+    }
+}
+
+/// The library's name of the damping input given (`zeta` when none).
+pub fn damping_field(d: &crate::args::DampingArgs) -> &'static str {
     if d.q.is_some() {
-        "--q"
+        "q"
     } else if d.log_decrement.is_some() {
-        "--log-decrement"
+        "log_decrement"
     } else if d.decay_time.is_some() {
-        "--decay-time"
+        "decay_time"
     } else if d.damping_coefficient.is_some() {
-        "--damping-coefficient"
+        "damping_coefficient"
     } else {
-        "--zeta"
+        "zeta"
     }
 }
 

@@ -13,6 +13,7 @@ use crate::work::{self, Progress};
 use clap::ValueEnum;
 use pendulum_theory::damped::State;
 use pendulum_theory::simulation::analysis::{prepare, Prepared, Simulation, SimulationInput};
+use pendulum_theory::simulation::forces::DRAG_LAWS;
 use pendulum_theory::simulation::{
     half_swing_rate, Action, Observer, Options, Stopped, TurningPoint,
 };
@@ -78,18 +79,30 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
             Some(h)
         }
     };
-    let damping_field = common::damping_flag(&args.swing.damping)
-        .trim_start_matches("--")
-        .replace('-', "_");
+    let damping_field = common::damping_field(&args.swing.damping);
+    let drag = args
+        .drag
+        .iter()
+        .map(|t| {
+            let (name, value) = t.split_once('=').ok_or_else(|| {
+                CliError::flag(
+                    "--drag",
+                    format!("give NAME=VALUE (e.g. three_halves_drag=0.002), got '{t}'"),
+                )
+            })?;
+            let value =
+                parse_number(value).map_err(|e| CliError::flag(&format!("--drag {name}"), e))?;
+            Ok((name.trim().to_string(), value))
+        })
+        .collect::<Result<Vec<_>, CliError>>()?;
     let input = SimulationInput {
         length: pendulum.length_m(),
         g: Some(pendulum.g_m_s2()),
         amplitude: swing.amplitude.radians(),
         duration,
-        damping: swing
-            .damping
-            .map(|d| (d, damping_field_name(&damping_field))),
+        damping: swing.damping.map(|d| (d, damping_field)),
         quadratic_drag,
+        drag,
         friction_angle: Some(swing.friction_angle),
         method: args
             .method
@@ -99,8 +112,16 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         sample_interval,
         force: args.force,
     };
+    // A drag law given by name is said of `--drag NAME` (the quadratic
+    // drag has its own flag too).
+    let law_flags: Vec<(&str, String)> = DRAG_LAWS
+        .iter()
+        .filter(|l| l.name() != "quadratic_drag" || args.quadratic_drag.is_none())
+        .map(|l| (l.name(), format!("--drag {}", l.name())))
+        .collect();
+    let flags: Vec<(&str, &str)> = law_flags.iter().map(|(n, f)| (*n, f.as_str())).collect();
     let refused = |r: pendulum_theory::analysis::Refusal| {
-        CliError::refused(&r, &[], &|_, reason| CliError::other(reason))
+        CliError::refused(&r, &flags, &|_, reason| CliError::other(reason))
     };
     let prepared = prepare(&input).map_err(refused)?;
     check_space(args, &prepared)?;
@@ -131,17 +152,6 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         status,
         ..Output::default()
     })
-}
-
-/// The library's name of a damping input, for its refusals.
-fn damping_field_name(name: &str) -> &'static str {
-    match name {
-        "q" => "q",
-        "log_decrement" => "log_decrement",
-        "decay_time" => "decay_time",
-        "damping_coefficient" => "damping_coefficient",
-        _ => "zeta",
-    }
 }
 
 /// Refuses, before any file is made, files that would not fit the disk

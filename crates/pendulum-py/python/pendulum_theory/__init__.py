@@ -170,6 +170,7 @@ def simulate(
     log_decrement=None,
     quadratic_drag=None,
     friction_angle=None,
+    drag=None,
     g=None,
     method=None,
     tolerance=None,
@@ -182,8 +183,10 @@ def simulate(
     ``averaged``; ``tolerance`` relative to the swing, the library's
     default if not given). Damping by ``q``, ``zeta`` or ``log_decrement``
     (none: undamped), quadratic drag b per radian, dry friction angle r
-    rad. A run estimated at more than a few seconds of computing is
-    refused unless ``force``; one of more than a day always.
+    rad; ``drag`` a dict of the library's drag laws by name and their
+    coefficients (``{"three_halves_drag": 0.002}``; the CLI's ``--drag
+    NAME=VALUE``). A run estimated at more than a few seconds of computing
+    is refused unless ``force``; one of more than a day always.
 
     Returns ``(time_s, angle_rad, rate_s_per_day, summary)``: every turning
     point's time and signed angle, the rate a clock would keep over the
@@ -196,7 +199,8 @@ def simulate(
     damping = (given[0][0], float(given[0][1])) if given else None
     t, a, r, summary = _native.simulate(
         float(length), float(amplitude), float(duration), damping, _number(quadratic_drag),
-        _number(friction_angle), _number(g), _text(method), _number(tolerance), bool(force))
+        _number(friction_angle), [(str(k), float(v)) for k, v in (drag or {}).items()],
+        _number(g), _text(method), _number(tolerance), bool(force))
     return t, a, r, _json.loads(summary)
 
 

@@ -4,6 +4,7 @@
 //! caller's [`Observer`], and a summary with typed warnings. The command
 //! line's `simulate` and Python's `simulate` are this call.
 
+use super::forces::{drag_law, DRAG_LAWS};
 use super::{
     simulate, work_estimate, Method, Model, Observer, Options, Outcome, SimulationError, Stopped,
     WorkEstimate,
@@ -47,6 +48,10 @@ pub struct SimulationInput {
     pub quadratic_drag: Option<f64>,
     /// Dry friction angle, rad (default 0).
     pub friction_angle: Option<f64>,
+    /// Drag laws by name ([`super::forces::DRAG_LAWS`]: `quadratic_drag`,
+    /// `three_halves_drag`, ...) with their coefficients; each at most
+    /// once, the quadratic drag here or above.
+    pub drag: Vec<(String, f64)>,
     /// Method by name (default `dop853`).
     pub method: Option<String>,
     /// Step tolerance (default [`DEFAULT_TOLERANCE`]).
@@ -172,6 +177,8 @@ pub struct Simulation {
     pub q_factor: Option<f64>,
     /// Quadratic drag per radian.
     pub quadratic_drag: f64,
+    /// Every drag law's coefficient, by its name (0: not in the model).
+    pub drag: std::collections::BTreeMap<&'static str, f64>,
     /// Dry friction angle, rad.
     pub friction_angle_rad: f64,
     /// Problems a person must see.
@@ -254,6 +261,7 @@ pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
         Quantity::QuadraticDrag => Refusal::input("quadratic_drag", &e),
         _ => Refusal::input("friction_angle", &e),
     })?;
+    let model = with_drag_laws(model, input)?;
     let duration = require_finite("duration", input.duration)?;
     if duration < 0.0 {
         return Err(Refusal::field(
@@ -320,10 +328,10 @@ pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
             ),
         ),
         super::Limit::Drag => (
-            "quadratic_drag",
+            DRAG_LAWS[work.drag_law].name(),
             format!(
                 "a drag of {} makes the equation stiff{}",
-                format_significant(model.quadratic_drag, 4),
+                format_significant(model.drag[work.drag_law], 4),
                 if method == Method::Symplectic {
                     " (the dop853 method often takes fewer steps in the drag-limited creep)"
                 } else {
@@ -347,11 +355,34 @@ pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
     })
 }
 
+/// `model` with the drag laws of `input.drag`, each named once.
+fn with_drag_laws(mut model: Model, input: &SimulationInput) -> Result<Model, Refusal> {
+    let mut given = [false; DRAG_LAWS.len()];
+    given[super::QUADRATIC_DRAG] = input.quadratic_drag.is_some();
+    for (name, k) in &input.drag {
+        let Some(i) = drag_law(name) else {
+            let names: Vec<&str> = DRAG_LAWS.iter().map(|l| l.name()).collect();
+            return Err(Refusal::field(
+                "drag",
+                format!("'{name}' is not one of {}", names.join(", ")),
+            ));
+        };
+        let field = DRAG_LAWS[i].name();
+        if std::mem::replace(&mut given[i], true) {
+            return Err(Refusal::field(field, "is given twice"));
+        }
+        model = model
+            .with_drag(i, *k)
+            .map_err(|reason| Refusal::field(field, reason))?;
+    }
+    Ok(model)
+}
+
 fn refusal(e: SimulationError, damping_field: &'static str) -> Refusal {
     match e {
-        SimulationError::ExactWithDamping | SimulationError::AveragedUnsupported => {
-            Refusal::field("method", e.to_string())
-        }
+        SimulationError::ExactWithDamping
+        | SimulationError::AveragedUnsupported
+        | SimulationError::SymplecticOneDragLaw => Refusal::field("method", e.to_string()),
         SimulationError::AveragedNeedsWeakDamping { .. } => {
             Refusal::field(damping_field, e.to_string())
         }
@@ -410,7 +441,12 @@ impl Prepared {
             amplitude_rad: self.amplitude.radians(),
             zeta: self.model.damping.zeta(),
             q_factor: finite(self.model.damping.q_factor()),
-            quadratic_drag: self.model.quadratic_drag,
+            quadratic_drag: self.model.quadratic_drag(),
+            drag: DRAG_LAWS
+                .iter()
+                .zip(self.model.drag)
+                .map(|(law, k)| (law.name(), k))
+                .collect(),
             friction_angle_rad: self.model.friction_angle,
             warnings,
             outcome,

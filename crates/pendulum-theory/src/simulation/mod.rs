@@ -51,11 +51,18 @@ pub struct Model {
     pub pendulum: Pendulum,
     /// Viscous damping.
     pub damping: Damping,
-    /// Quadratic drag coefficient `b`, per radian (the term `b θ'|θ'|`).
-    pub quadratic_drag: f64,
+    /// The coefficient of each drag law of [`forces::DRAG_LAWS`], in the
+    /// law's own units (0: not in the model); the quadratic drag `b`, per
+    /// radian (the term `b θ'|θ'|`), is the first.
+    pub drag: forces::DragCoefficients,
+    /// The same in scaled time.
+    drag_scaled: forces::DragCoefficients,
     /// Dry friction angle `r`, rad.
     pub friction_angle: f64,
 }
+
+/// The index of the quadratic drag in [`forces::DRAG_LAWS`].
+pub const QUADRATIC_DRAG: usize = 0;
 
 impl Model {
     /// A model; `quadratic_drag` and `friction_angle` must not be negative.
@@ -65,36 +72,74 @@ impl Model {
         quadratic_drag: f64,
         friction_angle: f64,
     ) -> Result<Self, InputError> {
+        let mut drag = [0.0; forces::DRAG_LAWS.len()];
+        drag[QUADRATIC_DRAG] = require_non_negative(Quantity::QuadraticDrag, quadratic_drag)?;
         Ok(Self {
             pendulum,
             damping,
-            quadratic_drag: require_non_negative(Quantity::QuadraticDrag, quadratic_drag)?,
+            drag,
+            drag_scaled: drag,
             friction_angle: crate::error::require_friction_angle(friction_angle)?,
         })
     }
 
+    /// The model with the drag law `law` (an index of
+    /// [`forces::DRAG_LAWS`]) at coefficient `k` in its own units; the
+    /// refusal of `k` as a reason.
+    pub fn with_drag(mut self, law: usize, k: f64) -> Result<Self, String> {
+        let k = forces::check_drag(k)?;
+        let omega = self.pendulum.natural_angular_frequency();
+        self.drag[law] = k;
+        self.drag_scaled[law] = forces::DRAG_LAWS[law].scaled(k, omega);
+        Ok(self)
+    }
+
+    /// The quadratic drag `b`, per radian.
+    pub fn quadratic_drag(&self) -> f64 {
+        self.drag[QUADRATIC_DRAG]
+    }
+
+    /// Whether any drag law acts.
+    pub fn has_drag(&self) -> bool {
+        self.drag.iter().any(|&k| k != 0.0)
+    }
+
+    /// The drag laws that act, with their scaled coefficients.
+    pub(crate) fn drag_laws(
+        &self,
+    ) -> impl Iterator<Item = (&'static dyn forces::DragLaw, f64)> + '_ {
+        forces::DRAG_LAWS
+            .iter()
+            .zip(self.drag_scaled)
+            .filter(|(_, k)| *k != 0.0)
+            .map(|(law, k)| (*law, k))
+    }
+
     /// Whether nothing slows the pendulum.
     pub fn is_undamped(&self) -> bool {
-        self.damping.zeta() == 0.0 && self.quadratic_drag == 0.0 && self.friction_angle == 0.0
+        self.damping.zeta() == 0.0 && !self.has_drag() && self.friction_angle == 0.0
     }
 
     /// The right-hand side in scaled time `τ = ω_n t`, `d²θ/dτ²`, for the
     /// state `y = [θ, dθ/dτ]` with viscous rate `c1 = 2ζ` and the friction
-    /// sign `direction` (±1). The drag coefficient `b` is the same in
-    /// scaled time: `b θ'|θ'| / ω_n² = b (dθ/dτ)|dθ/dτ|`.
+    /// sign `direction` (±1).
     #[inline(always)]
     fn acceleration(&self, c1: f64, y: State2, direction: f64) -> f64 {
         self.velocity_terms(c1, y[1]) + self.position_terms(y[0], direction)
     }
 
     /// The terms of velocity: [`forces::Viscous`] (rate `c1 = 2ζ`) and
-    /// [`forces::QuadraticDrag`].
+    /// each drag law that acts.
     #[inline(always)]
     fn velocity_terms(&self, c1: f64, v: f64) -> f64 {
         use forces::Term;
-        let y = [0.0, v];
-        forces::Viscous(c1).acceleration(y, 0.0)
-            + forces::QuadraticDrag(self.quadratic_drag).acceleration(y, 0.0)
+        let mut a = forces::Viscous(c1).acceleration([0.0, v], 0.0);
+        for (law, k) in forces::DRAG_LAWS.iter().zip(&self.drag_scaled) {
+            if *k != 0.0 {
+                a += law.acceleration(*k, v);
+            }
+        }
+        a
     }
 
     /// The terms of position: [`forces::Gravity`] and
@@ -275,29 +320,44 @@ pub fn energy_gain_allowance(method: Method, tolerance: f64) -> f64 {
 }
 
 /// The rates of the scaled motion (per unit of `τ = ω_n t`) that set the
-/// step: the oscillation (1), the viscous damping `2ζ`, and the quadratic
-/// drag's linearised rate `2b |dθ/dτ|` at the fastest speed the swing can
-/// reach: the free swing's `2 sin(A0/2)`, or under strong drag twice the
-/// drag-limited creep speed `1/sqrt(b)` (where `b (dθ/dτ)² = sin θ`).
+/// step: the oscillation (1), the viscous damping `2ζ`, and the fastest
+/// drag law's linearised rate at the fastest speed the swing can reach
+/// ([`forces::DragLaw::rate`]: for the quadratic drag `2b |dθ/dτ|` at the
+/// free swing's `2 sin(A0/2)`, or under strong drag twice the drag-limited
+/// creep speed `1/sqrt(b)`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Rates {
     /// The oscillation: 1.
     pub oscillation: f64,
     /// `2ζ`.
     pub viscous: f64,
-    /// The quadratic drag's rate.
+    /// The fastest drag law's rate.
     pub drag: f64,
+    /// Which law that is (an index of [`forces::DRAG_LAWS`]).
+    pub drag_law: usize,
 }
 
 impl Rates {
     /// The rates of `model` released at `amplitude`.
     pub fn new(model: &Model, amplitude: Amplitude) -> Self {
-        let b = model.quadratic_drag;
-        let speed = (2.0 * (0.5 * amplitude.radians()).sin()).min(2.0 / b.sqrt());
+        let free_speed = 2.0 * (0.5 * amplitude.radians()).sin();
+        let (drag_law, drag) = forces::DRAG_LAWS
+            .iter()
+            .zip(model.drag_scaled)
+            .map(|(law, k)| law.rate(k, free_speed))
+            .enumerate()
+            .fold((QUADRATIC_DRAG, 0.0), |best, (i, r)| {
+                if r > best.1 {
+                    (i, r)
+                } else {
+                    best
+                }
+            });
         Self {
             oscillation: 1.0,
             viscous: 2.0 * model.damping.zeta(),
-            drag: if b > 0.0 { 2.0 * b * speed } else { 0.0 },
+            drag,
+            drag_law,
         }
     }
 
@@ -319,6 +379,9 @@ pub enum SimulationError {
     /// The averaged method's map has viscous damping only.
     #[error("the averaged method takes viscous damping only (no drag or dry friction), and gives turning points, not samples: choose symplectic or dop853")]
     AveragedUnsupported,
+    /// The symplectic method's damping flow is exact for one drag law.
+    #[error("the symplectic method takes one drag law at a time (its damping flow is exact for one): choose dop853")]
+    SymplecticOneDragLaw,
     /// The averaged method's map holds for weak damping only.
     #[error("the averaged method holds for Q of at least {minimum} (a half swing must lose a small part of its energy), got Q = {q:.4}: choose symplectic or dop853")]
     AveragedNeedsWeakDamping {
@@ -360,8 +423,11 @@ pub fn check_method(
 ) -> Result<(), SimulationError> {
     match options.method {
         Method::Exact if !model.is_undamped() => Err(SimulationError::ExactWithDamping),
+        Method::Symplectic if model.drag_laws().count() > 1 => {
+            Err(SimulationError::SymplecticOneDragLaw)
+        }
         Method::Averaged => {
-            if model.quadratic_drag > 0.0
+            if model.has_drag()
                 || model.friction_angle > 0.0
                 || options.sample_interval.is_some()
                 || zero_crossings

@@ -2,6 +2,7 @@
 //! damping flows ([`crate::integrate::symplectic`]) at a fixed step in
 //! scaled time, events and samples on a quintic Hermite interpolant.
 
+use super::forces::DragLaw;
 use super::run::{AfterStep, Run};
 use super::{Method, Model, Observer, Options, Outcome, Rates, Stopped};
 use crate::integrate::symplectic::{self, damping_intervals, Hermite};
@@ -31,9 +32,10 @@ pub fn symplectic_steps_per_period(tolerance: f64) -> f64 {
     (std::f64::consts::TAU / wh).ceil()
 }
 
-/// The exact flow of `v' = -c v - b v|v|` over each of a step's damping
-/// intervals: `v e / (1 + b|v| (1 - e)/c)` with `e = e^{-cτ}` (a Bernoulli
-/// equation), `v / (1 + b|v| τ)` when `c = 0`.
+/// The exact flow of `v' = -c v + a(v)` (viscous decay and one drag law,
+/// [`super::forces::DragLaw::flow`]) over each of a step's damping
+/// intervals; for the quadratic drag `v e / (1 + b|v| (1 - e)/c)` with `e =
+/// e^{-cτ}` (a Bernoulli equation), `v / (1 + b|v| τ)` when `c = 0`.
 ///
 /// The decay is stored as `e - 1` (from `expm1`) and applied as
 /// `v + v (e - 1)`: `e` itself, a number like `1 - 1e-8`, would round to a
@@ -41,35 +43,28 @@ pub fn symplectic_steps_per_period(tolerance: f64) -> f64 {
 /// every one of 10^8 steps; `e - 1` keeps the rate to an ulp.
 struct DampingFlow {
     decay_minus_one: [f64; 8],
-    gain: [f64; 8],
-    quadratic: f64,
+    constant: [f64; 8],
+    law: Option<(&'static dyn DragLaw, f64)>,
 }
 
 impl DampingFlow {
-    fn new(c: f64, quadratic: f64, h: f64) -> Self {
+    fn new(c: f64, law: Option<(&'static dyn DragLaw, f64)>, h: f64) -> Self {
         let taus = damping_intervals(h);
         let decay_minus_one = taus.map(|tau| (-c * tau).exp_m1());
-        let gain = taus.map(|tau| {
-            if c > 0.0 {
-                -(-c * tau).exp_m1() / c
-            } else {
-                tau
-            }
-        });
+        let constant = taus.map(|tau| law.map_or(0.0, |(l, _)| l.flow_constant(c, tau)));
         Self {
             decay_minus_one,
-            gain,
-            quadratic,
+            constant,
+            law,
         }
     }
 
     #[inline(always)]
     fn apply(&self, v: f64, i: usize) -> f64 {
         let decayed = v + v * self.decay_minus_one[i];
-        if self.quadratic == 0.0 {
-            decayed
-        } else {
-            decayed / (1.0 + self.quadratic * v.abs() * self.gain[i])
+        match self.law {
+            None => decayed,
+            Some((law, k)) => law.flow(k, v, decayed, self.constant[i]),
         }
     }
 }
@@ -82,9 +77,10 @@ pub(super) fn run_symplectic(
 ) -> Outcome {
     // Scaled time τ = ω_n t (see `run`): ω_n = 1, viscous rate 2ζ.
     let c1 = 2.0 * model.damping.zeta();
-    let b = model.quadratic_drag;
+    // One drag law at most (`check_method`).
+    let law = model.drag_laws().next();
     let h = symplectic_step(model, amplitude, options.tolerance);
-    let flow = DampingFlow::new(c1, b, h);
+    let flow = DampingFlow::new(c1, law, h);
     let velocity_part = |v: f64| model.velocity_terms(c1, v);
     let force_of = |theta: f64, direction: f64| model.position_terms(theta, direction);
     let mut run = match Run::start(model, Method::Symplectic, amplitude, options, observer) {
@@ -106,7 +102,7 @@ pub(super) fn run_symplectic(
         };
         let short_flow;
         let flow_now = if last {
-            short_flow = DampingFlow::new(c1, b, step_h);
+            short_flow = DampingFlow::new(c1, law, step_h);
             &short_flow
         } else {
             &flow

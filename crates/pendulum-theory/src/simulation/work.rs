@@ -33,6 +33,9 @@ pub struct WorkEstimate {
     pub seconds: f64,
     /// What sets the number of steps.
     pub limit: Limit,
+    /// With [`Limit::Drag`]: the law (an index of
+    /// [`super::forces::DRAG_LAWS`]).
+    pub drag_law: usize,
 }
 
 /// Cost of one step in nanoseconds on the machine of `bench/RESULTS.md`
@@ -135,6 +138,7 @@ pub fn work_estimate(model: &Model, amplitude: Amplitude, options: &Options) -> 
         steps,
         seconds: steps * per_step * 1e-9,
         limit,
+        drag_law: rates.drag_law,
     }
 }
 

@@ -586,7 +586,7 @@ pub struct DampingArgs {
     #[arg(long, value_name = "Q", allow_hyphen_values = true)]
     pub q: Option<String>,
     /// The viscous damping coefficient c in N s (force on the bob c dθ/dt); needs --mass.
-    #[arg(long, value_name = "C", allow_hyphen_values = true, requires = "mass")]
+    #[arg(long, value_name = "C", allow_hyphen_values = true)]
     pub damping_coefficient: Option<String>,
     /// Logarithmic decrement of the amplitude per full period.
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
@@ -633,8 +633,8 @@ pub struct DampedArgs {
     #[command(flatten)]
     pub swing: SwingArgs,
     /// How many turning points to list after the start.
-    #[arg(long, value_name = "N", default_value_t = 10)]
-    pub extrema: u64,
+    #[arg(long, value_name = "N", help = with_default("How many turning points to list after the start", pendulum_theory::damped::analysis::DEFAULT_EXTREMA))]
+    pub extrema: Option<u64>,
     /// Write the motion to this CSV file (time_s,angle_rad,angular_velocity_rad_s).
     #[arg(long, value_name = "FILE.csv")]
     pub trajectory: Option<std::path::PathBuf>,

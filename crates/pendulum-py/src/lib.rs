@@ -672,6 +672,34 @@ fn amplitude(
     ))
 }
 
+/// The damped pendulum (the CLI's `damped`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (length, amplitude, damping, friction_angle, mass, extrema, g, force))]
+#[allow(clippy::too_many_arguments)]
+fn damped(
+    length: f64,
+    amplitude: f64,
+    damping: Option<(String, f64)>,
+    friction_angle: Option<f64>,
+    mass: Option<f64>,
+    extrema: Option<i64>,
+    g: Option<f64>,
+    force: bool,
+) -> PyResult<String> {
+    use pendulum_theory::damped::analysis::{damped, DampedInput};
+    answer(damped(&DampedInput {
+        length,
+        g,
+        amplitude,
+        damping,
+        friction_angle,
+        mass,
+        // A negative count is refused as too many.
+        extrema: extrema.map(|n| u64::try_from(n).unwrap_or(u64::MAX)),
+        force,
+    }))
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -696,5 +724,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(period_table, m)?)?;
     m.add_function(wrap_pyfunction!(length, m)?)?;
     m.add_function(wrap_pyfunction!(amplitude, m)?)?;
+    m.add_function(wrap_pyfunction!(damped, m)?)?;
     Ok(())
 }

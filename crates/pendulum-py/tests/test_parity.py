@@ -793,3 +793,49 @@ def test_amplitude(name):
         check(args, lambda: pt.amplitude(length, period, **kw))
     finally:
         READER_KEYS.discard("g_source")
+
+
+# --- damped -------------------------------------------------------------------
+
+DAMPED = {
+    "q_300": (0.99362, math.radians(3), {"q": 300.0}),
+    "zeta": (0.5, 0.1, {"zeta": 0.01}),
+    "log_decrement": (0.5, 0.1, {"log_decrement": 0.05}),
+    "decay_time": (0.99362, 0.05, {"decay_time": 600.0}),
+    "coefficient": (0.99362, 0.05, {"damping_coefficient": 0.01, "mass": 2.0}),
+    "with_mass": (0.99362, 0.05, {"q": 1e4, "mass": 5.0}),
+    "critical": (0.5, 0.1, {"zeta": 1.0}),
+    "overdamped": (0.5, 0.1, {"zeta": 3.0}),
+    "undamped": (0.5, 0.1, {"zeta": 0.0}),
+    "friction": (0.99362, 0.1, {"q": 1000.0, "friction_angle": 1e-3}),
+    "friction_only": (0.99362, 0.1, {"zeta": 0.0, "friction_angle": 1e-3, "extrema": 200}),
+    "large_swing_warns": (0.99362, math.radians(30), {"q": 100.0}),
+    "many_extrema": (0.99362, 0.05, {"q": 1e4, "extrema": 1000}),
+    "lunar": (1.0, 0.1, {"q": 100.0, "g": 1.62}),
+    "no_damping_given": (0.99362, 0.05, {}),
+    "q_negative": (0.99362, 0.05, {"q": -3.0}),
+    "friction_above_amplitude": (0.99362, 0.01, {"q": 100.0, "friction_angle": 0.02}),
+    "coefficient_without_mass": (0.99362, 0.05, {"damping_coefficient": 0.01}),
+    "extrema_too_many": (0.99362, 0.05, {"q": 100.0, "extrema": 200000}),
+    "extrema_beyond_force": (0.99362, 0.05, {"q": 100.0, "extrema": 20000000, "force": True}),
+    "amplitude_pi": (0.99362, math.pi, {"q": 100.0}),
+    "length_zero": (0.0, 0.05, {"q": 100.0}),
+    "decay_time_negative": (0.99362, 0.05, {"decay_time": -1.0}),
+    "mass_zero": (0.99362, 0.05, {"q": 100.0, "mass": 0.0}),
+}
+DAMPED_UNITS = {"zeta": "", "q": "", "log_decrement": "", "decay_time": "s",
+                "damping_coefficient": "", "mass": "kg", "friction_angle": "rad",
+                "extrema": "", "g": ""}
+
+
+@pytest.mark.parametrize("name", sorted(DAMPED))
+def test_damped(name):
+    length, amplitude, kw = DAMPED[name]
+    args = ["damped", "--length", cli_value(length, "m"), "--amplitude",
+            cli_value(amplitude, "rad"), "--json"]
+    for k, v in kw.items():
+        if k == "force":
+            args += ["--force"] if v else []
+        else:
+            args += [f"--{k.replace('_', '-')}", cli_value(v, DAMPED_UNITS[k])]
+    check(args, lambda: pt.damped(length, amplitude, **kw))

@@ -127,11 +127,6 @@ pub fn pendulum(length_text: &str, gravity: &ResolvedGravity) -> Result<Pendulum
     })
 }
 
-/// Infinite or NaN values become JSON `null` rather than a string.
-pub fn finite(value: f64) -> Option<f64> {
-    value.is_finite().then_some(value)
-}
-
 /// The flag the damping was given with.
 pub fn damping_flag(d: &crate::args::DampingArgs) -> &'static str {
     match damping_field(d) {
@@ -156,6 +151,29 @@ pub fn damping_field(d: &crate::args::DampingArgs) -> &'static str {
     } else {
         "zeta"
     }
+}
+
+/// The damping form given, by the library's name, with its value (a
+/// decay time in seconds); `None` when none was given.
+pub fn damping_given(args: &DampingArgs) -> Result<Option<(String, f64)>, CliError> {
+    let field = damping_field(args);
+    let text = match field {
+        "q" => &args.q,
+        "log_decrement" => &args.log_decrement,
+        "decay_time" => &args.decay_time,
+        "damping_coefficient" => &args.damping_coefficient,
+        _ => &args.zeta,
+    };
+    let Some(text) = text.as_deref() else {
+        return Ok(None);
+    };
+    let flag = damping_flag(args);
+    let value = if field == "decay_time" {
+        quantity(flag, text, Dimension::Time)?
+    } else {
+        parse_number(text).map_err(|e| CliError::flag(flag, e))?
+    };
+    Ok(Some((field.to_string(), value)))
 }
 
 /// The damping form given, converted to ζ; `None` when none was given.
@@ -259,8 +277,6 @@ pub struct Swing {
     pub pendulum: Pendulum,
     /// The release amplitude.
     pub amplitude: Amplitude,
-    /// The bob mass, if given.
-    pub mass: Option<f64>,
     /// The viscous damping, if given.
     pub damping: Option<Damping>,
     /// The dry friction angle (0 if not given), rad.
@@ -287,7 +303,6 @@ pub fn swing(args: &SwingArgs) -> Result<Swing, CliError> {
     Ok(Swing {
         pendulum,
         amplitude,
-        mass,
         damping,
         friction_angle,
     })

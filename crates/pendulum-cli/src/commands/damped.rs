@@ -1,80 +1,25 @@
 //! `pendulum damped`: the damped pendulum of section 1-4 of the clock book, with dry
 //! friction (book section 2-4) and the energy budget.
 
-use super::common::{self, finite};
+use super::common;
 use crate::args::DampedArgs;
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Points, Series, Target};
+use crate::units::Dimension;
 use crate::work;
-use pendulum_theory::damped::{DampedPendulum, Extremum, Regime};
-use pendulum_theory::energy::{energy_budget, EnergyBudget};
-use pendulum_theory::friction::{DryFriction, RunDown};
-use pendulum_theory::{Amplitude, Pendulum, Quantity};
+use pendulum_theory::damped::analysis::{damped, Damped, DampedInput, MAX_EXTREMA};
+use pendulum_theory::damped::{DampedPendulum, Regime};
 use serde::Serialize;
 
+/// The command's JSON: the library's result and the trajectory file.
 #[derive(Serialize)]
-struct DampedJson {
-    length_m: f64,
-    g_m_s2: f64,
-    amplitude_rad: f64,
-    zeta: f64,
-    q_factor: Option<f64>,
-    log_decrement: Option<f64>,
-    natural_angular_frequency_rad_s: f64,
-    damped_angular_frequency_rad_s: Option<f64>,
-    damped_period_s: Option<f64>,
-    phase_rad: Option<f64>,
-    regime: &'static str,
-    decay_time_s: Option<f64>,
-    amplitude_half_life_s: Option<f64>,
-    amplitude_loss_per_period_rad: Option<f64>,
-    amplitude_loss_per_period_approx_rad: Option<f64>,
-    amplitude_loss_per_period_difference_rad: Option<f64>,
-    friction_angle_rad: f64,
-    extrema: Vec<ExtremumJson>,
-    stop: Option<StopJson>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    mass_kg: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    damping_coefficient_n_s: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    energy_j: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    energy_loss_per_period_j: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    power_w: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    impulse_per_beat_kg_m2_s: Option<f64>,
+struct DampedJson<'a> {
+    #[serde(flatten)]
+    result: &'a Damped,
     #[serde(skip_serializing_if = "Option::is_none")]
     trajectory: Option<TrajectoryJson>,
-    /// The exact period at the amplitude, s (the small-angle theory's
-    /// damped period ignores the amplitude).
-    exact_period_s: f64,
-    /// What a person must know about these results.
-    warnings: Vec<String>,
-}
-
-/// Above this amplitude the small-angle theory is off by more than 0.2%
-/// in the period: a warning names the exact period.
-const SMALL_ANGLE_LIMIT_DEG: f64 = 10.0;
-/// More turning points than this need `--force`.
-const MAX_EXTREMA: u64 = 100_000;
-/// More turning points than this are refused even with `--force`.
-const MAX_EXTREMA_FORCED: u64 = 10_000_000;
-
-#[derive(Serialize)]
-struct ExtremumJson {
-    index: u64,
-    time_s: f64,
-    angle_rad: f64,
-}
-
-#[derive(Serialize)]
-struct StopJson {
-    time_s: Option<f64>,
-    angle_rad: f64,
 }
 
 #[derive(Serialize)]
@@ -85,190 +30,52 @@ struct TrajectoryJson {
     sample_interval_s: f64,
 }
 
-/// What the library computed, gathered for the renderers.
-struct Results {
-    pendulum: Pendulum,
-    amplitude: Amplitude,
-    damped: DampedPendulum,
-    friction: DryFriction,
-    extrema: Vec<Extremum>,
-    run: RunDown,
-    mass: Option<f64>,
-    budget: Option<EnergyBudget>,
-}
-
 pub fn run(args: &DampedArgs) -> Result<String, CliError> {
-    // The turning points are held and printed: past 10^7 (a few hundred
-    // MB of text) not even --force; a trajectory file streams instead.
-    if args.extrema > MAX_EXTREMA_FORCED {
-        return Err(CliError::flag(
-            "--extrema",
-            format!(
-                "{} turning points requested; at most {MAX_EXTREMA_FORCED} are printed \
-                 (--trajectory FILE streams a run of any length)",
-                args.extrema
-            ),
-        ));
-    }
-    if args.extrema > MAX_EXTREMA && !args.force {
-        return Err(CliError::flag(
-            "--extrema",
-            format!(
-                "{} turning points requested; more than {MAX_EXTREMA} needs --force \
-                 (or a trajectory file)",
-                args.extrema
-            ),
-        ));
-    }
     let plot = args
         .plot
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let swing = common::swing(&args.swing)?;
-    let (pendulum, amplitude, mass) = (swing.pendulum, swing.amplitude, swing.mass);
-    let damping = swing.damping.ok_or_else(|| {
-        CliError::other(
-            "give the damping: one of --zeta, --q, --damping-coefficient, --log-decrement, --decay-time",
-        )
-    })?;
-    let damped = DampedPendulum::new(pendulum, damping);
-    let friction = friction(swing.friction_angle, damped, amplitude)?;
-    let a0 = amplitude.radians();
-    let run = friction.run_down(a0, args.extrema);
-    // Without friction the closed form gives every turning point directly,
-    // with no rounding carried from one to the next.
-    let extrema = if friction.friction_angle() == 0.0 {
-        damped.extrema(a0, args.extrema)
-    } else {
-        run.extrema.clone()
+    let swing = &args.swing;
+    let gravity = common::gravity(&swing.gravity)?;
+    let pendulum = common::pendulum_of(swing.length.as_deref(), swing.design.as_deref(), &gravity)?;
+    let input = DampedInput {
+        length: pendulum.length_m(),
+        g: Some(pendulum.g_m_s2()),
+        amplitude: common::quantity("--amplitude", &swing.amplitude, Dimension::Angle)?,
+        damping: common::damping_given(&swing.damping)?,
+        friction_angle: swing
+            .friction_angle
+            .as_deref()
+            .map(|t| common::quantity("--friction-angle", t, Dimension::Angle))
+            .transpose()?,
+        mass: swing
+            .mass
+            .as_deref()
+            .map(|t| common::quantity("--mass", t, Dimension::Mass))
+            .transpose()?,
+        extrema: args.extrema,
+        force: args.force,
     };
-    let budget = match (mass, friction.half_swing_loss(a0), damped.damped_period()) {
-        (Some(m), Some(loss), Some(period)) => Some(
-            energy_budget(&pendulum, m, a0, loss, period).map_err(|e| match e.quantity {
-                Quantity::Length => CliError::input("--length", &e),
-                _ => CliError::input("--mass", &e),
-            })?,
-        ),
-        _ => None,
-    };
-    let results = Results {
-        pendulum,
-        amplitude,
-        damped,
-        friction,
-        extrema,
-        run,
-        mass,
-        budget,
-    };
+    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
+    let r = damped(&input).map_err(|e| CliError::refused(&e, &[], &no_file))?;
     let trajectory = match &args.trajectory {
-        Some(path) => Some(write_trajectory(args, path, &results)?),
+        Some(path) => Some(write_trajectory(args, path, &r)?),
         None => None,
     };
     if let Some(target) = &plot {
-        let t0 = results.pendulum.small_angle_period();
+        let t0 = pendulum.small_angle_period();
         let duration = common::duration(args.duration.as_deref(), 10.0 * t0)?;
-        render(target, &figure(&results, duration))?;
+        render(target, &figure(&r, duration))?;
     }
-    let json = to_json(&results, trajectory);
+    let json = DampedJson {
+        result: &r,
+        trajectory,
+    };
     if args.json {
         output::json(&json)
     } else {
-        Ok(text(&results, &json))
-    }
-}
-
-/// The small-angle theory's limits, said where they bite.
-fn warnings(r: &Results, exact_period: f64) -> Vec<String> {
-    let mut out = Vec::new();
-    let a_deg = r.amplitude.degrees();
-    if a_deg > SMALL_ANGLE_LIMIT_DEG {
-        out.push(format!(
-            "at {}° the small-angle theory (book section 1-4) is only approximate: \
-             the exact period at this amplitude is {} s, not {}; \
-             `pendulum simulate` integrates the full nonlinear damped motion",
-            num(a_deg, 10),
-            num(exact_period, 7),
-            r.damped
-                .damped_period()
-                .map_or("the small-angle one".to_string(), |p| format!(
-                    "{} s",
-                    num(p, 7)
-                ))
-        ));
-    }
-    out
-}
-
-/// The friction angle, which must be below the amplitude for any motion.
-fn friction(r: f64, damped: DampedPendulum, amplitude: Amplitude) -> Result<DryFriction, CliError> {
-    let flag = "--friction-angle";
-    let friction = DryFriction::new(damped, r).map_err(|e| CliError::input(flag, &e))?;
-    if r > 0.0 && r >= amplitude.radians() {
-        let show = |x| Quantity::FrictionAngle.format_value(x);
-        return Err(CliError::flag(
-            flag,
-            format!(
-                "must be less than the amplitude {}, got {}: friction would hold the pendulum at rest",
-                show(amplitude.radians()),
-                show(r)
-            ),
-        ));
-    }
-    Ok(friction)
-}
-
-fn to_json(r: &Results, trajectory: Option<TrajectoryJson>) -> DampedJson {
-    let d = &r.damped;
-    let damping = d.damping;
-    let a0 = r.amplitude.radians();
-    let exact = r.friction.amplitude_loss_per_period(a0);
-    let approx = r.friction.amplitude_loss_per_period_approx(a0);
-    DampedJson {
-        length_m: r.pendulum.length_m(),
-        g_m_s2: r.pendulum.g_m_s2(),
-        amplitude_rad: a0,
-        zeta: damping.zeta(),
-        q_factor: finite(damping.q_factor()),
-        log_decrement: damping.log_decrement(),
-        natural_angular_frequency_rad_s: d.natural_angular_frequency(),
-        damped_angular_frequency_rad_s: d.damped_angular_frequency(),
-        damped_period_s: d.damped_period(),
-        phase_rad: d.phase(),
-        regime: d.regime().name(),
-        // The time constant a user sees: the slow creep when overdamped.
-        decay_time_s: finite(d.slowest_time_constant()),
-        // An envelope e^{-ζω_n t} exists only when the pendulum oscillates.
-        amplitude_half_life_s: d
-            .damped_period()
-            .and_then(|_| finite(damping.amplitude_half_life(&r.pendulum))),
-        amplitude_loss_per_period_rad: exact,
-        amplitude_loss_per_period_approx_rad: approx,
-        amplitude_loss_per_period_difference_rad: exact.zip(approx).map(|(e, a)| a - e),
-        friction_angle_rad: r.friction.friction_angle(),
-        extrema: r
-            .extrema
-            .iter()
-            .map(|e| ExtremumJson {
-                index: e.index,
-                time_s: e.time,
-                angle_rad: e.angle,
-            })
-            .collect(),
-        stop: r.run.stop.map(|s| StopJson {
-            time_s: s.time,
-            angle_rad: s.angle,
-        }),
-        mass_kg: r.mass,
-        damping_coefficient_n_s: r.mass.map(|m| damping.coefficient(m, &r.pendulum)),
-        energy_j: r.budget.map(|b| b.energy),
-        energy_loss_per_period_j: r.budget.map(|b| b.loss_per_period),
-        power_w: r.budget.map(|b| b.power),
-        impulse_per_beat_kg_m2_s: r.budget.map(|b| b.impulse_per_beat),
-        trajectory,
-        exact_period_s: r.pendulum.period(r.amplitude),
-        warnings: warnings(r, r.pendulum.period(r.amplitude)),
+        Ok(text(&json))
     }
 }
 
@@ -279,7 +86,8 @@ fn opt(value: Option<f64>, digits: usize, unit: &str) -> String {
     )
 }
 
-fn text(r: &Results, j: &DampedJson) -> String {
+fn text(json: &DampedJson) -> String {
+    let j = json.result;
     let deg = |x: f64| format!("{}°", num(x.to_degrees(), 6));
     let mut s = Summary::default();
     s.row("Length", format!("{} m", num(j.length_m, 10)))
@@ -309,7 +117,7 @@ fn text(r: &Results, j: &DampedJson) -> String {
         .row("Damped period", opt(j.damped_period_s, 10, "s"))
         .row("Phase φ", opt(j.phase_rad, 6, "rad"))
         .row(
-            if r.damped.regime() == Regime::Overdamped {
+            if j.regime == Regime::Overdamped.name() {
                 "Decay time (slow creep)"
             } else {
                 "Decay time"
@@ -337,7 +145,7 @@ fn text(r: &Results, j: &DampedJson) -> String {
         });
         s.row("Stops", format!("{when}, at {}", deg(stop.angle_rad)));
     }
-    if let (Some(m), Some(b)) = (r.mass, r.budget) {
+    if let (Some(m), Some(b)) = (j.mass_kg, j.budget) {
         s.row("Bob mass", format!("{} kg", num(m, 6)))
             .row("Stored energy", format!("{} J", num(b.energy, 6)))
             .row(
@@ -349,7 +157,7 @@ fn text(r: &Results, j: &DampedJson) -> String {
                 format!("{} kg m²/s", num(b.impulse_per_beat, 6)),
             );
     }
-    if let Some(t) = &j.trajectory {
+    if let Some(t) = &json.trajectory {
         s.row("Trajectory", format!("{} ({} samples)", t.path, t.samples));
     }
     for w in &j.warnings {
@@ -357,19 +165,19 @@ fn text(r: &Results, j: &DampedJson) -> String {
     }
     let mut out = s.render();
     out.push_str("\nTurning points\n");
-    let rows: Vec<Vec<String>> = r
+    let rows: Vec<Vec<String>> = j
         .extrema
         .iter()
         .map(|e| {
             vec![
                 e.index.to_string(),
-                num(e.time, 10),
-                num(e.angle.to_degrees(), 8),
+                num(e.time_s, 10),
+                num(e.angle_rad.to_degrees(), 8),
             ]
         })
         .collect();
     out.push_str(&output::table(&["n", "time s", "angle °"], &rows));
-    if r.damped.regime() != Regime::Underdamped {
+    if !j.oscillates() {
         out.push_str("(no oscillation: the pendulum creeps back without turning)\n");
     }
     out
@@ -385,9 +193,9 @@ const BYTES_PER_ROW: f64 = 45.0;
 fn write_trajectory(
     args: &DampedArgs,
     path: &std::path::Path,
-    r: &Results,
+    r: &Damped,
 ) -> Result<TrajectoryJson, CliError> {
-    let t0 = r.pendulum.small_angle_period();
+    let t0 = r.friction.damped.pendulum.small_angle_period();
     let duration = common::duration(args.duration.as_deref(), 10.0 * t0)?;
     let (interval, samples) = common::sampling(
         args.sample_interval.as_deref(),
@@ -410,7 +218,7 @@ fn write_trajectory(
         "time_s,angle_rad,angular_velocity_rad_s",
     )?;
     let mut progress = work::Progress::new(rows, "sampled", false);
-    let mut sampler = r.friction.sampler(r.amplitude.radians());
+    let mut sampler = r.friction.sampler(r.amplitude_rad);
     for i in 0..samples {
         // Ctrl-C: the temporary file is removed, nothing is left.
         if i % 4096 == 0 {
@@ -442,8 +250,9 @@ const FIGURE_TURNS: usize = 1000;
 /// viscous envelope `±A0 e^(-ζωt)/√(1-ζ²)` that the motion touches, or
 /// with dry friction the envelope through the turning points (a straight
 /// line without viscous damping) up to where the pendulum sticks.
-fn figure(r: &Results, duration: f64) -> Figure {
-    let a0 = r.amplitude.radians();
+fn figure(r: &Damped, duration: f64) -> Figure {
+    let a0 = r.amplitude_rad;
+    let damped = &r.friction.damped;
     let mut sampler = r.friction.sampler(a0);
     let motion: Vec<(f64, f64)> = (0..=2000)
         .map(|i| {
@@ -454,20 +263,19 @@ fn figure(r: &Results, duration: f64) -> Figure {
     let mut series = vec![Series::line("θ(t)", motion)];
     // Every turning point within the duration, not only the --extrema
     // listed in the table.
-    let half = r
-        .damped
+    let half = damped
         .damped_angular_frequency()
         .map(|w| std::f64::consts::PI / w);
     let count = half.map_or(1, |h| ((duration / h).ceil() as u64 + 1).min(MAX_EXTREMA));
     let friction = r.friction.friction_angle();
     let (extrema, stop) = if friction == 0.0 {
-        (r.damped.extrema(a0, count), None)
+        (damped.extrema(a0, count), None)
     } else {
         let run = r.friction.run_down(a0, count);
         (run.extrema, run.stop.and_then(|s| s.time))
     };
     if friction == 0.0 {
-        let (upper, lower) = envelope_points(&r.damped, a0, duration);
+        let (upper, lower) = envelope_points(damped, a0, duration);
         if !upper.is_empty() {
             series.push(Series::line("envelope ±A₀ e^(−ζω₀t)/√(1−ζ²)", upper));
             series.push(Series::line("", lower).colored(1));
@@ -502,8 +310,8 @@ fn figure(r: &Results, duration: f64) -> Figure {
         panels: vec![Panel::new(
             format!(
                 "Damped pendulum: ζ = {}, {}",
-                num(r.damped.damping.zeta(), 4),
-                r.damped.regime().name()
+                num(damped.damping.zeta(), 4),
+                damped.regime().name()
             ),
             "time (s)",
             "angle (°)",

@@ -405,3 +405,26 @@ def amplitude(length, period, *, period_uncertainty=None, g=None):
     arrays use :func:`amplitude_for_period`."""
     return _json.loads(_native.amplitude(float(length), float(period),
                                          _number(period_uncertainty), _number(g)))
+
+
+def damped(length, amplitude, *, zeta=None, q=None, log_decrement=None, decay_time=None,
+           damping_coefficient=None, friction_angle=None, mass=None, extrema=None, g=None,
+           force=False):
+    """The command's ``damped`` (the same library call): the damped
+    pendulum of the seed's section 1-4 released at ``amplitude`` rad, its
+    damping by one of ``zeta``, ``q``, ``log_decrement``, ``decay_time``
+    (s) or ``damping_coefficient`` (N s, with ``mass`` kg), dry friction
+    ``friction_angle`` rad, the first ``extrema`` turning points. Returns
+    its ``--json`` object as a dict. For arrays of angles use
+    :func:`damped_angle`."""
+    given = [(k, v) for k, v in (("zeta", zeta), ("q", q), ("log_decrement", log_decrement),
+                                 ("decay_time", decay_time),
+                                 ("damping_coefficient", damping_coefficient))
+             if v is not None]
+    if len(given) > 1:
+        raise ValueError("damping: give one of zeta, q, log_decrement, decay_time, "
+                         "damping_coefficient")
+    return _json.loads(_native.damped(
+        float(length), float(amplitude), (given[0][0], float(given[0][1])) if given else None,
+        _number(friction_angle), _number(mass), None if extrema is None else int(extrema),
+        _number(g), bool(force)))

@@ -24,6 +24,8 @@
 //! few ulp of `|θ0| + |v0|/ω_n` over `ζ` in `[1e-7, 10]` and several
 //! hundred periods.
 
+pub mod analysis;
+
 use crate::damping::Damping;
 use crate::pendulum::Pendulum;
 use std::f64::consts::PI;

@@ -5,6 +5,7 @@
 use clap::{Args, Parser, Subcommand};
 use pendulum_theory::clock::analysis as clock;
 use pendulum_theory::period::table as period_table;
+use pendulum_theory::train::analysis as train_analysis;
 
 /// The theory of the clock pendulum: exact period and circular error, damping,
 /// simulation over weeks of swings, fitting to measurements, and reports.
@@ -761,22 +762,17 @@ pub struct TrainArgs {
     #[arg(long, value_name = "P,P,…", value_delimiter = ',')]
     pub pinions: Vec<u32>,
     /// Turns an hour of the first wheel's arbor.
-    #[arg(long, value_name = "N", default_value = "1")]
-    pub arbor_turns_per_hour: f64,
+    #[arg(long, value_name = "N", help = with_default("Turns an hour of the first wheel's arbor", train_analysis::DEFAULT_ARBOR_TURNS_PER_HOUR))]
+    pub arbor_turns_per_hour: Option<f64>,
     /// Find trains for this beat rate instead (beats per hour).
-    #[arg(
-        long,
-        value_name = "B",
-        conflicts_with = "wheels",
-        requires = "escape_teeth"
-    )]
+    #[arg(long, value_name = "B", conflicts_with = "wheels")]
     pub bph: Option<f64>,
     /// The escape wheel's teeth, for --bph.
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", help = with_default("The escape wheel's teeth, for --bph", train_analysis::DEFAULT_ESCAPE_TEETH))]
     pub escape_teeth: Option<u32>,
     /// Relative tolerance on --bph.
-    #[arg(long, value_name = "X", default_value = "0.001")]
-    pub tolerance: f64,
+    #[arg(long, value_name = "X", help = with_default("Relative tolerance on --bph", train_analysis::DEFAULT_TOLERANCE))]
+    pub tolerance: Option<f64>,
     /// A pendulum design: say where its bob must sit for the train's beat.
     #[arg(long, value_name = "FILE.toml")]
     pub design: Option<std::path::PathBuf>,

@@ -700,6 +700,35 @@ fn damped(
     }))
 }
 
+/// A going train's beat and pendulum (the CLI's `train`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (wheels, pinions, arbor_turns_per_hour, g))]
+fn train(
+    wheels: Vec<u32>,
+    pinions: Vec<u32>,
+    arbor_turns_per_hour: Option<f64>,
+    g: Option<f64>,
+) -> PyResult<String> {
+    answer(pendulum_theory::train::analysis::train(
+        &wheels,
+        &pinions,
+        arbor_turns_per_hour,
+        g,
+        None,
+    ))
+}
+
+/// The trains that give a beat (the CLI's `train --bph`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (bph, escape_teeth, tolerance))]
+fn train_for(bph: f64, escape_teeth: Option<u32>, tolerance: Option<f64>) -> PyResult<String> {
+    answer(pendulum_theory::train::analysis::train_for(
+        bph,
+        escape_teeth,
+        tolerance,
+    ))
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -725,5 +754,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(length, m)?)?;
     m.add_function(wrap_pyfunction!(amplitude, m)?)?;
     m.add_function(wrap_pyfunction!(damped, m)?)?;
+    m.add_function(wrap_pyfunction!(train, m)?)?;
+    m.add_function(wrap_pyfunction!(train_for, m)?)?;
     Ok(())
 }

@@ -839,3 +839,77 @@ def test_damped(name):
         else:
             args += [f"--{k.replace('_', '-')}", cli_value(v, DAMPED_UNITS[k])]
     check(args, lambda: pt.damped(length, amplitude, **kw))
+
+
+# --- train --------------------------------------------------------------------
+
+TRAIN = {
+    "regulator": ([64, 60, 30], [8, 8], {}),
+    "long_case": ([80, 60, 30], [10, 8], {}),
+    "three_wheels": ([96, 90, 75, 30], [8, 8, 8], {}),
+    "arbor_hourly_twice": ([64, 60, 30], [8, 8], {"arbor_turns_per_hour": 2.0}),
+    "lunar": ([64, 60, 30], [8, 8], {"g": 1.62}),
+    "watch": ([80, 75, 70, 15], [10, 10, 7], {"arbor_turns_per_hour": 1.0}),
+    "turret": ([40, 30], [10], {}),
+    "slow_arbor": ([64, 60, 30], [8, 8], {"arbor_turns_per_hour": 0.5}),
+    "pinion_missing": ([64, 60, 30], [8], {}),
+    "pinion_zero": ([64, 60, 30], [8, 0], {}),
+    "no_wheels": ([], [], {}),
+    "arbor_zero": ([64, 60, 30], [8, 8], {"arbor_turns_per_hour": 0.0}),
+    "arbor_fast": ([64, 60, 30], [8, 8], {"arbor_turns_per_hour": 4000.0}),
+    "too_fast": ([120, 120, 120, 120, 120], [6, 6, 6, 6], {}),
+    "g_negative": ([64, 60, 30], [8, 8], {"g": -1.0}),
+}
+
+
+@pytest.mark.parametrize("name", sorted(TRAIN))
+def test_train(name):
+    wheels, pinions, kw = TRAIN[name]
+    args = ["train", "--json"]
+    if wheels:
+        args += ["--wheels", ",".join(map(str, wheels))]
+    if pinions:
+        args += ["--pinions", ",".join(map(str, pinions))]
+    for k, v in kw.items():
+        args += [f"--{k.replace('_', '-')}", repr(v)]
+    if not wheels:
+        # The binary's parser asks for the counts or a beat rate first.
+        out = subprocess.run([str(binary()), *args], capture_output=True, text=True)
+        assert out.returncode == 2 and out.stdout == ""
+        with pytest.raises(ValueError, match="give the wheel counts"):
+            pt.train(wheels, pinions, **kw)
+        return
+    check(args, lambda: pt.train(wheels, pinions, **kw))
+
+
+TRAIN_FOR = {
+    "seconds": (3600.0, {"escape_teeth": 30}),
+    "default_escape": (3600.0, {}),
+    "half_seconds": (7200.0, {"escape_teeth": 30}),
+    "longcase_1_25": (2880.0, {"escape_teeth": 30, "tolerance": 0.01}),
+    "tight": (3600.0, {"escape_teeth": 30, "tolerance": 1e-9}),
+    "none_found": (1.5, {"escape_teeth": 30}),
+    "bph_zero": (0.0, {"escape_teeth": 30}),
+    "bph_huge": (1e6, {"escape_teeth": 30}),
+    "bph_nan": (NAN, {"escape_teeth": 30}),
+    "tolerance_zero": (3600.0, {"escape_teeth": 30, "tolerance": 0.0}),
+    "tolerance_big": (3600.0, {"escape_teeth": 30, "tolerance": 0.5}),
+    "escape_zero": (3600.0, {"escape_teeth": 0}),
+}
+
+
+@pytest.mark.parametrize("name", sorted(TRAIN_FOR))
+def test_train_for(name):
+    bph, kw = TRAIN_FOR[name]
+    args = ["train", "--bph", cli_value(bph), "--json"]
+    for k, v in kw.items():
+        args += [f"--{k.replace('_', '-')}", repr(v)]
+    out = subprocess.run([str(binary()), *args], capture_output=True, text=True)
+    try:
+        ours = pt.train_for(bph, **kw)
+    except ValueError as e:
+        assert out.returncode == 2 and out.stdout == "", out.stdout
+        assert out.stderr.strip().endswith(split_refusal(str(e))[1]), (out.stderr, str(e))
+        return
+    assert out.returncode == 0, out.stderr
+    assert json.loads(out.stdout) == ours

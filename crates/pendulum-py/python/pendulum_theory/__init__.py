@@ -428,3 +428,27 @@ def damped(length, amplitude, *, zeta=None, q=None, log_decrement=None, decay_ti
         float(length), float(amplitude), (given[0][0], float(given[0][1])) if given else None,
         _number(friction_angle), _number(mass), None if extrema is None else int(extrema),
         _number(g), bool(force)))
+
+
+def _counts(name, values):
+    counts = [int(v) for v in values]
+    if any(c < 0 for c in counts):
+        raise ValueError(f"{name}: counts must not be negative")
+    return counts
+
+
+def train(wheels, pinions, *, arbor_turns_per_hour=None, g=None):
+    """The command's ``train`` (the same library call): the beats per hour
+    of wheels (the last the escape wheel) and pinions, the period and the
+    simple pendulum it needs. Returns its ``--json`` object as a dict."""
+    return _json.loads(_native.train(_counts("wheels", wheels), _counts("pinions", pinions),
+                                     _number(arbor_turns_per_hour), _number(g)))
+
+
+def train_for(bph, *, escape_teeth=None, tolerance=None):
+    """The command's ``train --bph``: the trains (centre, third and escape
+    wheel, two pinions) that give ``bph`` within ``tolerance``, closest
+    first, as a list of dicts."""
+    return _json.loads(_native.train_for(
+        float(bph), None if escape_teeth is None else _counts("escape_teeth", [escape_teeth])[0],
+        _number(tolerance)))

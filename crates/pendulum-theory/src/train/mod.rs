@@ -8,6 +8,8 @@
 //! The Science of Clocks and Watches, 3rd ed., 1993, ch. 6). The period
 //! of the pendulum is two beats.
 
+pub mod analysis;
+
 /// Beats per hour of a train: wheels `wheels` (the last is the escape
 /// wheel), pinions `pinions` (one fewer), the first arbor turning
 /// `arbor_turns_per_hour` times an hour. `None` for a mismatched count or

@@ -4,6 +4,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use pendulum_theory::clock::analysis as clock;
+use pendulum_theory::compound::datasheet as sheet;
 use pendulum_theory::period::table as period_table;
 use pendulum_theory::train::analysis as train_analysis;
 
@@ -966,27 +967,17 @@ pub struct DesignArgs {
     #[arg(value_name = "FILE.toml")]
     pub file: std::path::PathBuf,
     /// Air pressure, hPa.
-    #[arg(long, value_name = "P", default_value = "1013.25")]
-    pub pressure: f64,
-    /// Air temperature, °C.
-    #[arg(
-        long,
-        value_name = "T",
-        default_value = "20",
-        allow_hyphen_values = true
-    )]
-    pub temperature: f64,
+    #[arg(long, value_name = "P", help = with_default("Air pressure, hPa", sheet::DEFAULT_PRESSURE_PA / 100.0))]
+    pub pressure: Option<f64>,
+    /// Temperature, °C.
+    #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Temperature, °C", sheet::DEFAULT_TEMPERATURE_C))]
+    pub temperature: Option<f64>,
     /// The temperature the clock was regulated at, °C.
-    #[arg(
-        long,
-        value_name = "T",
-        default_value = "20",
-        allow_hyphen_values = true
-    )]
-    pub regulated_at: f64,
+    #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("The temperature the clock was regulated at, °C", sheet::DEFAULT_TEMPERATURE_C))]
+    pub regulated_at: Option<f64>,
     /// Relative humidity, %.
-    #[arg(long, value_name = "H", default_value = "50")]
-    pub humidity: f64,
+    #[arg(long, value_name = "H", help = with_default("Relative humidity, %", sheet::DEFAULT_HUMIDITY * 100.0))]
+    pub humidity: Option<f64>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Print one JSON object.

@@ -729,6 +729,45 @@ fn train_for(bph: f64, escape_teeth: Option<u32>, tolerance: Option<f64>) -> PyR
     ))
 }
 
+/// A design from its parts as JSON text (`{"part": [...]}`, sizes in SI
+/// units: Python reads no units).
+fn design_of(parts: &str) -> PyResult<pendulum_theory::compound::description::Design> {
+    use pendulum_theory::compound::description::{design, Unit};
+    let value: serde_json::Value =
+        serde_json::from_str(parts).map_err(|e| PyValueError::new_err(format!("parts: {e}")))?;
+    let no_units = |text: &str, _: Unit| -> Result<f64, String> {
+        Err(format!(
+            "'{text}': give a number in SI units (metres, kilograms)"
+        ))
+    };
+    design(&value, &no_units).map_err(|r| PyValueError::new_err(r.to_string()))
+}
+
+/// A design's datasheet (the CLI's `design`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (parts, g, pressure, temperature, humidity, regulated_at))]
+fn design(
+    parts: &str,
+    g: Option<f64>,
+    pressure: Option<f64>,
+    temperature: Option<f64>,
+    humidity: Option<f64>,
+    regulated_at: Option<f64>,
+) -> PyResult<String> {
+    use pendulum_theory::compound::datasheet::{datasheet, Air};
+    let design = design_of(parts)?;
+    answer(datasheet(
+        &design,
+        g,
+        &Air {
+            pressure_pa: pressure,
+            temperature_c: temperature,
+            humidity,
+            regulated_at_c: regulated_at,
+        },
+    ))
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -756,5 +795,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(damped, m)?)?;
     m.add_function(wrap_pyfunction!(train, m)?)?;
     m.add_function(wrap_pyfunction!(train_for, m)?)?;
+    m.add_function(wrap_pyfunction!(design, m)?)?;
     Ok(())
 }

@@ -913,3 +913,76 @@ def test_train_for(name):
         return
     assert out.returncode == 0, out.stderr
     assert json.loads(out.stdout) == ours
+
+
+# --- design -------------------------------------------------------------------
+
+ROD = {"name": "rod", "shape": "rod", "material": "steel", "length": 1.0, "diameter": 0.008,
+       "centre": 0.5}
+BOB = {"name": "bob", "shape": "cylinder", "material": "brass", "length": 0.1,
+       "diameter": 0.1, "centre": 0.95}
+NUT = {"name": "nut", "shape": "ring", "material": "brass", "outer": 0.03, "inner": 0.008,
+       "thickness": 0.01, "centre": 1.005, "pitch": 0.0007, "divisions": 20}
+
+
+def toml_of(parts):
+    def value(v):
+        if isinstance(v, bool):
+            return "true" if v else "false"
+        if isinstance(v, str):
+            return json.dumps(v)
+        if isinstance(v, dict):
+            return "{ " + ", ".join(f"{k} = {value(x)}" for k, x in v.items()) + " }"
+        return repr(v)
+    return "".join("[[part]]\n" + "".join(f"{k} = {value(v)}\n" for k, v in p.items()) + "\n"
+                   for p in parts)
+
+
+DESIGN = {
+    "rod_and_bob": ([ROD, BOB], {}),
+    "with_nut": ([ROD, BOB, NUT], {}),
+    "lens_bob": ([ROD, {"name": "bob", "shape": "lens", "material": "brass", "diameter": 0.2,
+                        "thickness": 0.04, "centre": 0.95}], {}),
+    "sphere": ([ROD, {"name": "bob", "shape": "sphere", "material": "lead", "diameter": 0.1,
+                      "centre": 0.95}], {}),
+    "point_bob": ([ROD, {"name": "bob", "shape": "point", "mass": 2.0, "centre": 0.99}], {}),
+    "invar_user_material": ([{**ROD, "material": {"density": 8050, "expansion": 1.3e-6}},
+                             BOB], {}),
+    "rests_on": ([ROD, {**NUT, "centre": 1.0}, {"name": "bob", "shape": "cylinder",
+                                                  "material": "brass", "length": 0.1,
+                                                  "diameter": 0.1, "rests_on": "nut"}], {}),
+    "hot_humid": ([ROD, BOB], {"temperature": 35.0, "humidity": 0.75, "pressure": 95000.0}),
+    "cold_low": ([ROD, BOB], {"temperature": -10.0, "pressure": 70000.0,
+                              "regulated_at": 15.0}),
+    "lunar": ([ROD, BOB], {"g": 1.62}),
+    "pressure_high": ([ROD, BOB], {"pressure": 120000.0}),
+    "temperature_cold": ([ROD, BOB], {"temperature": -40.0}),
+    "humidity_over": ([ROD, BOB], {"humidity": 1.2}),
+    "regulated_hot": ([ROD, BOB], {"regulated_at": 150.0}),
+    "unknown_shape": ([ROD, {**BOB, "shape": "cone"}], {}),
+    "unknown_material": ([ROD, {**BOB, "material": "unobtainium"}], {}),
+    "unknown_field": ([ROD, {**BOB, "colour": "gold"}], {}),
+    "missing_length": ([{k: v for k, v in ROD.items() if k != "length"}, BOB], {}),
+    "twice_named": ([ROD, {**BOB, "name": "rod"}], {}),
+    "no_centre": ([ROD, {k: v for k, v in BOB.items() if k != "centre"}], {}),
+    "above_pivot": ([ROD, {**BOB, "centre": -0.5}], {}),
+    "negative_diameter": ([ROD, {**BOB, "diameter": -0.1}], {}),
+    "rests_on_nothing": ([ROD, {k: v for k, v in BOB.items() if k != "centre"} |
+                          {"rests_on": "nut"}], {}),
+}
+DESIGN_FLAGS = {"g": ("--g", 1.0), "pressure": ("--pressure", 0.01),
+                "temperature": ("--temperature", 1.0), "humidity": ("--humidity", 100.0),
+                "regulated_at": ("--regulated-at", 1.0)}
+FLAG.update({"humidity": "--humidity", "regulated_at": "--regulated-at"})
+
+
+@pytest.mark.parametrize("name", sorted(DESIGN))
+def test_design(name, tmp_path):
+    parts, kw = DESIGN[name]
+    path = tmp_path / "design.toml"
+    path.write_text(toml_of(parts))
+    args = ["design", str(path), "--json"]
+    for k, v in kw.items():
+        flag, scale = DESIGN_FLAGS[k]
+        args += [flag, repr(v * scale)]
+    check(args, lambda: pt.design(parts, **kw))

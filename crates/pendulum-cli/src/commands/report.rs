@@ -13,6 +13,7 @@ use crate::interrupt;
 use crate::output::num;
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::Dimension;
+use pendulum_theory::compound::datasheet::{datasheet, Air};
 use pendulum_theory::damped::DampedPendulum;
 use pendulum_theory::damping::Damping;
 use pendulum_theory::energy::energy_budget;
@@ -77,11 +78,10 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
     let (datasheet, design_mass) = match &args.design {
         Some(path) => {
             let design = crate::design::read_design(path)?;
-            let air = super::design::Air::standard();
-            let sheet =
-                super::design::datasheet(&design, &path.display().to_string(), &gravity, &air)?;
+            let sheet = datasheet(&design, Some(gravity.g_m_s2), &Air::default())
+                .map_err(|r| CliError::other(format!("{}: {r}", path.display())))?;
             (
-                Some(super::design::rows(&sheet, &air, &gravity)),
+                Some(super::design::rows(&sheet, &gravity)),
                 Some(design.pendulum.properties().effective_mass()),
             )
         }

@@ -452,3 +452,24 @@ def train_for(bph, *, escape_teeth=None, tolerance=None):
     return _json.loads(_native.train_for(
         float(bph), None if escape_teeth is None else _counts("escape_teeth", [escape_teeth])[0],
         _number(tolerance)))
+
+
+def _parts(parts):
+    """A design's parts as the library reads them: a list of part dicts
+    (or ``{"part": [...]}``, the TOML file's shape), sizes in SI units."""
+    if isinstance(parts, dict):
+        return _json.dumps(parts)
+    return _json.dumps({"part": list(parts)})
+
+
+def design(parts, *, g=None, pressure=None, temperature=None, humidity=None,
+           regulated_at=None):
+    """The command's ``design`` (the same library call): a pendulum of
+    ``parts`` (dicts with the design file's fields: name, shape,
+    material, length, diameter, ..., centre or rests_on; sizes as numbers
+    in metres and kilograms) in air at ``pressure`` Pa, ``temperature`` °C
+    and relative ``humidity`` (0 to 1), regulated at ``regulated_at`` °C.
+    Returns its ``--json`` object as a dict (without ``file``)."""
+    return _json.loads(_native.design(_parts(parts), _number(g), _number(pressure),
+                                      _number(temperature), _number(humidity),
+                                      _number(regulated_at)))

@@ -24,6 +24,8 @@
 //! added-mass coefficients of [`shape::Shape::added_mass_coefficient`].
 
 pub mod compensator;
+pub mod datasheet;
+pub mod description;
 pub mod material;
 pub mod shape;
 

@@ -1,0 +1,395 @@
+//! A pendulum design described as parts, as a front end reads it (the
+//! command line from a TOML file, Python from a list of dicts), checked
+//! and built into a [`CompoundPendulum`]: which fields a part has, the
+//! shapes and materials by name, the defaults (no bore, a gridiron of
+//! steel and brass, not massless), the rating nut's thread. Sizes are
+//! numbers in SI units, or text the front end's `quantity` parser reads
+//! ("8 mm").
+//!
+//! ```toml
+//! [[part]]
+//! name = "rod"
+//! shape = "rod"          # rod, cylinder, tube, disc, lens, sphere, ring, point
+//! material = "steel"     # or { density = 700, expansion = 4.9e-6 } (kg/m³, 1/K;
+//!                        # add liquid = true for a liquid, whose expansion is
+//!                        # its volume's and which rests on its jar's bottom)
+//! length = "1000 mm"     # a number is metres
+//! diameter = "8 mm"
+//! centre = "500 mm"      # below the pivot; or rests_on = "nut"
+//! ```
+//!
+//! The rating nut may state its thread, `pitch = "0.7 mm"` or `tpi = 36`,
+//! and `divisions = 20` when it is divided.
+
+use super::{CompoundPendulum, Material, Part, Placement, Shape};
+use crate::analysis::Refusal;
+use serde_json::Value;
+
+/// The thread of a design's rating nut.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Thread {
+    /// The index of the threaded part.
+    pub part: usize,
+    /// Its pitch, m per turn.
+    pub pitch: f64,
+    /// The divisions engraved round it, if any.
+    pub divisions: Option<u32>,
+}
+
+/// A design as read: the pendulum, and its nut's thread when stated.
+#[derive(Clone, Debug)]
+pub struct Design {
+    /// The pendulum.
+    pub pendulum: CompoundPendulum,
+    /// The rating nut's thread.
+    pub thread: Option<Thread>,
+}
+
+/// The most parts a design may have.
+pub const MAX_PARTS: usize = 1000;
+
+/// What a size given as text is: the front end's parser reads it in this
+/// unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unit {
+    /// Metres.
+    Length,
+    /// Kilograms.
+    Mass,
+}
+
+/// Reads a size given as text (`"8 mm"`) in SI units, or says why not.
+pub type QuantityParser<'a> = &'a dyn Fn(&str, Unit) -> Result<f64, String>;
+
+/// The design described by `value` (a table with an array `part` of part
+/// tables), checked; every refusal names the part and the field. Text
+/// sizes are read by `quantity`.
+pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal> {
+    let fail = |what: String| Refusal::data(what);
+    let table = value
+        .as_object()
+        .ok_or_else(|| Refusal::data("a design is a table of [[part]] sections"))?;
+    for key in table.keys() {
+        if key != "part" && key != "pendulum" {
+            return Err(fail(format!(
+                "unknown section '{key}'; a design has [[part]] sections"
+            )));
+        }
+    }
+    let parts = table
+        .get("part")
+        .and_then(|p| p.as_array())
+        .ok_or_else(|| fail("no [[part]] sections".into()))?;
+    if parts.len() > MAX_PARTS {
+        return Err(fail(format!(
+            "has {} parts; a design may have at most {MAX_PARTS}",
+            parts.len()
+        )));
+    }
+    let mut names: Vec<String> = Vec::new();
+    for (i, p) in parts.iter().enumerate() {
+        let name = p
+            .get("name")
+            .and_then(|n| n.as_str())
+            .map_or_else(|| format!("part {}", i + 1), str::to_string);
+        if names.contains(&name) {
+            return Err(fail(format!("part '{name}': name: used twice")));
+        }
+        names.push(name);
+    }
+    let mut out = Vec::new();
+    let mut thread: Option<Thread> = None;
+    for (p, name) in parts.iter().zip(&names) {
+        let bad = |field: &str, what: String| fail(format!("part '{name}': {field}: {what}"));
+        let t = p
+            .as_object()
+            .ok_or_else(|| bad("part", "must be a table".into()))?;
+        const KNOWN: [&str; 20] = [
+            "pitch",
+            "tpi",
+            "divisions",
+            "name",
+            "shape",
+            "material",
+            "length",
+            "diameter",
+            "bore",
+            "thickness",
+            "outer",
+            "inner",
+            "mass",
+            "centre",
+            "rests_on",
+            "massless",
+            "center",
+            "brass_length",
+            "steel",
+            "brass",
+        ];
+        for key in t.keys() {
+            if !KNOWN.contains(&key.as_str()) {
+                return Err(bad(key, "unknown field".into()));
+            }
+        }
+        let size = |field: &'static str, dimension: Unit| -> Result<Option<f64>, Refusal> {
+            match t.get(field) {
+                None => Ok(None),
+                Some(Value::Number(v)) => Ok(v.as_f64()),
+                Some(Value::String(s)) => {
+                    quantity(s, dimension).map(Some).map_err(|e| bad(field, e))
+                }
+                Some(_) => Err(bad(
+                    field,
+                    "must be a number or a quantity such as \"8 mm\"".into(),
+                )),
+            }
+        };
+        let need = |field: &'static str| -> Result<f64, Refusal> {
+            size(field, Unit::Length)?.ok_or_else(|| bad(field, "missing".into()))
+        };
+        // The nut's thread.
+        let pitch = match (size("pitch", Unit::Length)?, t.get("tpi")) {
+            (Some(_), Some(_)) => return Err(bad("tpi", "give pitch or tpi, not both".into())),
+            (Some(p), None) => Some(("pitch", p)),
+            (None, Some(v)) => {
+                let tpi = v.as_f64();
+                match tpi {
+                    Some(n) if n > 0.0 && n.is_finite() => Some(("tpi", 0.0254 / n)),
+                    _ => {
+                        return Err(bad(
+                            "tpi",
+                            "must be a positive number of threads per inch".into(),
+                        ))
+                    }
+                }
+            }
+            (None, None) => None,
+        };
+        let divisions = match t.get("divisions") {
+            None => None,
+            Some(Value::Number(d)) if d.as_u64().is_some_and(|d| (1..=10_000).contains(&d)) => {
+                d.as_u64().map(|d| d as u32)
+            }
+            Some(_) => {
+                return Err(bad(
+                    "divisions",
+                    "must be a whole number from 1 to 10000".into(),
+                ))
+            }
+        };
+        match (pitch, divisions) {
+            (Some((field, p)), _) => {
+                if !(p > 0.0 && p.is_finite()) {
+                    return Err(bad(field, format!("must be positive, got {p} m")));
+                }
+                if thread.is_some() {
+                    return Err(bad(
+                        field,
+                        "only one part (the rating nut) has a thread".into(),
+                    ));
+                }
+                if t.get("rests_on").is_some() {
+                    return Err(bad(field, "the threaded part is placed by its centre on the rod, not resting on another".into()));
+                }
+                thread = Some(Thread {
+                    part: out.len(),
+                    pitch: p,
+                    divisions,
+                });
+            }
+            (None, Some(_)) => {
+                return Err(bad(
+                    "divisions",
+                    "give the thread's pitch or tpi too".into(),
+                ))
+            }
+            (None, None) => {}
+        }
+        let shape_name = t.get("shape").and_then(|s| s.as_str()).ok_or_else(|| {
+            bad(
+                "shape",
+                "missing (rod, cylinder, tube, disc, lens, sphere, ring or point)".into(),
+            )
+        })?;
+        let shape = match shape_name {
+            "rod" | "cylinder" | "tube" | "gridiron" => Shape::Cylinder {
+                length: need("length")?,
+                diameter: need("diameter")?,
+                bore: size("bore", Unit::Length)?.unwrap_or(0.0),
+            },
+            "disc" => Shape::Disc {
+                diameter: need("diameter")?,
+                thickness: need("thickness")?,
+            },
+            "lens" => Shape::Lens {
+                diameter: need("diameter")?,
+                thickness: need("thickness")?,
+            },
+            "sphere" => Shape::Sphere {
+                diameter: need("diameter")?,
+            },
+            "ring" => Shape::Ring {
+                outer: need("outer")?,
+                inner: size("inner", Unit::Length)?.unwrap_or(0.0),
+                thickness: need("thickness")?,
+            },
+            "point" => Shape::Point,
+            other => {
+                return Err(bad(
+                    "shape",
+                    format!(
+                    "'{other}' is not one of rod, cylinder, tube, disc, lens, sphere, ring, point"
+                ),
+                ))
+            }
+        };
+        // A gridiron: its drop is `length`, its rods `diameter` thick, of
+        // `steel` and `brass` (default steel and brass), `brass_length` of
+        // brass in the series.
+        if shape_name == "gridiron" {
+            let metal = |key: &'static str, default: &str| -> Result<Material, Refusal> {
+                let name = t.get(key).and_then(|v| v.as_str()).unwrap_or(default);
+                Material::named(name)
+                    .ok_or_else(|| bad(key, format!("'{name}' is not in the table")))
+            };
+            let (steel, brass) = (metal("steel", "steel")?, metal("brass", "brass")?);
+            let Shape::Cylinder {
+                length, diameter, ..
+            } = shape
+            else {
+                unreachable!("a gridiron is read as a cylinder");
+            };
+            let brass_length = need("brass_length")?;
+            let centre = size("centre", Unit::Length)?.ok_or_else(|| {
+                bad(
+                    "centre",
+                    "missing (half the drop, for a gridiron hanging from the pivot)".into(),
+                )
+            })?;
+            out.push(Part {
+                name: name.clone(),
+                shape,
+                material: super::gridiron(length, brass_length, diameter, &steel, &brass),
+                point_mass: 0.0,
+                placement: Placement::Centre(centre),
+                massless: false,
+            });
+            continue;
+        }
+        let material = match t.get("material") {
+            Some(Value::String(m)) => Material::named(m).ok_or_else(|| {
+                bad(
+                    "material",
+                    format!(
+                        "'{m}' is not in the table ({}); give {{ density = …, expansion = … }}",
+                        Material::names().join(", ")
+                    ),
+                )
+            })?,
+            Some(Value::Object(m)) => {
+                let number = |key: &str| -> Result<f64, Refusal> {
+                    match m.get(key) {
+                        Some(Value::Number(v)) if v.as_f64().is_some() => {
+                            Ok(v.as_f64().unwrap_or_default())
+                        }
+                        _ => Err(bad("material", format!("needs a number '{key}'"))),
+                    }
+                };
+                Material {
+                    name: m
+                        .get("name")
+                        .and_then(|n| n.as_str())
+                        .unwrap_or("user-defined")
+                        .to_string(),
+                    density: number("density")?,
+                    expansion: number("expansion")?,
+                    liquid: match m.get("liquid") {
+                        None => false,
+                        Some(Value::Bool(b)) => *b,
+                        Some(_) => {
+                            return Err(bad("material", "liquid must be true or false".into()))
+                        }
+                    },
+                }
+            }
+            None if shape == Shape::Point => Material {
+                name: "point".into(),
+                density: 0.0,
+                expansion: 0.0,
+                liquid: false,
+            },
+            _ => return Err(bad("material", "missing".into())),
+        };
+        let point_mass = if shape == Shape::Point {
+            size("mass", Unit::Mass)?
+                .ok_or_else(|| bad("mass", "missing (a point has a mass, e.g. \"2 kg\")".into()))?
+        } else {
+            0.0
+        };
+        let centre = match size("centre", Unit::Length)? {
+            Some(c) => Some(c),
+            None => size("center", Unit::Length)?,
+        };
+        let placement = match (centre, t.get("rests_on")) {
+            (Some(c), None) => Placement::Centre(c),
+            (None, Some(Value::String(on))) => Placement::RestsOn(
+                names
+                    .iter()
+                    .position(|n| n == on)
+                    .ok_or_else(|| bad("rests_on", format!("no part is named '{on}'")))?,
+            ),
+            (Some(_), Some(_)) => {
+                return Err(bad(
+                    "centre",
+                    "give either centre or rests_on, not both".into(),
+                ))
+            }
+            _ => {
+                return Err(bad(
+                    "centre",
+                    "missing (or rests_on = \"another part\")".into(),
+                ))
+            }
+        };
+        let massless = t.get("massless").and_then(|m| m.as_bool()).unwrap_or(false);
+        out.push(Part {
+            name: name.clone(),
+            shape,
+            material,
+            point_mass,
+            placement,
+            massless,
+        });
+    }
+    let pendulum = CompoundPendulum::new(out)
+        .map_err(|e| fail(format!("part '{}': {}: {}", e.part, e.field, e.message)))?;
+    Ok(Design { pendulum, thread })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn no_units(_: &str, _: Unit) -> Result<f64, String> {
+        Err("give a number in SI units".into())
+    }
+
+    #[test]
+    fn a_design_of_numbers() {
+        let v = serde_json::json!({"part": [
+            {"name": "rod", "shape": "rod", "material": "steel", "length": 1.0,
+             "diameter": 0.008, "centre": 0.5},
+            {"name": "bob", "shape": "sphere", "material": "brass", "diameter": 0.1,
+             "centre": 0.95, "pitch": 0.0007, "divisions": 20}
+        ]});
+        let d = design(&v, &no_units).unwrap();
+        assert_eq!(d.pendulum.parts().len(), 2);
+        assert_eq!(d.thread.unwrap().divisions, Some(20));
+        let bad = serde_json::json!({"part": [{"name": "rod", "shape": "rod",
+            "material": "steel", "length": "1 m", "diameter": 0.008, "centre": 0.5}]});
+        assert_eq!(
+            design(&bad, &no_units).unwrap_err().to_string(),
+            "part 'rod': length: give a number in SI units"
+        );
+    }
+}

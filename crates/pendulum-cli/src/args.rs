@@ -802,16 +802,16 @@ pub struct RegulateArgs {
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
     pub design: Option<std::path::PathBuf>,
     /// The part the nut moves (with what rests on it).
-    #[arg(long, value_name = "NAME", default_value = "nut")]
-    pub part: String,
+    #[arg(long, value_name = "NAME", help = with_default("The part the nut moves (with what rests on it)", pendulum_theory::compound::regulate::DEFAULT_PART))]
+    pub part: Option<String>,
     /// The rating nut's thread pitch (e.g. 0.7mm).
-    #[arg(long, value_name = "P", conflicts_with = "nut_tpi")]
+    #[arg(long, value_name = "P")]
     pub nut_pitch: Option<String>,
     /// The rating nut's threads per inch.
     #[arg(long, value_name = "N")]
     pub nut_tpi: Option<f64>,
     /// Divisions engraved round the nut.
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N")]
     pub nut_divisions: Option<u32>,
     /// Where a regulating tray sits below the pivot [default: a third of the length] (with --design).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]

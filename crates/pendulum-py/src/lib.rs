@@ -768,6 +768,38 @@ fn design(
     ))
 }
 
+/// Regulation (the CLI's `regulate`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (rate, length, parts, part, nut_pitch, nut_tpi, nut_divisions, tray))]
+#[allow(clippy::too_many_arguments)]
+fn regulate(
+    rate: f64,
+    length: Option<f64>,
+    parts: Option<&str>,
+    part: Option<String>,
+    nut_pitch: Option<f64>,
+    nut_tpi: Option<f64>,
+    nut_divisions: Option<u32>,
+    tray: Option<f64>,
+) -> PyResult<String> {
+    use pendulum_theory::compound::regulate::{regulate, Nut, Regulated};
+    let pendulum = match (length, parts) {
+        (Some(l), None) => Regulated::Length(l),
+        (None, Some(p)) => Regulated::Design(design_of(p)?, part),
+        _ => {
+            return Err(PyValueError::new_err(
+                "length: give the length or the design's parts, one of them",
+            ))
+        }
+    };
+    let nut = Nut {
+        pitch: nut_pitch,
+        tpi: nut_tpi,
+        divisions: nut_divisions,
+    };
+    answer(regulate(&pendulum, rate, nut, tray))
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -796,5 +828,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(train, m)?)?;
     m.add_function(wrap_pyfunction!(train_for, m)?)?;
     m.add_function(wrap_pyfunction!(design, m)?)?;
+    m.add_function(wrap_pyfunction!(regulate, m)?)?;
     Ok(())
 }

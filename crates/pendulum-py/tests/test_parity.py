@@ -986,3 +986,48 @@ def test_design(name, tmp_path):
         flag, scale = DESIGN_FLAGS[k]
         args += [flag, repr(v * scale)]
     check(args, lambda: pt.design(parts, **kw))
+
+
+# --- regulate -----------------------------------------------------------------
+
+WITH_NUT = [ROD, {**NUT, "centre": 1.0}, {"name": "bob", "shape": "cylinder", "material": "brass",
+                                            "length": 0.1, "diameter": 0.1, "rests_on": "nut"}]
+REGULATE = {
+    "gaining": (12.0, {"length": 0.994}),
+    "losing": (-30.0, {"length": 0.994}),
+    "on_time": (0.0, {"length": 0.994}),
+    "pitch": (12.0, {"length": 0.994, "nut_pitch": 0.0007}),
+    "tpi": (-30.0, {"length": 0.994, "nut_tpi": 36.0}),
+    "divisions": (12.0, {"length": 0.994, "nut_pitch": 0.0007, "nut_divisions": 20}),
+    "design_nut": (12.0, {"parts": WITH_NUT}),
+    "design_own_thread": (-8.0, {"parts": WITH_NUT, "part": "nut"}),
+    "design_tray": (5.0, {"parts": WITH_NUT, "tray": 0.3}),
+    "design_bob": (12.0, {"parts": [ROD, BOB], "part": "bob"}),
+    "short": (120.0, {"length": 0.25}),
+    "rate_a_day": (86400.0, {"length": 0.994}),
+    "rate_nan": (NAN, {"length": 0.994}),
+    "pitch_huge": (12.0, {"length": 0.994, "nut_pitch": 1.0}),
+    "tpi_zero": (12.0, {"length": 0.994, "nut_tpi": 0.0}),
+    "both_threads": (12.0, {"length": 0.994, "nut_pitch": 0.0007, "nut_tpi": 36.0}),
+    "divisions_zero": (12.0, {"length": 0.994, "nut_pitch": 0.0007, "nut_divisions": 0}),
+    "tray_without_design": (12.0, {"length": 0.994, "tray": 0.3}),
+    "tray_at_pivot": (12.0, {"parts": WITH_NUT, "tray": 0.0}),
+    "no_such_part": (12.0, {"parts": WITH_NUT, "part": "pendulum"}),
+    "length_zero": (12.0, {"length": 0.0}),
+}
+REGULATE_UNITS = {"length": "m", "nut_pitch": "m", "nut_tpi": "", "nut_divisions": "",
+                  "tray": "m", "part": ""}
+
+
+@pytest.mark.parametrize("name", sorted(REGULATE))
+def test_regulate(name, tmp_path):
+    rate, kw = REGULATE[name]
+    args = ["regulate", "--rate", cli_value(rate), "--json"]
+    for k, v in kw.items():
+        if k == "parts":
+            path = tmp_path / "design.toml"
+            path.write_text(toml_of(v))
+            args += ["--design", str(path)]
+        else:
+            args += [f"--{k.replace('_', '-')}", cli_value(v, REGULATE_UNITS[k])]
+    check(args, lambda: pt.regulate(rate, **kw))

@@ -6,27 +6,7 @@ use crate::args::RegulateArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
 use crate::units::{parse_number, Dimension};
-use pendulum_theory::compound::{length_regulation, RegulationError};
-use serde::Serialize;
-
-#[derive(Serialize)]
-struct RegulateJson {
-    rate_s_per_day: f64,
-    equivalent_length_m: f64,
-    /// How far to move the bob, m: positive down (lengthening: for a
-    /// gaining clock), negative up.
-    shift_m: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    nut_turns: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    nut_divisions: Option<f64>,
-    /// With --design: the tray's place below the pivot and the mass to add
-    /// there (negative: to take off).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tray_position_m: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tray_mass_kg: Option<f64>,
-}
+use pendulum_theory::compound::regulate::{regulate, Nut, Regulated};
 
 /// `+12s/day`, `-30 s/d`, `4`: s/day.
 fn rate(text: &str) -> Result<f64, CliError> {
@@ -36,126 +16,41 @@ fn rate(text: &str) -> Result<f64, CliError> {
         .find_map(|u| t.strip_suffix(u))
         .unwrap_or(t)
         .trim();
-    let r = parse_number(number).map_err(|e| CliError::flag("--rate", e))?;
-    if r.is_nan() || r.abs() >= 86_400.0 {
-        return Err(CliError::flag(
-            "--rate",
-            format!("must be less than a day a day, got {text}"),
-        ));
-    }
-    Ok(r)
+    parse_number(number).map_err(|e| CliError::flag("--rate", e))
 }
 
 pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
     let r = rate(&args.rate)?;
-    let pitch = match (&args.nut_pitch, args.nut_tpi) {
-        (Some(p), _) => {
-            let p = common::quantity("--nut-pitch", p, Dimension::Length)?;
-            // Clock threads: 0.25 mm (M1) to a few millimetres.
-            if !(1e-5..=0.05).contains(&p) {
-                return Err(CliError::flag(
-                    "--nut-pitch",
-                    format!("must lie between 0.01 mm and 50 mm, got {} m", num(p, 6)),
-                ));
-            }
-            Some(p)
-        }
-        (None, Some(tpi)) => {
-            if !(0.5..=2540.0).contains(&tpi) {
-                return Err(CliError::flag(
-                    "--nut-tpi",
-                    "must lie between 0.5 and 2540 threads per inch",
-                ));
-            }
-            Some(0.0254 / tpi)
-        }
-        (None, None) => None,
+    let pendulum = match &args.design {
+        Some(path) => Regulated::Design(crate::design::read_design(path)?, args.part.clone()),
+        None => Regulated::Length(common::quantity(
+            "--length",
+            args.length.as_deref().unwrap_or(""),
+            Dimension::Length,
+        )?),
     };
-    let mut pitch = pitch;
-    let mut nut_divisions = args.nut_divisions;
-    let (length, shift, tray) = match &args.design {
-        Some(path) => {
-            let read = crate::design::read_design(path)?;
-            let design = read.pendulum;
-            let p = design.properties();
-            let index = design
-                .parts()
-                .iter()
-                .position(|q| q.name == args.part)
-                .ok_or_else(|| {
-                    CliError::flag(
-                        "--part",
-                        format!("{} has no part named '{}'", path.display(), args.part),
-                    )
-                })?;
-            // The design's own thread, when the part moved is its nut and
-            // no flag gives another.
-            if let Some(t) = read.thread.filter(|t| t.part == index) {
-                if pitch.is_none() {
-                    pitch = Some(t.pitch);
-                    nut_divisions = nut_divisions.or(t.divisions);
-                }
-            }
-            let shift = design.regulation(index, r).map_err(|e| match e {
-                RegulationError::RestsOnAnother { .. } => CliError::flag("--part", e),
-                _ => CliError::flag("--rate", e),
-            })?;
-            let at = match &args.tray {
-                Some(t) => common::quantity("--tray", t, Dimension::Length)?,
-                None => p.equivalent_length / 3.0,
-            };
-            // A tray at the pivot does nothing: from 1% of the length down.
-            if !(at >= 0.01 * p.equivalent_length && at < p.equivalent_length) {
-                return Err(CliError::flag(
-                    "--tray",
-                    format!(
-                        "must lie between 1% of the length below the pivot ({} mm) and the \
-                         centre of oscillation ({} mm)",
-                        num(10.0 * p.equivalent_length, 4),
-                        num(1e3 * p.equivalent_length, 6)
-                    ),
-                ));
-            }
-            // A tray that cannot do it: refused when asked for, else left
-            // out of the advice.
-            let tray = match design.tray_mass(at, r) {
-                Ok(mass) => Some((at, mass)),
-                Err(e) if args.tray.is_some() => return Err(CliError::flag("--tray", e)),
-                Err(_) => None,
-            };
-            (p.equivalent_length, shift, tray)
-        }
-        None => {
-            if args.tray.is_some() {
-                return Err(CliError::flag(
-                    "--tray",
-                    "needs --design: what a tray's mass does depends on the pendulum's parts",
-                ));
-            }
-            let gravity = common::gravity_default();
-            let pendulum = common::pendulum(args.length.as_deref().unwrap_or(""), &gravity)?;
-            let l = pendulum.length_m();
-            let shift = length_regulation(l, r).map_err(|e| CliError::flag("--rate", e))?;
-            (l, shift, None)
-        }
+    let nut = Nut {
+        pitch: args
+            .nut_pitch
+            .as_deref()
+            .map(|p| common::quantity("--nut-pitch", p, Dimension::Length))
+            .transpose()?,
+        tpi: args.nut_tpi,
+        divisions: args.nut_divisions,
     };
-    let turns = pitch.map(|p| shift / p);
-    let divisions = match (turns, nut_divisions) {
-        (Some(t), Some(d)) if d > 0 => Some(t * f64::from(d)),
-        _ => None,
-    };
-    let result = RegulateJson {
-        rate_s_per_day: r,
-        equivalent_length_m: length,
-        shift_m: shift,
-        nut_turns: turns,
-        nut_divisions: divisions,
-        tray_position_m: tray.map(|t| t.0),
-        tray_mass_kg: tray.map(|t| t.1),
-    };
+    let tray = args
+        .tray
+        .as_deref()
+        .map(|t| common::quantity("--tray", t, Dimension::Length))
+        .transpose()?;
+    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
+    let result =
+        regulate(&pendulum, r, nut, tray).map_err(|e| CliError::refused(&e, &[], &no_file))?;
     if args.json {
         return output::json(&result);
     }
+    let (shift, turns, divisions) = (result.shift_m, result.nut_turns, result.nut_divisions);
+    let tray = result.tray_position_m.zip(result.tray_mass_kg);
     let way = if shift >= 0.0 { "lower" } else { "raise" };
     let mut s = Summary::default();
     s.row(

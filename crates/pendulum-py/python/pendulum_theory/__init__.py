@@ -473,3 +473,20 @@ def design(parts, *, g=None, pressure=None, temperature=None, humidity=None,
     return _json.loads(_native.design(_parts(parts), _number(g), _number(pressure),
                                       _number(temperature), _number(humidity),
                                       _number(regulated_at)))
+
+
+def regulate(rate, *, length=None, parts=None, part=None, nut_pitch=None, nut_tpi=None,
+             nut_divisions=None, tray=None):
+    """The command's ``regulate`` (the same library call): a clock gaining
+    ``rate`` s/day (negative: losing) with a simple pendulum of ``length``
+    m or a design of ``parts`` (see :func:`design`; the part moved
+    ``part``, default its nut): how far to move the bob (m, positive
+    down), in turns and divisions of a nut of ``nut_pitch`` m or
+    ``nut_tpi`` threads per inch, or the mass for a tray at ``tray`` m
+    below the pivot. Returns its ``--json`` object as a dict."""
+    if nut_divisions is not None and int(nut_divisions) < 0:
+        raise ValueError("nut_divisions: must be at least 1")
+    return _json.loads(_native.regulate(
+        float(rate), _number(length), None if parts is None else _parts(parts), _text(part),
+        _number(nut_pitch), _number(nut_tpi),
+        None if nut_divisions is None else int(nut_divisions), _number(tray)))

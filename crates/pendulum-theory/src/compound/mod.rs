@@ -27,6 +27,7 @@ pub mod compensator;
 pub mod datasheet;
 pub mod description;
 pub mod material;
+pub mod regulate;
 pub mod shape;
 
 pub use compensator::gridiron;

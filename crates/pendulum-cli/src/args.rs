@@ -835,8 +835,8 @@ pub struct CompensateArgs {
     pub compensator: Option<String>,
     /// The part the tube goes under, or the jar replaces (it must rest on
     /// the nut).
-    #[arg(long, value_name = "NAME", default_value = "bob")]
-    pub part: String,
+    #[arg(long, value_name = "NAME", help = with_default("The part the tube goes under, or the jar replaces (it must rest on the nut)", pendulum_theory::compound::compensate::DEFAULT_PART))]
+    pub part: Option<String>,
     /// The mercury jar's material [default: glass].
     #[arg(long, value_name = "MATERIAL")]
     pub jar_material: Option<String>,

@@ -800,6 +800,36 @@ fn regulate(
     answer(regulate(&pendulum, rate, nut, tray))
 }
 
+/// Temperature compensation (the CLI's `compensate`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (parts, compensator, part, jar_material, jar_diameter, jar_wall, tube_diameter, tube_bore))]
+#[allow(clippy::too_many_arguments)]
+fn compensate(
+    parts: &str,
+    compensator: Option<String>,
+    part: Option<String>,
+    jar_material: Option<String>,
+    jar_diameter: Option<f64>,
+    jar_wall: Option<f64>,
+    tube_diameter: Option<f64>,
+    tube_bore: Option<f64>,
+) -> PyResult<String> {
+    use pendulum_theory::compound::compensate::{compensate, CompensateInput};
+    let design = design_of(parts)?;
+    answer(compensate(
+        &design,
+        &CompensateInput {
+            compensator,
+            part,
+            jar_material,
+            jar_diameter,
+            jar_wall,
+            tube_diameter,
+            tube_bore,
+        },
+    ))
+}
+
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -829,5 +859,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(train_for, m)?)?;
     m.add_function(wrap_pyfunction!(design, m)?)?;
     m.add_function(wrap_pyfunction!(regulate, m)?)?;
+    m.add_function(wrap_pyfunction!(compensate, m)?)?;
     Ok(())
 }

@@ -1031,3 +1031,57 @@ def test_regulate(name, tmp_path):
         else:
             args += [f"--{k.replace('_', '-')}", cli_value(v, REGULATE_UNITS[k])]
     check(args, lambda: pt.regulate(rate, **kw))
+
+
+# --- compensate ---------------------------------------------------------------
+
+#: examples/seconds-steel-brass.toml in SI numbers.
+STEEL_CLOCK = [
+    {"name": "rod", "shape": "rod", "material": "steel", "length": 1.1, "diameter": 0.008,
+     "centre": 0.55},
+    {"name": "nut", "shape": "cylinder", "material": "steel", "length": 0.012,
+     "diameter": 0.016, "centre": 1.077, "pitch": 0.0007, "divisions": 20},
+    {"name": "bob", "shape": "cylinder", "material": "brass", "length": 0.14, "diameter": 0.08,
+     "bore": 0.0085, "rests_on": "nut"},
+]
+INVAR_CLOCK = [{**STEEL_CLOCK[0], "material": "invar"}, *STEEL_CLOCK[1:]]
+COMPENSATE = {
+    "coefficient_only": (STEEL_CLOCK, {}),
+    "zinc": (STEEL_CLOCK, {"compensator": "zinc"}),
+    "aluminium": (STEEL_CLOCK, {"compensator": "aluminium"}),
+    "collar_on_invar": (INVAR_CLOCK, {"compensator": "collar"}),
+    "zinc_sized": (STEEL_CLOCK, {"compensator": "zinc", "tube_bore": 0.01,
+                                 "tube_diameter": 0.014}),
+    "gridiron": ([ROD, BOB], {"compensator": "gridiron"}),
+    "mercury": (STEEL_CLOCK, {"compensator": "mercury"}),
+    "mercury_steel_jar": (STEEL_CLOCK, {"compensator": "mercury", "jar_material": "steel",
+                                        "jar_diameter": 0.08, "jar_wall": 0.003}),
+    "upper_case": (STEEL_CLOCK, {"compensator": "Zinc"}),
+    "brass_tube": (STEEL_CLOCK, {"compensator": "brass"}),
+    "unknown": (STEEL_CLOCK, {"compensator": "unobtainium"}),
+    "liquid_tube": (STEEL_CLOCK, {"compensator": "mercury-tube"}),
+    "no_part": (STEEL_CLOCK, {"compensator": "zinc", "part": "weight"}),
+    "bore_over_diameter": (STEEL_CLOCK, {"compensator": "zinc", "tube_bore": 0.02,
+                                         "tube_diameter": 0.015}),
+    "tube_huge": (STEEL_CLOCK, {"compensator": "zinc", "tube_diameter": 2.0}),
+    "tube_negative": (STEEL_CLOCK, {"compensator": "zinc", "tube_bore": -0.01}),
+    "jar_liquid": (STEEL_CLOCK, {"compensator": "mercury", "jar_material": "mercury"}),
+    "jar_unknown": (STEEL_CLOCK, {"compensator": "mercury", "jar_material": "cheese"}),
+    "jar_wall_zero": (STEEL_CLOCK, {"compensator": "mercury", "jar_wall": 0.0}),
+    "tube_on_hanging_bob": ([ROD, BOB], {"compensator": "zinc"}),
+    "gains_already": ([{**STEEL_CLOCK[0], "material": "invar"}, STEEL_CLOCK[1],
+                       {**STEEL_CLOCK[2], "material": "zinc"}], {"compensator": "zinc"}),
+}
+COMPENSATE_UNITS = {"compensator": "", "part": "", "jar_material": "", "jar_diameter": "m",
+                    "jar_wall": "m", "tube_diameter": "m", "tube_bore": "m"}
+
+
+@pytest.mark.parametrize("name", sorted(COMPENSATE))
+def test_compensate(name, tmp_path):
+    parts, kw = COMPENSATE[name]
+    path = tmp_path / "design.toml"
+    path.write_text(toml_of(parts))
+    args = ["compensate", "--design", str(path), "--json"]
+    for k, v in kw.items():
+        args += [f"--{k.replace('_', '-')}", cli_value(v, COMPENSATE_UNITS[k])]
+    check(args, lambda: pt.compensate(parts, **kw))

@@ -8,256 +8,41 @@ use crate::error::CliError;
 use crate::file::AtomicFile;
 use crate::output::{self, num, Summary};
 use crate::units::Dimension;
-use pendulum_theory::compound::{CompoundPendulum, Material, Shape};
+use pendulum_theory::compound::compensate::{
+    compensate, CompensateInput, Compensation, DEFAULT_PART,
+};
 use serde::Serialize;
 
-#[derive(Serialize, Default)]
-struct CompensateJson {
-    /// The design as given: s/day per °C (negative: losing as it warms).
-    temperature_coefficient_s_per_day_per_c: f64,
-    /// The design as given: `I / (m d)`, m.
-    equivalent_length_m: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    compensator: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tube_length_m: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tube_diameter_m: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tube_bore_m: Option<f64>,
-    /// For a gridiron: the brass in its series, m (the steel is the drop
-    /// and this).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    brass_length_m: Option<f64>,
-    /// For a mercury jar: the mercury's height, m, and mass, kg.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    mercury_height_m: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    mercury_mass_kg: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    jar_material: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    jar_diameter_m: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    jar_wall_m: Option<f64>,
-    /// The compensated design's coefficient, s/day per °C.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    compensated_coefficient_s_per_day_per_c: Option<f64>,
-    /// The compensated design's equivalent length, m (a jar in place of
-    /// the bob changes it: regulate after).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    compensated_equivalent_length_m: Option<f64>,
-    /// Where the compensated design was written.
+/// The command's JSON: the library's result, and where the compensated
+/// design was written.
+#[derive(Serialize)]
+struct CompensateJson<'a> {
+    #[serde(flatten)]
+    result: &'a Compensation,
     #[serde(skip_serializing_if = "Option::is_none")]
     written_to: Option<String>,
 }
 
-/// The index of the part named by `--part`.
-fn part_index(design: &CompoundPendulum, name: &str) -> Result<usize, CliError> {
-    design
-        .parts()
-        .iter()
-        .position(|p| p.name == name)
-        .ok_or_else(|| CliError::flag("--part", format!("the design has no part named '{name}'")))
-}
-
-/// A length flag, positive.
-fn positive_length(flag: &'static str, text: &str) -> Result<f64, CliError> {
-    let v = common::quantity(flag, text, Dimension::Length)?;
-    if v.is_nan() || v <= 0.0 {
-        return Err(CliError::flag(
-            flag,
-            format!("must be positive, got {text}"),
-        ));
-    }
-    // A tube or a jar on a clock pendulum: under a metre across.
-    if v > 1.0 {
-        return Err(CliError::flag(
-            flag,
-            format!("must be at most 1 m for a pendulum's tube or jar, got {text}"),
-        ));
-    }
-    Ok(v)
-}
-
-/// A material of the table, for `flag`.
-fn table_material(flag: &'static str, name: &str) -> Result<Material, CliError> {
-    Material::named(name).ok_or_else(|| {
-        CliError::flag(
-            flag,
-            format!(
-                "'{name}' is not in the table ({})",
-                Material::names().join(", ")
-            ),
-        )
-    })
-}
-
 pub fn run(args: &CompensateArgs) -> Result<String, CliError> {
     let read = crate::design::read_design(&args.design)?;
-    let design = read.pendulum;
-    let before = design.temperature_coefficient();
-    let mut result = CompensateJson {
-        temperature_coefficient_s_per_day_per_c: before,
-        equivalent_length_m: design.properties().equivalent_length,
-        ..CompensateJson::default()
+    let length = |flag: &str, t: &Option<String>| {
+        t.as_deref()
+            .map(|t| common::quantity(flag, t, Dimension::Length))
+            .transpose()
     };
-    let kind = args.compensator.as_deref().map(str::to_ascii_lowercase);
-    // A tube lifts the bob as it warms: it can only cancel a loss.
-    let lifting = |what: &str| -> Option<CliError> {
-        (before > 0.0).then(|| {
-            CliError::flag(
-                "--compensator",
-                format!(
-                    "the design already gains as it warms ({} s/day per °C): {what} lifting the {} would add to it; support the bob nearer its centre, or use a rod that expands more",
-                    num(before, 3),
-                    args.part
-                ),
-            )
-        })
+    let input = CompensateInput {
+        compensator: args.compensator.clone(),
+        part: args.part.clone(),
+        jar_material: args.jar_material.clone(),
+        jar_diameter: length("--jar-diameter", &args.jar_diameter)?,
+        jar_wall: length("--jar-wall", &args.jar_wall)?,
+        tube_diameter: length("--tube-diameter", &args.tube_diameter)?,
+        tube_bore: length("--tube-bore", &args.tube_bore)?,
     };
-    let compensated = match kind.as_deref() {
-        None => None,
-        Some("gridiron") => {
-            let (steel, brass) = (
-                Material::named("steel").expect("in the table"),
-                Material::named("brass").expect("in the table"),
-            );
-            let (compensated, brass_length) =
-                design.with_gridiron(&steel, &brass).ok_or_else(|| {
-                    CliError::flag(
-                        "--compensator",
-                        "no steel and brass gridiron of this rod's drop cancels the coefficient (the design needs a rod hanging from the pivot)",
-                    )
-                })?;
-            result.compensator = Some("gridiron".into());
-            result.brass_length_m = Some(brass_length);
-            Some(compensated)
-        }
-        Some("mercury") | Some("mercury jar") | Some("jar") => {
-            let bob = part_index(&design, &args.part)?;
-            let jar = table_material(
-                "--jar-material",
-                args.jar_material.as_deref().unwrap_or("glass"),
-            )?;
-            if jar.liquid {
-                return Err(CliError::flag("--jar-material", "a jar must be a solid"));
-            }
-            let diameter = match &args.jar_diameter {
-                Some(t) => positive_length("--jar-diameter", t)?,
-                None => match design.parts()[bob].shape {
-                    Shape::Cylinder { diameter, .. } => diameter,
-                    _ => 0.06,
-                },
-            };
-            let wall = match &args.jar_wall {
-                Some(t) => positive_length("--jar-wall", t)?,
-                None => 0.004,
-            };
-            let (compensated, height) = design
-                .with_mercury_jar(bob, &jar, diameter, wall)
-                .ok_or_else(|| {
-                    CliError::flag(
-                        "--compensator",
-                        format!(
-                            "no mercury up to 0.5 m deep in a {} mm {} jar cancels this design's coefficient (the '{}' must rest on a nut or stirrup, and the jar be wider than its walls and the rod)",
-                            num(diameter * 1e3, 4),
-                            jar.name,
-                            args.part
-                        ),
-                    )
-                })?;
-            let mercury = compensated
-                .parts()
-                .iter()
-                .find(|p| p.material.liquid)
-                .map(|p| p.mass());
-            result.compensator = Some("mercury jar".into());
-            result.mercury_height_m = Some(height);
-            result.mercury_mass_kg = mercury;
-            result.jar_material = Some(jar.name.clone());
-            result.jar_diameter_m = Some(diameter);
-            result.jar_wall_m = Some(wall);
-            Some(compensated)
-        }
-        Some(name) => {
-            let material = table_material(
-                "--compensator",
-                if name == "collar" { "brass" } else { name },
-            )
-            .map_err(|_| {
-                CliError::flag(
-                    "--compensator",
-                    format!(
-                        "'{name}' is neither gridiron, mercury, collar nor a material of the table ({})",
-                        Material::names().join(", ")
-                    ),
-                )
-            })?;
-            if material.liquid {
-                return Err(CliError::flag(
-                    "--compensator",
-                    "a liquid goes in a jar: give --compensator mercury",
-                ));
-            }
-            let bob = part_index(&design, &args.part)?;
-            if let Some(e) = lifting("a tube") {
-                return Err(e);
-            }
-            let rod_diameter = design
-                .rod_index()
-                .and_then(|i| match design.parts()[i].shape {
-                    Shape::Cylinder { diameter, .. } => Some(diameter),
-                    _ => None,
-                })
-                .ok_or_else(|| CliError::flag("--design", "has no rod hanging from the pivot"))?;
-            let bore = match &args.tube_bore {
-                Some(t) => positive_length("--tube-bore", t)?,
-                None => rod_diameter + 1e-3,
-            };
-            let diameter = match &args.tube_diameter {
-                Some(t) => positive_length("--tube-diameter", t)?,
-                None => bore + 3e-3,
-            };
-            if diameter <= bore {
-                // Said of the flag the user gave (the other is derived).
-                let flag = if args.tube_diameter.is_some() {
-                    "--tube-diameter"
-                } else {
-                    "--tube-bore"
-                };
-                return Err(CliError::flag(
-                    flag,
-                    format!(
-                        "the tube's bore ({} mm) must be less than its diameter ({} mm)",
-                        num(bore * 1e3, 4),
-                        num(diameter * 1e3, 4)
-                    ),
-                ));
-            }
-            let (compensated, length) = design
-                .with_compensating_tube(bob, material.clone(), diameter, bore)
-                .ok_or_else(|| {
-                    CliError::flag(
-                        "--compensator",
-                        format!(
-                            "no {} tube up to 1.5 m cancels this design's coefficient (the '{}' must rest on a nut placed on the rod, and the tube must expand more than the rod)",
-                            material.name, args.part
-                        ),
-                    )
-                })?;
-            result.compensator = Some(material.name);
-            result.tube_length_m = Some(length);
-            result.tube_diameter_m = Some(diameter);
-            result.tube_bore_m = Some(bore);
-            Some(compensated)
-        }
-    };
-    if let Some(c) = &compensated {
-        result.compensated_coefficient_s_per_day_per_c = Some(c.temperature_coefficient());
-        result.compensated_equivalent_length_m = Some(c.properties().equivalent_length);
-    }
-    match (&args.write, &compensated) {
+    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
+    let result = compensate(&read, &input).map_err(|r| CliError::refused(&r, &[], &no_file))?;
+    let mut written_to = None;
+    match (&args.write, &result.compensated) {
         (Some(path), Some(c)) => {
             let title = format!(
                 "{} with a {} sized by `pendulum compensate`.",
@@ -273,7 +58,7 @@ pub fn run(args: &CompensateArgs) -> Result<String, CliError> {
             file.writer()
                 .write_all(text.as_bytes())
                 .map_err(|e| file.write_error(e))?;
-            result.written_to = Some(file.commit()?);
+            written_to = Some(file.commit()?);
         }
         (Some(_), None) => {
             return Err(CliError::flag(
@@ -283,14 +68,20 @@ pub fn run(args: &CompensateArgs) -> Result<String, CliError> {
         }
         _ => {}
     }
+    let part = args.part.as_deref().unwrap_or(DEFAULT_PART);
+    let json = CompensateJson {
+        result: &result,
+        written_to,
+    };
     if args.json {
-        return output::json(&result);
+        return output::json(&json);
     }
-    render(&result, &args.part)
+    render(&json, part)
 }
 
 /// The summary for people.
-fn render(result: &CompensateJson, part: &str) -> Result<String, CliError> {
+fn render(json: &CompensateJson, part: &str) -> Result<String, CliError> {
+    let result = json.result;
     let before = result.temperature_coefficient_s_per_day_per_c;
     let mut s = Summary::default();
     s.row(
@@ -357,7 +148,7 @@ fn render(result: &CompensateJson, part: &str) -> Result<String, CliError> {
             );
         }
     }
-    if let Some(w) = &result.written_to {
+    if let Some(w) = &json.written_to {
         s.row("Written", w.clone());
     }
     Ok(s.render())

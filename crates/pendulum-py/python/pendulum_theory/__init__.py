@@ -490,3 +490,15 @@ def regulate(rate, *, length=None, parts=None, part=None, nut_pitch=None, nut_tp
         float(rate), _number(length), None if parts is None else _parts(parts), _text(part),
         _number(nut_pitch), _number(nut_tpi),
         None if nut_divisions is None else int(nut_divisions), _number(tray)))
+
+
+def compensate(parts, compensator=None, *, part=None, jar_material=None, jar_diameter=None,
+               jar_wall=None, tube_diameter=None, tube_bore=None):
+    """The command's ``compensate`` (the same library call): the
+    temperature coefficient of a design of ``parts`` (see :func:`design`)
+    and, with a ``compensator`` (a tube's material such as ``"zinc"``,
+    ``"collar"``, ``"gridiron"`` or ``"mercury"``), its size; sizes in
+    metres. Returns its ``--json`` object as a dict."""
+    return _json.loads(_native.compensate(
+        _parts(parts), _text(compensator), _text(part), _text(jar_material),
+        _number(jar_diameter), _number(jar_wall), _number(tube_diameter), _number(tube_bore)))

@@ -23,6 +23,7 @@
 //! the air carried along adds to the inertia, `Σ k_i ρ V_i d_i²`, with the
 //! added-mass coefficients of [`shape::Shape::added_mass_coefficient`].
 
+pub mod compensate;
 pub mod compensator;
 pub mod datasheet;
 pub mod description;

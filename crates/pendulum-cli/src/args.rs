@@ -350,9 +350,9 @@ pub struct FitDecayArgs {
     pub file: std::path::PathBuf,
     #[command(flatten)]
     pub read: MeasurementArgs,
-    /// Which decay law to fit.
-    #[arg(long, default_value = "all", value_parser = ["viscous", "coulomb", "quadratic", "viscous+coulomb", "viscous+quadratic", "full", "all"])]
-    pub model: String,
+    /// Which decay law to fit (the library's laws, or all).
+    #[arg(long, value_name = "LAW", help = with_default(&format!("Which decay law to fit: {}", pendulum_theory::fitting::rundown::model_names()), pendulum_theory::fitting::rundown::DEFAULT_MODEL))]
+    pub model: Option<String>,
     /// Pendulum length: turns rates into ζ, Q, friction angle and drag (needed for a swing column).
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub length: Option<String>,
@@ -400,8 +400,8 @@ pub struct FitTrajectoryArgs {
     pub design: Option<std::path::PathBuf>,
     /// Section 1-4's closed form, the nonlinear equation integrated inside
     /// the fit, or auto: nonlinear when the largest swing exceeds 5°.
-    #[arg(long, default_value = "auto", value_parser = ["auto", "linear", "nonlinear"])]
-    pub model: String,
+    #[arg(long, value_name = "MODEL", help = with_default("Section 1-4's closed form (linear), the nonlinear equation integrated inside the fit (nonlinear), or auto: nonlinear when the largest swing exceeds 5°", pendulum_theory::fitting::tracked::DEFAULT_MODEL))]
+    pub model: Option<String>,
     /// Write the residuals to this CSV file (time_s,residual_rad).
     #[arg(long, value_name = "FILE.csv")]
     pub residuals: Option<std::path::PathBuf>,
@@ -698,8 +698,8 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub duration: String,
     /// Integration method.
-    #[arg(long, value_enum, default_value_t = MethodArg::Dop853)]
-    pub method: MethodArg,
+    #[arg(long, value_enum, help = with_default("Integration method", pendulum_theory::simulation::analysis::DEFAULT_METHOD))]
+    pub method: Option<MethodArg>,
     /// Local error tolerance of each step, relative to the size of the
     /// swing [default: the library's, 1e-10].
     #[arg(long, value_name = "TOL", allow_hyphen_values = true)]

@@ -449,14 +449,20 @@ fn fit_trajectory(
 }
 
 /// A long run as the Python package passes it: duration, row interval,
-/// drive schedule (times, factors), rate schedule (times, s/day), force.
+/// drive schedule (times, factors), rate schedule (times, s/day), weather
+/// (times, temperatures °C, pressures Pa), force.
 type RunArgs = (
     f64,
     Option<f64>,
     Option<(Vec<f64>, Vec<f64>)>,
     Option<(Vec<f64>, Vec<f64>)>,
+    Option<Weather>,
     bool,
 );
+
+/// The weather as the Python package passes it: times, and temperatures
+/// (°C) and pressures (Pa), either or both.
+type Weather = (Vec<f64>, Option<Vec<f64>>, Option<Vec<f64>>);
 
 /// A long run's rows, column by column.
 #[derive(Default)]
@@ -483,11 +489,12 @@ impl pendulum_theory::clock::analysis::RunSink for Columns {
 /// rows (time_s, beats, amplitude_rad, rate_s_per_day, time_error_s,
 /// drive_factor) when one was asked for. `None` is the library's default.
 #[pyfunction]
-#[pyo3(signature = (length, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, drive_factor, drive_range, steps, run))]
+#[pyo3(signature = (length, parts, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, drive_factor, drive_range, steps, run))]
 #[allow(clippy::too_many_arguments)]
 fn clock<'py>(
     py: Python<'py>,
-    length: f64,
+    length: Option<f64>,
+    parts: Option<&str>,
     g: Option<f64>,
     mass: Option<f64>,
     q: Option<f64>,
@@ -516,8 +523,17 @@ fn clock<'py>(
         (None, Some((from, to))) => Some(DriveFactors::Range { from, to, steps }),
         (None, None) => None,
     };
+    let pendulum = match (length, parts) {
+        (Some(l), None) => ClockPendulum::Length(l),
+        (None, Some(p)) => ClockPendulum::Design(design_of(p)?.pendulum),
+        _ => {
+            return Err(PyValueError::new_err(
+                "length: give the length or the design's parts, one of them",
+            ))
+        }
+    };
     let input = ClockInput {
-        pendulum: ClockPendulum::Length(length),
+        pendulum,
         g,
         mass,
         q,
@@ -534,11 +550,17 @@ fn clock<'py>(
         // A negative count is refused as none.
         every_beats: every_beats.map(|n| u64::try_from(n).unwrap_or(0)),
         isochronism,
-        run: run.map(|(duration, every, drive, rate, force)| RunInput {
+        run: run.map(|(duration, every, drive, rate, weather, force)| RunInput {
             duration,
             every,
             drive_schedule: schedule(drive),
-            weather: None,
+            weather: weather.map(|(time, temperature_c, pressure_pa)| {
+                pendulum_theory::clock::analysis::Weather {
+                    time,
+                    temperature_c,
+                    pressure_pa,
+                }
+            }),
             rate_schedule: schedule(rate),
             force,
         }),

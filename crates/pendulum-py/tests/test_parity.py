@@ -1085,3 +1085,53 @@ def test_compensate(name, tmp_path):
     for k, v in kw.items():
         args += [f"--{k.replace('_', '-')}", cli_value(v, COMPENSATE_UNITS[k])]
     check(args, lambda: pt.compensate(parts, **kw))
+
+
+# --- clock: a design's weather -------------------------------------------------
+
+#: (times, temperatures °C or None, pressures hPa or None).
+WEATHER = {
+    "warm_spell": ([0.0, DAY, DAY + 1], [20.0, 20.0, 30.0], None),
+    "pressure_falls": ([0.0, 2 * DAY], None, [1013.25, 980.5]),
+    "both": ([0.0, DAY, 2 * DAY], [18.0, 25.0, 21.5], [1000.0, 1010.0, 995.25]),
+    "cold_out_of_range": ([0.0, DAY], [20.0, -40.0], None),
+    "pressure_out_of_range": ([0.0, DAY], None, [1013.25, 500.0]),
+    "unsorted": ([0.0, DAY, 100.0], [20.0, 21.0, 22.0], None),
+}
+
+
+FLAG.update({"weather": "--drive-file"})
+
+
+def weather_case(name, tmp_path, parts):
+    times, temps, press = WEATHER[name]
+    header, columns = ["time_s"], [times]
+    if temps is not None:
+        header.append("temperature_c")
+        columns.append(temps)
+    if press is not None:
+        header.append("pressure_hpa")
+        columns.append(press)
+    path = tmp_path / "weather.csv"
+    write_csv(path, header, columns)
+    pa = None if press is None else [p * 100.0 for p in press]
+    return path, (times, temps, pa)
+
+
+@pytest.mark.parametrize("name", sorted(WEATHER))
+def test_clock_weather(name, tmp_path):
+    design = tmp_path / "design.toml"
+    design.write_text(toml_of(STEEL_CLOCK))
+    path, weather = weather_case(name, tmp_path, STEEL_CLOCK)
+    args = ["clock", "--design", str(design), "--drive", "2e-05J", "--duration",
+            f"{3 * DAY!r}s", "--every", "3600.0s", "--drive-file", str(path), "--json"]
+    check(args, lambda: pt.clock_run(None, 3 * DAY, every=3600.0, weather=weather,
+                                     parts=STEEL_CLOCK, drive_energy=2e-5)[1])
+
+
+def test_weather_needs_a_design(tmp_path):
+    path, weather = weather_case("warm_spell", tmp_path, None)
+    args = ["clock", "--length", "0.99362m", "--drive", "2e-05J", "--duration", "86400.0s",
+            "--every", "3600.0s", "--drive-file", str(path), "--json"]
+    check(args, lambda: pt.clock_run(0.99362, DAY, every=3600.0, weather=weather,
+                                     drive_energy=2e-5)[1])

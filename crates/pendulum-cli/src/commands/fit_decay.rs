@@ -75,7 +75,7 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     let file = table.file.clone();
     let format = table.format.clone();
     let input = RunDownInput {
-        model: Some(args.model.as_str()),
+        model: args.model.as_deref(),
         period,
         length: pendulum.map(|p| p.length_m()),
         g: pendulum.map(|p| p.g_m_s2()),

@@ -63,7 +63,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     let analysis = analyse(&TrackInput {
         time,
         angle: theta,
-        model: Some(args.model.as_str()),
+        model: args.model.as_deref(),
         length,
         force: args.read.force,
     })

@@ -106,7 +106,7 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         friction_angle: Some(swing.friction_angle),
         method: args
             .method
-            .to_possible_value()
+            .and_then(|m| m.to_possible_value())
             .map(|v| v.get_name().to_string()),
         tolerance,
         sample_interval,

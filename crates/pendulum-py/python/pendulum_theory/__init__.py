@@ -278,14 +278,14 @@ def fit_beats(time, *, bph=None, period=None):
     return FitResult(d, {k: d[k] for k in keys}, {}, None)
 
 
-def _clock(length, *, drive_energy=None, drive_torque=None, q=None, escapement=None,
+def _clock(length, *, parts=None, drive_energy=None, drive_torque=None, q=None, escapement=None,
            lift_angle=None, mass=None, friction=None, recoil=None, impulse_angle=None,
            every_beats=None, g=None, drive_factor=None, drive_range=None, steps=None, run=None):
     factors = None if drive_factor is None else [
         float(f) for f in _np.atleast_1d(_np.asarray(drive_factor, dtype=_np.float64)).ravel()]
     span = None if drive_range is None else (float(drive_range[0]), float(drive_range[1]))
     text, columns = _native.clock(
-        float(length), _number(g), _number(mass), _number(q), _text(escapement),
+        _number(length), None if parts is None else _parts(parts), _number(g), _number(mass), _number(q), _text(escapement),
         _number(lift_angle), _number(drive_torque), _number(drive_energy), _number(friction),
         _number(recoil), _number(impulse_angle), None if every_beats is None else int(every_beats),
         factors, span, None if steps is None else int(steps), run)
@@ -293,8 +293,9 @@ def _clock(length, *, drive_energy=None, drive_torque=None, q=None, escapement=N
 
 
 def clock(
-    length,
+    length=None,
     *,
+    parts=None,
     drive_energy=None,
     drive_torque=None,
     q=None,
@@ -313,7 +314,9 @@ def clock(
     """A pendulum kept going by an escapement (the CLI's ``clock``, the
     same library call): ``escapement`` is impulse, deadbeat, recoil,
     constant-force or free; the drive is ``drive_energy`` (J per beat) or
-    ``drive_torque`` (N m at the pallets); angles in radians; a keyword
+    ``drive_torque`` (N m at the pallets); the pendulum a simple one of
+    ``length`` m or a design of ``parts`` (see :func:`design`); angles in
+    radians; a keyword
     left out is the library's default (``pendulum clock --help`` lists
     them). Returns the command's ``--json`` object as a dict: the clock
     (escapement, q, length_m, mass_kg, lift_angle_rad, the drive,
@@ -323,7 +326,7 @@ def clock(
     ``steps``, ``isochronism``: one dict per factor, ``stops`` where the
     pendulum stops. A drive too weak raises ValueError ("the pendulum
     stops: ...")."""
-    result, _ = _clock(length, drive_energy=drive_energy, drive_torque=drive_torque, q=q,
+    result, _ = _clock(length, parts=parts, drive_energy=drive_energy, drive_torque=drive_torque, q=q,
                        escapement=escapement, lift_angle=lift_angle, mass=mass, friction=friction,
                        recoil=recoil, impulse_angle=impulse_angle, every_beats=every_beats, g=g,
                        drive_factor=drive_factor, drive_range=drive_range, steps=steps)
@@ -331,7 +334,7 @@ def clock(
 
 
 def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedule=None,
-              force=False, **clock_keywords):
+              weather=None, force=False, **clock_keywords):
     """A long run of the clock (the CLI's ``clock --duration``), started in
     its steady state and regulated to it: a row at every turning point, or
     every ``every`` s (then many beats per step: a year in a fraction of a
@@ -341,7 +344,9 @@ def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedul
     a change of rate from outside (positive: gaining), as the CLI's drive
     file makes from temperature and pressure with a design: for a
     coefficient of -0.5 s/day per °C and a 10 °C warm spell, ``([0, 86400,
-    86401], [0, 0, -5])``. Returns a dict of arrays (time_s, beats,
+    86401], [0, 0, -5])``; or, for a clock of ``parts``, ``weather`` is
+    ``(times_s, temperatures_c, pressures_pa)`` (either column ``None``)
+    and the design's own coefficients move the rate. Returns a dict of arrays (time_s, beats,
     amplitude_rad, rate_s_per_day, time_error_s, drive_factor) and the
     command's ``--json`` object (its ``long_run`` the run's summary)."""
     def pairs(schedule):
@@ -349,8 +354,13 @@ def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedul
             return None
         return [float(x) for x in schedule[0]], [float(x) for x in schedule[1]]
 
+    def column(values):
+        return None if values is None else [float(x) for x in values]
+
+    climate = None if weather is None else (
+        column(weather[0]), column(weather[1]), column(weather[2] if len(weather) > 2 else None))
     run = (float(duration), _number(every), pairs(drive_schedule), pairs(rate_schedule),
-           bool(force))
+           climate, bool(force))
     result, columns = _clock(length, run=run, **clock_keywords)
     names = ["time_s", "beats", "amplitude_rad", "rate_s_per_day", "time_error_s", "drive_factor"]
     return dict(zip(names, columns)), result

@@ -115,10 +115,13 @@ pub struct Fitted {
     pub power_w: Option<f64>,
 }
 
+/// The model fitted when none is named: every law, compared.
+pub const DEFAULT_MODEL: &str = "all";
+
 /// The law names [`RunDownInput::model`] takes.
 pub fn model_names() -> String {
     let mut names: Vec<&str> = DecayModel::ALL.iter().map(|m| m.name()).collect();
-    names.push("all");
+    names.push(DEFAULT_MODEL);
     names.join(", ")
 }
 
@@ -195,7 +198,8 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
         }
     }
     let models: Vec<DecayModel> = match input.model {
-        None | Some("all") => DecayModel::ALL.to_vec(),
+        None => DecayModel::ALL.to_vec(),
+        Some(name) if name == DEFAULT_MODEL => DecayModel::ALL.to_vec(),
         Some(name) => vec![DecayModel::from_name(name).ok_or_else(|| {
             Refusal::field("model", format!("'{name}' is not one of {}", model_names()))
         })?],

@@ -124,13 +124,16 @@ pub struct Track {
     pub residuals: Vec<f64>,
 }
 
+/// The model fitted when none is named: the nonlinear one past 5°.
+pub const DEFAULT_MODEL: &str = "auto";
+
 /// Analyses a tracked swing (see the module notes).
 pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     let (time, theta) = (input.time, input.angle);
     check_pairs("time", "angle", time, theta)?;
     check_times("time", time)?;
     require_finite_samples("angle", theta)?;
-    let requested = match input.model.unwrap_or("auto") {
+    let requested = match input.model.unwrap_or(DEFAULT_MODEL) {
         "auto" => "auto",
         "linear" => "linear",
         "nonlinear" => "nonlinear",

@@ -24,6 +24,8 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-10;
 pub const TOLERANCE_RANGE: std::ops::Range<f64> = 1e-15..1.0;
 /// Longer simulated durations need forcing, s (32 years).
 pub const MAX_DURATION_S: f64 = 1e9;
+/// The method when none is named.
+pub const DEFAULT_METHOD: &str = "dop853";
 /// The method names, in the order offered.
 pub const METHODS: [&str; 5] = ["dop853", "vern9", "symplectic", "exact", "averaged"];
 
@@ -300,7 +302,7 @@ pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
             ));
         }
     }
-    let method = method_of(input.method.as_deref().unwrap_or("dop853"))?;
+    let method = method_of(input.method.as_deref().unwrap_or(DEFAULT_METHOD))?;
     let options = Options {
         duration,
         tolerance,

@@ -5,6 +5,7 @@
 use clap::{Args, Parser, Subcommand};
 use pendulum_theory::clock::analysis as clock;
 use pendulum_theory::compound::datasheet as sheet;
+use pendulum_theory::listening::synth::TickRecording;
 use pendulum_theory::period::table as period_table;
 use pendulum_theory::train::analysis as train_analysis;
 
@@ -197,75 +198,35 @@ pub struct SynthTicksArgs {
     #[arg(value_name = "OUT.wav")]
     pub output: std::path::PathBuf,
     /// Beats per hour.
-    #[arg(
-        long,
-        value_name = "B",
-        default_value = "3600",
-        allow_hyphen_values = true
-    )]
-    pub bph: String,
+    #[arg(long, value_name = "B", allow_hyphen_values = true, help = with_default("Beats per hour", TickRecording::DEFAULT.beats_per_hour))]
+    pub bph: Option<String>,
     /// The clock's rate, s/day (positive: gaining).
-    #[arg(
-        long,
-        value_name = "R",
-        default_value = "0",
-        allow_hyphen_values = true
-    )]
-    pub rate: String,
+    #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("The clock's rate, s/day (positive: gaining)", TickRecording::DEFAULT.rate_s_per_day))]
+    pub rate: Option<String>,
     /// Beat error, ms (half the difference of the tick and tock intervals).
-    #[arg(
-        long,
-        value_name = "E",
-        default_value = "0",
-        allow_hyphen_values = true
-    )]
-    pub beat_error: String,
+    #[arg(long, value_name = "E", allow_hyphen_values = true, help = with_default("Beat error, ms (half the difference of the tick and tock intervals)", TickRecording::DEFAULT.beat_error_ms))]
+    pub beat_error: Option<String>,
     /// Length of the recording.
-    #[arg(
-        long,
-        value_name = "D",
-        default_value = "60s",
-        allow_hyphen_values = true
-    )]
-    pub duration: String,
+    #[arg(long, value_name = "D", allow_hyphen_values = true, help = with_default("Length of the recording, s", TickRecording::DEFAULT.duration))]
+    pub duration: Option<String>,
     /// A tick's peak over the noise, dB.
-    #[arg(
-        long,
-        value_name = "S",
-        default_value = "30",
-        allow_hyphen_values = true
-    )]
-    pub snr_db: String,
+    #[arg(long, value_name = "S", allow_hyphen_values = true, help = with_default("A tick's peak over the noise, dB", TickRecording::DEFAULT.snr_db))]
+    pub snr_db: Option<String>,
     /// Samples per second.
-    #[arg(long, value_name = "HZ", default_value_t = 44_100)]
-    pub sample_rate: u32,
+    #[arg(long, value_name = "HZ", help = with_default("Samples per second", TickRecording::DEFAULT.sample_rate))]
+    pub sample_rate: Option<u32>,
     /// Room reverberation time.
-    #[arg(
-        long,
-        value_name = "T",
-        default_value = "0.3s",
-        allow_hyphen_values = true
-    )]
-    pub reverb: String,
+    #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Room reverberation time, s", TickRecording::DEFAULT.reverb_s))]
+    pub reverb: Option<String>,
     /// Mains hum against a tick's peak, dB.
-    #[arg(
-        long,
-        value_name = "DB",
-        default_value = "-30",
-        allow_hyphen_values = true
-    )]
-    pub hum_db: String,
+    #[arg(long, value_name = "DB", allow_hyphen_values = true, help = with_default("Mains hum against a tick's peak, dB", TickRecording::DEFAULT.hum_db))]
+    pub hum_db: Option<String>,
     /// Fraction of ticks left out.
-    #[arg(
-        long,
-        value_name = "F",
-        default_value = "0",
-        allow_hyphen_values = true
-    )]
-    pub missing: String,
+    #[arg(long, value_name = "F", allow_hyphen_values = true, help = with_default("Fraction of ticks left out", TickRecording::DEFAULT.missing))]
+    pub missing: Option<String>,
     /// Seed of every random choice (the tick's sound too).
-    #[arg(long, value_name = "N", default_value_t = 1)]
-    pub seed: u64,
+    #[arg(long, value_name = "N", help = with_default("Seed of every random choice (the tick's sound too)", TickRecording::DEFAULT.seed))]
+    pub seed: Option<u64>,
     /// Write the true tick times to this CSV file (time_s).
     #[arg(long, value_name = "FILE.csv")]
     pub truth: Option<std::path::PathBuf>,

@@ -10,76 +10,44 @@ use crate::units::{parse_number, Dimension};
 use crate::work;
 use pendulum_theory::listening::synth::{Synthesizer, TickRecording};
 
-/// Longer recordings are refused (a WAV file holds at most 4 GiB).
-const MAX_DURATION_S: f64 = 4.0 * 3600.0;
-
 pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
-    let number = |flag: &str, text: &str| parse_number(text).map_err(|e| CliError::flag(flag, e));
-    let bph = number("--bph", &args.bph)?;
-    if !(1800.0..=72_000.0).contains(&bph) {
-        return Err(CliError::flag(
-            "--bph",
-            format!(
-                "must be between 1800 and 72000 beats/hour, got {}",
-                num(bph, 6)
-            ),
-        ));
-    }
-    let duration = common::quantity("--duration", &args.duration, Dimension::Time)?;
-    if !(duration > 0.0 && duration <= MAX_DURATION_S) {
-        return Err(CliError::flag(
-            "--duration",
-            format!("must be between 0 and 4 hours, got {} s", num(duration, 6)),
-        ));
-    }
-    if !(8000..=192_000).contains(&args.sample_rate) {
-        return Err(CliError::flag(
-            "--sample-rate",
-            format!(
-                "must be between 8000 and 192000 Hz, got {}",
-                args.sample_rate
-            ),
-        ));
-    }
-    let reverb = common::quantity("--reverb", &args.reverb, Dimension::Time)?;
-    if !(0.0..=3.0).contains(&reverb) {
-        return Err(CliError::flag("--reverb", "must be between 0 and 3 s"));
-    }
-    let missing = number("--missing", &args.missing)?;
-    if !(0.0..=0.5).contains(&missing) {
-        return Err(CliError::flag("--missing", "must be between 0 and 0.5"));
-    }
-    let spec = TickRecording {
-        sample_rate: args.sample_rate,
-        duration,
-        beats_per_hour: bph,
-        rate_s_per_day: number("--rate", &args.rate)?,
-        beat_error_ms: number("--beat-error", &args.beat_error)?,
-        snr_db: number("--snr-db", &args.snr_db)?,
-        reverb_s: reverb,
-        hum_db: number("--hum-db", &args.hum_db)?,
-        missing,
-        seed: args.seed,
+    let number = |flag: &str, text: &Option<String>, default: f64| {
+        text.as_deref().map_or(Ok(default), |t| {
+            parse_number(t).map_err(|e| CliError::flag(flag, e))
+        })
     };
-    if spec.rate_s_per_day.abs() > 3600.0 {
-        return Err(CliError::flag("--rate", "must be within ±3600 s/day"));
-    }
-    if spec.beat_error_ms.abs() > 0.2 * 1800.0 / bph * 1e3 {
-        return Err(CliError::flag(
-            "--beat-error",
-            "must be less than a fifth of the beat",
-        ));
-    }
+    let time = |flag: &str, text: &Option<String>, default: f64| {
+        text.as_deref()
+            .map_or(Ok(default), |t| common::quantity(flag, t, Dimension::Time))
+    };
+    // Each input not given is the library's.
+    let d = TickRecording::DEFAULT;
+    let spec = TickRecording {
+        sample_rate: args.sample_rate.unwrap_or(d.sample_rate),
+        duration: time("--duration", &args.duration, d.duration)?,
+        beats_per_hour: number("--bph", &args.bph, d.beats_per_hour)?,
+        rate_s_per_day: number("--rate", &args.rate, d.rate_s_per_day)?,
+        beat_error_ms: number("--beat-error", &args.beat_error, d.beat_error_ms)?,
+        snr_db: number("--snr-db", &args.snr_db, d.snr_db)?,
+        reverb_s: time("--reverb", &args.reverb, d.reverb_s)?,
+        hum_db: number("--hum-db", &args.hum_db, d.hum_db)?,
+        missing: number("--missing", &args.missing, d.missing)?,
+        seed: args.seed.unwrap_or(d.seed),
+    };
+    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
+    spec.check()
+        .map_err(|r| CliError::refused(&r, &[], &no_file))?;
+    let (bph, duration, sample_rate) = (spec.beats_per_hour, spec.duration, spec.sample_rate);
     // The samples are made and written a block at a time: an hour at
     // 48 kHz is 345 MB of WAV but a few MB of memory.
     let mut recording = Synthesizer::new(&spec);
-    let header = wav_header(recording.len() as u64, args.sample_rate).ok_or_else(|| {
+    let header = wav_header(recording.len() as u64, sample_rate).ok_or_else(|| {
         CliError::flag(
             "--duration",
             format!(
                 "{} s at {} Hz passes the 4 GiB a WAV file can hold",
                 num(duration, 6),
-                args.sample_rate
+                sample_rate
             ),
         )
     })?;
@@ -106,7 +74,7 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
         }
         done += n as f64;
         progress.update(done, || {
-            format!("{} s", num(done / f64::from(args.sample_rate), 4))
+            format!("{} s", num(done / f64::from(sample_rate), 4))
         });
         bytes.clear();
         pcm16(&block[..n], &mut bytes);
@@ -125,7 +93,7 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
     Ok(format!(
         "{written}: {} s at {} Hz, {} ticks ({} left out)\n",
         num(duration, 6),
-        args.sample_rate,
+        sample_rate,
         recording.ticks.len(),
         recording.missing.len()
     ))

@@ -40,6 +40,83 @@ pub struct TickRecording {
     pub seed: u64,
 }
 
+impl TickRecording {
+    /// A minute of a seconds clock keeping time, in beat, at 44.1 kHz, 30
+    /// dB over the noise, in a room of 0.3 s with hum 30 dB down, no tick
+    /// missing: every input of `synth ticks` not given.
+    pub const DEFAULT: Self = Self {
+        sample_rate: 44_100,
+        duration: 60.0,
+        beats_per_hour: 3600.0,
+        rate_s_per_day: 0.0,
+        beat_error_ms: 0.0,
+        snr_db: 30.0,
+        reverb_s: 0.3,
+        hum_db: -30.0,
+        missing: 0.0,
+        seed: 1,
+    };
+    /// The longest recording, s (a WAV file holds at most 4 GiB).
+    pub const MAX_DURATION_S: f64 = 4.0 * 3600.0;
+
+    /// Checks the recording asked for: the beats listening reads (1800 to
+    /// 72,000 an hour), up to four hours at 8 to 192 kHz, a rate within
+    /// ±3600 s/day, a beat error under a fifth of the beat, a room of at
+    /// most 3 s, at most half the ticks missing.
+    pub fn check(&self) -> Result<(), crate::analysis::Refusal> {
+        use crate::analysis::Refusal;
+        use crate::error::format_significant as n;
+        let bph = self.beats_per_hour;
+        if !(1800.0..=72_000.0).contains(&bph) {
+            return Err(Refusal::field(
+                "bph",
+                format!(
+                    "must be between 1800 and 72000 beats/hour, got {}",
+                    n(bph, 6)
+                ),
+            ));
+        }
+        if !(self.duration > 0.0 && self.duration <= Self::MAX_DURATION_S) {
+            return Err(Refusal::field(
+                "duration",
+                format!(
+                    "must be between 0 and 4 hours, got {} s",
+                    n(self.duration, 6)
+                ),
+            ));
+        }
+        if !(8000..=192_000).contains(&self.sample_rate) {
+            return Err(Refusal::field(
+                "sample_rate",
+                format!(
+                    "must be between 8000 and 192000 Hz, got {}",
+                    self.sample_rate
+                ),
+            ));
+        }
+        if !(0.0..=3.0).contains(&self.reverb_s) {
+            return Err(Refusal::field("reverb", "must be between 0 and 3 s"));
+        }
+        if !(0.0..=0.5).contains(&self.missing) {
+            return Err(Refusal::field("missing", "must be between 0 and 0.5"));
+        }
+        let rate = crate::analysis::require_finite("rate", self.rate_s_per_day)?;
+        if rate.abs() > 3600.0 {
+            return Err(Refusal::field("rate", "must be within ±3600 s/day"));
+        }
+        let beat_error = crate::analysis::require_finite("beat_error", self.beat_error_ms)?;
+        if beat_error.abs() > 0.2 * 1800.0 / bph * 1e3 {
+            return Err(Refusal::field(
+                "beat_error",
+                "must be less than a fifth of the beat",
+            ));
+        }
+        crate::analysis::require_finite("snr_db", self.snr_db)?;
+        crate::analysis::require_finite("hum_db", self.hum_db)?;
+        Ok(())
+    }
+}
+
 /// A synthesised recording.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Synthesized {

@@ -354,6 +354,34 @@ fn simulate<'py>(
     ))
 }
 
+/// A count from Python (a 64-bit integer) in the library's type: out of
+/// its range it is its nearest end, which the library refuses by name.
+fn count<T: TryFrom<i64> + num_bounds::Bounded>(n: i64) -> T {
+    T::try_from(n).unwrap_or(if n < 0 {
+        T::min_value()
+    } else {
+        T::max_value()
+    })
+}
+
+/// The bounds of the integer types counts come in.
+mod num_bounds {
+    /// An integer type's least and greatest values.
+    pub trait Bounded {
+        /// The least.
+        fn min_value() -> Self;
+        /// The greatest.
+        fn max_value() -> Self;
+    }
+    macro_rules! bounded {
+        ($($t:ty),*) => {$(impl Bounded for $t {
+            fn min_value() -> Self { <$t>::MIN }
+            fn max_value() -> Self { <$t>::MAX }
+        })*};
+    }
+    bounded!(u32, u64, usize);
+}
+
 /// The contiguous values of a one-dimensional array.
 fn values<'a>(a: &'a PyReadonlyArrayDyn<'_, f64>, name: &str) -> PyResult<&'a [f64]> {
     if a.ndim() != 1 {
@@ -508,7 +536,7 @@ fn clock<'py>(
     every_beats: Option<i64>,
     drive_factor: Option<Vec<f64>>,
     drive_range: Option<(f64, f64)>,
-    steps: Option<usize>,
+    steps: Option<i64>,
     run: Option<RunArgs>,
 ) -> PyResult<(String, Option<Vec<Array1<'py>>>)> {
     use pendulum_theory::clock::analysis::{
@@ -520,7 +548,11 @@ fn clock<'py>(
         |s: Option<(Vec<f64>, Vec<f64>)>| s.map(|(time, value)| Schedule { time, value });
     let isochronism = match (drive_factor, drive_range) {
         (Some(f), _) => Some(DriveFactors::List(f)),
-        (None, Some((from, to))) => Some(DriveFactors::Range { from, to, steps }),
+        (None, Some((from, to))) => Some(DriveFactors::Range {
+            from,
+            to,
+            steps: steps.map(count::<usize>),
+        }),
         (None, None) => None,
     };
     let pendulum = match (length, parts) {
@@ -547,8 +579,7 @@ fn clock<'py>(
         friction,
         recoil,
         impulse_angle,
-        // A negative count is refused as none.
-        every_beats: every_beats.map(|n| u64::try_from(n).unwrap_or(0)),
+        every_beats: every_beats.map(count::<u64>),
         isochronism,
         run: run.map(|(duration, every, drive, rate, weather, force)| RunInput {
             duration,
@@ -716,8 +747,7 @@ fn damped(
         damping,
         friction_angle,
         mass,
-        // A negative count is refused as too many.
-        extrema: extrema.map(|n| u64::try_from(n).unwrap_or(u64::MAX)),
+        extrema: extrema.map(count::<u64>),
         force,
     }))
 }
@@ -726,14 +756,15 @@ fn damped(
 #[pyfunction]
 #[pyo3(signature = (wheels, pinions, arbor_turns_per_hour, g))]
 fn train(
-    wheels: Vec<u32>,
-    pinions: Vec<u32>,
+    wheels: Vec<i64>,
+    pinions: Vec<i64>,
     arbor_turns_per_hour: Option<f64>,
     g: Option<f64>,
 ) -> PyResult<String> {
+    let counts = |v: Vec<i64>| -> Vec<u32> { v.into_iter().map(count::<u32>).collect() };
     answer(pendulum_theory::train::analysis::train(
-        &wheels,
-        &pinions,
+        &counts(wheels),
+        &counts(pinions),
         arbor_turns_per_hour,
         g,
         None,
@@ -743,10 +774,10 @@ fn train(
 /// The trains that give a beat (the CLI's `train --bph`) as JSON.
 #[pyfunction]
 #[pyo3(signature = (bph, escape_teeth, tolerance))]
-fn train_for(bph: f64, escape_teeth: Option<u32>, tolerance: Option<f64>) -> PyResult<String> {
+fn train_for(bph: f64, escape_teeth: Option<i64>, tolerance: Option<f64>) -> PyResult<String> {
     answer(pendulum_theory::train::analysis::train_for(
         bph,
-        escape_teeth,
+        escape_teeth.map(count::<u32>),
         tolerance,
     ))
 }
@@ -801,7 +832,7 @@ fn regulate(
     part: Option<String>,
     nut_pitch: Option<f64>,
     nut_tpi: Option<f64>,
-    nut_divisions: Option<u32>,
+    nut_divisions: Option<i64>,
     tray: Option<f64>,
 ) -> PyResult<String> {
     use pendulum_theory::compound::regulate::{regulate, Nut, Regulated};
@@ -817,7 +848,7 @@ fn regulate(
     let nut = Nut {
         pitch: nut_pitch,
         tpi: nut_tpi,
-        divisions: nut_divisions,
+        divisions: nut_divisions.map(count::<u32>),
     };
     answer(regulate(&pendulum, rate, nut, tray))
 }

@@ -230,6 +230,15 @@ def _number(x):
     return None if x is None else float(x)
 
 
+def _count(x):
+    """A keyword's whole number, held within a 64-bit integer (the
+    library refuses what is out of its range, as ValueError; a count past
+    2**63 is as far out as 2**63)."""
+    if x is None:
+        return None
+    return max(-(2**63), min(int(x), 2**63 - 1))
+
+
 def _text(x):
     return None if x is None else str(x)
 
@@ -287,8 +296,8 @@ def _clock(length, *, parts=None, drive_energy=None, drive_torque=None, q=None, 
     text, columns = _native.clock(
         _number(length), None if parts is None else _parts(parts), _number(g), _number(mass), _number(q), _text(escapement),
         _number(lift_angle), _number(drive_torque), _number(drive_energy), _number(friction),
-        _number(recoil), _number(impulse_angle), None if every_beats is None else int(every_beats),
-        factors, span, None if steps is None else int(steps), run)
+        _number(recoil), _number(impulse_angle), _count(every_beats),
+        factors, span, _count(steps), run)
     return _json.loads(text), columns
 
 
@@ -394,8 +403,7 @@ def period_table(length, amplitude=None, *, amplitude_range=None, steps=None, g=
                                                  float(amplitude_range[1]))
     return _json.loads(_native.period_table(
         float(length), _number(g), _number(amplitude), span,
-        None if steps is None else int(steps),
-        None if series_terms is None else int(series_terms)))
+        _count(steps), _count(series_terms)))
 
 
 def length(period=None, *, bph=None, amplitude=None, g=None):
@@ -436,22 +444,19 @@ def damped(length, amplitude, *, zeta=None, q=None, log_decrement=None, decay_ti
                          "damping_coefficient")
     return _json.loads(_native.damped(
         float(length), float(amplitude), (given[0][0], float(given[0][1])) if given else None,
-        _number(friction_angle), _number(mass), None if extrema is None else int(extrema),
+        _number(friction_angle), _number(mass), _count(extrema),
         _number(g), bool(force)))
 
 
-def _counts(name, values):
-    counts = [int(v) for v in values]
-    if any(c < 0 for c in counts):
-        raise ValueError(f"{name}: counts must not be negative")
-    return counts
+def _counts(values):
+    return [_count(v) for v in values]
 
 
 def train(wheels, pinions, *, arbor_turns_per_hour=None, g=None):
     """The command's ``train`` (the same library call): the beats per hour
     of wheels (the last the escape wheel) and pinions, the period and the
     simple pendulum it needs. Returns its ``--json`` object as a dict."""
-    return _json.loads(_native.train(_counts("wheels", wheels), _counts("pinions", pinions),
+    return _json.loads(_native.train(_counts(wheels), _counts(pinions),
                                      _number(arbor_turns_per_hour), _number(g)))
 
 
@@ -460,7 +465,7 @@ def train_for(bph, *, escape_teeth=None, tolerance=None):
     wheel, two pinions) that give ``bph`` within ``tolerance``, closest
     first, as a list of dicts."""
     return _json.loads(_native.train_for(
-        float(bph), None if escape_teeth is None else _counts("escape_teeth", [escape_teeth])[0],
+        float(bph), _count(escape_teeth),
         _number(tolerance)))
 
 
@@ -494,12 +499,10 @@ def regulate(rate, *, length=None, parts=None, part=None, nut_pitch=None, nut_tp
     down), in turns and divisions of a nut of ``nut_pitch`` m or
     ``nut_tpi`` threads per inch, or the mass for a tray at ``tray`` m
     below the pivot. Returns its ``--json`` object as a dict."""
-    if nut_divisions is not None and int(nut_divisions) < 0:
-        raise ValueError("nut_divisions: must be at least 1")
     return _json.loads(_native.regulate(
         float(rate), _number(length), None if parts is None else _parts(parts), _text(part),
         _number(nut_pitch), _number(nut_tpi),
-        None if nut_divisions is None else int(nut_divisions), _number(tray)))
+        _count(nut_divisions), _number(tray)))
 
 
 def compensate(parts, compensator=None, *, part=None, jar_material=None, jar_diameter=None,

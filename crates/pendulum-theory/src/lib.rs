@@ -16,6 +16,10 @@
 //!   section 2-4): linear decay and the stop.
 //! * [`energy`]: stored energy, losses, power, and the impulse per beat an
 //!   escapement must give.
+//! * [`forces`]: the terms of the equation of motion (gravity, viscous
+//!   damping, dry friction) and the list of drag laws, each a file saying
+//!   what the integrators need of it; the simulation and the clock both
+//!   sum them.
 //! * [`gravity`]: WGS 84 normal gravity with the free-air correction.
 //! * [`listening`]: the ticks of a sound recording, and a synthetic one.
 //! * [`pendulum`]: the types that say what a number is: a [`Pendulum`]
@@ -48,6 +52,7 @@ pub mod energy;
 pub mod error;
 pub mod exact;
 pub mod fitting;
+pub mod forces;
 pub mod friction;
 pub mod gravity;
 pub mod integrate;

@@ -8,11 +8,11 @@
 //! keeps the method's order.
 
 use super::escapement::{zone_of, Escapement, InZone};
+use crate::forces::{Gravity, Term, Viscous};
 use crate::integrate::control::{step_factor, Tolerance};
 use crate::integrate::dop853;
 use crate::integrate::events::locate_root;
 use crate::integrate::State2;
-use crate::simulation::forces::{Gravity, Term, Viscous};
 
 /// The end of a half swing.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -28,7 +28,7 @@ mod adaptive;
 pub mod analysis;
 mod averaged;
 mod closed_form;
-pub mod forces;
+pub use crate::forces;
 mod observer;
 mod run;
 mod symplectic;

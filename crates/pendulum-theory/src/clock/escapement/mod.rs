@@ -88,7 +88,7 @@ pub trait Escapement: Send + Sync + std::fmt::Debug {
 }
 
 /// An escapement in one of its zones, as a term of the equation of motion
-/// ([`crate::simulation::forces::Term`]), in the frame travelling
+/// ([`crate::forces::Term`]), in the frame travelling
 /// towards `+θ`.
 pub struct InZone<'a> {
     /// The escapement.
@@ -99,7 +99,7 @@ pub struct InZone<'a> {
     pub drive: f64,
 }
 
-impl crate::simulation::forces::Term for InZone<'_> {
+impl crate::forces::Term for InZone<'_> {
     #[inline]
     fn acceleration(&self, y: crate::integrate::State2, _direction: f64) -> f64 {
         self.escapement.torque(self.zone, y[0], self.drive)

@@ -886,6 +886,10 @@ fn compensate(
 /// The extension module behind the `pendulum_theory` package.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add(
+        "STANDARD_GRAVITY",
+        pendulum_theory::pendulum::STANDARD_GRAVITY,
+    )?;
     m.add_function(wrap_pyfunction!(ellipk, m)?)?;
     m.add_function(wrap_pyfunction!(ellipe, m)?)?;
     m.add_function(wrap_pyfunction!(ellipj, m)?)?;

@@ -44,10 +44,20 @@ __all__ = [
     "FitResult",
     "clock",
     "clock_run",
+    "listen",
+    "period_table",
+    "length",
+    "amplitude",
+    "damped",
+    "train",
+    "train_for",
+    "design",
+    "regulate",
+    "compensate",
 ]
 
-#: Standard gravity, m/s² (the CLI's default).
-STANDARD_GRAVITY = 9.80665
+#: Standard gravity, m/s²: the library's default, as the CLI's.
+STANDARD_GRAVITY = _native.STANDARD_GRAVITY
 
 
 def _call(function, *args, outputs=1):

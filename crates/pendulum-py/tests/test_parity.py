@@ -621,6 +621,10 @@ LISTEN = {
     "ppm_inf": ([], {"sample_rate_error_ppm": INF}),
     "lift_zero": ([], {"lift_angle": 0.0}),
     "lift_half_turn": ([], {"lift_angle": 3.5}),
+    "nominal_double": ([], {"bph": 7200.0}),
+    "nominal_half": (["--bph", "18000", "--duration", "20s"], {"bph": 9000.0}),
+    "nominal_five_times": (["--bph", "18000", "--duration", "20s"], {"period": 2.0}),
+    "nominal_a_fifth": ([], {"bph": 18000.0}),
 }
 LISTEN_UNITS = {"bph": "", "period": "s", "sample_rate_error_ppm": "", "lift_angle": "rad"}
 FLAG.update({"samples": "FILE"})

@@ -339,3 +339,30 @@ fn lift_angle_amplitude_and_the_paper_strip() {
         "--plot",
     );
 }
+
+/// A nominal rate that is not the recording's is refused naming its flag,
+/// not followed: an 18,000 bph watch told 9,000 (every other tick would
+/// be the beat), told a 2 s period (every fifth), and a seconds clock told
+/// 18,000 (a fifth of its beat); the right nominal reads the right rate.
+#[test]
+fn a_nominal_beat_that_is_not_the_recordings_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let watch = dir.path().join("watch.wav");
+    let clock = dir.path().join("clock.wav");
+    let make = |path: &std::path::Path, bph: &str| {
+        pendulum()
+            .args(["synth", "ticks", path.to_str().unwrap(), "--bph", bph])
+            .args(["--rate", "5", "--duration", "20s"])
+            .assert()
+            .success();
+    };
+    make(&watch, "18000");
+    make(&clock, "3600");
+    let (w, c) = (watch.to_str().unwrap(), clock.to_str().unwrap());
+    let e = refuses(&["listen", w, "--bph", "9000"], "--bph");
+    assert!(e.contains("twice the measured beat"), "{e}");
+    refuses(&["listen", w, "--period", "2s"], "--period");
+    refuses(&["listen", c, "--bph", "18000"], "--bph");
+    let rate = f(&json(&["listen", w, "--bph", "18000"]), "rate_s_per_day");
+    assert!((rate - 5.0).abs() < 0.05, "{rate}");
+}

@@ -172,27 +172,37 @@ impl BeatLog {
         // half or double the beat (the rate would be meaningless): refused
         // beyond the geometric middle between the beat and its double.
         if let Some((n, beat)) = self.nominal {
-            let ratio = beat / a.mean_beat;
-            if !(NOMINAL_RATIO_RANGE).contains(&ratio) {
-                let hint = if (ratio / 2.0 - 1.0).abs() < 0.1 {
-                    " (twice the measured beat: is the nominal rate half the clock's?)"
-                } else if (ratio * 2.0 - 1.0).abs() < 0.1 {
-                    " (half the measured beat: is the nominal rate double the clock's?)"
-                } else {
-                    ""
-                };
-                return Err(Refusal::field(
-                    n.field(),
-                    format!(
-                        "a nominal beat of {} s is nowhere near the {} s measured{hint}",
-                        format_significant(beat, 6),
-                        format_significant(a.mean_beat, 6)
-                    ),
-                ));
-            }
+            check_nominal(n, beat, a.mean_beat)?;
         }
         Ok(Beats::of(a))
     }
+}
+
+/// Refuses a nominal beat (`beat` s, given as `nominal`) that is not the
+/// `measured` one: beyond the geometric middle between the beat and its
+/// half or double ([`NOMINAL_RATIO_RANGE`]), so that half or double the
+/// beat is never read as a rate of ±43,200 s/day; the refusal says which
+/// it looks like.
+pub fn check_nominal(nominal: Nominal, beat: f64, measured: f64) -> Result<(), Refusal> {
+    let ratio = beat / measured;
+    if NOMINAL_RATIO_RANGE.contains(&ratio) {
+        return Ok(());
+    }
+    let hint = if (ratio / 2.0 - 1.0).abs() < 0.1 {
+        " (twice the measured beat: is the nominal rate half the clock's?)"
+    } else if (ratio * 2.0 - 1.0).abs() < 0.1 {
+        " (half the measured beat: is the nominal rate double the clock's?)"
+    } else {
+        ""
+    };
+    Err(Refusal::field(
+        nominal.field(),
+        format!(
+            "a nominal beat of {} s is nowhere near the {} s measured{hint}",
+            format_significant(beat, 6),
+            format_significant(measured, 6)
+        ),
+    ))
 }
 
 /// Analyses beat times `time` (s) against `nominal`.

@@ -6,7 +6,8 @@
 //!
 //! The passes ([`super::detect`]): the beat from the envelope of the first
 //! [`PERIOD_SPAN_S`] s, near the nominal beat when one is given
-//! ([`NOMINAL_SLACK`]); each beat's onset on the envelope, streamed; each
+//! ([`NOMINAL_SLACK`]; a nominal beat that is not the recording's, half or
+//! double it, is refused as `fit beats` refuses it); each beat's onset on the envelope, streamed; each
 //! tick refined on the samples; outliers dropped; then the beat analysis
 //! ([`crate::fitting::beats`]) of the tick times, rescaled by the sound
 //! card's clock error, with missed beats filled in up to
@@ -19,7 +20,7 @@ use super::detect::{
 use super::{check_nominal_period, BEAT_RANGE_S};
 use crate::analysis::{require_finite, require_finite_sample, Refusal};
 use crate::error::format_significant;
-use crate::fitting::beat_log::{Beats, Nominal};
+use crate::fitting::beat_log::{check_nominal, Beats, Nominal};
 use crate::fitting::beats::{BeatAnalysis, BeatStream};
 use crate::lift::amplitude_from_lift;
 use crate::period::period_for_beat_rate;
@@ -244,6 +245,19 @@ pub fn listen<S: SampleSource>(
         })
         .map_err(ListenFailure::Source)?;
     let env_rate = envelope_rate(&env, rate);
+    // The beat as the recording has it, whatever the nominal: a nominal
+    // beat double or five times it, or a fifth of it, is refused, not
+    // followed (every other tick taken for the beat). A nominal beat half
+    // the one found is not refused: the recording cannot tell it from a
+    // clock far out of beat (tick and tock 0.18 and 0.22 s apart, found at
+    // its tick-tock pair) or one whose tocks are lost in the noise (found
+    // at its period). That case, a rate of -43,200 s/day, is issue 24's.
+    let free = beat_period(&env.values, env_rate, BEAT_RANGE_S.0, BEAT_RANGE_S.1);
+    if let (Some(n), Some(p), Some(measured)) = (input.nominal, nominal, free) {
+        if (0.5 * p / measured / 0.5 - 1.0).abs() > 0.1 {
+            check_nominal(n, 0.5 * p, measured)?;
+        }
+    }
     let beat = match nominal {
         Some(p) => {
             let b = 0.5 * p;
@@ -295,6 +309,7 @@ pub fn listen<S: SampleSource>(
     if ticks.len() < MIN_TICKS {
         return Err(too_few(ticks.len(), duration, beat, snr_db).into());
     }
+    let missed = (coarse.onsets.len() + coarse.missed).saturating_sub(ticks.len());
     let scale = 1.0 / (1.0 + ppm * 1e-6);
     for t in &mut ticks {
         t.time *= scale;
@@ -331,7 +346,7 @@ pub fn listen<S: SampleSource>(
         // Every beat the tracker followed, less the ticks kept: missed,
         // whether no sound was there or it was dropped as noise (counted
         // once, though the analysis fills the same gaps).
-        missed: (coarse.onsets.len() + coarse.missed).saturating_sub(ticks.len()),
+        missed,
         extra: a.repaired.doubled,
         beats: Beats::of(a),
         snr_db,

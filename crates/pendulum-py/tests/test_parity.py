@@ -949,6 +949,9 @@ def toml_of(parts):
 
 DESIGN = {
     "rod_and_bob": ([ROD, BOB], {}),
+    "sizes_in_mm_as_numbers": ([{**ROD, "length": 1000.0, "diameter": 8.0, "centre": 500.0},
+                                {**BOB, "length": 100.0, "diameter": 100.0, "centre": 950.0}],
+                               {}),
     "with_nut": ([ROD, BOB, NUT], {}),
     "lens_bob": ([ROD, {"name": "bob", "shape": "lens", "material": "brass", "diameter": 0.2,
                         "thickness": 0.04, "centre": 0.95}], {}),
@@ -1003,6 +1006,7 @@ WITH_NUT = [ROD, {**NUT, "centre": 1.0}, {"name": "bob", "shape": "cylinder", "m
                                             "length": 0.1, "diameter": 0.1, "rests_on": "nut"}]
 REGULATE = {
     "gaining": (12.0, {"length": 0.994}),
+    "length_in_mm_as_metres": (12.0, {"length": 994.0}),
     "losing": (-30.0, {"length": 0.994}),
     "on_time": (0.0, {"length": 0.994}),
     "pitch": (12.0, {"length": 0.994, "nut_pitch": 0.0007}),
@@ -1144,3 +1148,10 @@ def test_weather_needs_a_design(tmp_path):
             "--every", "3600.0s", "--drive-file", str(path), "--json"]
     check(args, lambda: pt.clock_run(0.99362, DAY, every=3600.0, weather=weather,
                                      drive_energy=2e-5)[1])
+
+
+def test_sizes_in_millimetres_written_as_metres_are_warned():
+    parts = DESIGN["sizes_in_mm_as_numbers"][0]
+    assert "millimetres" in pt.design(parts)["warnings"][0]
+    assert "millimetres" in pt.regulate(12.0, length=994.0)["warnings"][0]
+    assert pt.design([ROD, BOB])["warnings"] == []

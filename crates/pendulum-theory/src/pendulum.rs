@@ -8,6 +8,23 @@ use std::f64::consts::{PI, TAU};
 /// Standard gravity, 9.80665 m/s² (CGPM 1901, exact by definition).
 pub const STANDARD_GRAVITY: f64 = 9.806_65;
 
+/// Longer clock pendulums than this are not built (Big Ben's is 3.9 m, the
+/// longest turret clocks' about 15 m), m: a longer one is most likely
+/// sizes meant in millimetres written as bare numbers, which are metres.
+pub const LONGEST_CLOCK_PENDULUM_M: f64 = 30.0;
+
+/// A warning for a clock pendulum of (equivalent) length `length` m longer
+/// than [`LONGEST_CLOCK_PENDULUM_M`], naming the likely cause.
+pub fn length_warning(length: f64) -> Option<String> {
+    (length > LONGEST_CLOCK_PENDULUM_M).then(|| {
+        format!(
+            "a pendulum {} m long is longer than any clock's: were sizes in millimetres \
+             given as bare numbers (which are metres)?",
+            crate::error::format_significant(length, 4)
+        )
+    })
+}
+
 /// A simple pendulum: a point mass on a massless rod of length `l` in a
 /// uniform field `g` (seed section 1-1). Both are positive and finite.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -95,6 +95,9 @@ pub fn rows(d: &Datasheet, gravity: &ResolvedGravity) -> Vec<(String, String)> {
         }
         rows.push(("Nut".into(), text));
     }
+    for w in &d.warnings {
+        rows.push(("WARNING".into(), w.clone()));
+    }
     rows
 }
 

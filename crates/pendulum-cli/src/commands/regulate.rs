@@ -91,5 +91,8 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
             ),
         );
     }
+    for w in &result.warnings {
+        s.row("WARNING", w.clone());
+    }
     Ok(s.render())
 }

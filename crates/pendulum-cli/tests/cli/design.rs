@@ -499,3 +499,26 @@ fn the_fits_take_a_design() {
         "{a} {b}"
     );
 }
+
+/// Sizes in millimetres written as bare numbers (which are metres) make a
+/// pendulum hundreds of metres long: the datasheet and regulate say so, in
+/// text and in JSON, and a real design draws no warning.
+#[test]
+fn millimetres_written_as_metres_are_warned() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("mm.toml");
+    // examples/seconds-steel-brass.toml's rod and bob, in millimetres.
+    let text = "[[part]]\nname = \"rod\"\nshape = \"rod\"\nmaterial = \"steel\"\n\
+                length = 1100\ndiameter = 8\ncentre = 550\n\n\
+                [[part]]\nname = \"bob\"\nshape = \"cylinder\"\nmaterial = \"brass\"\n\
+                length = 140\ndiameter = 80\ncentre = 1000\n";
+    std::fs::write(&path, text).unwrap();
+    let sheet = json(&["design", path.to_str().unwrap()]);
+    let warning = sheet["warnings"][0].as_str().unwrap_or_default();
+    assert!(warning.contains("millimetres"), "{sheet}");
+    let ok = json(&["design", &example("seconds-steel-brass.toml")]);
+    assert_eq!(ok["warnings"].as_array().map(Vec::len), Some(0), "{ok}");
+    let r = json(&["regulate", "--length", "994", "--rate", "10"]);
+    let warning = r["warnings"][0].as_str().unwrap_or_default();
+    assert!(warning.contains("millimetres"), "{r}");
+}

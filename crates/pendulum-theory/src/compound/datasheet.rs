@@ -97,6 +97,8 @@ pub struct Datasheet {
     /// Per division of the nut, s/day.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub nut_rate_s_per_day_per_division: Option<f64>,
+    /// What to check before trusting the sheet.
+    pub warnings: Vec<String>,
     /// The air as taken: pressure, Pa.
     #[serde(skip)]
     pub pressure_pa: f64,
@@ -218,6 +220,9 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         nut_pitch_m: per_metre.and(pitch),
         nut_rate_s_per_day_per_turn: per_turn,
         nut_rate_s_per_day_per_division: per_division.map(|(r, d)| r / f64::from(d)),
+        warnings: crate::pendulum::length_warning(props.equivalent_length)
+            .into_iter()
+            .collect(),
         pressure_pa: p,
         humidity: h,
     })

@@ -44,7 +44,7 @@ pub struct Nut {
 }
 
 /// How to bring a clock to time.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Regulation {
     /// The clock's rate, s/day (positive: gaining).
     pub rate_s_per_day: f64,
@@ -65,6 +65,8 @@ pub struct Regulation {
     /// The mass to add on the tray, kg (negative: to take off).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tray_mass_kg: Option<f64>,
+    /// What to check before moving the bob.
+    pub warnings: Vec<String>,
 }
 
 /// The regulation of `pendulum` gaining `rate` s/day, with the nut's
@@ -191,5 +193,8 @@ pub fn regulate(
         nut_divisions,
         tray_position_m: tray.map(|t| t.0),
         tray_mass_kg: tray.map(|t| t.1),
+        warnings: crate::pendulum::length_warning(length)
+            .into_iter()
+            .collect(),
     })
 }

@@ -197,34 +197,24 @@ pub struct SynthTicksArgs {
     /// The WAV file to write.
     #[arg(value_name = "OUT.wav")]
     pub output: std::path::PathBuf,
-    /// Beats per hour.
     #[arg(long, value_name = "B", allow_hyphen_values = true, help = with_default("Beats per hour", TickRecording::DEFAULT.beats_per_hour))]
     pub bph: Option<String>,
-    /// The clock's rate, s/day (positive: gaining).
     #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("The clock's rate, s/day (positive: gaining)", TickRecording::DEFAULT.rate_s_per_day))]
     pub rate: Option<String>,
-    /// Beat error, ms (half the difference of the tick and tock intervals).
     #[arg(long, value_name = "E", allow_hyphen_values = true, help = with_default("Beat error, ms (half the difference of the tick and tock intervals)", TickRecording::DEFAULT.beat_error_ms))]
     pub beat_error: Option<String>,
-    /// Length of the recording.
     #[arg(long, value_name = "D", allow_hyphen_values = true, help = with_default("Length of the recording, s", TickRecording::DEFAULT.duration))]
     pub duration: Option<String>,
-    /// A tick's peak over the noise, dB.
     #[arg(long, value_name = "S", allow_hyphen_values = true, help = with_default("A tick's peak over the noise, dB", TickRecording::DEFAULT.snr_db))]
     pub snr_db: Option<String>,
-    /// Samples per second.
     #[arg(long, value_name = "HZ", help = with_default("Samples per second", TickRecording::DEFAULT.sample_rate))]
     pub sample_rate: Option<u32>,
-    /// Room reverberation time.
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Room reverberation time, s", TickRecording::DEFAULT.reverb_s))]
     pub reverb: Option<String>,
-    /// Mains hum against a tick's peak, dB.
     #[arg(long, value_name = "DB", allow_hyphen_values = true, help = with_default("Mains hum against a tick's peak, dB", TickRecording::DEFAULT.hum_db))]
     pub hum_db: Option<String>,
-    /// Fraction of ticks left out.
     #[arg(long, value_name = "F", allow_hyphen_values = true, help = with_default("Fraction of ticks left out", TickRecording::DEFAULT.missing))]
     pub missing: Option<String>,
-    /// Seed of every random choice (the tick's sound too).
     #[arg(long, value_name = "N", help = with_default("Seed of every random choice (the tick's sound too)", TickRecording::DEFAULT.seed))]
     pub seed: Option<u64>,
     /// Write the true tick times to this CSV file (time_s).
@@ -311,7 +301,6 @@ pub struct FitDecayArgs {
     pub file: std::path::PathBuf,
     #[command(flatten)]
     pub read: MeasurementArgs,
-    /// Which decay law to fit (the library's laws, or all).
     #[arg(long, value_name = "LAW", help = with_default(&format!("Which decay law to fit: {}", pendulum_theory::fitting::rundown::model_names()), pendulum_theory::fitting::rundown::DEFAULT_MODEL))]
     pub model: Option<String>,
     /// Pendulum length: turns rates into ζ, Q, friction angle and drag (needed for a swing column).
@@ -359,8 +348,6 @@ pub struct FitTrajectoryArgs {
     /// its equivalent length.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
     pub design: Option<std::path::PathBuf>,
-    /// Section 1-4's closed form, the nonlinear equation integrated inside
-    /// the fit, or auto: nonlinear when the largest swing exceeds 5°.
     #[arg(long, value_name = "MODEL", help = with_default("Section 1-4's closed form (linear), the nonlinear equation integrated inside the fit (nonlinear), or auto: nonlinear when the largest swing exceeds 5°", pendulum_theory::fitting::tracked::DEFAULT_MODEL))]
     pub model: Option<String>,
     /// Write the residuals to this CSV file (time_s,residual_rad).
@@ -455,10 +442,8 @@ pub struct PeriodArgs {
     /// Amplitude (e.g. 3deg, 0.05rad), or a range 1deg..10deg for a table.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: String,
-    /// Rows in the table when --amplitude is a range (at least 2).
     #[arg(long, value_name = "N", help = with_default("Rows in the table when --amplitude is a range (at least 2)", period_table::DEFAULT_STEPS))]
     pub steps: Option<u32>,
-    /// Terms of the power series of K in sin²(A0/2) (section 1-6) to compare with.
     #[arg(long, value_name = "N", help = with_default("Terms of the power series of K in sin²(A0/2) (section 1-6) to compare with", period_table::DEFAULT_SERIES_TERMS))]
     pub series_terms: Option<u32>,
     /// Plot T/T0 (exact, series of 1 to 5 terms, small-angle) and the
@@ -595,7 +580,6 @@ pub struct SwingArgs {
 pub struct DampedArgs {
     #[command(flatten)]
     pub swing: SwingArgs,
-    /// How many turning points to list after the start.
     #[arg(long, value_name = "N", help = with_default("How many turning points to list after the start", pendulum_theory::damped::analysis::DEFAULT_EXTREMA))]
     pub extrema: Option<u64>,
     /// Write the motion to this CSV file (time_s,angle_rad,angular_velocity_rad_s).
@@ -651,14 +635,11 @@ pub struct SimulateArgs {
     /// Quadratic air drag b in θ'' = … - b θ'|θ'| (per radian).
     #[arg(long, value_name = "B", allow_hyphen_values = true)]
     pub quadratic_drag: Option<String>,
-    /// A drag law by name and its coefficient, NAME=VALUE (repeat for
-    /// more); the laws are the library's list.
     #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true, help = drag_laws_help())]
     pub drag: Vec<String>,
     /// How long to simulate (e.g. 7day, 600s).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub duration: String,
-    /// Integration method.
     #[arg(long, value_enum, help = with_default("Integration method", pendulum_theory::simulation::analysis::DEFAULT_METHOD))]
     pub method: Option<MethodArg>,
     /// Local error tolerance of each step, relative to the size of the
@@ -723,16 +704,13 @@ pub struct TrainArgs {
     /// Pinion counts, one fewer than the wheels (e.g. 8,8).
     #[arg(long, value_name = "P,P,…", value_delimiter = ',')]
     pub pinions: Vec<u32>,
-    /// Turns an hour of the first wheel's arbor.
     #[arg(long, value_name = "N", help = with_default("Turns an hour of the first wheel's arbor", train_analysis::DEFAULT_ARBOR_TURNS_PER_HOUR))]
     pub arbor_turns_per_hour: Option<f64>,
     /// Find trains for this beat rate instead (beats per hour).
     #[arg(long, value_name = "B", conflicts_with = "wheels")]
     pub bph: Option<f64>,
-    /// The escape wheel's teeth, for --bph.
     #[arg(long, value_name = "N", help = with_default("The escape wheel's teeth, for --bph", train_analysis::DEFAULT_ESCAPE_TEETH))]
     pub escape_teeth: Option<u32>,
-    /// Relative tolerance on --bph.
     #[arg(long, value_name = "X", help = with_default("Relative tolerance on --bph", train_analysis::DEFAULT_TOLERANCE))]
     pub tolerance: Option<f64>,
     /// A pendulum design: say where its bob must sit for the train's beat.
@@ -762,7 +740,6 @@ pub struct RegulateArgs {
     /// A pendulum design (TOML); the part moved is --part.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
     pub design: Option<std::path::PathBuf>,
-    /// The part the nut moves (with what rests on it).
     #[arg(long, value_name = "NAME", help = with_default("The part the nut moves (with what rests on it)", pendulum_theory::compound::regulate::DEFAULT_PART))]
     pub part: Option<String>,
     /// The rating nut's thread pitch (e.g. 0.7mm).
@@ -794,8 +771,6 @@ pub struct CompensateArgs {
     /// of the bob).
     #[arg(long, value_name = "KIND")]
     pub compensator: Option<String>,
-    /// The part the tube goes under, or the jar replaces (it must rest on
-    /// the nut).
     #[arg(long, value_name = "NAME", help = with_default("The part the tube goes under, or the jar replaces (it must rest on the nut)", pendulum_theory::compound::compensate::DEFAULT_PART))]
     pub part: Option<String>,
     /// The mercury jar's material [default: glass].
@@ -835,17 +810,13 @@ pub struct ClockArgs {
     /// A pendulum designed as parts (TOML), in place of --length.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
     pub design: Option<std::path::PathBuf>,
-    /// Bob mass, kg (with --design its effective mass M d / l).
     #[arg(long, value_name = "M", allow_hyphen_values = true, help = with_default("Bob mass, kg (with --design its effective mass M d / l)", clock::DEFAULT_MASS_KG))]
     pub mass: Option<String>,
-    /// Quality factor of the free pendulum.
     #[arg(long, value_name = "Q", allow_hyphen_values = true, help = with_default("Quality factor of the free pendulum", clock::DEFAULT_Q))]
     pub q: Option<String>,
     /// The escapement [default: deadbeat].
     #[arg(long, value_enum)]
     pub escapement: Option<EscapementArg>,
-    /// The lift angle, the whole angle over which the escapement impulses
-    /// (a bare number is degrees).
     #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("The lift angle, the whole angle over which the escapement impulses (a bare number is degrees)", clock::DEFAULT_LIFT_DEG))]
     pub lift_angle: Option<String>,
     /// The drive: the torque at the pallets (e.g. 2e-4Nm) or the energy
@@ -854,23 +825,17 @@ pub struct ClockArgs {
     /// the impulse, while the train's drive only adds locking friction.
     #[arg(long, value_name = "DRIVE", allow_hyphen_values = true)]
     pub drive: String,
-    /// Dead-face (locking) friction coefficient: deadbeat, constant-force.
     #[arg(long, value_name = "MU", allow_hyphen_values = true, help = with_default("Dead-face (locking) friction coefficient: deadbeat, constant-force", clock::DEFAULT_FRICTION))]
     pub friction: Option<String>,
-    /// Recoil: the pushing-back torque one lift angle past the lift, over the drive torque.
     #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("Recoil: the pushing-back torque one lift angle past the lift, over the drive torque", clock::DEFAULT_RECOIL))]
     pub recoil: Option<String>,
-    /// Where the impulse falls before the bottom (negative: after): for
-    /// impulse and free the impulse's angle, for deadbeat the lift's centre.
     #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("Where the impulse falls before the bottom (negative: after): for impulse and free the impulse's angle, for deadbeat the lift's centre (degrees)", clock::DEFAULT_IMPULSE_ANGLE_DEG))]
     pub impulse_angle: Option<String>,
-    /// Free pendulum: beats between impulses (Shortt's: 30).
     #[arg(long, value_name = "N", help = with_default("Free pendulum: beats between impulses (Shortt's)", clock::DEFAULT_EVERY_BEATS))]
     pub every_beats: Option<u64>,
     /// The isochronism curve: drive factors from..to (e.g. 0.5x..2x).
     #[arg(long, value_name = "A..B", allow_hyphen_values = true)]
     pub drive_range: Option<String>,
-    /// Points on the isochronism curve.
     #[arg(long, value_name = "N", help = with_default("Points on the isochronism curve", clock::DEFAULT_STEPS))]
     pub steps: Option<usize>,
     /// A long run of this length (e.g. 8days, 1year).
@@ -927,16 +892,12 @@ pub struct DesignArgs {
     /// The pendulum design (TOML).
     #[arg(value_name = "FILE.toml")]
     pub file: std::path::PathBuf,
-    /// Air pressure, hPa.
     #[arg(long, value_name = "P", help = with_default("Air pressure, hPa", sheet::DEFAULT_PRESSURE_PA / 100.0))]
     pub pressure: Option<f64>,
-    /// Temperature, °C.
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Temperature, °C", sheet::DEFAULT_TEMPERATURE_C))]
     pub temperature: Option<f64>,
-    /// The temperature the clock was regulated at, °C.
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("The temperature the clock was regulated at, °C", sheet::DEFAULT_TEMPERATURE_C))]
     pub regulated_at: Option<f64>,
-    /// Relative humidity, %.
     #[arg(long, value_name = "H", help = with_default("Relative humidity, %", sheet::DEFAULT_HUMIDITY * 100.0))]
     pub humidity: Option<f64>,
     #[command(flatten)]

@@ -25,7 +25,6 @@ use std::path::Path;
 const FLAGS: &[(&str, &str)] = &[
     ("drive_schedule", "--drive-file"),
     ("weather", "--drive-file"),
-    ("drive_factor", "--drive-range"),
 ];
 
 /// A plain number flag.

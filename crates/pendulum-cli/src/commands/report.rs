@@ -13,6 +13,8 @@ use crate::interrupt;
 use crate::output::num;
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::Dimension;
+// Q and the mass are the clock's defaults: a regulator in air, a 5 kg bob.
+use pendulum_theory::clock::analysis::{DEFAULT_MASS_KG, DEFAULT_Q};
 use pendulum_theory::compound::datasheet::{datasheet, Air};
 use pendulum_theory::damped::DampedPendulum;
 use pendulum_theory::damping::Damping;
@@ -29,8 +31,6 @@ use std::path::Path;
 /// The default pendulum: a seconds pendulum.
 const DEFAULT_LENGTH: &str = "0.99362m";
 const DEFAULT_AMPLITUDE: &str = "3deg";
-const DEFAULT_Q: f64 = 10_000.0;
-const DEFAULT_MASS_KG: f64 = 5.0;
 /// The simulated run-down stops after this many periods at the most.
 const MAX_RUNDOWN_PERIODS: f64 = 1e5;
 /// ... and after about this much computing, s.

@@ -165,11 +165,9 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             }
             (None, None) => None,
         };
-        let divisions = match t.get("divisions") {
+        let divisions = match t.get("divisions").map(Value::as_u64) {
             None => None,
-            Some(Value::Number(d)) if d.as_u64().is_some_and(|d| (1..=10_000).contains(&d)) => {
-                d.as_u64().map(|d| d as u32)
-            }
+            Some(Some(d)) if (1..=10_000).contains(&d) => Some(d as u32),
             Some(_) => {
                 return Err(bad(
                     "divisions",
@@ -288,12 +286,9 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             })?,
             Some(Value::Object(m)) => {
                 let number = |key: &str| -> Result<f64, Refusal> {
-                    match m.get(key) {
-                        Some(Value::Number(v)) if v.as_f64().is_some() => {
-                            Ok(v.as_f64().unwrap_or_default())
-                        }
-                        _ => Err(bad("material", format!("needs a number '{key}'"))),
-                    }
+                    m.get(key)
+                        .and_then(Value::as_f64)
+                        .ok_or_else(|| bad("material", format!("needs a number '{key}'")))
                 };
                 Material {
                     name: m

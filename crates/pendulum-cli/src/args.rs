@@ -225,27 +225,28 @@ pub struct SynthTicksArgs {
 /// `pendulum report`.
 #[derive(Debug, Args)]
 pub struct ReportArgs {
-    /// Pendulum length [default: 0.99362 m, a seconds pendulum].
-    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    #[arg(long, value_name = "L", allow_hyphen_values = true, help = with_default("Pendulum length, m (a seconds pendulum)", pendulum_theory::report::DEFAULT_LENGTH_M))]
     pub length: Option<String>,
     /// A pendulum designed as parts (TOML; see examples/*.toml): its
     /// equivalent simple length is used.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
     pub design: Option<std::path::PathBuf>,
-    /// Working amplitude [default: 3°].
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("Working amplitude, °", pendulum_theory::report::DEFAULT_AMPLITUDE_DEG))]
     pub amplitude: Option<String>,
     /// Damping [default: Q = 10,000].
     #[command(flatten)]
     pub damping: DampingArgs,
-    /// Bob mass, for the energy budget [default: 5 kg].
-    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    #[arg(long, value_name = "M", allow_hyphen_values = true, help = with_default("Bob mass for the energy budget, kg (a design's: its effective mass)", pendulum_theory::clock::analysis::DEFAULT_MASS_KG))]
     pub mass: Option<String>,
     /// Folder to write index.html and its figures in.
     #[arg(long, value_name = "DIR", default_value = "pendulum-report")]
     pub output: std::path::PathBuf,
     #[command(flatten)]
     pub gravity: GravityArgs,
+    /// Print the report's numbers as one JSON object instead of the page's
+    /// path (the folder is written all the same).
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `pendulum fit`.

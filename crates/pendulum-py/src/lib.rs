@@ -782,6 +782,58 @@ fn train_for(bph: f64, escape_teeth: Option<i64>, tolerance: Option<f64>) -> PyR
     ))
 }
 
+/// A pendulum's report (the CLI's `report --json`) as JSON, with the
+/// run-down's turning points as arrays (time s, amplitude rad, rate s/day).
+#[pyfunction]
+#[pyo3(signature = (length, parts, amplitude, damping, mass, g))]
+#[allow(clippy::type_complexity)]
+fn report<'py>(
+    py: Python<'py>,
+    length: Option<f64>,
+    parts: Option<&str>,
+    amplitude: Option<f64>,
+    damping: Option<(String, f64)>,
+    mass: Option<f64>,
+    g: Option<f64>,
+) -> PyResult<(String, Array1<'py>, Array1<'py>, Array1<'py>)> {
+    use pendulum_theory::report::{report, ReportInput};
+    let input = ReportInput {
+        length,
+        design: parts.map(design_of).transpose()?,
+        g,
+        amplitude,
+        damping,
+        mass,
+    };
+    // Ctrl-C during the run-down: KeyboardInterrupt, not a refusal.
+    let mut interrupted = None;
+    let result = report(&input, &mut || match py.check_signals() {
+        Ok(()) => true,
+        Err(e) => {
+            interrupted = Some(e);
+            false
+        }
+    });
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    let r = result.map_err(|r| PyValueError::new_err(r.to_string()))?;
+    let column = |f: fn(&pendulum_theory::report::RundownPoint) -> f64| {
+        r.rundown.points.iter().map(f).collect::<Vec<f64>>()
+    };
+    let (t, a, rate) = (
+        column(|p| p.time_s),
+        column(|p| p.amplitude_rad),
+        column(|p| p.rate_s_per_day),
+    );
+    Ok((
+        answer(Ok(&r))?,
+        t.into_pyarray(py),
+        a.into_pyarray(py),
+        rate.into_pyarray(py),
+    ))
+}
+
 /// A design from its parts as JSON text (`{"part": [...]}`, sizes in SI
 /// units: Python reads no units).
 fn design_of(parts: &str) -> PyResult<pendulum_theory::compound::description::Design> {
@@ -917,5 +969,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(design, m)?)?;
     m.add_function(wrap_pyfunction!(regulate, m)?)?;
     m.add_function(wrap_pyfunction!(compensate, m)?)?;
+    m.add_function(wrap_pyfunction!(report, m)?)?;
     Ok(())
 }

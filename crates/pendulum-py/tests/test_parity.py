@@ -826,6 +826,7 @@ DAMPED = {
     "length_zero": (0.0, 0.05, {"q": 100.0}),
     "decay_time_negative": (0.99362, 0.05, {"decay_time": -1.0}),
     "mass_zero": (0.99362, 0.05, {"q": 100.0, "mass": 0.0}),
+    "mass_negative_overdamped": (0.5, 0.1, {"zeta": 3.0, "mass": -1.0}),
 }
 DAMPED_UNITS = {"zeta": "", "q": "", "log_decrement": "", "decay_time": "s",
                 "damping_coefficient": "", "mass": "kg", "friction_angle": "rad",
@@ -947,6 +948,20 @@ def toml_of(parts):
                    for p in parts)
 
 
+def keyword_args(kw, units, tmp_path):
+    """The command line's flags for Python's keywords: ``parts`` as a
+    design file, every other keyword as its flag with its unit."""
+    args = []
+    for k, v in kw.items():
+        if k == "parts":
+            path = tmp_path / "design.toml"
+            path.write_text(toml_of(v))
+            args += ["--design", str(path)]
+        else:
+            args += [f"--{k.replace('_', '-')}", cli_value(v, units[k])]
+    return args
+
+
 DESIGN = {
     "rod_and_bob": ([ROD, BOB], {}),
     "sizes_in_mm_as_numbers": ([{**ROD, "length": 1000.0, "diameter": 8.0, "centre": 500.0},
@@ -1035,14 +1050,8 @@ REGULATE_UNITS = {"length": "m", "nut_pitch": "m", "nut_tpi": "", "nut_divisions
 @pytest.mark.parametrize("name", sorted(REGULATE))
 def test_regulate(name, tmp_path):
     rate, kw = REGULATE[name]
-    args = ["regulate", "--rate", cli_value(rate), "--json"]
-    for k, v in kw.items():
-        if k == "parts":
-            path = tmp_path / "design.toml"
-            path.write_text(toml_of(v))
-            args += ["--design", str(path)]
-        else:
-            args += [f"--{k.replace('_', '-')}", cli_value(v, REGULATE_UNITS[k])]
+    args = ["regulate", "--rate", cli_value(rate), "--json",
+            *keyword_args(kw, REGULATE_UNITS, tmp_path)]
     check(args, lambda: pt.regulate(rate, **kw))
 
 
@@ -1155,3 +1164,88 @@ def test_sizes_in_millimetres_written_as_metres_are_warned():
     assert "millimetres" in pt.design(parts)["warnings"][0]
     assert "millimetres" in pt.regulate(12.0, length=994.0)["warnings"][0]
     assert pt.design([ROD, BOB])["warnings"] == []
+
+
+# --- report -------------------------------------------------------------------
+
+REPORT = {
+    "defaults": {},
+    "short_wide": {"length": 0.25, "amplitude": math.radians(5)},
+    "q_300": {"q": 300.0},
+    "zeta": {"zeta": 0.01},
+    "log_decrement": {"log_decrement": 0.05},
+    "decay_time": {"decay_time": 600.0},
+    "coefficient_default_mass": {"damping_coefficient": 0.01},
+    "coefficient_with_mass": {"damping_coefficient": 0.01, "mass": 2.0},
+    "undamped": {"zeta": 0.0},
+    "critical": {"zeta": 1.0},
+    "overdamped": {"zeta": 3.0},
+    "large_swing_warns": {"amplitude": math.radians(60), "q": 100.0},
+    "lunar": {"g": 1.62},
+    "light_bob": {"mass": 0.5},
+    "design": {"parts": [ROD, BOB]},
+    "design_with_mass": {"parts": [ROD, BOB], "mass": 3.0},
+    "design_in_mm_warns": {"parts": [{**ROD, "length": 1000.0, "diameter": 8.0, "centre": 500.0},
+                                     {**BOB, "length": 100.0, "diameter": 100.0,
+                                      "centre": 950.0}]},
+    "zeta_tiny_in_range": {"zeta": 1e-300},
+    "zeta_too_large": {"zeta": 1e200},
+    "zeta_too_small": {"zeta": 1e-320},
+    "q_too_small": {"q": 1e-101},
+    "q_negative": {"q": -3.0},
+    "length_zero": {"length": 0.0},
+    "length_negative": {"length": -1.0},
+    "amplitude_zero": {"amplitude": 0.0},
+    "amplitude_pi": {"amplitude": math.pi},
+    "mass_zero": {"mass": 0.0},
+    "mass_negative_overdamped": {"mass": -1.0, "zeta": 3.0},
+    "decay_time_negative": {"decay_time": -1.0},
+    "design_unknown_shape": {"parts": [ROD, {**BOB, "shape": "cone"}]},
+}
+REPORT_UNITS = {"zeta": "", "q": "", "log_decrement": "", "decay_time": "s",
+                "damping_coefficient": "", "mass": "kg", "g": "", "length": "m",
+                "amplitude": "rad"}
+
+
+def report_call(kw):
+    def call():
+        r = pt.report(**kw)
+        points = r.pop("rundown_points")
+        rates = points["rate_s_per_day"]
+        run = r["rundown"]
+        assert len(points["time_s"]) == len(points["amplitude_rad"]) == len(rates)
+        if len(rates):
+            assert (rates[0], rates[-1]) == (run["first_rate_s_per_day"],
+                                             run["last_rate_s_per_day"])
+        else:
+            assert run["first_rate_s_per_day"] is None
+        return r
+    return call
+
+
+@pytest.mark.parametrize("name", sorted(REPORT))
+def test_report(name, tmp_path):
+    kw = REPORT[name]
+    args = ["report", "--output", str(tmp_path / "out"), "--json",
+            *keyword_args(kw, REPORT_UNITS, tmp_path)]
+    outcome = check(args, report_call(kw))
+    # A refused report leaves no folder behind; an answered one its page.
+    assert (tmp_path / "out" / "index.html").exists() == (outcome == "answered")
+
+
+def test_report_refuses_a_length_and_a_design():
+    with pytest.raises(ValueError, match="^length: give a length or a design, not both$"):
+        pt.report(length=1.0, parts=[ROD, BOB])
+
+
+def test_report_defaults_are_a_seconds_pendulum_at_three_degrees():
+    r = pt.report()
+    assert r["period"]["length_m"] == 0.99362
+    assert r["period"]["amplitude_deg"] == pytest.approx(3.0, rel=1e-15)
+    assert r["damped"]["q_factor"] == pytest.approx(1e4, rel=1e-12)
+    assert r["damped"]["mass_kg"] == 5.0
+    # The run-down halves the amplitude of a free swing, losing ever less.
+    run = r["rundown"]
+    assert not run["stopped_short"]
+    assert run["final_amplitude_rad"] == pytest.approx(math.radians(1.5), rel=1e-3)
+    assert run["first_rate_s_per_day"] < run["last_rate_s_per_day"] < 0

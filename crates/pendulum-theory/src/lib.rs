@@ -60,6 +60,7 @@ pub mod lift;
 pub mod listening;
 pub mod pendulum;
 pub mod period;
+pub mod report;
 pub mod simulation;
 pub mod train;
 

@@ -176,48 +176,20 @@ pub fn damping_given(args: &DampingArgs) -> Result<Option<(String, f64)>, CliErr
     Ok(Some((field.to_string(), value)))
 }
 
-/// The damping form given, converted to ζ; `None` when none was given.
+/// The damping form given, converted by the library for `p` (with a
+/// bob of `mass` kg for a damping coefficient); `None` when none was given.
 pub fn damping(
     args: &DampingArgs,
     mass: Option<f64>,
     p: &Pendulum,
 ) -> Result<Option<Damping>, CliError> {
-    let number = |flag: &str, text: &str| parse_number(text).map_err(|e| CliError::flag(flag, e));
-    if let Some(t) = &args.zeta {
-        let z = number("--zeta", t)?;
-        return Damping::from_zeta(z)
-            .map(Some)
-            .map_err(|e| CliError::input("--zeta", &e));
-    }
-    if let Some(t) = &args.q {
-        let q = number("--q", t)?;
-        return Damping::from_q(q)
-            .map(Some)
-            .map_err(|e| CliError::input("--q", &e));
-    }
-    if let Some(t) = &args.log_decrement {
-        let d = number("--log-decrement", t)?;
-        return Damping::from_log_decrement(d)
-            .map(Some)
-            .map_err(|e| CliError::input("--log-decrement", &e));
-    }
-    if let Some(t) = &args.decay_time {
-        let tau = quantity("--decay-time", t, Dimension::Time)?;
-        return Damping::from_decay_time(tau, p)
-            .map(Some)
-            .map_err(|e| CliError::input("--decay-time", &e));
-    }
-    if let Some(t) = &args.damping_coefficient {
-        let c = number("--damping-coefficient", t)?;
-        let m = mass.ok_or_else(|| CliError::flag("--damping-coefficient", "needs --mass"))?;
-        return Damping::from_coefficient(c, m, p)
-            .map(Some)
-            .map_err(|e| match e.quantity {
-                Quantity::Mass => CliError::input("--mass", &e),
-                _ => CliError::input("--damping-coefficient", &e),
-            });
-    }
-    Ok(None)
+    let Some((field, value)) = damping_given(args)? else {
+        return Ok(None);
+    };
+    let no_data = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
+    pendulum_theory::damped::analysis::damping_given(&field, value, p, mass)
+        .map(|(d, _)| Some(d))
+        .map_err(|e| CliError::refused(&e, &[], &no_data))
 }
 
 /// More trajectory samples than this need `--force`.

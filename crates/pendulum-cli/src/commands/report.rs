@@ -13,195 +13,100 @@ use crate::interrupt;
 use crate::output::num;
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::units::Dimension;
-// Q and the mass are the clock's defaults: a regulator in air, a 5 kg bob.
-use pendulum_theory::clock::analysis::{DEFAULT_MASS_KG, DEFAULT_Q};
-use pendulum_theory::compound::datasheet::{datasheet, Air};
 use pendulum_theory::damped::DampedPendulum;
-use pendulum_theory::damping::Damping;
-use pendulum_theory::energy::energy_budget;
-use pendulum_theory::friction::DryFriction;
-use pendulum_theory::period::PeriodAnalysis;
-use pendulum_theory::simulation::{
-    half_swing_rate, simulate, work_estimate, Action, Method, Model, Observer, Options,
-    TurningPoint,
-};
+use pendulum_theory::report::{report, Report, ReportInput};
 use pendulum_theory::Pendulum;
 use std::path::Path;
-
-/// The default pendulum: a seconds pendulum.
-const DEFAULT_LENGTH: &str = "0.99362m";
-const DEFAULT_AMPLITUDE: &str = "3deg";
-/// The simulated run-down stops after this many periods at the most.
-const MAX_RUNDOWN_PERIODS: f64 = 1e5;
-/// ... and after about this much computing, s.
-const MAX_RUNDOWN_SECONDS: f64 = 1.0;
-
-/// Collects (time, amplitude °, rate s/day) at each turning point.
-struct Turns {
-    pendulum: Pendulum,
-    previous: f64,
-    points: Vec<(f64, f64, f64)>,
-}
-
-impl Observer for Turns {
-    fn turning_point(&mut self, p: &TurningPoint) -> Action {
-        if p.index > 0 {
-            let rate = half_swing_rate(&self.pendulum, p.time - self.previous);
-            self.points.push((p.time, p.angle.abs().to_degrees(), rate));
-        }
-        self.previous = p.time;
-        Action::Continue
-    }
-
-    fn progress(&mut self, _time: f64) -> bool {
-        !interrupt::requested()
-    }
-}
 
 /// One line of the page's table: quantity, value with unit, note.
 struct Row(&'static str, String, &'static str);
 
 pub fn run(args: &ReportArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let pendulum = common::pendulum_of(
-        Some(args.length.as_deref().unwrap_or(DEFAULT_LENGTH)),
-        args.design.as_deref(),
-        &gravity,
-    )?;
-    let amplitude = common::amplitude(
-        "--amplitude",
-        args.amplitude.as_deref().unwrap_or(DEFAULT_AMPLITUDE),
-    )?;
-    // With a design: its datasheet, in standard air at 20 °C.
-    // Its swing's energy is M g d (1 - cos A0): the simple pendulum's
-    // of the equivalent length with the mass M d / l.
-    let (datasheet, design_mass) = match &args.design {
-        Some(path) => {
-            let design = crate::design::read_design(path)?;
-            let sheet = datasheet(&design, Some(gravity.g_m_s2), &Air::default())
-                .map_err(|r| CliError::other(format!("{}: {r}", path.display())))?;
-            (
-                Some(super::design::rows(&sheet, &gravity)),
-                Some(design.pendulum.properties().effective_mass()),
-            )
+    let angle = |flag, t: &Option<String>, d| {
+        t.as_deref()
+            .map(|t| common::quantity(flag, t, d))
+            .transpose()
+    };
+    let input = ReportInput {
+        length: angle("--length", &args.length, Dimension::Length)?,
+        design: args
+            .design
+            .as_deref()
+            .map(crate::design::read_design)
+            .transpose()?,
+        g: Some(gravity.g_m_s2),
+        amplitude: angle("--amplitude", &args.amplitude, Dimension::Angle)?,
+        damping: common::damping_given(&args.damping)?,
+        mass: angle("--mass", &args.mass, Dimension::Mass)?,
+    };
+    let design_file = args.design.as_ref().map(|p| p.display().to_string());
+    let refused = |e: &pendulum_theory::analysis::Refusal| {
+        if interrupt::requested() {
+            return interrupt::error();
         }
-        None => (None, None),
+        let in_file = |_: Option<(&'static str, usize)>, reason: &str| match &design_file {
+            Some(file) => CliError::other(format!("{file}: {reason}")),
+            None => CliError::other(reason),
+        };
+        CliError::refused(e, &[], &in_file)
     };
-    let mass = match (&args.mass, design_mass) {
-        (Some(t), _) => {
-            let m = common::quantity("--mass", t, Dimension::Mass)?;
-            if !(m > 0.0 && m.is_finite()) {
-                return Err(CliError::flag(
-                    "--mass",
-                    format!("must be positive, got {t}"),
-                ));
-            }
-            m
-        }
-        (None, Some(m)) => m,
-        (None, None) => DEFAULT_MASS_KG,
-    };
-    let damping = match common::damping(&args.damping, Some(mass), &pendulum)? {
-        Some(d) => d,
-        None => Damping::from_q(DEFAULT_Q).expect("a valid default"),
-    };
-    // Beyond these the report's figures and budget leave double precision
-    // (measured: ζ = 1e200 and 1e-320 overflow, 1e100 and 1e-308 do not).
-    let zeta = damping.zeta();
-    if !(zeta == 0.0 || (1e-300..=1e100).contains(&zeta)) {
-        return Err(CliError::flag(
-            common::damping_flag(&args.damping),
-            format!(
-                "gives ζ = {}; the report takes ζ from 1e-300 to 1e100, or none",
-                num(zeta, 4)
-            ),
-        ));
-    }
+    let r = report(&input, &mut || !interrupt::requested()).map_err(|e| refused(&e))?;
+    let json = args.json.then(|| crate::output::json(&r)).transpose()?;
     let output = AtomicFolder::create(&args.output, "--output")?;
     let folder = output.path().to_path_buf();
-
-    // Section 1-6: the exact period around the working amplitude.
-    let analysis = PeriodAnalysis::new(pendulum, amplitude, 3)
-        .map_err(|e| CliError::input("--amplitude", &e))?;
-    let a_deg = amplitude.degrees();
+    let damped = r.damped.friction.damped;
+    let pendulum = damped.pendulum;
+    let a0 = r.damped.amplitude_rad;
+    let a_deg = a0.to_degrees();
     write_figure(
         &folder,
         "period.svg",
         &period_figure(&pendulum, 0.0, (2.0 * a_deg).clamp(6.0, 170.0), Some(a_deg)),
     )?;
-
-    // Section 1-4: the linear decay, its Q and the energy budget.
-    let damped = DampedPendulum::new(pendulum, damping);
-    let a0 = amplitude.radians();
-    let friction = DryFriction::new(damped, 0.0).expect("no friction is valid");
-    let half_loss = friction.half_swing_loss(a0);
-    let budget = match (half_loss, damped.damped_period()) {
-        (Some(loss), Some(period)) => energy_budget(&pendulum, mass, a0, loss, period).ok(),
-        _ => None,
-    };
-    // The slowest time constant: the envelope's when underdamped, the
-    // creep's when overdamped.
-    let decay_time = damped.slowest_time_constant();
-    let half_life = std::f64::consts::LN_2 * decay_time;
-    let decay_span = if half_life.is_finite() {
-        3.0 * half_life
-    } else {
-        100.0 * pendulum.small_angle_period()
-    };
+    let decay_span = r
+        .damped
+        .decay_time_s
+        .map_or(100.0 * pendulum.small_angle_period(), |t| {
+            3.0 * std::f64::consts::LN_2 * t
+        });
     write_figure(&folder, "decay.svg", &decay_figure(&damped, a0, decay_span))?;
-
-    // The full nonlinear run-down until the amplitude halves: at most 10^5
-    // periods and about a second of computing (a stiff, heavily overdamped
-    // pendulum gets a shorter run), said on the page.
-    let model = Model::new(pendulum, damping, 0.0, 0.0).expect("valid model");
-    let t0 = pendulum.small_angle_period();
-    let wanted = if half_life.is_finite() {
-        half_life
-    } else {
-        100.0 * t0
-    };
-    let mut options = Options {
-        duration: wanted.min(MAX_RUNDOWN_PERIODS * t0),
-        tolerance: 1e-8,
-        method: Method::Symplectic,
-        sample_interval: None,
-    };
-    let work = work_estimate(&model, amplitude, &options);
-    if work.seconds > MAX_RUNDOWN_SECONDS {
-        options.duration *= MAX_RUNDOWN_SECONDS / work.seconds;
-    }
-    let run_note = if options.duration < wanted {
-        "stopped short of half amplitude: at most 10^5 periods, or a second of computing"
-    } else {
-        "nonlinear, symplectic integrator"
-    };
-    let mut turns = Turns {
-        pendulum,
-        previous: 0.0,
-        points: Vec::new(),
-    };
-    let outcome = simulate(&model, amplitude, &options, &mut turns)
-        .map_err(|e| CliError::other(e.to_string()))?;
-    if interrupt::requested() {
-        return Err(interrupt::error());
-    }
-    write_figure(&folder, "rundown.svg", &rundown_figure(&turns.points))?;
-
-    let rates = turns
+    let points: Vec<(f64, f64, f64)> = r
+        .rundown
         .points
-        .first()
-        .zip(turns.points.last())
-        .map(|(a, b)| (a.2, b.2));
-    let undamped = damping.zeta() == 0.0;
+        .iter()
+        .map(|p| (p.time_s, p.amplitude_rad.to_degrees(), p.rate_s_per_day))
+        .collect();
+    write_figure(&folder, "rundown.svg", &rundown_figure(&points))?;
+    let datasheet = r
+        .datasheet
+        .as_ref()
+        .map(|sheet| super::design::rows(sheet, &gravity));
+    let page = html(&rows(&r, &gravity, &pendulum), datasheet.as_deref());
+    crate::output::check_finite_text(&page)?;
+    let mut file = AtomicFile::create(&folder.join("index.html"), "--output")?;
+    file.writer()
+        .write_all(page.as_bytes())
+        .map_err(|e| file.write_error(e))?;
+    file.commit()?;
+    let written = output.commit(&args.output);
+    Ok(json.unwrap_or_else(|| format!("{}\n", written.join("index.html").display())))
+}
+
+/// The page's table of the report's numbers.
+fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> Vec<Row> {
+    let d = &r.damped;
+    let p = &r.period;
+    let undamped = d.zeta == 0.0;
     let mut rows = vec![
         Row(
-            if args.design.is_some() {
+            if r.from_design {
                 "Equivalent length"
             } else {
                 "Length"
             },
             format!("{} m", num(pendulum.length_m(), 8)),
-            if args.design.is_some() {
+            if r.from_design {
                 "I / (m d) of the design"
             } else {
                 ""
@@ -210,49 +115,43 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         Row("Gravity", gravity.describe(), ""),
         Row(
             "Working amplitude",
-            format!("{}°", num(a_deg, 6)),
+            format!("{}°", num(p.amplitude_deg, 6)),
             "either side of the vertical",
         ),
         Row(
             "Period at that amplitude",
-            format!("{} s", num(analysis.period_s, 12)),
+            format!("{} s", num(p.period_s, 12)),
             "exact: 4 sqrt(l/g) K(sin²(A0/2))",
         ),
         Row(
             "Small-angle period",
-            format!("{} s", num(analysis.small_angle_period_s, 12)),
+            format!("{} s", num(p.small_angle_period_s, 12)),
             "2π sqrt(l/g)",
         ),
         Row(
             "Beats per hour",
-            num(analysis.beats_per_hour, 9),
+            num(p.beats_per_hour, 9),
             "a beat is half a period",
         ),
         Row(
             "Circular error",
-            format!("{} s/day", num(analysis.circular_error_s_per_day(), 5)),
+            format!("{} s/day", num(p.circular_error_s_per_day, 5)),
             "lost against a vanishing swing",
         ),
         Row(
             "… per degree of amplitude",
-            format!(
-                "{} s/day/°",
-                num(analysis.circular_error_s_per_day_per_deg(), 5)
-            ),
+            format!("{} s/day/°", num(p.circular_error_s_per_day_per_deg, 5)),
             "how a change of swing moves the rate",
         ),
-        Row("Damping ratio ζ", num(damping.zeta(), 5), "section 1-4"),
+        Row("Damping ratio ζ", num(d.zeta, 5), "section 1-4"),
         Row(
             "Q",
-            if undamped {
-                "infinite (undamped)".to_string()
-            } else {
-                num(damping.q_factor(), 6)
-            },
+            d.q_factor
+                .map_or("infinite (undamped)".to_string(), |q| num(q, 6)),
             "1/(2ζ)",
         ),
     ];
-    if let Some(delta) = damping.log_decrement() {
+    if let Some(delta) = d.log_decrement {
         rows.push(Row(
             "Logarithmic decrement",
             format!("{} per period", num(delta, 5)),
@@ -260,8 +159,8 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         ));
     }
     if let (Some(exact), Some(approx)) = (
-        damped.amplitude_loss_per_period(a0),
-        damped.amplitude_loss_per_period_approx(a0),
+        d.amplitude_loss_per_period_rad,
+        d.amplitude_loss_per_period_approx_rad,
     ) {
         rows.push(Row(
             "Amplitude lost per period",
@@ -273,7 +172,8 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
             "A₀ (1 − e^(−δ)), and the first-order δ A₀ of section 1-4",
         ));
     }
-    let overdamped = damping.zeta() > 1.0;
+    let decay_time = d.decay_time_s.unwrap_or(f64::INFINITY);
+    let half_life = std::f64::consts::LN_2 * decay_time;
     rows.push(Row(
         "Amplitude decay time",
         if undamped {
@@ -281,7 +181,7 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         } else {
             format!("{} s", num(decay_time, 6))
         },
-        if overdamped {
+        if d.zeta > 1.0 {
             "the slow creep: (ζ + sqrt(ζ² - 1))/ω_n"
         } else {
             "1/(ζ ω_n)"
@@ -291,7 +191,7 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         "Amplitude half-life",
         if undamped {
             "none (undamped)".to_string()
-        } else if damped.damped_period().is_none() {
+        } else if d.damped_period_s.is_none() {
             format!(
                 "none (overdamped: no swing; the creep halves in {} s)",
                 num(half_life, 6)
@@ -301,20 +201,21 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         },
         "ln 2 × decay time",
     ));
+    let mass = d.mass_kg.unwrap_or(f64::NAN);
     rows.push(Row(
-        if design_mass.is_some() && args.mass.is_none() {
+        if r.effective_mass {
             "Effective mass"
         } else {
             "Bob mass"
         },
         format!("{} kg", num(mass, 4)),
-        if design_mass.is_some() && args.mass.is_none() {
+        if r.effective_mass {
             "the design's M d / l: its swing's energy is M g d (1 - cos A0)"
         } else {
             "for the energy budget"
         },
     ));
-    if let Some(b) = budget {
+    if let Some(b) = d.budget {
         rows.push(Row(
             "Energy in the swing",
             format!("{} J", num(b.energy, 5)),
@@ -336,19 +237,24 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
             "given at the bottom of the swing",
         ));
     }
+    let run = &r.rundown;
     rows.push(Row(
         "Simulated run-down",
         format!(
             "{} s, {} turning points",
-            num(outcome.final_time, 6),
-            outcome.swings
+            num(run.final_time_s, 6),
+            run.turning_points
         ),
-        run_note,
+        if run.stopped_short {
+            "stopped short of half amplitude: at most 10^5 periods, or a second of computing"
+        } else {
+            "nonlinear, symplectic integrator"
+        },
     ));
     rows.push(Row(
         "Final amplitude",
-        format!("{}°", num(outcome.final_amplitude.to_degrees(), 6)),
-        if run_note == "nonlinear, symplectic integrator" && !undamped {
+        format!("{}°", num(run.final_amplitude_rad.to_degrees(), 6)),
+        if !run.stopped_short && !undamped {
             "half the working amplitude"
         } else {
             "at the end of the simulated run"
@@ -356,21 +262,13 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
     ));
     rows.push(Row(
         "Rate drift during the run-down",
-        rates.map_or("not determined (no full swing)".to_string(), |(a, b)| {
-            format!("{} → {} s/day", num(a, 5), num(b, 5))
-        }),
+        match (run.first_rate_s_per_day, run.last_rate_s_per_day) {
+            (Some(a), Some(b)) => format!("{} → {} s/day", num(a, 5), num(b, 5)),
+            _ => "not determined (no full swing)".to_string(),
+        },
         "circular error falls as the swing shrinks",
     ));
-
-    let page = html(&rows, datasheet.as_deref());
-    crate::output::check_finite_text(&page)?;
-    let mut file = AtomicFile::create(&folder.join("index.html"), "--output")?;
-    file.writer()
-        .write_all(page.as_bytes())
-        .map_err(|e| file.write_error(e))?;
-    file.commit()?;
-    let written = output.commit(&args.output);
-    Ok(format!("{}\n", written.join("index.html").display()))
+    rows
 }
 
 fn write_figure(folder: &Path, name: &str, figure: &Figure) -> Result<(), CliError> {

@@ -54,6 +54,7 @@ __all__ = [
     "design",
     "regulate",
     "compensate",
+    "report",
 ]
 
 #: Standard gravity, m/s²: the library's default, as the CLI's.
@@ -445,6 +446,15 @@ def damped(length, amplitude, *, zeta=None, q=None, log_decrement=None, decay_ti
     ``friction_angle`` rad, the first ``extrema`` turning points. Returns
     its ``--json`` object as a dict. For arrays of angles use
     :func:`damped_angle`."""
+    return _json.loads(_native.damped(
+        float(length), float(amplitude),
+        _damping_given(zeta, q, log_decrement, decay_time, damping_coefficient),
+        _number(friction_angle), _number(mass), _count(extrema),
+        _number(g), bool(force)))
+
+
+def _damping_given(zeta, q, log_decrement, decay_time, damping_coefficient):
+    """The one damping given, as the library's (form, value), or None."""
     given = [(k, v) for k, v in (("zeta", zeta), ("q", q), ("log_decrement", log_decrement),
                                  ("decay_time", decay_time),
                                  ("damping_coefficient", damping_coefficient))
@@ -452,10 +462,27 @@ def damped(length, amplitude, *, zeta=None, q=None, log_decrement=None, decay_ti
     if len(given) > 1:
         raise ValueError("damping: give one of zeta, q, log_decrement, decay_time, "
                          "damping_coefficient")
-    return _json.loads(_native.damped(
-        float(length), float(amplitude), (given[0][0], float(given[0][1])) if given else None,
-        _number(friction_angle), _number(mass), _count(extrema),
-        _number(g), bool(force)))
+    return (given[0][0], float(given[0][1])) if given else None
+
+
+def report(*, length=None, parts=None, amplitude=None, zeta=None, q=None, log_decrement=None,
+           decay_time=None, damping_coefficient=None, mass=None, g=None):
+    """The numbers of the command's ``report`` (the same library call): a
+    pendulum of ``length`` m (default a seconds pendulum) or a design of
+    ``parts`` (see :func:`design`) at the working ``amplitude`` rad, with
+    one damping as :func:`damped` takes it (default Q = 10,000) and a bob
+    of ``mass`` kg: the exact period, the damped pendulum and its energy
+    budget, the design's datasheet and the nonlinear run-down until the
+    amplitude halves. Returns its ``--json`` object as a dict; the
+    run-down's turning points are under ``"rundown_points"`` as arrays."""
+    text, times, amplitudes, rates = _native.report(
+        _number(length), None if parts is None else _parts(parts), _number(amplitude),
+        _damping_given(zeta, q, log_decrement, decay_time, damping_coefficient), _number(mass),
+        _number(g))
+    result = _json.loads(text)
+    result["rundown_points"] = {"time_s": times, "amplitude_rad": amplitudes,
+                                "rate_s_per_day": rates}
+    return result
 
 
 def _counts(values):

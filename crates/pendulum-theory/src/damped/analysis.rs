@@ -191,6 +191,11 @@ pub fn damped(input: &DampedInput) -> Result<Damped, Refusal> {
     })?;
     let amplitude =
         Amplitude::from_radians(input.amplitude).map_err(|e| Refusal::input("amplitude", &e))?;
+    // A mass is checked where it is given, whether or not a budget needs it.
+    if let Some(m) = input.mass {
+        crate::error::require_positive(Quantity::Mass, m)
+            .map_err(|e| Refusal::input("mass", &e))?;
+    }
     let count = input.extrema.unwrap_or(DEFAULT_EXTREMA);
     // The turning points are held and printed: past 10^7 not even forced.
     if count > MAX_EXTREMA_FORCED || (count > MAX_EXTREMA && !input.force) {

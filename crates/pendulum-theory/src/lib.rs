@@ -43,6 +43,7 @@
 
 pub mod air;
 pub mod analysis;
+pub mod averaging;
 pub mod clock;
 pub mod compound;
 pub mod damped;
@@ -53,7 +54,6 @@ pub mod error;
 pub mod exact;
 pub mod fitting;
 pub mod forces;
-pub mod friction;
 pub mod gravity;
 pub mod integrate;
 pub mod lift;

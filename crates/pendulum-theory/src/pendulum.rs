@@ -90,13 +90,6 @@ impl Pendulum {
     pub fn small_angle_period(&self) -> f64 {
         self.small_angle_period
     }
-
-    /// The exact period at `amplitude`, `T = 4 sqrt(l/g) K(sin²(A0/2))`
-    /// (seed section 1-6); see [`crate::period::period_ratio`].
-    #[inline]
-    pub fn period(&self, amplitude: Amplitude) -> f64 {
-        self.small_angle_period() * crate::period::period_ratio(amplitude)
-    }
 }
 
 /// The amplitude of a swing from rest: the largest angle from the vertical,

@@ -3,9 +3,9 @@
 //! passes smoothly through critical damping, and its turning points are
 //! where the velocity vanishes.
 
+use pendulum_theory::damped::friction::DryFriction;
 use pendulum_theory::damped::DampedPendulum;
 use pendulum_theory::damping::Damping;
-use pendulum_theory::friction::DryFriction;
 use pendulum_theory::Pendulum;
 use proptest::prelude::*;
 

@@ -1,25 +1,7 @@
-//! The long-run method: a whole half swing per step, from one turning
-//! point to the next, in closed form.
-//!
-//! The energy at the turning points (scaled, `E = 2 sin²(A/2)`) goes from
-//! `E₁` to `E₂ = E₁ + W(A₁, A₂) - D(Ē)/Q`, where `W` is the escapement's
-//! exact work between the ends (its closed forms, and its impulses),
-//! `D(E) = ∫ v dθ = 8 (E(k) - k'² K(k))` the free half swing's action at
-//! the mean energy `Ē = (E₁ + E₂)/2` (the viscous loss `∫ θ'² dτ / Q`), and
-//! the half swing lasts `2 K(k̄) + δT` with `δT` the escapement's
-//! first-order shift ([`super::airy::time_shift`]). Damping and drive
-//! change sign when time runs backwards, and this map, evaluated at the
-//! mean energy, undoes itself under that reversal exactly as the motion
-//! does; two such maps that agree to first order in the small forces then
-//! agree to second order as well (the second-order term of a reversible
-//! map is fixed by its first), so a half swing is right to third order in
-//! `1/Q` and the drive: 1e-18 of the energy at Q = 10⁶. The implicit
-//! equation for `E₂` is solved by fixed-point iteration (each contracts by
-//! the size of the forces).
-//!
-//! The half period carries the viscous term's second-order lengthening
-//! `1/sqrt(1 - ζ²)` (ζ = 1/(2Q); exact for the linear oscillator), so the
-//! time is right to second order too.
+//! The long-run method for a clock: the half-swing map of
+//! [`crate::averaging`] with the escapement's exact work between the ends
+//! (its closed forms, and its impulses) and its first-order time shift
+//! ([`super::airy::time_shift`]).
 //!
 //! Measured against the symplectic method at tolerance 1e-13 over 200
 //! periods of a seconds pendulum from 3° (the last turning point): Q = 100,
@@ -31,36 +13,14 @@
 //! more), not for heavily damped swings.
 
 use super::airy::time_shift;
-use super::direct::HalfSwing;
 use super::escapement::Escapement;
-use crate::elliptic::{ellip_e_minus_complement_k, Modulus};
+pub use crate::averaging::half_swing_action;
+use crate::averaging::{HalfSwing, Work};
 
-/// The free half swing's action `∫ v dθ` at amplitude `a`, scaled:
-/// `8 (E(k) - k'² K(k))`, `k = sin(a/2)`.
-pub fn half_swing_action(a: f64) -> f64 {
-    Modulus::from_modular_angle(0.5 * a).map_or(f64::NAN, |m| 8.0 * ellip_e_minus_complement_k(&m))
-}
-
-/// The same from the scaled energy `e = 2k²` (no angle needed).
-fn action_of_energy(e: f64) -> Option<f64> {
-    Modulus::from_parameter(0.5 * e).map(|m| 8.0 * ellip_e_minus_complement_k(&m))
-}
-
-/// Scaled energy at a turning point at `a`.
-fn energy_of(a: f64) -> f64 {
-    2.0 * (0.5 * a).sin().powi(2)
-}
-
-/// Amplitude of the turning point with scaled energy `e`; `None` at or
-/// past the top.
-fn amplitude_of(e: f64) -> Option<f64> {
-    let s = (0.5 * e).sqrt();
-    (s.is_finite() && s < 1.0).then(|| 2.0 * s.asin())
-}
-
-/// The half swing from rest at `-a1` to the next turning point, by the
-/// map (see the module notes); `None` when it goes over the top or stops
-/// short of the escapement's unlocking.
+/// The half swing from rest at `-a1` to the next turning point, on beat
+/// `beat` with drive factor `drive`, by the map of [`crate::averaging`];
+/// `None` when it goes over the top or stops short of the escapement's
+/// unlocking.
 pub fn half_swing_map(
     escapement: Option<&dyn Escapement>,
     q: f64,
@@ -69,38 +29,14 @@ pub fn half_swing_map(
     a1: f64,
     with_time_shift: bool,
 ) -> Option<HalfSwing> {
-    let c = if q.is_finite() { 1.0 / q } else { 0.0 };
-    let e1 = energy_of(a1);
-    let given = |a2: f64| escapement.map_or(0.0, |e| e.energy(a1, a2, beat, drive));
-    // First order for a start; each iteration gains the forces' order.
-    let mut e2 = e1 + given(a1) - c * action_of_energy(e1)?;
-    let mut a2 = a1;
-    for _ in 0..20 {
-        if escapement.is_some() {
-            a2 = amplitude_of(e2)?;
-        }
-        let next = e1 + given(a2) - c * action_of_energy(0.5 * (e1 + e2))?;
-        let converged = (next - e2).abs() <= 4.0 * f64::EPSILON * e1;
-        e2 = next;
-        if converged {
-            break;
-        }
-    }
-    let a2 = amplitude_of(e2)?;
-    let mean_energy = 0.5 * (e1 + e2);
-    let shift = match escapement {
-        Some(e) if with_time_shift => time_shift(e, amplitude_of(mean_energy)?, beat, drive),
-        _ => 0.0,
+    let Some(e) = escapement else {
+        return crate::averaging::half_swing_map(q, a1, None);
     };
-    if mean_energy >= 2.0 {
-        return None;
-    }
-    Some(HalfSwing {
-        amplitude: a2,
-        // The viscous term's second-order lengthening, exact for the
-        // linear oscillator (turning points π/ω_d apart, ω_d = sqrt(1 - ζ²)
-        // with ζ = c/2).
-        time: 2.0 * crate::elliptic::ellipk(0.5 * mean_energy) / (1.0 - 0.25 * c * c).sqrt()
-            + shift,
-    })
+    let energy = |a2: f64| e.energy(a1, a2, beat, drive);
+    let shift = |a: f64| time_shift(e, a, beat, drive);
+    let work = Work {
+        energy: &energy,
+        time_shift: with_time_shift.then_some(&shift as &dyn Fn(f64) -> f64),
+    };
+    crate::averaging::half_swing_map(q, a1, Some(&work))
 }

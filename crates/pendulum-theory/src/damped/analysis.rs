@@ -5,12 +5,12 @@
 //! theory's own warning, one result. The command line's `damped` and
 //! Python's `damped` are this call.
 
+use super::friction::{DryFriction, RunDown};
 use super::{DampedPendulum, Regime};
 use crate::analysis::{finite, require_finite, Refusal};
 use crate::damping::Damping;
 use crate::energy::{energy_budget, EnergyBudget};
 use crate::error::{format_significant, Quantity};
-use crate::friction::{DryFriction, RunDown};
 use crate::pendulum::{Amplitude, Pendulum, STANDARD_GRAVITY};
 use serde::Serialize;
 

@@ -25,6 +25,7 @@
 //! hundred periods.
 
 pub mod analysis;
+pub mod friction;
 
 use crate::damping::Damping;
 use crate::pendulum::Pendulum;

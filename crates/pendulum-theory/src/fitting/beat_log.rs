@@ -7,7 +7,7 @@
 use super::beats::{AllanPoint, BeatAnalysis, BeatError, BeatStream};
 use crate::analysis::{require_finite_sample, Refusal};
 use crate::error::format_significant;
-use crate::period::{beat_of_period, period_for_beat_rate, SECONDS_PER_DAY};
+use crate::period::SECONDS_PER_DAY;
 use serde::Serialize;
 
 /// The ratios of nominal to measured beat taken: within the geometric
@@ -16,34 +16,7 @@ use serde::Serialize;
 pub const NOMINAL_RATIO_RANGE: std::ops::RangeInclusive<f64> =
     std::f64::consts::FRAC_1_SQRT_2..=std::f64::consts::SQRT_2;
 
-/// The beat the clock is meant to keep.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Nominal {
-    /// Beats per hour (field `bph`).
-    BeatsPerHour(f64),
-    /// The pendulum's full period, s (field `period`).
-    Period(f64),
-}
-
-impl Nominal {
-    /// The input's field name.
-    pub fn field(self) -> &'static str {
-        match self {
-            Nominal::BeatsPerHour(_) => "bph",
-            Nominal::Period(_) => "period",
-        }
-    }
-
-    /// The nominal beat, s, or the refusal of the value.
-    pub fn beat(self) -> Result<f64, Refusal> {
-        match self {
-            Nominal::BeatsPerHour(b) => period_for_beat_rate(b)
-                .and_then(beat_of_period)
-                .map_err(|e| Refusal::input("bph", &e)),
-            Nominal::Period(p) => beat_of_period(p).map_err(|e| Refusal::input("period", &e)),
-        }
-    }
-}
+pub use crate::period::Nominal;
 
 /// The Allan deviation at one averaging time.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

@@ -13,8 +13,11 @@
 //!   dense output;
 //! * [`control`]: the step-size controller, in one function.
 //!
-//! The driver that wires them for the pendulum lives in [`crate::simulation`].
+//! * [`adaptive`]: the one adaptive driver over them, with terminal
+//!   events; the simulation's adaptive methods and the clock's half swing
+//!   step with it.
 
+pub mod adaptive;
 pub mod control;
 pub mod dense;
 pub mod dop853;

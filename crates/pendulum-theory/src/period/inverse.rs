@@ -5,10 +5,10 @@
 //! `length` and `amplitude` are these calls.
 
 use super::table::pendulum;
+use super::Nominal;
 use super::{amplitude_for_period, beats_per_hour, length_for_period};
 use crate::analysis::{finite, require_finite, Refusal};
 use crate::error::format_significant;
-use crate::fitting::beat_log::Nominal;
 use crate::pendulum::{Amplitude, STANDARD_GRAVITY};
 use crate::period::period_for_beat_rate;
 use serde::Serialize;

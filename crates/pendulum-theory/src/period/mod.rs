@@ -29,6 +29,18 @@ use crate::error::{require_positive, InputError, Problem, Quantity};
 use crate::pendulum::{Amplitude, Pendulum};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
+// The period is a property of the pendulum, computed here: the pendulum
+// module knows nothing of the period's theory (no import cycle).
+impl Pendulum {
+    /// The exact period at `amplitude`, `T = 4 sqrt(l/g) K(sin²(A0/2))`
+    /// (seed section 1-6): the small-angle period times [`period_ratio`];
+    /// the same accuracy (at most 4 ulp in the ratio, one rounding more).
+    #[inline]
+    pub fn period(&self, amplitude: Amplitude) -> f64 {
+        self.small_angle_period() * period_ratio(amplitude)
+    }
+}
+
 /// The period ratio `T/T0 = 2K(m)/π = 1/AGM(1, cos(A0/2))`.
 ///
 /// 1 at zero amplitude, 1.0019 at 10°, 1.18 at 90°, and unbounded (like
@@ -376,6 +388,37 @@ pub struct PeriodAnalysis {
     pub circular_error_slope_per_rad: f64,
     /// The seed's power series to the requested number of terms.
     pub series: SeriesEstimate,
+}
+
+/// The beat the clock is meant to keep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Nominal {
+    /// Beats per hour (field `bph`).
+    BeatsPerHour(f64),
+    /// The pendulum's full period, s (field `period`).
+    Period(f64),
+}
+
+impl Nominal {
+    /// The input's field name.
+    pub fn field(self) -> &'static str {
+        match self {
+            Nominal::BeatsPerHour(_) => "bph",
+            Nominal::Period(_) => "period",
+        }
+    }
+
+    /// The nominal beat, s, or the refusal of the value.
+    pub fn beat(self) -> Result<f64, crate::analysis::Refusal> {
+        match self {
+            Nominal::BeatsPerHour(b) => period_for_beat_rate(b)
+                .and_then(beat_of_period)
+                .map_err(|e| crate::analysis::Refusal::input("bph", &e)),
+            Nominal::Period(p) => {
+                beat_of_period(p).map_err(|e| crate::analysis::Refusal::input("period", &e))
+            }
+        }
+    }
 }
 
 /// Seconds in a day, for rates in s/day.

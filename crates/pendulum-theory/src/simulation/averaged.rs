@@ -1,5 +1,5 @@
 //! The averaged driver: one step per half swing, by the closed-form map of
-//! [`crate::clock::averaged`] (the exact elliptic half period at the mean
+//! [`crate::averaging`] (the exact elliptic half period at the mean
 //! energy, the viscous loss as the free half swing's action over Q,
 //! reversible, so right to third order in 1/Q). Viscous damping only (the
 //! map has no drag or dry-friction law); turning points only (no samples,
@@ -7,7 +7,7 @@
 //! is the free swing's of the last amplitude.
 
 use super::{Method, Model, Observer, Options, Outcome, Stopped, TurningPoint, PROGRESS_EVERY};
-use crate::clock::averaged::half_swing_map;
+use crate::averaging::half_swing_map;
 use crate::damped::State;
 use crate::exact::ExactSwing;
 use crate::pendulum::Amplitude;
@@ -35,7 +35,7 @@ pub(super) fn run_averaged(
     let (mut a, mut index, mut side) = (a0, 0_u64, 1.0_f64);
     let mut stopped = Stopped::Duration;
     while a > 0.0 {
-        let Some(h) = half_swing_map(None, q, 1.0, 0, a, false) else {
+        let Some(h) = half_swing_map(q, a, None) else {
             stopped = Stopped::OverTheTop;
             break;
         };

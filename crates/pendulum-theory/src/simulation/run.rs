@@ -55,17 +55,7 @@ impl Samples {
     }
 }
 
-/// A step's continuous extension, as the events and samples need it.
-pub(super) trait Interpolant {
-    /// `[θ, dθ/dτ]` at scaled time `t` within the step.
-    fn state(&self, t: f64) -> State2;
-}
-
-impl Interpolant for crate::integrate::dense::DenseOutput {
-    fn state(&self, t: f64) -> State2 {
-        self.eval(t)
-    }
-}
+pub(super) use crate::integrate::adaptive::Interpolant;
 
 impl Interpolant for crate::integrate::symplectic::Hermite {
     fn state(&self, t: f64) -> State2 {

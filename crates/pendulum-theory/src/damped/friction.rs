@@ -14,7 +14,7 @@
 //! may lie on the same side as the one before. Critically damped and
 //! overdamped pendulums creep towards `r sign(A0)` without ever turning.
 
-use crate::damped::{DampedPendulum, Extremum, State};
+use super::{DampedPendulum, Extremum, State};
 use crate::error::InputError;
 use std::f64::consts::PI;
 

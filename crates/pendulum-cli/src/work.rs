@@ -69,7 +69,6 @@ fn free_bytes(folder: &Path) -> Option<u64> {
     })
 }
 
-pub use pendulum_theory::analysis::count;
 pub use pendulum_theory::analysis::human_seconds;
 
 /// A size for people: "12 MB", "3.1 GB", "4e6 TB".

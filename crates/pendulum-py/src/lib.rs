@@ -13,6 +13,7 @@ use pendulum_theory::damping::Damping;
 use pendulum_theory::elliptic::{ellipe as ellipe_m, ellipk as ellipk_m, jacobi};
 use pendulum_theory::error::InputError;
 use pendulum_theory::exact::ExactSwing;
+use pendulum_theory::period::SECONDS_PER_DAY as DAY;
 use pendulum_theory::period::{
     amplitude_for_period as theory_amplitude, circular_error, length_for_period,
 };
@@ -21,9 +22,6 @@ use pendulum_theory::{Amplitude, Pendulum};
 use pyo3::exceptions::{PyMemoryError, PyValueError};
 use pyo3::prelude::*;
 use std::sync::atomic::{AtomicBool, Ordering};
-
-/// Seconds in a day.
-const DAY: f64 = 86_400.0;
 
 type Array<'py> = Bound<'py, PyArrayDyn<f64>>;
 type Array1<'py> = Bound<'py, numpy::PyArray1<f64>>;

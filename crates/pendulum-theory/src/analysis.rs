@@ -192,8 +192,72 @@ pub fn finite(value: f64) -> Option<f64> {
     value.is_finite().then_some(value)
 }
 
+/// More samples of a motion than this need forcing (a file of some GB).
+pub const MAX_SAMPLES: f64 = 1e8;
+
+/// A duration, s: finite and not negative (the refusal names `duration`).
+pub fn duration(seconds: f64) -> Result<f64, Refusal> {
+    let d = require_finite("duration", seconds)?;
+    if d < 0.0 {
+        return Err(Refusal::field(
+            "duration",
+            format!("must not be negative, got {} s", format_significant(d, 10)),
+        ));
+    }
+    Ok(d)
+}
+
+/// The samples of a motion over `duration` s every `interval` s
+/// (`default` when none is given): the interval positive and finite, and
+/// at most [`MAX_SAMPLES`] of them unless `force`. Returns the interval
+/// and the number of samples (`floor(duration / interval) + 1`); refusals
+/// name `sample_interval`.
+pub fn sampling(
+    interval: Option<f64>,
+    default: f64,
+    duration: f64,
+    force: bool,
+) -> Result<(f64, u64), Refusal> {
+    let h = require_finite("sample_interval", interval.unwrap_or(default))?;
+    if h <= 0.0 {
+        return Err(Refusal::field(
+            "sample_interval",
+            format!("must be positive, got {} s", format_significant(h, 10)),
+        ));
+    }
+    let samples = (duration / h).floor() + 1.0;
+    if samples > MAX_SAMPLES && !force {
+        return Err(Refusal::field(
+            "sample_interval",
+            format!(
+                "{} samples requested; more than 10^8 needs forcing (--force; force=True in \
+                 Python), or a longer interval",
+                count(samples)
+            ),
+        ));
+    }
+    Ok((h, samples as u64))
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn sampling_counts_the_samples_and_refuses_what_it_cannot_take() {
+        // 10 s every 0.1 s: both ends, 101 samples (0.1 is not exact, the
+        // floor of 10/0.1 is 100).
+        assert_eq!(super::sampling(Some(0.1), 1.0, 10.0, false), Ok((0.1, 101)));
+        assert_eq!(super::sampling(None, 0.5, 10.0, false), Ok((0.5, 21)));
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            let r = super::sampling(Some(bad), 1.0, 10.0, false).unwrap_err();
+            assert_eq!(r.field_name(), Some("sample_interval"), "{bad}");
+        }
+        let many = super::sampling(Some(1e-9), 1.0, 1.0, false).unwrap_err();
+        assert!(many.reason.contains("needs forcing"), "{}", many.reason);
+        assert!(super::sampling(Some(1e-9), 1.0, 1.0, true).is_ok());
+        assert!(super::duration(-1.0).is_err() && super::duration(f64::NAN).is_err());
+        assert_eq!(super::duration(0.0), Ok(0.0));
+    }
+
     use super::*;
 
     #[test]

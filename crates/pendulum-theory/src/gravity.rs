@@ -69,6 +69,13 @@ pub fn normal_gravity(latitude_deg: f64, height_m: f64) -> Result<f64, InputErro
     Ok(surface + FREE_AIR_GRADIENT * h)
 }
 
+/// How far `g` (m/s²) lies from standard gravity, in parts per million:
+/// `10⁶ (g / g_n - 1)`, `g_n` = [`crate::STANDARD_GRAVITY`] (exact by
+/// definition, CGPM 1901).
+pub fn deviation_from_standard_ppm(g: f64) -> f64 {
+    (g / crate::pendulum::STANDARD_GRAVITY - 1.0) * 1e6
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

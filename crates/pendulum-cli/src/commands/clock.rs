@@ -331,7 +331,7 @@ fn isochronism_figure(rows: &[IsochronismPoint], name: &str) -> Figure {
 }
 
 fn run_figure(points: &[(f64, f64, f64)]) -> Figure {
-    let days = |t: f64| t / 86_400.0;
+    let days = |t: f64| t / pendulum_theory::period::SECONDS_PER_DAY;
     Figure {
         panels: vec![
             Panel::new(
@@ -445,7 +445,7 @@ fn render_text(r: &ClockResult, swings_file: Option<&str>) -> String {
             "Run",
             format!(
                 "{} days, {} beats{}",
-                num(run.duration_s / 86_400.0, 6),
+                num(run.duration_s / pendulum_theory::period::SECONDS_PER_DAY, 6),
                 run.beats,
                 if run.stopped {
                     " (the pendulum stopped)"

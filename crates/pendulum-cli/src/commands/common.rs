@@ -192,57 +192,6 @@ pub fn damping(
         .map_err(|e| CliError::refused(&e, &[], &no_data))
 }
 
-/// More trajectory samples than this need `--force`.
-pub const MAX_SAMPLES: f64 = 1e8;
-
-/// A duration from `--duration` (not negative), or `default` when absent.
-pub fn duration(text: Option<&str>, default: f64) -> Result<f64, CliError> {
-    let d = match text {
-        Some(t) => quantity("--duration", t, Dimension::Time)?,
-        None => default,
-    };
-    if d < 0.0 {
-        return Err(CliError::flag(
-            "--duration",
-            format!("must not be negative, got {} s", crate::output::num(d, 10)),
-        ));
-    }
-    Ok(d)
-}
-
-/// The sample interval from `--sample-interval` (or `default`), checked to
-/// be positive and to give at most 10^8 samples over `duration` unless
-/// `force`; returns it with the number of samples.
-pub fn sampling(
-    text: Option<&str>,
-    default: f64,
-    duration: f64,
-    force: bool,
-) -> Result<(f64, u64), CliError> {
-    let flag = "--sample-interval";
-    let h = match text {
-        Some(t) => quantity(flag, t, Dimension::Time)?,
-        None => default,
-    };
-    if h <= 0.0 {
-        return Err(CliError::flag(
-            flag,
-            format!("must be positive, got {} s", crate::output::num(h, 10)),
-        ));
-    }
-    let count = (duration / h).floor() + 1.0;
-    if count > MAX_SAMPLES && !force {
-        return Err(CliError::flag(
-            flag,
-            format!(
-                "{} samples requested; more than 10^8 needs --force (or a longer interval)",
-                crate::work::count(count)
-            ),
-        ));
-    }
-    Ok((h, count as u64))
-}
-
 /// What `damped` and `simulate` read from [`SwingArgs`].
 pub struct Swing {
     /// The pendulum.

@@ -57,15 +57,13 @@ pub fn run(args: &DampedArgs) -> Result<String, CliError> {
         extrema: args.extrema,
         force: args.force,
     };
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    let r = damped(&input).map_err(|e| CliError::refused(&e, &[], &no_file))?;
+    let r = damped(&input).map_err(|e| refused(&e))?;
     let trajectory = match &args.trajectory {
         Some(path) => Some(write_trajectory(args, path, &r)?),
         None => None,
     };
     if let Some(target) = &plot {
-        let t0 = pendulum.small_angle_period();
-        let duration = common::duration(args.duration.as_deref(), 10.0 * t0)?;
+        let duration = r.span(duration(args)?).map_err(|e| refused(&e))?;
         render(target, &figure(&r, duration))?;
     }
     let json = DampedJson {
@@ -77,6 +75,20 @@ pub fn run(args: &DampedArgs) -> Result<String, CliError> {
     } else {
         Ok(text(&json))
     }
+}
+
+/// A library refusal said of its flag.
+fn refused(e: &pendulum_theory::analysis::Refusal) -> CliError {
+    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
+    CliError::refused(e, &[], &no_file)
+}
+
+/// `--duration`, if given.
+fn duration(args: &DampedArgs) -> Result<Option<f64>, CliError> {
+    args.duration
+        .as_deref()
+        .map(|t| common::quantity("--duration", t, Dimension::Time))
+        .transpose()
 }
 
 fn opt(value: Option<f64>, digits: usize, unit: &str) -> String {
@@ -195,14 +207,15 @@ fn write_trajectory(
     path: &std::path::Path,
     r: &Damped,
 ) -> Result<TrajectoryJson, CliError> {
-    let t0 = r.friction.damped.pendulum.small_angle_period();
-    let duration = common::duration(args.duration.as_deref(), 10.0 * t0)?;
-    let (interval, samples) = common::sampling(
-        args.sample_interval.as_deref(),
-        t0 / 100.0,
-        duration,
-        args.force,
-    )?;
+    let duration = r.span(duration(args)?).map_err(|e| refused(&e))?;
+    let interval = args
+        .sample_interval
+        .as_deref()
+        .map(|t| common::quantity("--sample-interval", t, Dimension::Time))
+        .transpose()?;
+    let (interval, samples) = r
+        .sampling(duration, interval, args.force)
+        .map_err(|e| refused(&e))?;
     // Measured: 0.3 µs and about 42 bytes a row (bench/RESULTS.md).
     let rows = samples as f64;
     work::check_time(

@@ -12,7 +12,6 @@ use crate::plot::{render, Figure, Panel, Series, Target};
 use pendulum_theory::fitting::tracked::{
     analyse, LengthSource, Track, TrackInput, SECONDS_PER_ROW,
 };
-use pendulum_theory::STANDARD_GRAVITY;
 use serde::Serialize;
 
 /// What the command prints as JSON: the file read, then the analysis.
@@ -127,7 +126,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     if let Some(g) = a.parameters.get("g_m_s2") {
         out.push_str(&format!(
             "  g differs from standard gravity by {} ppm\n",
-            num((g / STANDARD_GRAVITY - 1.0) * 1e6, 3)
+            num(pendulum_theory::gravity::deviation_from_standard_ppm(*g), 3)
         ));
     }
     for w in &a.warnings {

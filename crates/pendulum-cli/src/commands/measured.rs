@@ -33,14 +33,9 @@ fn frame_rate(text: Option<&str>) -> Result<Option<f64>, CliError> {
         return Ok(None);
     };
     let fps = parse_number(text).map_err(|e| CliError::flag("--frame-rate", e))?;
-    // A camera films at a frame an hour (time-lapse) to a million a second.
-    if !(1.0 / 3600.0..=1e6).contains(&fps) {
-        return Err(CliError::flag(
-            "--frame-rate",
-            format!("must lie between 1/3600 and 10^6 frames a second, got {text}"),
-        ));
-    }
-    Ok(Some(fps))
+    pendulum_theory::fitting::track::frame_rate(fps)
+        .map(Some)
+        .map_err(|e| CliError::flag("--frame-rate", e.reason))
 }
 
 /// Where the pivot of tracked positions came from, for the JSON output.

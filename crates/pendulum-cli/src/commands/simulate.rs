@@ -8,11 +8,13 @@ use crate::file::CsvFile;
 use crate::interrupt;
 use crate::output::{self, num, Output, Summary};
 use crate::plot::{render, thin, Figure, Panel, Series, Target};
-use crate::units::parse_number;
+use crate::units::{parse_number, Dimension};
 use crate::work::{self, Progress};
 use clap::ValueEnum;
 use pendulum_theory::damped::State;
-use pendulum_theory::simulation::analysis::{prepare, Prepared, Simulation, SimulationInput};
+use pendulum_theory::simulation::analysis::{
+    prepare, Prepared, Simulation, SimulationInput, SAMPLES_PER_PERIOD,
+};
 use pendulum_theory::simulation::forces::DRAG_LAWS;
 use pendulum_theory::simulation::{
     half_swing_rate, Action, Observer, Options, Stopped, TurningPoint,
@@ -55,7 +57,7 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         .as_deref()
         .map(|t| parse_number(t).map_err(|e| CliError::flag("--quadratic-drag", e)))
         .transpose()?;
-    let duration = common::duration(Some(&args.duration), 0.0)?;
+    let duration = common::quantity("--duration", &args.duration, Dimension::Time)?;
     let tolerance = args
         .tolerance
         .as_deref()
@@ -69,13 +71,16 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         }
         None => None,
         Some(_) => {
-            let default = pendulum.small_angle_period() / 100.0;
-            let (h, _) = common::sampling(
-                args.sample_interval.as_deref(),
-                default,
-                duration,
-                args.force,
-            )?;
+            let default = pendulum.small_angle_period() / SAMPLES_PER_PERIOD;
+            let interval = args
+                .sample_interval
+                .as_deref()
+                .map(|t| common::quantity("--sample-interval", t, Dimension::Time))
+                .transpose()?;
+            let no_data = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
+            let (h, _) =
+                pendulum_theory::analysis::sampling(interval, default, duration, args.force)
+                    .map_err(|e| CliError::refused(&e, &[], &no_data))?;
             Some(h)
         }
     };
@@ -373,7 +378,7 @@ fn text(r: &SimulateJson) -> String {
         format!(
             "{} s ({} days)",
             num(r.final_time_s, 10),
-            num(r.final_time_s / 86_400.0, 6)
+            num(r.final_time_s / pendulum_theory::period::SECONDS_PER_DAY, 6)
         ),
     )
     .row(

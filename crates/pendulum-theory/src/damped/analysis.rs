@@ -25,6 +25,12 @@ pub const MAX_EXTREMA_FORCED: u64 = 10_000_000;
 /// than 0.2% in the period: a warning names the exact period.
 pub const SMALL_ANGLE_LIMIT_DEG: f64 = 10.0;
 
+/// A trajectory (or figure) of the motion lasts this many small-angle
+/// periods when no duration is given.
+pub const TRAJECTORY_PERIODS: f64 = 10.0;
+/// ... with this many samples a small-angle period when no interval is given.
+pub const SAMPLES_PER_PERIOD: f64 = 100.0;
+
 /// The damping's forms, by their input names.
 pub const DAMPING_FIELDS: [&str; 5] = [
     "zeta",
@@ -327,6 +333,26 @@ pub fn damped(input: &DampedInput) -> Result<Damped, Refusal> {
 }
 
 impl Damped {
+    /// The motion's span, s: `duration`, or [`TRAJECTORY_PERIODS`]
+    /// small-angle periods; refused when negative or not finite.
+    pub fn span(&self, duration: Option<f64>) -> Result<f64, Refusal> {
+        let t0 = self.friction.damped.pendulum.small_angle_period();
+        crate::analysis::duration(duration.unwrap_or(TRAJECTORY_PERIODS * t0))
+    }
+
+    /// The samples of the motion over `duration` s every `interval` s (by
+    /// default [`SAMPLES_PER_PERIOD`] a small-angle period), checked by
+    /// [`crate::analysis::sampling`]: the interval and the count.
+    pub fn sampling(
+        &self,
+        duration: f64,
+        interval: Option<f64>,
+        force: bool,
+    ) -> Result<(f64, u64), Refusal> {
+        let t0 = self.friction.damped.pendulum.small_angle_period();
+        crate::analysis::sampling(interval, t0 / SAMPLES_PER_PERIOD, duration, force)
+    }
+
     /// Whether the pendulum oscillates.
     pub fn oscillates(&self) -> bool {
         self.friction.damped.regime() == Regime::Underdamped

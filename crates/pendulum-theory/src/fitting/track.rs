@@ -86,6 +86,26 @@ pub fn fit_circle(x: &[f64], y: &[f64]) -> Result<Circle, FitError> {
     })
 }
 
+/// The frame rates taken for a video's frame numbers, frames a second: a
+/// camera films at a frame an hour (time-lapse) to a million a second.
+pub const FRAME_RATE_RANGE: std::ops::RangeInclusive<f64> = 1.0 / 3600.0..=1e6;
+
+/// A video's frame rate, checked against [`FRAME_RATE_RANGE`] (the
+/// refusal names `frame_rate`).
+pub fn frame_rate(fps: f64) -> Result<f64, crate::analysis::Refusal> {
+    if FRAME_RATE_RANGE.contains(&fps) {
+        Ok(fps)
+    } else {
+        Err(crate::analysis::Refusal::field(
+            "frame_rate",
+            format!(
+                "must lie between 1/3600 and 10^6 frames a second, got {}",
+                crate::error::format_significant(fps, 10)
+            ),
+        ))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

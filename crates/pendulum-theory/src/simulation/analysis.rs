@@ -24,6 +24,9 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-10;
 pub const TOLERANCE_RANGE: std::ops::Range<f64> = 1e-15..1.0;
 /// Longer simulated durations need forcing, s (32 years).
 pub const MAX_DURATION_S: f64 = 1e9;
+/// A trajectory has this many samples a small-angle period when no
+/// interval is given.
+pub const SAMPLES_PER_PERIOD: f64 = 100.0;
 /// The method when none is named.
 pub const DEFAULT_METHOD: &str = "dop853";
 /// The method names, in the order offered.

@@ -1,7 +1,11 @@
 //! The command line, declared with clap: every flag, its value name, its
-//! help. Values with units arrive as text and are read by [`crate::units`]
-//! in each command, so every refusal names its flag in our own words.
+//! help and its type. A quantity's type ([`crate::units::Length`], ...)
+//! is parsed by clap with [`crate::units`], so a value refused names its
+//! flag in our own words; values with a syntax of their own (a range of
+//! amplitudes, a pivot, a drag law) arrive as text.
 
+use crate::paths::{InputPath, OutputPath};
+use crate::units::{Acceleration, Angle, Drive, Length, Mass, Number, RatePerDay, Time};
 use clap::{Args, Parser, Subcommand};
 use pendulum_theory::clock::analysis as clock;
 use pendulum_theory::compound::datasheet as sheet;
@@ -141,7 +145,7 @@ The folder is written whole or not at all; the simulated run-down is at most 10^
 pub struct ListenArgs {
     /// The recording (WAV, FLAC, Ogg, MP3, M4A).
     #[arg(value_name = "FILE")]
-    pub file: std::path::PathBuf,
+    pub file: InputPath,
     /// The nominal beat rate, beats per hour [default: found from the recording].
     #[arg(
         long,
@@ -149,28 +153,28 @@ pub struct ListenArgs {
         allow_hyphen_values = true,
         conflicts_with = "period"
     )]
-    pub bph: Option<String>,
+    pub bph: Option<Number>,
     /// The nominal period (two beats).
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
-    pub period: Option<String>,
+    pub period: Option<Time>,
     /// The channel to listen to, from 1 [default: the louder].
     #[arg(long, value_name = "N")]
     pub channel: Option<usize>,
     /// The sound card's clock error, ppm (positive: its clock runs fast).
     #[arg(long, value_name = "P", allow_hyphen_values = true)]
-    pub sample_rate_error_ppm: Option<String>,
+    pub sample_rate_error_ppm: Option<Number>,
     /// Write every tick to this CSV file (time_s,side,amplitude).
     #[arg(long, value_name = "FILE.csv")]
-    pub ticks: Option<std::path::PathBuf>,
+    pub ticks: Option<OutputPath>,
     /// The escapement's lift angle (degrees unless a unit is given): the
     /// pendulum's amplitude is found from the time between each beat's
     /// unlocking and drop sounds.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub lift_angle: Option<String>,
+    pub lift_angle: Option<Angle>,
     /// Draw the timegrapher's paper strip and the averaged tick and tock
     /// sounds (SVG or PNG by the extension; - for SVG on standard output).
     #[arg(long, value_name = "FILE.svg|FILE.png")]
-    pub plot: Option<std::path::PathBuf>,
+    pub plot: Option<OutputPath>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -196,48 +200,48 @@ pub enum SynthCommand {
 pub struct SynthTicksArgs {
     /// The WAV file to write.
     #[arg(value_name = "OUT.wav")]
-    pub output: std::path::PathBuf,
+    pub output: OutputPath,
     #[arg(long, value_name = "B", allow_hyphen_values = true, help = with_default("Beats per hour", TickRecording::DEFAULT.beats_per_hour))]
-    pub bph: Option<String>,
+    pub bph: Option<Number>,
     #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("The clock's rate, s/day (positive: gaining)", TickRecording::DEFAULT.rate_s_per_day))]
-    pub rate: Option<String>,
+    pub rate: Option<Number>,
     #[arg(long, value_name = "E", allow_hyphen_values = true, help = with_default("Beat error, ms (half the difference of the tick and tock intervals)", TickRecording::DEFAULT.beat_error_ms))]
-    pub beat_error: Option<String>,
+    pub beat_error: Option<Number>,
     #[arg(long, value_name = "D", allow_hyphen_values = true, help = with_default("Length of the recording, s", TickRecording::DEFAULT.duration))]
-    pub duration: Option<String>,
+    pub duration: Option<Time>,
     #[arg(long, value_name = "S", allow_hyphen_values = true, help = with_default("A tick's peak over the noise, dB", TickRecording::DEFAULT.snr_db))]
-    pub snr_db: Option<String>,
+    pub snr_db: Option<Number>,
     #[arg(long, value_name = "HZ", help = with_default("Samples per second", TickRecording::DEFAULT.sample_rate))]
     pub sample_rate: Option<u32>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Room reverberation time, s", TickRecording::DEFAULT.reverb_s))]
-    pub reverb: Option<String>,
+    pub reverb: Option<Time>,
     #[arg(long, value_name = "DB", allow_hyphen_values = true, help = with_default("Mains hum against a tick's peak, dB", TickRecording::DEFAULT.hum_db))]
-    pub hum_db: Option<String>,
+    pub hum_db: Option<Number>,
     #[arg(long, value_name = "F", allow_hyphen_values = true, help = with_default("Fraction of ticks left out", TickRecording::DEFAULT.missing))]
-    pub missing: Option<String>,
+    pub missing: Option<Number>,
     #[arg(long, value_name = "N", help = with_default("Seed of every random choice (the tick's sound too)", TickRecording::DEFAULT.seed))]
     pub seed: Option<u64>,
     /// Write the true tick times to this CSV file (time_s).
     #[arg(long, value_name = "FILE.csv")]
-    pub truth: Option<std::path::PathBuf>,
+    pub truth: Option<OutputPath>,
 }
 
 /// `pendulum report`.
 #[derive(Debug, Args)]
 pub struct ReportArgs {
     #[arg(long, value_name = "L", allow_hyphen_values = true, help = with_default("Pendulum length, m (a seconds pendulum)", pendulum_theory::report::DEFAULT_LENGTH_M))]
-    pub length: Option<String>,
+    pub length: Option<Length>,
     /// A pendulum designed as parts (TOML; see examples/*.toml): its
     /// equivalent simple length is used.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
-    pub design: Option<std::path::PathBuf>,
+    pub design: Option<InputPath>,
     #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("Working amplitude, °", pendulum_theory::report::DEFAULT_AMPLITUDE_DEG))]
-    pub amplitude: Option<String>,
+    pub amplitude: Option<Angle>,
     /// Damping [default: Q = 10,000].
     #[command(flatten)]
     pub damping: DampingArgs,
     #[arg(long, value_name = "M", allow_hyphen_values = true, help = with_default("Bob mass for the energy budget, kg (a design's: its effective mass)", pendulum_theory::clock::analysis::DEFAULT_MASS_KG))]
-    pub mass: Option<String>,
+    pub mass: Option<Mass>,
     /// Folder to write index.html and its figures in.
     #[arg(long, value_name = "DIR", default_value = "pendulum-report")]
     pub output: std::path::PathBuf,
@@ -282,7 +286,7 @@ pub struct MeasurementArgs {
     /// Rebuild the times as the row number over this frame rate (frames
     /// per second), for times exported rounded.
     #[arg(long, value_name = "FPS", allow_hyphen_values = true)]
-    pub frame_rate: Option<String>,
+    pub frame_rate: Option<Number>,
     /// For x and y positions: the pivot, as X,Y in the file's units
     /// [default: 0,0], or `fit` for the centre of the circle the bob traces.
     #[arg(long, value_name = "X,Y|fit", allow_hyphen_values = true)]
@@ -299,35 +303,35 @@ pub struct FitDecayArgs {
     /// Amplitudes against time (`time_s` or `swing`, and `amplitude_deg`,
     /// `amplitude (rad)`, …): CSV, semicolon, tab or space separated.
     #[arg(value_name = "FILE")]
-    pub file: std::path::PathBuf,
+    pub file: InputPath,
     #[command(flatten)]
     pub read: MeasurementArgs,
     #[arg(long, value_name = "LAW", help = with_default(&format!("Which decay law to fit: {}", pendulum_theory::fitting::rundown::model_names()), pendulum_theory::fitting::rundown::DEFAULT_MODEL))]
     pub model: Option<String>,
     /// Pendulum length: turns rates into ζ, Q, friction angle and drag (needed for a swing column).
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
-    pub length: Option<String>,
+    pub length: Option<Length>,
     /// A pendulum designed as parts (TOML; see examples/*.toml), in place
     /// of --length: its equivalent length, and its effective mass M d / l
     /// for the energy budget.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
-    pub design: Option<std::path::PathBuf>,
+    pub design: Option<InputPath>,
     /// Bob mass, for the energy lost per period and the power (with --length).
     #[arg(long, value_name = "M", allow_hyphen_values = true)]
-    pub mass: Option<String>,
+    pub mass: Option<Mass>,
     /// The period, to turn rates into ζ, Q, friction angle and drag
     /// [default: from the turning points of a track, else from --length].
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
-    pub period: Option<String>,
+    pub period: Option<Time>,
     /// With a track (angle or x/y against time): write the turning points
     /// found to this CSV file (time_s,amplitude_rad,side).
     #[arg(long, value_name = "FILE.csv")]
-    pub turning_points: Option<std::path::PathBuf>,
+    pub turning_points: Option<OutputPath>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Plot the data, the fitted curves and the residuals to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
-    pub plot: Option<std::path::PathBuf>,
+    pub plot: Option<OutputPath>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -339,24 +343,24 @@ pub struct FitTrajectoryArgs {
     /// Angle against time (`time_s`, `t`, `Time (s)` and `angle_deg`,
     /// `θ (rad)`, …) or tracked positions `x`, `y` (a Tracker export).
     #[arg(value_name = "FILE")]
-    pub file: std::path::PathBuf,
+    pub file: InputPath,
     #[command(flatten)]
     pub read: MeasurementArgs,
     /// Pendulum length, to give g.
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
-    pub length: Option<String>,
+    pub length: Option<Length>,
     /// A pendulum designed as parts (TOML), in place of --length: g from
     /// its equivalent length.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
-    pub design: Option<std::path::PathBuf>,
+    pub design: Option<InputPath>,
     #[arg(long, value_name = "MODEL", help = with_default("Section 1-4's closed form (linear), the nonlinear equation integrated inside the fit (nonlinear), or auto: nonlinear when the largest swing exceeds 5°", pendulum_theory::fitting::tracked::DEFAULT_MODEL))]
     pub model: Option<String>,
     /// Write the residuals to this CSV file (time_s,residual_rad).
     #[arg(long, value_name = "FILE.csv")]
-    pub residuals: Option<std::path::PathBuf>,
+    pub residuals: Option<OutputPath>,
     /// Plot the data, the fitted curves and the residuals to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
-    pub plot: Option<std::path::PathBuf>,
+    pub plot: Option<OutputPath>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -367,7 +371,7 @@ pub struct FitTrajectoryArgs {
 pub struct FitBeatsArgs {
     /// One time per beat (`time_s`, `t`, `Time (s)`, …).
     #[arg(value_name = "FILE")]
-    pub file: std::path::PathBuf,
+    pub file: InputPath,
     /// Names of the columns of a file without a header, in order (e.g. time_s).
     #[arg(long, value_name = "NAMES")]
     pub columns: Option<String>,
@@ -378,13 +382,13 @@ pub struct FitBeatsArgs {
         allow_hyphen_values = true,
         conflicts_with = "period"
     )]
-    pub bph: Option<String>,
+    pub bph: Option<Number>,
     /// The nominal period (two beats).
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
-    pub period: Option<String>,
+    pub period: Option<Time>,
     /// Plot the data, the fitted curves and the residuals to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
-    pub plot: Option<std::path::PathBuf>,
+    pub plot: Option<OutputPath>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -400,10 +404,10 @@ pub struct GravityArgs {
         allow_hyphen_values = true,
         conflicts_with = "latitude"
     )]
-    pub g: Option<String>,
+    pub g: Option<Acceleration>,
     /// Latitude in degrees (north positive), to compute g (WGS 84).
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
-    pub latitude: Option<String>,
+    pub latitude: Option<Angle>,
     /// Height above the ellipsoid, with --latitude [default: 0 m].
     #[arg(
         long,
@@ -411,7 +415,7 @@ pub struct GravityArgs {
         allow_hyphen_values = true,
         requires = "latitude"
     )]
-    pub height: Option<String>,
+    pub height: Option<Length>,
 }
 
 /// Output format flags shared by the commands.
@@ -428,18 +432,8 @@ pub struct FormatArgs {
 /// `pendulum period`.
 #[derive(Debug, Args)]
 pub struct PeriodArgs {
-    /// Pendulum length (e.g. 0.99362m, 994mm, 39.1in).
-    #[arg(
-        long,
-        value_name = "L",
-        allow_hyphen_values = true,
-        required_unless_present = "design"
-    )]
-    pub length: Option<String>,
-    /// A pendulum designed as parts (TOML; see examples/*.toml): its
-    /// equivalent simple length is used.
-    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
-    pub design: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub pendulum: PendulumArgs,
     /// Amplitude (e.g. 3deg, 0.05rad), or a range 1deg..10deg for a table.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: String,
@@ -450,7 +444,7 @@ pub struct PeriodArgs {
     /// Plot T/T0 (exact, series of 1 to 5 terms, small-angle) and the
     /// circular error against amplitude to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
-    pub plot: Option<std::path::PathBuf>,
+    pub plot: Option<OutputPath>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     #[command(flatten)]
@@ -468,13 +462,13 @@ pub struct LengthArgs {
         required_unless_present = "bph",
         conflicts_with = "bph"
     )]
-    pub period: Option<String>,
+    pub period: Option<Time>,
     /// The beat rate wanted, beats per hour (a beat is half a period).
     #[arg(long, value_name = "B", allow_hyphen_values = true)]
-    pub bph: Option<String>,
+    pub bph: Option<Number>,
     /// The amplitude it will swing at [default: 0, the small-angle limit].
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub amplitude: Option<String>,
+    pub amplitude: Option<Angle>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Print one JSON object.
@@ -487,22 +481,12 @@ pub struct LengthArgs {
 pub struct AmplitudeArgs {
     /// The measured period (e.g. 2.0002s).
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
-    pub period: String,
-    /// Pendulum length.
-    #[arg(
-        long,
-        value_name = "L",
-        allow_hyphen_values = true,
-        required_unless_present = "design"
-    )]
-    pub length: Option<String>,
-    /// A pendulum designed as parts (TOML; see examples/*.toml): its
-    /// equivalent simple length is used.
-    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
-    pub design: Option<std::path::PathBuf>,
+    pub period: Time,
+    #[command(flatten)]
+    pub pendulum: PendulumArgs,
     /// Uncertainty of the measured period, to report the amplitude's.
     #[arg(long, value_name = "DT", allow_hyphen_values = true)]
-    pub period_uncertainty: Option<String>,
+    pub period_uncertainty: Option<Time>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Print one JSON object.
@@ -515,13 +499,31 @@ pub struct AmplitudeArgs {
 pub struct GravityCommandArgs {
     /// Latitude in degrees (north positive).
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
-    pub latitude: String,
+    pub latitude: Angle,
     /// Height above the ellipsoid [default: 0 m].
     #[arg(long, value_name = "H", allow_hyphen_values = true)]
-    pub height: Option<String>,
+    pub height: Option<Length>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
+}
+
+/// The pendulum, as a length or as a design: shared by the commands that
+/// need one.
+#[derive(Debug, Args)]
+pub struct PendulumArgs {
+    /// Pendulum length (e.g. 0.99362m, 994mm, 39.1in).
+    #[arg(
+        long,
+        value_name = "L",
+        allow_hyphen_values = true,
+        required_unless_present = "design"
+    )]
+    pub length: Option<Length>,
+    /// A pendulum designed as parts (TOML; see examples/*.toml), in place
+    /// of --length: its equivalent simple length is used.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<InputPath>,
 }
 
 /// One way to give viscous damping (at most one; `damped` needs one).
@@ -530,48 +532,38 @@ pub struct GravityCommandArgs {
 pub struct DampingArgs {
     /// Damping ratio ζ (1 = critical damping).
     #[arg(long, value_name = "Z", allow_hyphen_values = true)]
-    pub zeta: Option<String>,
+    pub zeta: Option<Number>,
     /// Quality factor Q = 1/(2ζ).
     #[arg(long, value_name = "Q", allow_hyphen_values = true)]
-    pub q: Option<String>,
+    pub q: Option<Number>,
     /// The viscous damping coefficient c in N s (force on the bob c dθ/dt); needs --mass.
     #[arg(long, value_name = "C", allow_hyphen_values = true)]
-    pub damping_coefficient: Option<String>,
+    pub damping_coefficient: Option<Number>,
     /// Logarithmic decrement of the amplitude per full period.
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
-    pub log_decrement: Option<String>,
+    pub log_decrement: Option<Number>,
     /// Time for the amplitude to fall by a factor e (e.g. 2h).
     #[arg(long, value_name = "TAU", allow_hyphen_values = true)]
-    pub decay_time: Option<String>,
+    pub decay_time: Option<Time>,
 }
 
 /// A pendulum released from rest and what slows it: shared by `damped`
 /// and `simulate`.
 #[derive(Debug, Args)]
 pub struct SwingArgs {
-    /// Pendulum length.
-    #[arg(
-        long,
-        value_name = "L",
-        allow_hyphen_values = true,
-        required_unless_present = "design"
-    )]
-    pub length: Option<String>,
-    /// A pendulum designed as parts (TOML; see examples/*.toml): its
-    /// equivalent simple length is used.
-    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
-    pub design: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub pendulum: PendulumArgs,
     /// Amplitude it is released from, at rest.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub amplitude: String,
+    pub amplitude: Angle,
     #[command(flatten)]
     pub damping: DampingArgs,
     /// Coulomb friction angle r (friction torque / restoring torque per radian), e.g. 0.01deg.
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
-    pub friction_angle: Option<String>,
+    pub friction_angle: Option<Angle>,
     /// Bob mass, for the energy budget and with --damping-coefficient.
     #[arg(long, value_name = "M", allow_hyphen_values = true)]
-    pub mass: Option<String>,
+    pub mass: Option<Mass>,
     #[command(flatten)]
     pub gravity: GravityArgs,
 }
@@ -585,7 +577,7 @@ pub struct DampedArgs {
     pub extrema: Option<u64>,
     /// Write the motion to this CSV file (time_s,angle_rad,angular_velocity_rad_s).
     #[arg(long, value_name = "FILE.csv")]
-    pub trajectory: Option<std::path::PathBuf>,
+    pub trajectory: Option<OutputPath>,
     /// How long a trajectory to write [default: 10 small-angle periods].
     #[arg(
         long,
@@ -593,7 +585,7 @@ pub struct DampedArgs {
         allow_hyphen_values = true,
         requires = "trajectory"
     )]
-    pub duration: Option<String>,
+    pub duration: Option<Time>,
     /// Time between trajectory samples [default: a hundredth of the small-angle period].
     #[arg(
         long,
@@ -601,13 +593,13 @@ pub struct DampedArgs {
         allow_hyphen_values = true,
         requires = "trajectory"
     )]
-    pub sample_interval: Option<String>,
+    pub sample_interval: Option<Time>,
     /// Allow more than 10^8 trajectory samples or 10^5 turning points.
     #[arg(long)]
     pub force: bool,
     /// Plot θ(t) with its envelope and turning points to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
-    pub plot: Option<std::path::PathBuf>,
+    pub plot: Option<OutputPath>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -635,24 +627,24 @@ pub struct SimulateArgs {
     pub swing: SwingArgs,
     /// Quadratic air drag b in θ'' = … - b θ'|θ'| (per radian).
     #[arg(long, value_name = "B", allow_hyphen_values = true)]
-    pub quadratic_drag: Option<String>,
+    pub quadratic_drag: Option<Number>,
     #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true, help = drag_laws_help())]
     pub drag: Vec<String>,
     /// How long to simulate (e.g. 7day, 600s).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
-    pub duration: String,
+    pub duration: Time,
     #[arg(long, value_enum, help = with_default("Integration method", pendulum_theory::simulation::analysis::DEFAULT_METHOD))]
     pub method: Option<MethodArg>,
     /// Local error tolerance of each step, relative to the size of the
     /// swing [default: the library's, 1e-10].
     #[arg(long, value_name = "TOL", allow_hyphen_values = true)]
-    pub tolerance: Option<String>,
+    pub tolerance: Option<Number>,
     /// Write every turning point to this CSV file.
     #[arg(long, value_name = "FILE.csv")]
-    pub swings: Option<std::path::PathBuf>,
+    pub swings: Option<OutputPath>,
     /// Write the motion, sampled every --sample-interval, to this CSV file.
     #[arg(long, value_name = "FILE.csv")]
-    pub trajectory: Option<std::path::PathBuf>,
+    pub trajectory: Option<OutputPath>,
     /// Time between trajectory samples [default: a hundredth of the small-angle period].
     #[arg(
         long,
@@ -660,7 +652,7 @@ pub struct SimulateArgs {
         allow_hyphen_values = true,
         requires = "trajectory"
     )]
-    pub sample_interval: Option<String>,
+    pub sample_interval: Option<Time>,
     /// Allow a duration over 10^9 s, more than 10^8 samples, or a run
     /// estimated to take more than a few seconds.
     #[arg(long)]
@@ -670,10 +662,10 @@ pub struct SimulateArgs {
     pub quiet: bool,
     /// Plot the amplitude and the rate against time to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
-    pub plot: Option<std::path::PathBuf>,
+    pub plot: Option<OutputPath>,
     /// Plot the phase portrait, θ' against θ, to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
-    pub phase_plot: Option<std::path::PathBuf>,
+    pub phase_plot: Option<OutputPath>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -706,17 +698,17 @@ pub struct TrainArgs {
     #[arg(long, value_name = "P,P,…", value_delimiter = ',')]
     pub pinions: Vec<u32>,
     #[arg(long, value_name = "N", help = with_default("Turns an hour of the first wheel's arbor", train_analysis::DEFAULT_ARBOR_TURNS_PER_HOUR))]
-    pub arbor_turns_per_hour: Option<f64>,
+    pub arbor_turns_per_hour: Option<Number>,
     /// Find trains for this beat rate instead (beats per hour).
     #[arg(long, value_name = "B", conflicts_with = "wheels")]
-    pub bph: Option<f64>,
+    pub bph: Option<Number>,
     #[arg(long, value_name = "N", help = with_default("The escape wheel's teeth, for --bph", train_analysis::DEFAULT_ESCAPE_TEETH))]
     pub escape_teeth: Option<u32>,
     #[arg(long, value_name = "X", help = with_default("Relative tolerance on --bph", train_analysis::DEFAULT_TOLERANCE))]
-    pub tolerance: Option<f64>,
+    pub tolerance: Option<Number>,
     /// A pendulum design: say where its bob must sit for the train's beat.
     #[arg(long, value_name = "FILE.toml")]
-    pub design: Option<std::path::PathBuf>,
+    pub design: Option<InputPath>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Print one JSON object.
@@ -729,32 +721,23 @@ pub struct TrainArgs {
 pub struct RegulateArgs {
     /// The clock's rate now (positive: gaining), e.g. +12s/day or -30.
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
-    pub rate: String,
-    /// Pendulum length (a simple pendulum).
-    #[arg(
-        long,
-        value_name = "L",
-        allow_hyphen_values = true,
-        required_unless_present = "design"
-    )]
-    pub length: Option<String>,
-    /// A pendulum design (TOML); the part moved is --part.
-    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
-    pub design: Option<std::path::PathBuf>,
+    pub rate: RatePerDay,
+    #[command(flatten)]
+    pub pendulum: PendulumArgs,
     #[arg(long, value_name = "NAME", help = with_default("The part the nut moves (with what rests on it)", pendulum_theory::compound::regulate::DEFAULT_PART))]
     pub part: Option<String>,
     /// The rating nut's thread pitch (e.g. 0.7mm).
     #[arg(long, value_name = "P")]
-    pub nut_pitch: Option<String>,
+    pub nut_pitch: Option<Length>,
     /// The rating nut's threads per inch.
     #[arg(long, value_name = "N")]
-    pub nut_tpi: Option<f64>,
+    pub nut_tpi: Option<Number>,
     /// Divisions engraved round the nut.
     #[arg(long, value_name = "N")]
     pub nut_divisions: Option<u32>,
     /// Where a regulating tray sits below the pivot [default: a third of the length] (with --design).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
-    pub tray: Option<String>,
+    pub tray: Option<Length>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -765,7 +748,7 @@ pub struct RegulateArgs {
 pub struct CompensateArgs {
     /// The pendulum design (TOML).
     #[arg(long, value_name = "FILE.toml")]
-    pub design: std::path::PathBuf,
+    pub design: InputPath,
     /// What to size: a tube of a material under the bob (zinc, aluminium,
     /// brass, ...; `collar`: a brass collar), `gridiron` (steel and brass
     /// rods in place of the rod), or `mercury` (a jar of mercury in place
@@ -779,19 +762,19 @@ pub struct CompensateArgs {
     pub jar_material: Option<String>,
     /// The mercury jar's outer diameter [default: the bob's, or 60 mm].
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
-    pub jar_diameter: Option<String>,
+    pub jar_diameter: Option<Length>,
     /// The mercury jar's wall (and bottom) thickness [default: 4 mm].
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
-    pub jar_wall: Option<String>,
+    pub jar_wall: Option<Length>,
     /// Write the compensated design to this TOML file (`-`: standard output).
     #[arg(long, value_name = "FILE.toml")]
-    pub write: Option<std::path::PathBuf>,
+    pub write: Option<OutputPath>,
     /// The tube's outer diameter [default: the bore and 3 mm, a 1.5 mm wall].
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
-    pub tube_diameter: Option<String>,
+    pub tube_diameter: Option<Length>,
     /// The tube's bore [default: the rod's diameter and 1 mm].
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
-    pub tube_bore: Option<String>,
+    pub tube_bore: Option<Length>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -800,38 +783,29 @@ pub struct CompensateArgs {
 /// `pendulum clock`.
 #[derive(Debug, Args)]
 pub struct ClockArgs {
-    /// Pendulum length.
-    #[arg(
-        long,
-        value_name = "L",
-        allow_hyphen_values = true,
-        required_unless_present = "design"
-    )]
-    pub length: Option<String>,
-    /// A pendulum designed as parts (TOML), in place of --length.
-    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
-    pub design: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub pendulum: PendulumArgs,
     #[arg(long, value_name = "M", allow_hyphen_values = true, help = with_default("Bob mass, kg (with --design its effective mass M d / l)", clock::DEFAULT_MASS_KG))]
-    pub mass: Option<String>,
+    pub mass: Option<Mass>,
     #[arg(long, value_name = "Q", allow_hyphen_values = true, help = with_default("Quality factor of the free pendulum", clock::DEFAULT_Q))]
-    pub q: Option<String>,
+    pub q: Option<Number>,
     /// The escapement [default: deadbeat].
     #[arg(long, value_enum)]
     pub escapement: Option<EscapementArg>,
     #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("The lift angle, the whole angle over which the escapement impulses (a bare number is degrees)", clock::DEFAULT_LIFT_DEG))]
-    pub lift_angle: Option<String>,
+    pub lift_angle: Option<Angle>,
     /// The drive: the torque at the pallets (e.g. 2e-4Nm) or the energy
     /// per beat (e.g. 20uJ; the torque is that over the lift). For
     /// impulse and free: the energy of each impulse; for constant-force,
     /// the impulse, while the train's drive only adds locking friction.
     #[arg(long, value_name = "DRIVE", allow_hyphen_values = true)]
-    pub drive: String,
+    pub drive: Drive,
     #[arg(long, value_name = "MU", allow_hyphen_values = true, help = with_default("Dead-face (locking) friction coefficient: deadbeat, constant-force", clock::DEFAULT_FRICTION))]
-    pub friction: Option<String>,
+    pub friction: Option<Number>,
     #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("Recoil: the pushing-back torque one lift angle past the lift, over the drive torque", clock::DEFAULT_RECOIL))]
-    pub recoil: Option<String>,
+    pub recoil: Option<Number>,
     #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("Where the impulse falls before the bottom (negative: after): for impulse and free the impulse's angle, for deadbeat the lift's centre (degrees)", clock::DEFAULT_IMPULSE_ANGLE_DEG))]
-    pub impulse_angle: Option<String>,
+    pub impulse_angle: Option<Angle>,
     #[arg(long, value_name = "N", help = with_default("Free pendulum: beats between impulses (Shortt's)", clock::DEFAULT_EVERY_BEATS))]
     pub every_beats: Option<u64>,
     /// The isochronism curve: drive factors from..to (e.g. 0.5x..2x).
@@ -841,7 +815,7 @@ pub struct ClockArgs {
     pub steps: Option<usize>,
     /// A long run of this length (e.g. 8days, 1year).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
-    pub duration: Option<String>,
+    pub duration: Option<Time>,
     /// With --duration: a row this often (e.g. 1h, 1day) [default: every turning point].
     #[arg(
         long,
@@ -849,15 +823,15 @@ pub struct ClockArgs {
         allow_hyphen_values = true,
         requires = "duration"
     )]
-    pub every: Option<String>,
+    pub every: Option<Time>,
     /// With --duration: what changes with time (CSV: time_s and any of
     /// drive_factor, temperature_c, pressure_hpa; the last two with
     /// --design, moving the rate by its coefficients), linear between rows.
     #[arg(long, value_name = "FILE.csv", requires = "duration")]
-    pub drive_file: Option<std::path::PathBuf>,
+    pub drive_file: Option<InputPath>,
     /// With --duration: write the rows (time_s,beats,amplitude_rad,rate_s_per_day,time_error_s,drive_factor).
     #[arg(long, value_name = "FILE.csv", requires = "duration")]
-    pub swings: Option<std::path::PathBuf>,
+    pub swings: Option<OutputPath>,
     /// With --duration: run a long run estimated at more than a few
     /// seconds (never one that would not end in a day or fit the disk).
     #[arg(long, requires = "duration")]
@@ -866,7 +840,7 @@ pub struct ClockArgs {
     pub gravity: GravityArgs,
     /// Plot the isochronism curve (with --drive-range) or the long run (.svg or .png).
     #[arg(long, value_name = "FILE")]
-    pub plot: Option<std::path::PathBuf>,
+    pub plot: Option<OutputPath>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -892,15 +866,15 @@ pub enum EscapementArg {
 pub struct DesignArgs {
     /// The pendulum design (TOML).
     #[arg(value_name = "FILE.toml")]
-    pub file: std::path::PathBuf,
+    pub file: InputPath,
     #[arg(long, value_name = "P", help = with_default("Air pressure, hPa", sheet::DEFAULT_PRESSURE_PA / 100.0))]
-    pub pressure: Option<f64>,
+    pub pressure: Option<Number>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Temperature, °C", sheet::DEFAULT_TEMPERATURE_C))]
-    pub temperature: Option<f64>,
+    pub temperature: Option<Number>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("The temperature the clock was regulated at, °C", sheet::DEFAULT_TEMPERATURE_C))]
-    pub regulated_at: Option<f64>,
+    pub regulated_at: Option<Number>,
     #[arg(long, value_name = "H", help = with_default("Relative humidity, %", sheet::DEFAULT_HUMIDITY * 100.0))]
-    pub humidity: Option<f64>,
+    pub humidity: Option<Number>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Print one JSON object.

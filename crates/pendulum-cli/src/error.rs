@@ -88,6 +88,42 @@ impl std::error::Error for CliError {}
 /// Collapses clap's multi-line error into one line: its message and tips,
 /// without the usage block (`--help` shows that).
 pub fn one_line_clap_error(error: &clap::Error) -> String {
+    // A value its type refused (a quantity's unit, a number that is not
+    // one): the tool's own line, `--flag: why`, as every other refusal.
+    if error.kind() == clap::error::ErrorKind::ValueValidation {
+        use clap::error::{ContextKind, ContextValue};
+        let arg = match error.get(ContextKind::InvalidArg) {
+            Some(ContextValue::String(a)) => a.split_whitespace().next().map(str::to_string),
+            _ => None,
+        };
+        let value = match error.get(ContextKind::InvalidValue) {
+            Some(ContextValue::String(v)) => v.clone(),
+            _ => String::new(),
+        };
+        if let (Some(flag), Some(why)) = (arg, std::error::Error::source(error)) {
+            // Our types' refusals are whole sentences; a count's (an
+            // integer's) is the standard library's, which needs the value.
+            let ours = why.downcast_ref::<crate::units::UnitError>().is_some()
+                || why.downcast_ref::<crate::units::ValueError>().is_some();
+            if ours {
+                return format!("{flag}: {why}");
+            }
+            if let Some(e) = why.downcast_ref::<std::num::ParseIntError>() {
+                use std::num::IntErrorKind::{Empty, NegOverflow, PosOverflow};
+                return match e.kind() {
+                    Empty => format!("{flag}: give a whole number"),
+                    PosOverflow | NegOverflow => format!("{flag}: '{value}' is out of range"),
+                    _ => format!("{flag}: '{value}' is not a whole number"),
+                };
+            }
+            let why = why.to_string();
+            return if why.contains(&value) {
+                format!("{flag}: {why}")
+            } else {
+                format!("{flag}: '{value}': {why}")
+            };
+        }
+    }
     let rendered = error.render().to_string();
     let mut parts: Vec<&str> = Vec::new();
     for line in rendered.lines() {

@@ -27,17 +27,17 @@ pub fn is_stdout(path: &Path) -> bool {
 /// command's `inputs` (through links and hard links too), no two name the
 /// same file, and at most one is `-` (standard output).
 pub fn check_outputs(
-    outputs: &[(&'static str, Option<&Path>)],
-    inputs: &[(&'static str, Option<&Path>)],
+    outputs: &[(String, std::path::PathBuf)],
+    inputs: &[(String, std::path::PathBuf)],
 ) -> Result<(), CliError> {
     let given: Vec<(&str, &Path)> = outputs
         .iter()
-        .filter_map(|(flag, path)| path.map(|p| (*flag, p)))
+        .map(|(flag, path)| (flag.as_str(), path.as_path()))
         .collect();
     for (i, (flag, path)) in given.iter().enumerate() {
         if !is_stdout(path) {
             check_writable_place(flag, path)?;
-            for (input_flag, input) in inputs.iter().filter_map(|(f, p)| p.map(|p| (f, p))) {
+            for (input_flag, input) in inputs {
                 if same_file(path, input) {
                     return Err(CliError::flag(
                         flag,

@@ -14,25 +14,32 @@ mod error;
 mod file;
 mod interrupt;
 mod output;
+mod paths;
 mod plot;
 mod units;
 mod work;
 
 use clap::error::ErrorKind;
-use clap::Parser;
+use clap::{CommandFactory, FromArgMatches};
 use error::{one_line_clap_error, CliError, EXIT_ERROR};
 use output::Output;
 use std::io::Write;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    let cli = match args::Cli::try_parse() {
-        Ok(cli) => cli,
+    let definition = args::Cli::command();
+    let parsed = definition
+        .clone()
+        .try_get_matches()
+        .and_then(|m| args::Cli::from_arg_matches(&m).map(|cli| (cli, m)));
+    let (cli, matches) = match parsed {
+        Ok(parsed) => parsed,
         Err(e) => return clap_exit(&e),
     };
+    let declared = paths::declared(&definition, &matches);
     interrupt::install();
     install_panic_cleanup();
-    let result = commands::run(&cli.command).and_then(|out| {
+    let result = commands::run(&cli.command, &declared).and_then(|out| {
         // A command that does not stop on Ctrl-C by itself is stopped here:
         // nothing of it is printed.
         if interrupt::requested() && out.status == 0 {

@@ -431,6 +431,106 @@ fn number_prefix_len(text: &str) -> usize {
     end
 }
 
+impl std::error::Error for UnitError {}
+
+/// A value the command line refused, in words of our own (for a type whose
+/// refusal is not a [`UnitError`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ValueError(pub String);
+
+impl fmt::Display for ValueError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for ValueError {}
+
+/// Declares a quantity the command line takes: a newtype over its SI
+/// value that clap parses with [`parse_quantity`] (or [`parse_number`]),
+/// so that a value clap refuses names its flag (see
+/// [`crate::error::one_line_clap_error`]).
+macro_rules! quantity_type {
+    ($(#[$doc:meta])* $name:ident, $parse:expr) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        pub struct $name(pub f64);
+
+        impl std::str::FromStr for $name {
+            type Err = UnitError;
+            fn from_str(text: &str) -> Result<Self, UnitError> {
+                let parse: fn(&str) -> Result<f64, UnitError> = $parse;
+                parse(text).map($name)
+            }
+        }
+    };
+}
+
+quantity_type!(
+    /// A length, m (`994mm`, `39.1in`; a bare number is metres).
+    Length,
+    |t| parse_quantity(t, Dimension::Length)
+);
+quantity_type!(
+    /// An angle, rad (`3deg`, `0.05rad`; a bare number is degrees).
+    Angle,
+    |t| parse_quantity(t, Dimension::Angle)
+);
+quantity_type!(
+    /// A time, s (`2s`, `1.5ms`, `7day`; a bare number is seconds).
+    Time,
+    |t| parse_quantity(t, Dimension::Time)
+);
+quantity_type!(
+    /// A mass, kg (`5kg`, `250g`; a bare number is kilograms).
+    Mass,
+    |t| parse_quantity(t, Dimension::Mass)
+);
+quantity_type!(
+    /// An acceleration, m/s² (a bare number is m/s²).
+    Acceleration,
+    |t| parse_quantity(t, Dimension::Acceleration)
+);
+quantity_type!(
+    /// A plain number (a ratio, a count of beats an hour, a decibel level).
+    Number,
+    parse_number
+);
+quantity_type!(
+    /// A clock's rate, s/day: `+12s/day`, `-30 s/d`, `4`.
+    RatePerDay,
+    |t| {
+        let t = t.trim();
+        let number = ["s/day", "s/d", "sec/day"]
+            .iter()
+            .find_map(|u| t.strip_suffix(u))
+            .unwrap_or(t);
+        parse_number(number.trim())
+    }
+);
+
+/// An escapement's drive: a torque (N m), or an energy per beat (J).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Drive(pub pendulum_theory::clock::escapement::spec::Drive);
+
+impl std::str::FromStr for Drive {
+    type Err = ValueError;
+    fn from_str(text: &str) -> Result<Self, ValueError> {
+        use pendulum_theory::clock::escapement::spec::Drive::{Energy, Torque};
+        match (
+            parse_quantity(text, Dimension::Torque),
+            parse_quantity(text, Dimension::Energy),
+        ) {
+            (Ok(t), _) => Ok(Drive(Torque(t))),
+            (_, Ok(e)) => Ok(Drive(Energy(e))),
+            (Err(e @ UnitError::NotFinite(_)), _) => Err(ValueError(e.to_string())),
+            _ => Err(ValueError(format!(
+                "'{text}' is neither a torque (2e-4Nm, 0.2mNm) nor an energy per beat (20uJ, 0.02mJ)"
+            ))),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -30,8 +30,10 @@ pub struct EnergyBudget {
 
 /// The budget of a bob of `mass_kg` on `pendulum` swinging at `amplitude`
 /// (rad) that loses `half_swing_loss` (rad) of amplitude per beat, with a
-/// full period of `period` (s). The mass must be positive; a budget that
-/// overflows (a pendulum of 1e300 m) is refused, attributed to the length.
+/// full period of `period` (s). The mass must be positive; at rest (zero
+/// amplitude) every figure is 0 (the impulse's limit too); a budget that
+/// overflows (a pendulum of 1e300 m) is refused, attributed to whichever
+/// of the mass, the length and g lies furthest from 1 in its unit.
 pub fn energy_budget(
     pendulum: &Pendulum,
     mass_kg: f64,
@@ -51,7 +53,12 @@ pub fn energy_budget(
         energy,
         loss_per_period: 2.0 * loss_per_beat,
         power: 2.0 * loss_per_beat / period,
-        impulse_per_beat: loss_per_beat / bottom_speed,
+        // At rest nothing is lost and nothing given: the limit 0, not 0/0.
+        impulse_per_beat: if loss_per_beat == 0.0 {
+            0.0
+        } else {
+            loss_per_beat / bottom_speed
+        },
     };
     let values = [
         budget.energy,
@@ -60,9 +67,18 @@ pub fn energy_budget(
         budget.impulse_per_beat,
     ];
     if values.iter().any(|v| !v.is_finite()) {
+        let factors = [
+            (Quantity::Mass, mass_kg),
+            (Quantity::Length, pendulum.length_m()),
+            (Quantity::Gravity, pendulum.g_m_s2()),
+        ];
+        let (quantity, value) = factors
+            .into_iter()
+            .max_by(|a, b| a.1.log10().abs().total_cmp(&b.1.log10().abs()))
+            .unwrap_or((Quantity::Length, pendulum.length_m()));
         return Err(InputError::new(
-            Quantity::Length,
-            pendulum.length_m(),
+            quantity,
+            value,
             Problem::ResultOverflows {
                 result: "the energy budget",
             },

@@ -76,6 +76,52 @@ pub fn deviation_from_standard_ppm(g: f64) -> f64 {
     (g / crate::pendulum::STANDARD_GRAVITY - 1.0) * 1e6
 }
 
+/// The value of g an analysis uses, and where it came from.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Resolved {
+    /// m/s².
+    pub g_m_s2: f64,
+    /// `"standard"` (none given: [`crate::STANDARD_GRAVITY`]), `"given"`,
+    /// or `"wgs84"` (normal gravity at a latitude and height).
+    pub g_source: &'static str,
+}
+
+/// g given (`g`, m/s²), or the normal gravity at `latitude` (degrees) and
+/// `height` (m, default 0), or standard gravity when neither is given;
+/// each checked, refusals naming `g`, `latitude` or `height`.
+pub fn resolve(
+    g: Option<f64>,
+    latitude: Option<f64>,
+    height: Option<f64>,
+) -> Result<Resolved, crate::analysis::Refusal> {
+    use crate::analysis::Refusal;
+    match (g, latitude) {
+        (Some(_), Some(_)) => Err(Refusal::field("g", "give g or a latitude, not both")),
+        (Some(g), None) => {
+            // The pendulum's check of g, so the sentence is every other's.
+            crate::Pendulum::new(1.0, g).map_err(|e| Refusal::input("g", &e))?;
+            Ok(Resolved {
+                g_m_s2: g,
+                g_source: "given",
+            })
+        }
+        (None, Some(lat)) => normal_gravity(lat, height.unwrap_or(0.0))
+            .map(|g| Resolved {
+                g_m_s2: g,
+                g_source: "wgs84",
+            })
+            .map_err(|e| match e.quantity {
+                Quantity::Height => Refusal::input("height", &e),
+                _ => Refusal::input("latitude", &e),
+            }),
+        (None, None) if height.is_some() => Err(Refusal::field("height", "needs a latitude")),
+        (None, None) => Ok(Resolved {
+            g_m_s2: crate::STANDARD_GRAVITY,
+            g_source: "standard",
+        }),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -4,7 +4,6 @@ use super::common;
 use crate::args::AmplitudeArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
-use crate::units::Dimension;
 use pendulum_theory::period::inverse::{amplitude, AmplitudeResult};
 use serde::Serialize;
 
@@ -18,13 +17,13 @@ struct AmplitudeJson<'a> {
 
 pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let pendulum = common::pendulum_of(args.length.as_deref(), args.design.as_deref(), &gravity)?;
-    let period = common::quantity("--period", &args.period, Dimension::Time)?;
-    let uncertainty = args
-        .period_uncertainty
-        .as_deref()
-        .map(|t| common::quantity("--period-uncertainty", t, Dimension::Time))
-        .transpose()?;
+    let pendulum = common::pendulum_of(
+        args.pendulum.length,
+        args.pendulum.design.as_deref(),
+        &gravity,
+    )?;
+    let period = args.period.0;
+    let uncertainty = args.period_uncertainty.map(|t| t.0);
     let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
     let r = amplitude(
         pendulum.length_m(),

@@ -11,12 +11,12 @@ use crate::file::CsvFile;
 use crate::interrupt;
 use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Series, Target};
-use crate::units::{parse_number, parse_quantity, Dimension};
+use crate::units::parse_number;
 use pendulum_theory::clock::analysis::{
     analyse, ClockInput, ClockPendulum, ClockResult, DriveFactors, IsochronismPoint, RunInput,
     RunSink, Schedule, SteadyState, Weather,
 };
-use pendulum_theory::clock::escapement::spec::{Drive, Kind};
+use pendulum_theory::clock::escapement::spec::Kind;
 use pendulum_theory::clock::long_run::Row;
 use pendulum_theory::clock::plan::RunPlan;
 use std::path::Path;
@@ -30,21 +30,6 @@ const FLAGS: &[(&str, &str)] = &[
 /// A plain number flag.
 fn number(flag: &str, text: &str) -> Result<f64, CliError> {
     parse_number(text).map_err(|e| CliError::flag(flag, e))
-}
-
-/// The drive: a torque, or an energy per beat.
-fn drive(text: &str) -> Result<Drive, CliError> {
-    match (
-        parse_quantity(text, Dimension::Torque),
-        parse_quantity(text, Dimension::Energy),
-    ) {
-        (Ok(t), _) => Ok(Drive::Torque(t)),
-        (_, Ok(e)) => Ok(Drive::Energy(e)),
-        _ => Err(CliError::flag(
-            "--drive",
-            format!("'{text}' is neither a torque (2e-4Nm, 0.2mNm) nor an energy per beat (20uJ, 0.02mJ)"),
-        )),
-    }
 }
 
 /// The columns a drive file may have besides its times.
@@ -177,21 +162,14 @@ impl RunSink for Rows<'_> {
 
 pub fn run(args: &ClockArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let pendulum = match (&args.length, &args.design) {
+    let pendulum = match (&args.pendulum.length, &args.pendulum.design) {
         (_, Some(path)) => ClockPendulum::Design(crate::design::read(path)?),
-        (Some(t), None) => {
-            ClockPendulum::Length(common::quantity("--length", t, Dimension::Length)?)
-        }
+        (Some(l), None) => ClockPendulum::Length(l.0),
         (None, None) => return Err(CliError::flag("--length", "give --length or --design")),
     };
-    let optional =
-        |flag: &str, text: &Option<String>, f: &dyn Fn(&str, &str) -> Result<f64, CliError>| {
-            text.as_deref().map(|t| f(flag, t)).transpose()
-        };
-    let angle = |flag: &str, t: &str| common::quantity(flag, t, Dimension::Angle);
     let mut file = None;
-    let run = match &args.duration {
-        Some(text) => {
+    let run = match args.duration {
+        Some(duration) => {
             let (drive_schedule, weather) = match &args.drive_file {
                 Some(p) => {
                     let (table, drive, weather) = read_schedule(p)?;
@@ -201,10 +179,8 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
                 None => (None, None),
             };
             Some(RunInput {
-                duration: common::quantity("--duration", text, Dimension::Time)?,
-                every: optional("--every", &args.every, &|f, t| {
-                    common::quantity(f, t, Dimension::Time)
-                })?,
+                duration: duration.0,
+                every: args.every.map(|t| t.0),
                 drive_schedule,
                 weather,
                 rate_schedule: None,
@@ -216,10 +192,8 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
     let input = ClockInput {
         pendulum,
         g: Some(gravity.g_m_s2),
-        mass: optional("--mass", &args.mass, &|f, t| {
-            common::quantity(f, t, Dimension::Mass)
-        })?,
-        q: optional("--q", &args.q, &number)?,
+        mass: args.mass.map(|m| m.0),
+        q: args.q.map(|q| q.0),
         escapement: args.escapement.map(|e| match e {
             EscapementArg::Impulse => Kind::Impulse,
             EscapementArg::Deadbeat => Kind::Deadbeat,
@@ -227,11 +201,11 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
             EscapementArg::ConstantForce => Kind::ConstantForce,
             EscapementArg::Free => Kind::Free,
         }),
-        lift_angle: optional("--lift-angle", &args.lift_angle, &angle)?,
-        drive: Some(drive(&args.drive)?),
-        friction: optional("--friction", &args.friction, &number)?,
-        recoil: optional("--recoil", &args.recoil, &number)?,
-        impulse_angle: optional("--impulse-angle", &args.impulse_angle, &angle)?,
+        lift_angle: args.lift_angle.map(|a| a.0),
+        drive: Some(args.drive.0),
+        friction: args.friction.map(|f| f.0),
+        recoil: args.recoil.map(|r| r.0),
+        impulse_angle: args.impulse_angle.map(|a| a.0),
         every_beats: args.every_beats,
         isochronism: args
             .drive_range

@@ -3,20 +3,17 @@
 
 use crate::args::{DampingArgs, GravityArgs, SwingArgs};
 use crate::error::CliError;
-use crate::units::{parse_number, parse_quantity, Dimension};
+use crate::units::{Length, Number, Time};
+use pendulum_theory::analysis::Refusal;
 use pendulum_theory::damping::Damping;
-use pendulum_theory::gravity::normal_gravity;
-use pendulum_theory::{Amplitude, Pendulum, Quantity, STANDARD_GRAVITY};
+use pendulum_theory::{Amplitude, Pendulum, Quantity};
 use serde::Serialize;
 
-/// Reads `text` given to `flag` as a quantity of `dimension`, in SI.
-pub fn quantity(flag: &str, text: &str, dimension: Dimension) -> Result<f64, CliError> {
-    parse_quantity(text, dimension).map_err(|e| CliError::flag(flag, e))
-}
-
-/// Reads an amplitude given to `flag`.
-pub fn amplitude(flag: &str, text: &str) -> Result<Amplitude, CliError> {
-    amplitude_from_radians(flag, quantity(flag, text, Dimension::Angle)?)
+/// A library refusal of a field said of its flag (`--field-name`), with
+/// no file to name.
+pub fn refused(e: &Refusal) -> CliError {
+    let no_data = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
+    CliError::refused(e, &[], &no_data)
 }
 
 /// Checks an amplitude in radians, attributing a refusal to `flag`.
@@ -45,66 +42,42 @@ impl ResolvedGravity {
     }
 }
 
-/// g from `--g`, from `--latitude`/`--height`, or standard gravity.
+/// g from `--g`, from `--latitude`/`--height`, or standard gravity: the
+/// library's choice.
 pub fn gravity(args: &GravityArgs) -> Result<ResolvedGravity, CliError> {
-    if let Some(text) = &args.g {
-        let g = quantity("--g", text, Dimension::Acceleration)?;
-        // Let the library judge it, so the message matches every other check.
-        Pendulum::new(1.0, g).map_err(|e| CliError::input("--g", &e))?;
-        return Ok(ResolvedGravity {
-            g_m_s2: g,
-            g_source: "given",
-        });
-    }
-    if let Some(text) = &args.latitude {
-        let g = wgs84(text, args.height.as_deref())?;
-        return Ok(ResolvedGravity {
-            g_m_s2: g,
-            g_source: "wgs84",
-        });
-    }
-    Ok(ResolvedGravity {
-        g_m_s2: STANDARD_GRAVITY,
-        g_source: "standard",
-    })
+    resolve(
+        args.g.map(|g| g.0),
+        args.latitude.map(|l| l.0.to_degrees()),
+        args.height.map(|h| h.0),
+    )
 }
 
 /// Standard gravity, for commands that need a pendulum only for its length.
-pub fn gravity_default() -> ResolvedGravity {
-    ResolvedGravity {
-        g_m_s2: STANDARD_GRAVITY,
-        g_source: "standard",
-    }
+pub fn gravity_default() -> Result<ResolvedGravity, CliError> {
+    resolve(None, None, None)
 }
 
-/// Normal gravity at the latitude and height typed, in m/s².
-pub fn wgs84(latitude: &str, height: Option<&str>) -> Result<f64, CliError> {
-    let latitude_deg = latitude_degrees(latitude)?;
-    let height_m = height_metres(height)?;
-    normal_gravity(latitude_deg, height_m).map_err(|e| match e.quantity {
-        Quantity::Height => CliError::input("--height", &e),
-        _ => CliError::input("--latitude", &e),
+/// The library's g of `g`, or at a latitude (degrees) and height (m).
+pub fn resolve(
+    g: Option<f64>,
+    latitude: Option<f64>,
+    height: Option<f64>,
+) -> Result<ResolvedGravity, CliError> {
+    let r = pendulum_theory::gravity::resolve(g, latitude, height).map_err(|e| refused(&e))?;
+    Ok(ResolvedGravity {
+        g_m_s2: r.g_m_s2,
+        g_source: r.g_source,
     })
-}
-
-/// The latitude typed, in degrees.
-pub fn latitude_degrees(text: &str) -> Result<f64, CliError> {
-    Ok(quantity("--latitude", text, Dimension::Angle)?.to_degrees())
-}
-
-/// The height typed, in metres (0 when absent).
-pub fn height_metres(text: Option<&str>) -> Result<f64, CliError> {
-    text.map_or(Ok(0.0), |t| quantity("--height", t, Dimension::Length))
 }
 
 /// The pendulum of `--length`, or of `--design` (its equivalent simple
 /// length, `I / (m d)`: the same equation of motion).
 pub fn pendulum_of(
-    length_text: Option<&str>,
+    length: Option<Length>,
     design: Option<&std::path::Path>,
     gravity: &ResolvedGravity,
 ) -> Result<Pendulum, CliError> {
-    match (length_text, design) {
+    match (length, design) {
         (_, Some(path)) => {
             let design = crate::design::read(path)?;
             let length = design.properties().equivalent_length;
@@ -113,29 +86,17 @@ pub fn pendulum_of(
                 _ => CliError::input("--design", &e),
             })
         }
-        (Some(text), None) => pendulum(text, gravity),
+        (Some(length), None) => pendulum(length, gravity),
         (None, None) => Err(CliError::flag("--length", "give --length or --design")),
     }
 }
 
 /// The pendulum of `--length`.
-pub fn pendulum(length_text: &str, gravity: &ResolvedGravity) -> Result<Pendulum, CliError> {
-    let length = quantity("--length", length_text, Dimension::Length)?;
-    Pendulum::new(length, gravity.g_m_s2).map_err(|e| match e.quantity {
+pub fn pendulum(length: Length, gravity: &ResolvedGravity) -> Result<Pendulum, CliError> {
+    Pendulum::new(length.0, gravity.g_m_s2).map_err(|e| match e.quantity {
         Quantity::Gravity => CliError::input("--g", &e),
         _ => CliError::input("--length", &e),
     })
-}
-
-/// The flag the damping was given with.
-pub fn damping_flag(d: &crate::args::DampingArgs) -> &'static str {
-    match damping_field(d) {
-        "q" => "--q",
-        "log_decrement" => "--log-decrement",
-        "decay_time" => "--decay-time",
-        "damping_coefficient" => "--damping-coefficient",
-        _ => "--zeta",
-    }
 }
 
 /// The library's name of the damping input given (`zeta` when none).
@@ -156,24 +117,15 @@ pub fn damping_field(d: &crate::args::DampingArgs) -> &'static str {
 /// The damping form given, by the library's name, with its value (a
 /// decay time in seconds); `None` when none was given.
 pub fn damping_given(args: &DampingArgs) -> Result<Option<(String, f64)>, CliError> {
-    let field = damping_field(args);
-    let text = match field {
-        "q" => &args.q,
-        "log_decrement" => &args.log_decrement,
-        "decay_time" => &args.decay_time,
-        "damping_coefficient" => &args.damping_coefficient,
-        _ => &args.zeta,
+    let number = |n: &Option<Number>| n.map(|n| n.0);
+    let given = match damping_field(args) {
+        "q" => number(&args.q),
+        "log_decrement" => number(&args.log_decrement),
+        "decay_time" => args.decay_time.map(|t: Time| t.0),
+        "damping_coefficient" => number(&args.damping_coefficient),
+        _ => number(&args.zeta),
     };
-    let Some(text) = text.as_deref() else {
-        return Ok(None);
-    };
-    let flag = damping_flag(args);
-    let value = if field == "decay_time" {
-        quantity(flag, text, Dimension::Time)?
-    } else {
-        parse_number(text).map_err(|e| CliError::flag(flag, e))?
-    };
-    Ok(Some((field.to_string(), value)))
+    Ok(given.map(|v| (damping_field(args).to_string(), v)))
 }
 
 /// The damping form given, converted by the library for `p` (with a
@@ -207,20 +159,15 @@ pub struct Swing {
 /// Reads the pendulum, its release and its losses.
 pub fn swing(args: &SwingArgs) -> Result<Swing, CliError> {
     let gravity = gravity(&args.gravity)?;
-    let pendulum = pendulum_of(args.length.as_deref(), args.design.as_deref(), &gravity)?;
-    let amplitude = amplitude("--amplitude", &args.amplitude)?;
-    let mass = args
-        .mass
-        .as_deref()
-        .map(|t| quantity("--mass", t, Dimension::Mass))
-        .transpose()?;
+    let pendulum = pendulum_of(
+        args.pendulum.length,
+        args.pendulum.design.as_deref(),
+        &gravity,
+    )?;
+    let amplitude = amplitude_from_radians("--amplitude", args.amplitude.0)?;
+    let mass = args.mass.map(|m| m.0);
     let damping = damping(&args.damping, mass, &pendulum)?;
-    let friction_angle = args
-        .friction_angle
-        .as_deref()
-        .map(|t| quantity("--friction-angle", t, Dimension::Angle))
-        .transpose()?
-        .unwrap_or(0.0);
+    let friction_angle = args.friction_angle.map_or(0.0, |r| r.0);
     Ok(Swing {
         pendulum,
         amplitude,
@@ -231,15 +178,13 @@ pub fn swing(args: &SwingArgs) -> Result<Swing, CliError> {
 
 /// The beat a clock is meant to keep, from `--period` or `--bph`.
 pub fn nominal(
-    period: Option<&str>,
-    bph: Option<&str>,
-) -> Result<Option<pendulum_theory::fitting::beat_log::Nominal>, CliError> {
+    period: Option<Time>,
+    bph: Option<Number>,
+) -> Option<pendulum_theory::fitting::beat_log::Nominal> {
     use pendulum_theory::fitting::beat_log::Nominal;
-    Ok(match (period, bph) {
-        (Some(t), _) => Some(Nominal::Period(quantity("--period", t, Dimension::Time)?)),
-        (None, Some(t)) => Some(Nominal::BeatsPerHour(
-            parse_number(t).map_err(|e| CliError::flag("--bph", e))?,
-        )),
+    match (period, bph) {
+        (Some(t), _) => Some(Nominal::Period(t.0)),
+        (None, Some(b)) => Some(Nominal::BeatsPerHour(b.0)),
         (None, None) => None,
-    })
+    }
 }

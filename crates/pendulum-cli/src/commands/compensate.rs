@@ -2,12 +2,10 @@
 //! compensator that cancels it (a tube or collar, a gridiron, a mercury
 //! jar), optionally written back as a design file.
 
-use super::common;
 use crate::args::CompensateArgs;
 use crate::error::CliError;
 use crate::file::AtomicFile;
 use crate::output::{self, num, Summary};
-use crate::units::Dimension;
 use pendulum_theory::compound::compensate::{
     compensate, CompensateInput, Compensation, DEFAULT_PART,
 };
@@ -25,10 +23,8 @@ struct CompensateJson<'a> {
 
 pub fn run(args: &CompensateArgs) -> Result<String, CliError> {
     let read = crate::design::read_design(&args.design)?;
-    let length = |flag: &str, t: &Option<String>| {
-        t.as_deref()
-            .map(|t| common::quantity(flag, t, Dimension::Length))
-            .transpose()
+    let length = |_flag: &str, t: &Option<crate::units::Length>| -> Result<_, CliError> {
+        Ok(t.map(|l| l.0))
     };
     let input = CompensateInput {
         compensator: args.compensator.clone(),

@@ -7,7 +7,6 @@ use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Points, Series, Target};
-use crate::units::Dimension;
 use crate::work;
 use pendulum_theory::damped::analysis::{damped, Damped, DampedInput, MAX_EXTREMA};
 use pendulum_theory::damped::{DampedPendulum, Regime};
@@ -38,22 +37,18 @@ pub fn run(args: &DampedArgs) -> Result<String, CliError> {
         .transpose()?;
     let swing = &args.swing;
     let gravity = common::gravity(&swing.gravity)?;
-    let pendulum = common::pendulum_of(swing.length.as_deref(), swing.design.as_deref(), &gravity)?;
+    let pendulum = common::pendulum_of(
+        swing.pendulum.length,
+        swing.pendulum.design.as_deref(),
+        &gravity,
+    )?;
     let input = DampedInput {
         length: pendulum.length_m(),
         g: Some(pendulum.g_m_s2()),
-        amplitude: common::quantity("--amplitude", &swing.amplitude, Dimension::Angle)?,
+        amplitude: swing.amplitude.0,
         damping: common::damping_given(&swing.damping)?,
-        friction_angle: swing
-            .friction_angle
-            .as_deref()
-            .map(|t| common::quantity("--friction-angle", t, Dimension::Angle))
-            .transpose()?,
-        mass: swing
-            .mass
-            .as_deref()
-            .map(|t| common::quantity("--mass", t, Dimension::Mass))
-            .transpose()?,
+        friction_angle: swing.friction_angle.map(|r| r.0),
+        mass: swing.mass.map(|m| m.0),
         extrema: args.extrema,
         force: args.force,
     };
@@ -85,10 +80,7 @@ fn refused(e: &pendulum_theory::analysis::Refusal) -> CliError {
 
 /// `--duration`, if given.
 fn duration(args: &DampedArgs) -> Result<Option<f64>, CliError> {
-    args.duration
-        .as_deref()
-        .map(|t| common::quantity("--duration", t, Dimension::Time))
-        .transpose()
+    Ok(args.duration.map(|d| d.0))
 }
 
 fn opt(value: Option<f64>, digits: usize, unit: &str) -> String {
@@ -208,11 +200,7 @@ fn write_trajectory(
     r: &Damped,
 ) -> Result<TrajectoryJson, CliError> {
     let duration = r.span(duration(args)?).map_err(|e| refused(&e))?;
-    let interval = args
-        .sample_interval
-        .as_deref()
-        .map(|t| common::quantity("--sample-interval", t, Dimension::Time))
-        .transpose()?;
+    let interval = args.sample_interval.map(|h| h.0);
     let (interval, samples) = r
         .sampling(duration, interval, args.force)
         .map_err(|e| refused(&e))?;

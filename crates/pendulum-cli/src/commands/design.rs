@@ -105,10 +105,10 @@ pub fn run(args: &DesignArgs) -> Result<String, CliError> {
     let design = crate::design::read_design(&args.file)?;
     let gravity = common::gravity(&args.gravity)?;
     let air = Air {
-        pressure_pa: args.pressure.map(|p| p * 100.0),
-        temperature_c: args.temperature,
-        humidity: args.humidity.map(|h| h / 100.0),
-        regulated_at_c: args.regulated_at,
+        pressure_pa: args.pressure.map(|p| p.0 * 100.0),
+        temperature_c: args.temperature.map(|t| t.0),
+        humidity: args.humidity.map(|h| h.0 / 100.0),
+        regulated_at_c: args.regulated_at.map(|t| t.0),
     };
     let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
     let sheet = datasheet(&design, Some(gravity.g_m_s2), &air)

@@ -49,7 +49,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let nominal = common::nominal(args.period.as_deref(), args.bph.as_deref())?;
+    let nominal = common::nominal(args.period, args.bph);
     let file = args.file.display().to_string();
     let refused = |r: &Refusal, line: Option<u64>| {
         CliError::refused(r, &[], &|at, reason| match (at, line) {

@@ -8,7 +8,6 @@ use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
-use crate::units::Dimension;
 use crate::work;
 use pendulum_theory::fitting::decay::{swings_to_time, DecayFit, DecayModel};
 use pendulum_theory::fitting::rundown::{analyse, RunDown, RunDownInput, SECONDS_PER_ROW};
@@ -39,21 +38,17 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     let pendulum = match (&args.length, &args.design) {
         (None, None) => None,
         (l, d) => Some(common::pendulum_of(
-            l.as_deref(),
+            *l,
             d.as_deref(),
             &common::gravity(&args.gravity)?,
         )?),
     };
     let mass = match (&args.mass, &args.design) {
-        (Some(t), _) => Some(common::quantity("--mass", t, Dimension::Mass)?),
+        (Some(m), _) => Some(m.0),
         (None, Some(path)) => Some(crate::design::read(path)?.properties().effective_mass()),
         (None, None) => None,
     };
-    let period = args
-        .period
-        .as_deref()
-        .map(|t| common::quantity("--period", t, Dimension::Time))
-        .transpose()?;
+    let period = args.period.map(|t| t.0);
     let options = read_options(&args.read)?;
     // A track (angle, or x and y, against time) to find the amplitudes in;
     // else a column of amplitudes. A track wins: Tracker files carry

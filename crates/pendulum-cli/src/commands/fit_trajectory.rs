@@ -38,11 +38,11 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let given_length = match (&args.length, &args.design) {
+    let given_length = match (args.length, &args.design) {
         (None, None) => None,
-        (l, d) => Some(
-            common::pendulum_of(l.as_deref(), d.as_deref(), &common::gravity_default())?.length_m(),
-        ),
+        (l, d) => {
+            Some(common::pendulum_of(l, d.as_deref(), &common::gravity_default()?)?.length_m())
+        }
     };
     let track = read_track(&args.file, &args.read)?;
     // Without --length, a fitted pivot's radius is the length (in the

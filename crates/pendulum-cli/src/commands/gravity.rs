@@ -15,9 +15,9 @@ struct GravityJson {
 }
 
 pub fn run(args: &GravityCommandArgs) -> Result<String, CliError> {
-    let latitude_deg = common::latitude_degrees(&args.latitude)?;
-    let height_m = common::height_metres(args.height.as_deref())?;
-    let g = common::wgs84(&args.latitude, args.height.as_deref())?;
+    let latitude_deg = args.latitude.0.to_degrees();
+    let height_m = args.height.map_or(0.0, |h| h.0);
+    let g = common::resolve(None, Some(latitude_deg), Some(height_m))?.g_m_s2;
     let result = GravityJson {
         g_m_s2: g,
         latitude_deg,

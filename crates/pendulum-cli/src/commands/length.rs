@@ -18,13 +18,9 @@ struct LengthJson<'a> {
 
 pub fn run(args: &LengthArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let nominal = common::nominal(args.period.as_deref(), args.bph.as_deref())?
+    let nominal = common::nominal(args.period, args.bph)
         .ok_or_else(|| CliError::other("give --period or --bph"))?;
-    let amplitude = args
-        .amplitude
-        .as_deref()
-        .map(|t| common::quantity("--amplitude", t, crate::units::Dimension::Angle))
-        .transpose()?;
+    let amplitude = args.amplitude.map(|a| a.0);
     let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
     let r = length(nominal, amplitude, Some(gravity.g_m_s2))
         .map_err(|e| CliError::refused(&e, &[], &no_file))?;

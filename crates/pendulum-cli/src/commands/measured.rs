@@ -18,7 +18,7 @@ pub fn read_options(args: &MeasurementArgs) -> Result<ReadOptions, CliError> {
             _ => AngleUnit::Degrees,
         }),
         columns: columns(args.columns.as_deref()),
-        frame_rate: frame_rate(args.frame_rate.as_deref())?,
+        frame_rate: frame_rate(args.frame_rate)?,
         absolute_time: false,
     })
 }
@@ -28,14 +28,12 @@ pub fn columns(text: Option<&str>) -> Option<Vec<String>> {
     text.map(|t| t.split(',').map(|c| c.trim().to_string()).collect())
 }
 
-fn frame_rate(text: Option<&str>) -> Result<Option<f64>, CliError> {
-    let Some(text) = text else {
-        return Ok(None);
-    };
-    let fps = parse_number(text).map_err(|e| CliError::flag("--frame-rate", e))?;
-    pendulum_theory::fitting::track::frame_rate(fps)
-        .map(Some)
-        .map_err(|e| CliError::flag("--frame-rate", e.reason))
+fn frame_rate(fps: Option<crate::units::Number>) -> Result<Option<f64>, CliError> {
+    fps.map(|f| {
+        pendulum_theory::fitting::track::frame_rate(f.0)
+            .map_err(|e| CliError::flag("--frame-rate", e.reason))
+    })
+    .transpose()
 }
 
 /// Where the pivot of tracked positions came from, for the JSON output.

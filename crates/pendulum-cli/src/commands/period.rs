@@ -47,7 +47,11 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
     let gravity = common::gravity(&args.gravity)?;
-    let pendulum = common::pendulum_of(args.length.as_deref(), args.design.as_deref(), &gravity)?;
+    let pendulum = common::pendulum_of(
+        args.pendulum.length,
+        args.pendulum.design.as_deref(),
+        &gravity,
+    )?;
     let flag = "--amplitude";
     let amplitudes = match parse_range(&args.amplitude, Dimension::Angle) {
         Some(range) => {
@@ -58,7 +62,10 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
                 steps: args.steps.map(i64::from),
             }
         }
-        None => Amplitudes::One(common::quantity(flag, &args.amplitude, Dimension::Angle)?),
+        None => Amplitudes::One(
+            crate::units::parse_quantity(&args.amplitude, Dimension::Angle)
+                .map_err(|e| CliError::flag(flag, e))?,
+        ),
     };
     let input = PeriodInput {
         length: pendulum.length_m(),

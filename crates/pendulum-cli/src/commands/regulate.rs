@@ -1,48 +1,28 @@
 //! `pendulum regulate`: from a clock's rate to the turns of its rating nut,
 //! or the weight on a regulating tray.
 
-use super::common;
 use crate::args::RegulateArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
-use crate::units::{parse_number, Dimension};
 use pendulum_theory::compound::regulate::{regulate, Nut, Regulated};
 
-/// `+12s/day`, `-30 s/d`, `4`: s/day.
-fn rate(text: &str) -> Result<f64, CliError> {
-    let t = text.trim();
-    let number = ["s/day", "s/d", "sec/day"]
-        .iter()
-        .find_map(|u| t.strip_suffix(u))
-        .unwrap_or(t)
-        .trim();
-    parse_number(number).map_err(|e| CliError::flag("--rate", e))
-}
-
 pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
-    let r = rate(&args.rate)?;
-    let pendulum = match &args.design {
+    let r = args.rate.0;
+    let pendulum = match &args.pendulum.design {
         Some(path) => Regulated::Design(crate::design::read_design(path)?, args.part.clone()),
-        None => Regulated::Length(common::quantity(
-            "--length",
-            args.length.as_deref().unwrap_or(""),
-            Dimension::Length,
-        )?),
+        None => Regulated::Length(
+            args.pendulum
+                .length
+                .ok_or_else(|| CliError::flag("--length", "give --length or --design"))?
+                .0,
+        ),
     };
     let nut = Nut {
-        pitch: args
-            .nut_pitch
-            .as_deref()
-            .map(|p| common::quantity("--nut-pitch", p, Dimension::Length))
-            .transpose()?,
-        tpi: args.nut_tpi,
+        pitch: args.nut_pitch.map(|p| p.0),
+        tpi: args.nut_tpi.map(|t| t.0),
         divisions: args.nut_divisions,
     };
-    let tray = args
-        .tray
-        .as_deref()
-        .map(|t| common::quantity("--tray", t, Dimension::Length))
-        .transpose()?;
+    let tray = args.tray.map(|t| t.0);
     let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
     let result =
         regulate(&pendulum, r, nut, tray).map_err(|e| CliError::refused(&e, &[], &no_file))?;

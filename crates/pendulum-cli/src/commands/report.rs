@@ -12,7 +12,6 @@ use crate::file::{AtomicFile, AtomicFolder};
 use crate::interrupt;
 use crate::output::num;
 use crate::plot::{render, Figure, Panel, Series, Target};
-use crate::units::Dimension;
 use pendulum_theory::damped::DampedPendulum;
 use pendulum_theory::report::{report, Report, ReportInput};
 use pendulum_theory::Pendulum;
@@ -23,22 +22,17 @@ struct Row(&'static str, String, &'static str);
 
 pub fn run(args: &ReportArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let angle = |flag, t: &Option<String>, d| {
-        t.as_deref()
-            .map(|t| common::quantity(flag, t, d))
-            .transpose()
-    };
     let input = ReportInput {
-        length: angle("--length", &args.length, Dimension::Length)?,
+        length: args.length.map(|l| l.0),
         design: args
             .design
             .as_deref()
             .map(crate::design::read_design)
             .transpose()?,
         g: Some(gravity.g_m_s2),
-        amplitude: angle("--amplitude", &args.amplitude, Dimension::Angle)?,
+        amplitude: args.amplitude.map(|a| a.0),
         damping: common::damping_given(&args.damping)?,
-        mass: angle("--mass", &args.mass, Dimension::Mass)?,
+        mass: args.mass.map(|m| m.0),
     };
     let design_file = args.design.as_ref().map(|p| p.display().to_string());
     let refused = |e: &pendulum_theory::analysis::Refusal| {

@@ -8,7 +8,7 @@ use crate::file::CsvFile;
 use crate::interrupt;
 use crate::output::{self, num, Output, Summary};
 use crate::plot::{render, thin, Figure, Panel, Series, Target};
-use crate::units::{parse_number, Dimension};
+use crate::units::parse_number;
 use crate::work::{self, Progress};
 use clap::ValueEnum;
 use pendulum_theory::damped::State;
@@ -52,17 +52,9 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
     }
     let swing = common::swing(&args.swing)?;
     let pendulum = swing.pendulum;
-    let quadratic_drag = args
-        .quadratic_drag
-        .as_deref()
-        .map(|t| parse_number(t).map_err(|e| CliError::flag("--quadratic-drag", e)))
-        .transpose()?;
-    let duration = common::quantity("--duration", &args.duration, Dimension::Time)?;
-    let tolerance = args
-        .tolerance
-        .as_deref()
-        .map(|t| parse_number(t).map_err(|e| CliError::flag("--tolerance", e)))
-        .transpose()?;
+    let quadratic_drag = args.quadratic_drag.map(|b| b.0);
+    let duration = args.duration.0;
+    let tolerance = args.tolerance.map(|t| t.0);
     let sample_interval = match &args.trajectory {
         // The phase portrait alone: PHASE_SAMPLES a period, from the
         // dense output (with --trajectory it uses the trajectory's).
@@ -72,11 +64,7 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         None => None,
         Some(_) => {
             let default = pendulum.small_angle_period() / SAMPLES_PER_PERIOD;
-            let interval = args
-                .sample_interval
-                .as_deref()
-                .map(|t| common::quantity("--sample-interval", t, Dimension::Time))
-                .transpose()?;
+            let interval = args.sample_interval.map(|h| h.0);
             let no_data = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
             let (h, _) =
                 pendulum_theory::analysis::sampling(interval, default, duration, args.force)

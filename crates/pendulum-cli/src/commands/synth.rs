@@ -1,37 +1,28 @@
 //! `pendulum synth ticks`: a recording of a ticking clock with known truth.
 
-use super::common;
 use crate::args::SynthTicksArgs;
 use crate::audio::{pcm16, wav_header};
 use crate::error::CliError;
 use crate::file::{AtomicFile, CsvFile};
 use crate::output::num;
-use crate::units::{parse_number, Dimension};
+use crate::units::Number;
 use crate::work;
 use pendulum_theory::listening::synth::{Synthesizer, TickRecording};
 
 pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
-    let number = |flag: &str, text: &Option<String>, default: f64| {
-        text.as_deref().map_or(Ok(default), |t| {
-            parse_number(t).map_err(|e| CliError::flag(flag, e))
-        })
-    };
-    let time = |flag: &str, text: &Option<String>, default: f64| {
-        text.as_deref()
-            .map_or(Ok(default), |t| common::quantity(flag, t, Dimension::Time))
-    };
+    let number = |n: Option<Number>, default: f64| n.map_or(default, |n| n.0);
     // Each input not given is the library's.
     let d = TickRecording::DEFAULT;
     let spec = TickRecording {
         sample_rate: args.sample_rate.unwrap_or(d.sample_rate),
-        duration: time("--duration", &args.duration, d.duration)?,
-        beats_per_hour: number("--bph", &args.bph, d.beats_per_hour)?,
-        rate_s_per_day: number("--rate", &args.rate, d.rate_s_per_day)?,
-        beat_error_ms: number("--beat-error", &args.beat_error, d.beat_error_ms)?,
-        snr_db: number("--snr-db", &args.snr_db, d.snr_db)?,
-        reverb_s: time("--reverb", &args.reverb, d.reverb_s)?,
-        hum_db: number("--hum-db", &args.hum_db, d.hum_db)?,
-        missing: number("--missing", &args.missing, d.missing)?,
+        duration: args.duration.map_or(d.duration, |t| t.0),
+        beats_per_hour: number(args.bph, d.beats_per_hour),
+        rate_s_per_day: number(args.rate, d.rate_s_per_day),
+        beat_error_ms: number(args.beat_error, d.beat_error_ms),
+        snr_db: number(args.snr_db, d.snr_db),
+        reverb_s: args.reverb.map_or(d.reverb_s, |t| t.0),
+        hum_db: number(args.hum_db, d.hum_db),
+        missing: number(args.missing, d.missing),
         seed: args.seed.unwrap_or(d.seed),
     };
     let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);

@@ -11,8 +11,9 @@ pub fn run(args: &TrainArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
     let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
     let refused = |r: pendulum_theory::analysis::Refusal| CliError::refused(&r, &[], &no_file);
-    if let Some(bph) = args.bph {
-        let found = train_for(bph, args.escape_teeth, args.tolerance).map_err(refused)?;
+    if let Some(bph) = args.bph.map(|b| b.0) {
+        let found =
+            train_for(bph, args.escape_teeth, args.tolerance.map(|t| t.0)).map_err(refused)?;
         if args.json {
             return output::json(&found);
         }
@@ -20,8 +21,13 @@ pub fn run(args: &TrainArgs) -> Result<String, CliError> {
             .first()
             .map_or(args.escape_teeth.unwrap_or_default(), |c| c.wheels[2]);
         if found.is_empty() {
+            use pendulum_theory::train::{PINION_LEAVES, WHEEL_TEETH};
             return Ok(format!(
-                "No train of wheels 40-120 and pinions 6-16 with the escape wheel given gives {} beats/hour within the tolerance.\n",
+                "No train of wheels {}-{} and pinions {}-{} with the escape wheel given gives {} beats/hour within the tolerance.\n",
+                WHEEL_TEETH.start(),
+                WHEEL_TEETH.end(),
+                PINION_LEAVES.start(),
+                PINION_LEAVES.end(),
                 num(bph, 6),
             ));
         }
@@ -50,7 +56,7 @@ pub fn run(args: &TrainArgs) -> Result<String, CliError> {
     let result = train(
         &args.wheels,
         &args.pinions,
-        args.arbor_turns_per_hour,
+        args.arbor_turns_per_hour.map(|n| n.0),
         Some(gravity.g_m_s2),
         design.as_ref(),
     )

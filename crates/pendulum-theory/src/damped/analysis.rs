@@ -262,6 +262,7 @@ pub fn damped(input: &DampedInput) -> Result<Damped, Refusal> {
         (Some(m), Some(loss), Some(period)) => Some(
             energy_budget(&pendulum, m, a0, loss, period).map_err(|e| match e.quantity {
                 Quantity::Length => Refusal::input("length", &e),
+                Quantity::Gravity => Refusal::input("g", &e),
                 _ => Refusal::input("mass", &e),
             })?,
         ),

@@ -138,7 +138,7 @@ pub fn train(
 /// length of `length` m.
 fn shift(design: &CompoundPendulum, length: f64, bph: f64) -> Result<f64, Refusal> {
     let l = design.properties().equivalent_length;
-    let rate = 86_400.0 * ((length / l).sqrt() - 1.0);
+    let rate = crate::period::SECONDS_PER_DAY * ((length / l).sqrt() - 1.0);
     let parts = design.parts();
     let index = parts
         .iter()

@@ -30,6 +30,11 @@ pub fn beats_per_hour(wheels: &[u32], pinions: &[u32], arbor_turns_per_hour: f64
     Some(2.0 * f64::from(*escape) * ratio * arbor_turns_per_hour)
 }
 
+/// The wheels [`trains_for`] tries, teeth.
+pub const WHEEL_TEETH: std::ops::RangeInclusive<u32> = 40..=120;
+/// The pinions [`trains_for`] tries, leaves.
+pub const PINION_LEAVES: std::ops::RangeInclusive<u32> = 6..=16;
+
 /// The wheel and pinion pairs, from common counts, of a two-wheel train
 /// (centre wheel, third wheel, then the escape wheel of `escape_teeth`)
 /// that give `bph` within `tolerance` (relative), at most `limit`: closest
@@ -43,10 +48,10 @@ pub fn trains_for(
     limit: usize,
 ) -> Vec<([u32; 3], [u32; 2], f64)> {
     let mut found = Vec::new();
-    for w1 in 40..=120 {
-        for p1 in 6..=16 {
-            for w2 in 40..=120 {
-                for p2 in 6..=16 {
+    for w1 in WHEEL_TEETH {
+        for p1 in PINION_LEAVES {
+            for w2 in WHEEL_TEETH {
+                for p2 in PINION_LEAVES {
                     if let Some(b) = beats_per_hour(&[w1, w2, escape_teeth], &[p1, p2], 1.0) {
                         let error = b / bph - 1.0;
                         if error.abs() <= tolerance && w1 >= w2 {

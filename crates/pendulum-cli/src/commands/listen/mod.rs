@@ -13,7 +13,6 @@ use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output;
 use crate::plot::Target;
-use crate::units::{parse_number, Dimension};
 use pendulum_theory::listening::analysis::{listen, ListenFailure, ListenInput, Listening};
 use serde::Serialize;
 
@@ -33,17 +32,9 @@ struct ListenJson<'a> {
 pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     let file = args.file.display().to_string();
     let input = ListenInput {
-        nominal: common::nominal(args.period.as_deref(), args.bph.as_deref())?,
-        sample_rate_error_ppm: args
-            .sample_rate_error_ppm
-            .as_deref()
-            .map(|t| parse_number(t).map_err(|e| CliError::flag("--sample-rate-error-ppm", e)))
-            .transpose()?,
-        lift_angle: args
-            .lift_angle
-            .as_deref()
-            .map(|t| common::quantity("--lift-angle", t, Dimension::Angle))
-            .transpose()?,
+        nominal: common::nominal(args.period, args.bph),
+        sample_rate_error_ppm: args.sample_rate_error_ppm.map(|p| p.0),
+        lift_angle: args.lift_angle.map(|a| a.0),
     };
     let plot = args
         .plot

@@ -158,7 +158,7 @@ pub struct ListenArgs {
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub period: Option<Time>,
     /// The channel to listen to, from 1 [default: the louder].
-    #[arg(long, value_name = "N")]
+    #[arg(long, allow_hyphen_values = true, value_name = "N")]
     pub channel: Option<usize>,
     /// The sound card's clock error, ppm (positive: its clock runs fast).
     #[arg(long, value_name = "P", allow_hyphen_values = true)]
@@ -211,7 +211,7 @@ pub struct SynthTicksArgs {
     pub duration: Option<Time>,
     #[arg(long, value_name = "S", allow_hyphen_values = true, help = with_default("A tick's peak over the noise, dB", TickRecording::DEFAULT.snr_db))]
     pub snr_db: Option<Number>,
-    #[arg(long, value_name = "HZ", help = with_default("Samples per second", TickRecording::DEFAULT.sample_rate))]
+    #[arg(long, allow_hyphen_values = true, value_name = "HZ", help = with_default("Samples per second", TickRecording::DEFAULT.sample_rate))]
     pub sample_rate: Option<u32>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Room reverberation time, s", TickRecording::DEFAULT.reverb_s))]
     pub reverb: Option<Time>,
@@ -219,7 +219,7 @@ pub struct SynthTicksArgs {
     pub hum_db: Option<Number>,
     #[arg(long, value_name = "F", allow_hyphen_values = true, help = with_default("Fraction of ticks left out", TickRecording::DEFAULT.missing))]
     pub missing: Option<Number>,
-    #[arg(long, value_name = "N", help = with_default("Seed of every random choice (the tick's sound too)", TickRecording::DEFAULT.seed))]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Seed of every random choice (the tick's sound too)", TickRecording::DEFAULT.seed))]
     pub seed: Option<u64>,
     /// Write the true tick times to this CSV file (time_s).
     #[arg(long, value_name = "FILE.csv")]
@@ -437,9 +437,9 @@ pub struct PeriodArgs {
     /// Amplitude (e.g. 3deg, 0.05rad), or a range 1deg..10deg for a table.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: String,
-    #[arg(long, value_name = "N", help = with_default("Rows in the table when --amplitude is a range (at least 2)", period_table::DEFAULT_STEPS))]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Rows in the table when --amplitude is a range (at least 2)", period_table::DEFAULT_STEPS))]
     pub steps: Option<u32>,
-    #[arg(long, value_name = "N", help = with_default("Terms of the power series of K in sin²(A0/2) (section 1-6) to compare with", period_table::DEFAULT_SERIES_TERMS))]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Terms of the power series of K in sin²(A0/2) (section 1-6) to compare with", period_table::DEFAULT_SERIES_TERMS))]
     pub series_terms: Option<u32>,
     /// Plot T/T0 (exact, series of 1 to 5 terms, small-angle) and the
     /// circular error against amplitude to this file (.svg or .png).
@@ -573,7 +573,7 @@ pub struct SwingArgs {
 pub struct DampedArgs {
     #[command(flatten)]
     pub swing: SwingArgs,
-    #[arg(long, value_name = "N", help = with_default("How many turning points to list after the start", pendulum_theory::damped::analysis::DEFAULT_EXTREMA))]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("How many turning points to list after the start", pendulum_theory::damped::analysis::DEFAULT_EXTREMA))]
     pub extrema: Option<u64>,
     /// Write the motion to this CSV file (time_s,angle_rad,angular_velocity_rad_s).
     #[arg(long, value_name = "FILE.csv")]
@@ -697,14 +697,19 @@ pub struct TrainArgs {
     /// Pinion counts, one fewer than the wheels (e.g. 8,8).
     #[arg(long, value_name = "P,P,…", value_delimiter = ',')]
     pub pinions: Vec<u32>,
-    #[arg(long, value_name = "N", help = with_default("Turns an hour of the first wheel's arbor", train_analysis::DEFAULT_ARBOR_TURNS_PER_HOUR))]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Turns an hour of the first wheel's arbor", train_analysis::DEFAULT_ARBOR_TURNS_PER_HOUR))]
     pub arbor_turns_per_hour: Option<Number>,
     /// Find trains for this beat rate instead (beats per hour).
-    #[arg(long, value_name = "B", conflicts_with = "wheels")]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_name = "B",
+        conflicts_with = "wheels"
+    )]
     pub bph: Option<Number>,
-    #[arg(long, value_name = "N", help = with_default("The escape wheel's teeth, for --bph", train_analysis::DEFAULT_ESCAPE_TEETH))]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("The escape wheel's teeth, for --bph", train_analysis::DEFAULT_ESCAPE_TEETH))]
     pub escape_teeth: Option<u32>,
-    #[arg(long, value_name = "X", help = with_default("Relative tolerance on --bph", train_analysis::DEFAULT_TOLERANCE))]
+    #[arg(long, allow_hyphen_values = true, value_name = "X", help = with_default("Relative tolerance on --bph", train_analysis::DEFAULT_TOLERANCE))]
     pub tolerance: Option<Number>,
     /// A pendulum design: say where its bob must sit for the train's beat.
     #[arg(long, value_name = "FILE.toml")]
@@ -727,13 +732,13 @@ pub struct RegulateArgs {
     #[arg(long, value_name = "NAME", help = with_default("The part the nut moves (with what rests on it)", pendulum_theory::compound::regulate::DEFAULT_PART))]
     pub part: Option<String>,
     /// The rating nut's thread pitch (e.g. 0.7mm).
-    #[arg(long, value_name = "P")]
+    #[arg(long, allow_hyphen_values = true, value_name = "P")]
     pub nut_pitch: Option<Length>,
     /// The rating nut's threads per inch.
-    #[arg(long, value_name = "N")]
+    #[arg(long, allow_hyphen_values = true, value_name = "N")]
     pub nut_tpi: Option<Number>,
     /// Divisions engraved round the nut.
-    #[arg(long, value_name = "N")]
+    #[arg(long, allow_hyphen_values = true, value_name = "N")]
     pub nut_divisions: Option<u32>,
     /// Where a regulating tray sits below the pivot [default: a third of the length] (with --design).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
@@ -806,12 +811,12 @@ pub struct ClockArgs {
     pub recoil: Option<Number>,
     #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("Where the impulse falls before the bottom (negative: after): for impulse and free the impulse's angle, for deadbeat the lift's centre (degrees)", clock::DEFAULT_IMPULSE_ANGLE_DEG))]
     pub impulse_angle: Option<Angle>,
-    #[arg(long, value_name = "N", help = with_default("Free pendulum: beats between impulses (Shortt's)", clock::DEFAULT_EVERY_BEATS))]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Free pendulum: beats between impulses (Shortt's)", clock::DEFAULT_EVERY_BEATS))]
     pub every_beats: Option<u64>,
     /// The isochronism curve: drive factors from..to (e.g. 0.5x..2x).
     #[arg(long, value_name = "A..B", allow_hyphen_values = true)]
     pub drive_range: Option<String>,
-    #[arg(long, value_name = "N", help = with_default("Points on the isochronism curve", clock::DEFAULT_STEPS))]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Points on the isochronism curve", clock::DEFAULT_STEPS))]
     pub steps: Option<usize>,
     /// A long run of this length (e.g. 8days, 1year).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
@@ -867,13 +872,13 @@ pub struct DesignArgs {
     /// The pendulum design (TOML).
     #[arg(value_name = "FILE.toml")]
     pub file: InputPath,
-    #[arg(long, value_name = "P", help = with_default("Air pressure, hPa", sheet::DEFAULT_PRESSURE_PA / 100.0))]
+    #[arg(long, allow_hyphen_values = true, value_name = "P", help = with_default("Air pressure, hPa", sheet::DEFAULT_PRESSURE_PA / 100.0))]
     pub pressure: Option<Number>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Temperature, °C", sheet::DEFAULT_TEMPERATURE_C))]
     pub temperature: Option<Number>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("The temperature the clock was regulated at, °C", sheet::DEFAULT_TEMPERATURE_C))]
     pub regulated_at: Option<Number>,
-    #[arg(long, value_name = "H", help = with_default("Relative humidity, %", sheet::DEFAULT_HUMIDITY * 100.0))]
+    #[arg(long, allow_hyphen_values = true, value_name = "H", help = with_default("Relative humidity, %", sheet::DEFAULT_HUMIDITY * 100.0))]
     pub humidity: Option<Number>,
     #[command(flatten)]
     pub gravity: GravityArgs,

@@ -905,6 +905,14 @@ TRAIN_FOR = {
     "tolerance_zero": (3600.0, {"escape_teeth": 30, "tolerance": 0.0}),
     "tolerance_big": (3600.0, {"escape_teeth": 30, "tolerance": 0.5}),
     "escape_zero": (3600.0, {"escape_teeth": 0}),
+    "quarter_seconds": (14400.0, {"escape_teeth": 30}),
+    "escape_40": (3600.0, {"escape_teeth": 40}),
+    "escape_huge": (3600.0, {"escape_teeth": 100000}),
+    "bph_negative": (-3600.0, {}),
+    "bph_inf": (INF, {}),
+    "tolerance_negative": (3600.0, {"tolerance": -0.01}),
+    "tolerance_nan": (3600.0, {"tolerance": NAN}),
+    "bph_at_upper": (360000.0, {}),
 }
 
 
@@ -1119,6 +1127,20 @@ WEATHER = {
     "cold_out_of_range": ([0.0, DAY], [20.0, -40.0], None),
     "pressure_out_of_range": ([0.0, DAY], None, [1013.25, 500.0]),
     "unsorted": ([0.0, DAY, 100.0], [20.0, 21.0, 22.0], None),
+    "one_row": ([0.0], [25.0], None),
+    "constant": ([0.0, DAY], [20.0, 20.0], None),
+    "cold_edge": ([0.0, DAY], [20.0, -20.0], None),
+    "hot_edge": ([0.0, DAY], [20.0, 60.0], None),
+    "hot_out_of_range": ([0.0, DAY], [20.0, 61.0], None),
+    "temperature_nan": ([0.0, DAY], [20.0, NAN], None),
+    "pressure_nan": ([0.0, DAY], None, [1013.25, NAN]),
+    "times_repeat": ([0.0, DAY, DAY], [20.0, 21.0, 22.0], None),
+    "negative_time": ([-DAY, 0.0, DAY], [20.0, 21.0, 22.0], None),
+    "starts_late": ([DAY, 2 * DAY], [20.0, 25.0], None),
+    "ends_early": ([0.0, 3600.0], [20.0, 25.0], None),
+    "pressure_high": ([0.0, DAY], None, [1013.25, 1100.0]),
+    "pressure_low": ([0.0, DAY], None, [1013.25, 700.0]),
+    "time_nan": ([0.0, NAN], [20.0, 21.0], None),
 }
 
 

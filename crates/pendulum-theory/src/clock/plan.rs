@@ -124,11 +124,27 @@ pub fn check_schedule(
         ));
     }
     for (i, (&t, &v)) in times.iter().zip(values).enumerate() {
-        if !t.is_finite() || (i > 0 && t <= times[i - 1]) {
+        // A time that is not a number: the sentence of the file reader's
+        // own check, so a file and an array are refused alike.
+        if !t.is_finite() {
             return Err(Refusal::sample(
                 field,
                 i,
-                "its time must be finite and after the one before (sort by time)",
+                format!(
+                    "must be a finite number, got {}",
+                    if t.is_nan() {
+                        "a value that is not a number"
+                    } else {
+                        "an infinite value"
+                    }
+                ),
+            ));
+        }
+        if i > 0 && t <= times[i - 1] {
+            return Err(Refusal::sample(
+                field,
+                i,
+                "its time must be after the one before (sort by time)",
             ));
         }
         require_finite_sample(field, i, v)?;

@@ -181,11 +181,14 @@ pub fn train_for(
             ),
         ));
     }
-    let tolerance = tolerance.unwrap_or(DEFAULT_TOLERANCE);
+    let tolerance = require_finite("tolerance", tolerance.unwrap_or(DEFAULT_TOLERANCE))?;
     if !(tolerance > 0.0 && tolerance < MAX_TOLERANCE) {
         return Err(Refusal::field(
             "tolerance",
-            format!("must be between 0 and {MAX_TOLERANCE}"),
+            format!(
+                "must be between 0 and {MAX_TOLERANCE}, got {}",
+                format_significant(tolerance, 6)
+            ),
         ));
     }
     let escape = escape_teeth.unwrap_or(DEFAULT_ESCAPE_TEETH);

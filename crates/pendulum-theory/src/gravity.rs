@@ -76,6 +76,9 @@ pub fn deviation_from_standard_ppm(g: f64) -> f64 {
     (g / crate::pendulum::STANDARD_GRAVITY - 1.0) * 1e6
 }
 
+/// The height when a latitude is given without one, m: the ellipsoid.
+pub const DEFAULT_HEIGHT_M: f64 = 0.0;
+
 /// The value of g an analysis uses, and where it came from.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Resolved {
@@ -105,7 +108,7 @@ pub fn resolve(
                 g_source: "given",
             })
         }
-        (None, Some(lat)) => normal_gravity(lat, height.unwrap_or(0.0))
+        (None, Some(lat)) => normal_gravity(lat, height.unwrap_or(DEFAULT_HEIGHT_M))
             .map(|g| Resolved {
                 g_m_s2: g,
                 g_source: "wgs84",

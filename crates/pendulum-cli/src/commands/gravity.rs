@@ -16,7 +16,9 @@ struct GravityJson {
 
 pub fn run(args: &GravityCommandArgs) -> Result<String, CliError> {
     let latitude_deg = args.latitude.0.to_degrees();
-    let height_m = args.height.map_or(0.0, |h| h.0);
+    let height_m = args
+        .height
+        .map_or(pendulum_theory::gravity::DEFAULT_HEIGHT_M, |h| h.0);
     let g = common::resolve(None, Some(latitude_deg), Some(height_m))?.g_m_s2;
     let result = GravityJson {
         g_m_s2: g,

@@ -13,7 +13,7 @@ use crate::interrupt;
 use crate::output::num;
 use crate::plot::{render, Figure, Panel, Series, Target};
 use pendulum_theory::damped::DampedPendulum;
-use pendulum_theory::report::{report, Report, ReportInput};
+use pendulum_theory::report::{report, Report, ReportInput, UNDAMPED_RUNDOWN_PERIODS};
 use pendulum_theory::Pendulum;
 use std::path::Path;
 
@@ -58,12 +58,10 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         "period.svg",
         &period_figure(&pendulum, 0.0, (2.0 * a_deg).clamp(6.0, 170.0), Some(a_deg)),
     )?;
-    let decay_span = r
-        .damped
-        .decay_time_s
-        .map_or(100.0 * pendulum.small_angle_period(), |t| {
-            3.0 * std::f64::consts::LN_2 * t
-        });
+    let decay_span = r.damped.decay_time_s.map_or(
+        UNDAMPED_RUNDOWN_PERIODS * pendulum.small_angle_period(),
+        |t| 3.0 * std::f64::consts::LN_2 * t,
+    );
     write_figure(&folder, "decay.svg", &decay_figure(&damped, a0, decay_span))?;
     let points: Vec<(f64, f64, f64)> = r
         .rundown
@@ -76,7 +74,18 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         .datasheet
         .as_ref()
         .map(|sheet| super::design::rows(sheet, &gravity));
-    let page = html(&rows(&r, &gravity, &pendulum), datasheet.as_deref());
+    let air = r.datasheet.as_ref().map(|d| {
+        format!(
+            "{} hPa, {} °C and {} % humidity",
+            num(d.pressure_pa / 100.0, 6),
+            num(d.temperature_c, 4),
+            num(d.humidity * 100.0, 3)
+        )
+    });
+    let page = html(
+        &rows(&r, &gravity, &pendulum),
+        datasheet.as_deref().zip(air.as_deref()),
+    );
     crate::output::check_finite_text(&page)?;
     let mut file = AtomicFile::create(&folder.join("index.html"), "--output")?;
     file.writer()
@@ -292,11 +301,12 @@ fn decay_figure(damped: &DampedPendulum, a0: f64, span: f64) -> Figure {
 }
 
 /// The page: a table of figures with units, then the pictures.
-fn html(rows: &[Row], datasheet: Option<&[(String, String)]>) -> String {
+fn html(rows: &[Row], datasheet: Option<(&[(String, String)], &str)>) -> String {
     let sheet = match datasheet {
-        Some(sheet) => {
-            let mut t = String::from(
-                "<h2>The pendulum as designed</h2>\n<p>Its parts and what they make of it, in air at 1013.25 hPa, 20 °C and 50 % humidity (as <code>pendulum design</code> gives it).</p>\n<table class=\"datasheet\">\n",
+        Some((sheet, air)) => {
+            let mut t = format!(
+                "<h2>The pendulum as designed</h2>\n<p>Its parts and what they make of it, in air at {} (as <code>pendulum design</code> gives it).</p>\n<table class=\"datasheet\">\n",
+                escape(air)
             );
             for (name, value) in sheet {
                 t.push_str(&format!(

@@ -89,6 +89,7 @@ LAWS = {
     "quadratic": [2],
     "viscous+coulomb": [0, 1],
     "viscous+quadratic": [0, 2],
+    "coulomb+quadratic": [1, 2],
     "full": [0, 1, 2],
 }
 

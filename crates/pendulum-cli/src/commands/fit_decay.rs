@@ -298,6 +298,20 @@ fn text(r: &DecayJson) -> String {
             num(fitted.akaike_weight, 3)
         ));
     }
+    if let (Some(best), Some(next)) = (r.analysis.preferred, &r.analysis.runner_up) {
+        out.push_str(&format!(
+            "\n{best} preferred over {} by ΔBIC {} ({})\n",
+            next.model,
+            num(next.delta_bic, 3),
+            if next.delta_bic < 2.0 {
+                "the data hardly choose between them"
+            } else if next.delta_bic < 10.0 {
+                "a positive but not decisive preference"
+            } else {
+                "a clear preference"
+            }
+        ));
+    }
     out
 }
 

@@ -43,7 +43,7 @@ fn decay_prefers_the_generating_model_and_reports_physics() {
     assert_eq!(v["points"], 100);
     assert_eq!(v["preferred"], "viscous+coulomb");
     let models = v["models"].as_array().unwrap();
-    assert_eq!(models.len(), 6);
+    assert_eq!(models.len(), DecayModel::ALL.len());
     let names: Vec<&str> = models
         .iter()
         .map(|m| m["model"].as_str().unwrap())
@@ -56,6 +56,7 @@ fn decay_prefers_the_generating_model_and_reports_physics() {
             "quadratic",
             "viscous+coulomb",
             "viscous+quadratic",
+            "coulomb+quadratic",
             "full"
         ]
     );

@@ -51,7 +51,15 @@ fn a_tracker_export_is_read_as_it_is() {
     // preferred (air drag, no negative coefficient), Q as the trajectory's.
     let d = json(&["fit", "decay", file]);
     assert_eq!(d["omega_source"], "turning_points");
-    assert_eq!(d["preferred"], "viscous+quadratic");
+    // A law with drag; the record (20 s of a 15.5° swing) hardly tells
+    // viscous damping from dry friction beside the drag, and says so: the
+    // generator's law is the preferred one or its runner-up within ΔBIC 2.
+    let preferred = d["preferred"].as_str().unwrap();
+    assert!(preferred.ends_with("+quadratic"), "{preferred}");
+    if preferred != "viscous+quadratic" {
+        assert_eq!(d["runner_up"]["model"], "viscous+quadratic");
+        assert!(f(&d["runner_up"], "delta_bic") < 2.0, "{}", d["runner_up"]);
+    }
     let models = d["models"].as_array().unwrap();
     for m in models {
         for (name, value) in m["parameters"].as_object().unwrap() {
@@ -225,7 +233,7 @@ fn absolute_times_are_measured_from_the_first_row() {
     let v = json(&["fit", "decay", &file, "--length", "0.99362m"]);
     assert_eq!(f(&v["format"], "time_origin_s"), 1.7e9);
     let models = v["models"].as_array().unwrap();
-    assert_eq!(models.len(), 6);
+    assert_eq!(models.len(), 7);
     let viscous = &models[0];
     assert!(viscous["failed"].is_null(), "{viscous}");
     assert!((f(&viscous["parameters"], "decay_rate_per_s") / 3e-4 - 1.0).abs() < 1e-6);

@@ -1,6 +1,6 @@
 //! Which damping a pendulum has, from how its amplitude falls.
 //!
-//! Six laws of amplitude against time, each the solution of an averaged
+//! Seven laws of amplitude against time, each the solution of an averaged
 //! equation for the amplitude `A(t)`, `dA/dt = -(μ + λA + κA²)` with some
 //! of the rates zero:
 //!
@@ -11,6 +11,7 @@
 //! | `quadratic` | κ | `A0 / (1 + κA0t)`, `κ = 4bω/(3π)` | energy balance with `⟨|sin|³⟩ = 4/(3π)` |
 //! | `viscous+coulomb` | λ, μ | `A0 e^{-λt} + μ expm1(-λt)/λ` | the half-swing recursion's interpolant |
 //! | `viscous+quadratic` | λ, κ | `λA0 e^{-λt} / (λ + κA0(1 - e^{-λt}))` | a Bernoulli equation: the usual pendulum in air |
+//! | `coulomb+quadratic` | μ, κ | `s tan(atan(2κA0/s) - st/2)/(2κ)`, `s = 2√(κμ)` | the Riccati solution below with λ = 0 |
 //! | `full` | λ, μ, κ | the Riccati solution below | all three |
 //!
 //! The full law is solved by shifting to the equilibrium `a* = -2μ/(λ + √D)`
@@ -25,7 +26,11 @@
 //! refitted (an active set; the result is the bounded least squares, as
 //! SciPy's `curve_fit(..., bounds=(0, inf))` finds it). A rate fixed at 0
 //! is listed in [`DecayFit::at_bound`]; such a fit is the simpler law
-//! already in the list, and is never preferred.
+//! already in the list, and is never preferred. The list is closed under
+//! "a rate at zero": it holds every combination of the three rates (all
+//! seven), so that a law with a rate at its bound always equals a smaller
+//! law that is fitted and compared too (the full law with its viscous rate
+//! at 0 is `coulomb+quadratic`, and so on).
 //!
 //! The rates become the physical `ζ`, friction angle `r` and quadratic
 //! drag `b` with the pendulum's angular frequency `ω` (given, or from the
@@ -48,6 +53,8 @@ pub enum DecayModel {
     ViscousCoulomb,
     /// Viscous damping and air drag together: the usual pendulum in air.
     ViscousQuadratic,
+    /// Dry friction and air drag together (no viscous part).
+    CoulombQuadratic,
     /// Viscous damping, dry friction and air drag.
     Full,
 }
@@ -92,12 +99,13 @@ pub struct DecayFit {
 
 impl DecayModel {
     /// Every model, simplest first.
-    pub const ALL: [DecayModel; 6] = [
+    pub const ALL: [DecayModel; 7] = [
         DecayModel::Viscous,
         DecayModel::Coulomb,
         DecayModel::Quadratic,
         DecayModel::ViscousCoulomb,
         DecayModel::ViscousQuadratic,
+        DecayModel::CoulombQuadratic,
         DecayModel::Full,
     ];
 
@@ -109,6 +117,7 @@ impl DecayModel {
             DecayModel::Quadratic => "quadratic",
             DecayModel::ViscousCoulomb => "viscous+coulomb",
             DecayModel::ViscousQuadratic => "viscous+quadratic",
+            DecayModel::CoulombQuadratic => "coulomb+quadratic",
             DecayModel::Full => "full",
         }
     }
@@ -126,6 +135,7 @@ impl DecayModel {
             DecayModel::Quadratic => [false, false, true],
             DecayModel::ViscousCoulomb => [true, true, false],
             DecayModel::ViscousQuadratic => [true, false, true],
+            DecayModel::CoulombQuadratic => [false, true, true],
             DecayModel::Full => [true, true, true],
         }
     }

@@ -65,9 +65,24 @@ pub struct RunDown {
     pub models: Vec<LawFit>,
     /// The law the data prefer (lowest BIC with no rate at its bound).
     pub preferred: Option<&'static str>,
+    /// The preferred law's Akaike weight among the laws fitted.
+    pub preferred_akaike_weight: Option<f64>,
+    /// The next best law (no rate at its bound) and how much higher its
+    /// BIC is: under 2 the data hardly choose between them, over 10 they
+    /// choose clearly (Kass & Raftery 1995).
+    pub runner_up: Option<RunnerUp>,
     /// The fits themselves (residuals, for plots).
     #[serde(skip)]
     pub fits: Vec<DecayFit>,
+}
+
+/// The law next to the preferred one.
+#[derive(Clone, Debug, Serialize)]
+pub struct RunnerUp {
+    /// Its name.
+    pub model: &'static str,
+    /// Its BIC less the preferred law's.
+    pub delta_bic: f64,
 }
 
 /// One law's fit, or why it failed.
@@ -284,6 +299,19 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
     }
     let best = preferred(&fits);
     let weights = akaike_weights(&fits);
+    // Laws with no rate at its bound, by BIC: the preferred and the next.
+    let mut ranked: Vec<usize> = (0..fits.len())
+        .filter(|&i| fits[i].at_bound.is_empty())
+        .collect();
+    ranked.sort_by(|&a, &b| fits[a].fit.bic.total_cmp(&fits[b].fit.bic));
+    let preferred_akaike_weight = ranked.first().map(|&i| weights[i]);
+    let runner_up = match ranked[..] {
+        [first, second, ..] => Some(RunnerUp {
+            model: fits[second].model.name(),
+            delta_bic: fits[second].fit.bic - fits[first].fit.bic,
+        }),
+        _ => None,
+    };
     let models = DecayModel::ALL
         .iter()
         .filter_map(|&m| {
@@ -304,6 +332,8 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
         omega_source,
         models,
         preferred: best.map(DecayModel::name),
+        preferred_akaike_weight,
+        runner_up,
         fits,
     })
 }

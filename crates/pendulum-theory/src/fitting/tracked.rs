@@ -19,6 +19,17 @@ pub const SECONDS_PER_ROW: f64 = 20e-6;
 /// a 10 km shaft.
 pub const LENGTH_RANGE_M: std::ops::RangeInclusive<f64> = 1e-4..=1e4;
 
+/// A fitted g further than this from standard gravity (relative) is not a
+/// pendulum's on Earth: 30%, beyond any place (9.78 to 9.83 m/s²) and any
+/// fair measurement, well within what a unit mistaken makes of it.
+pub const GRAVITY_TOLERANCE: f64 = 0.3;
+/// Residuals (rms) beyond this fraction of the record's largest swing mean
+/// the model does not follow the record.
+pub const RESIDUAL_OF_SWING: f64 = 0.25;
+/// The band about the offset a zero crossing must cross, as a fraction of
+/// the largest swing (so that noise at the centre counts no crossing).
+pub const CROSSING_BAND: f64 = 0.1;
+
 /// Where the length g is computed with came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -62,6 +73,44 @@ pub enum TrackWarning {
     ZetaUndetermined,
     /// Parameters of the motion's shape the data do not determine.
     ShapeUndetermined(Vec<&'static str>),
+    /// g lies further than [`GRAVITY_TOLERANCE`] from standard gravity.
+    GravityImplausible {
+        /// The fitted g, m/s².
+        g: f64,
+        /// The likely cause, in words.
+        likely: &'static str,
+    },
+    /// The residuals are a large part of the swing: a false minimum, or a
+    /// record that is not this motion.
+    PoorFit {
+        /// Residual rms, rad.
+        rms: f64,
+        /// The record's largest swing, rad.
+        swing: f64,
+    },
+    /// The fitted curve crosses the centre a different number of times
+    /// than the data do: its frequency is not the record's.
+    CrossingsDiffer {
+        /// Crossings in the data.
+        data: usize,
+        /// Crossings of the fitted curve.
+        model: usize,
+    },
+}
+
+impl TrackWarning {
+    /// A stable code for programs (`gravity_implausible`, ...).
+    pub fn code(&self) -> &'static str {
+        match self {
+            TrackWarning::NonlinearRejected(_) => "nonlinear_rejected",
+            TrackWarning::NoGravityFromLinear { .. } => "no_gravity_from_linear",
+            TrackWarning::ZetaUndetermined => "zeta_undetermined",
+            TrackWarning::ShapeUndetermined(_) => "shape_undetermined",
+            TrackWarning::GravityImplausible { .. } => "gravity_implausible",
+            TrackWarning::PoorFit { .. } => "poor_fit",
+            TrackWarning::CrossingsDiffer { .. } => "crossings_differ",
+        }
+    }
 }
 
 impl fmt::Display for TrackWarning {
@@ -77,6 +126,29 @@ impl fmt::Display for TrackWarning {
             TrackWarning::ZetaUndetermined => f.write_str(
                 "zeta not determined (its standard error exceeds it): the swing decays too \
                  little over the record to measure the damping; a longer record will",
+            ),
+            TrackWarning::GravityImplausible { g, likely } => write!(
+                f,
+                "g = {} m/s² is no pendulum's on Earth (more than {}% from {} m/s²): {likely}",
+                format_significant(*g, 4),
+                format_significant(100.0 * GRAVITY_TOLERANCE, 2),
+                crate::STANDARD_GRAVITY
+            ),
+            TrackWarning::PoorFit { rms, swing } => write!(
+                f,
+                "the residuals (rms {}°) are {}% of the largest swing ({}°): the fitted curve \
+                 does not follow the record (a false minimum on a long record of large swings, \
+                 the wrong column, a record that is not one swinging pendulum); do not use its \
+                 figures",
+                format_significant(rms.to_degrees(), 3),
+                format_significant(100.0 * rms / swing, 2),
+                format_significant(swing.to_degrees(), 3)
+            ),
+            TrackWarning::CrossingsDiffer { data, model } => write!(
+                f,
+                "the fitted curve crosses the centre {model} times where the data cross it \
+                 {data} times: its frequency is not the record's (a false minimum); do not use \
+                 its figures"
             ),
             TrackWarning::ShapeUndetermined(names) => write!(
                 f,
@@ -116,6 +188,8 @@ pub struct Track {
     pub length_source: Option<LengthSource>,
     /// What a person must know about these results.
     pub warnings: Vec<TrackWarning>,
+    /// Their codes, in the same order (for programs).
+    pub warning_codes: Vec<&'static str>,
     /// The parameters the data do not determine.
     #[serde(skip)]
     pub undetermined: Vec<&'static str>,
@@ -203,6 +277,9 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             let (g, se) = fit.gravity(l);
             parameters.insert("g_m_s2", g);
             standard_errors.insert("g_m_s2", se);
+            if let Some(likely) = implausible_gravity(g, input.length.map(|(_, s)| s)) {
+                warnings.push(TrackWarning::GravityImplausible { g, likely });
+            }
         } else {
             warnings.push(TrackWarning::NoGravityFromLinear {
                 swing: largest_swing(theta),
@@ -221,6 +298,26 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     if !shape.is_empty() {
         warnings.push(TrackWarning::ShapeUndetermined(shape));
     }
+    // The fit checks itself against the record: residuals against the
+    // swing, and its zero crossings against the data's.
+    let offset = parameters.get("offset_rad").copied().unwrap_or(0.0);
+    let swing = theta.iter().map(|v| (v - offset).abs()).fold(0.0, f64::max);
+    if fit.fit.residual_rms > RESIDUAL_OF_SWING * swing {
+        warnings.push(TrackWarning::PoorFit {
+            rms: fit.fit.residual_rms,
+            swing,
+        });
+    }
+    let band = CROSSING_BAND * swing;
+    let data = crossings(theta.iter().copied(), offset, band);
+    let model = crossings(
+        theta.iter().zip(&fit.fit.residuals).map(|(v, r)| v - r),
+        offset,
+        band,
+    );
+    if data.abs_diff(model) > 2 {
+        warnings.push(TrackWarning::CrossingsDiffer { data, model });
+    }
     Ok(Track {
         points: time.len(),
         model: match fit.model {
@@ -233,8 +330,63 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         residual_rms_rad: fit.fit.residual_rms,
         length_m: input.length.map(|(l, _)| l),
         length_source: input.length.map(|(_, s)| s),
+        warning_codes: warnings.iter().map(TrackWarning::code).collect(),
         warnings,
         undetermined,
         residuals: fit.fit.residuals,
     })
+}
+
+/// The likely cause of a g more than [`GRAVITY_TOLERANCE`] from standard
+/// gravity, or `None` when it is within: g scales as `l/t²`, so a unit
+/// mistaken shows as a power of ten (times in milliseconds read as
+/// seconds: a million-fold smaller; a length in millimetres read as
+/// metres: a thousand-fold larger), and a length taken from the arc's
+/// radius is in the file's units (pixels, centimetres).
+pub fn implausible_gravity(g: f64, source: Option<LengthSource>) -> Option<&'static str> {
+    let ratio = g / crate::STANDARD_GRAVITY;
+    if (ratio - 1.0).abs() <= GRAVITY_TOLERANCE {
+        return None;
+    }
+    let near = |power: f64| (ratio.log10() - power).abs() < 0.5;
+    Some(if near(-6.0) {
+        "the times look like milliseconds read as seconds (g falls a million-fold); give the \
+         time column its unit (time_ms)"
+    } else if near(6.0) {
+        "the times look like seconds read as milliseconds (g rises a million-fold); check the \
+         time column's unit"
+    } else if source == Some(LengthSource::TrackRadius) && ratio > 1.0 {
+        "the length is the radius of the tracked arc, in the file's units: positions in pixels \
+         or centimetres? give the length in metres"
+    } else if near(3.0) {
+        "the length looks like millimetres read as metres (g rises a thousand-fold); give it \
+         with its unit (994mm)"
+    } else if near(-3.0) {
+        "the length looks like metres read as millimetres, or the times are off by a factor of \
+         30; check the length's unit and the time column's"
+    } else {
+        "check the length, the time column's unit and that the column is the pendulum's angle"
+    })
+}
+
+/// Times `values` cross `centre`, each crossing from one side of the band
+/// `centre ± band` to the other (noise within the band counts none).
+pub fn crossings(values: impl Iterator<Item = f64>, centre: f64, band: f64) -> usize {
+    let (mut side, mut count) = (0_i8, 0);
+    for v in values {
+        let s = if v > centre + band {
+            1
+        } else if v < centre - band {
+            -1
+        } else {
+            0
+        };
+        if s != 0 {
+            if side != 0 && s != side {
+                count += 1;
+            }
+            side = s;
+        }
+    }
+    count
 }

@@ -616,3 +616,85 @@ mod self_checks {
         assert_eq!(crossings(swing, 0.0, 0.1), 6);
     }
 }
+
+/// Issue 23, wrong answer 2: a record whose first crest comes a little
+/// after its first sample. The nonlinear fit releases the pendulum at the
+/// crest before the first sample, a whole period earlier, and its
+/// amplitude is extrapolated back through that period; the first crest
+/// the record shows is reported beside it, and matches the truth.
+mod first_crest {
+    use super::Noise;
+    use pendulum_theory::damping::Damping;
+    use pendulum_theory::fitting::trajectory::{fit_trajectory, TrajectoryModel};
+    use pendulum_theory::simulation::{
+        simulate, Action, Method, Model, Observer, Options, TurningPoint,
+    };
+    use pendulum_theory::{Amplitude, Pendulum};
+
+    /// Samples and turning points of the true motion.
+    struct Truth {
+        samples: Vec<(f64, f64)>,
+        turns: Vec<(f64, f64)>,
+    }
+
+    impl Observer for Truth {
+        fn turning_point(&mut self, p: &TurningPoint) -> Action {
+            self.turns.push((p.time, p.angle));
+            Action::Continue
+        }
+        fn sample(&mut self, time: f64, state: &pendulum_theory::damped::State) -> bool {
+            self.samples.push((time, state.angle));
+            true
+        }
+    }
+
+    #[test]
+    fn the_first_crest_in_the_record_is_reported_and_right() {
+        // 11° from rest, 0.5 m, ζ = 0.003; 60 frames a second from 98% of
+        // a period after the release, 20 s, 0.15° of noise.
+        let pendulum = Pendulum::with_standard_gravity(0.5).unwrap();
+        let amplitude = Amplitude::from_degrees(11.0).unwrap();
+        let model = Model::new(pendulum, Damping::from_zeta(0.003).unwrap(), 0.0, 0.0).unwrap();
+        let period = pendulum.period(amplitude);
+        let start = 0.98 * period;
+        let mut truth = Truth {
+            samples: Vec::new(),
+            turns: Vec::new(),
+        };
+        let options = Options {
+            duration: start + 20.0,
+            tolerance: 1e-12,
+            method: Method::Dop853,
+            sample_interval: Some(1.0 / 60.0),
+        };
+        simulate(&model, amplitude, &options, &mut truth).unwrap();
+        let mut noise = Noise(11);
+        let (t, theta): (Vec<f64>, Vec<f64>) = truth
+            .samples
+            .iter()
+            .filter(|(time, _)| *time >= start)
+            .map(|&(time, angle)| (time, angle + 0.15f64.to_radians() * noise.gaussian()))
+            .unzip();
+        let (crest_time, crest_angle) = truth
+            .turns
+            .iter()
+            .copied()
+            .find(|(time, _)| *time >= t[0])
+            .unwrap();
+        let fit = fit_trajectory(TrajectoryModel::Nonlinear, &t, &theta).unwrap();
+        let [time, time_error, a, a_error] = fit.first_crest().unwrap();
+        assert!(
+            (a - crest_angle.abs()).abs() <= 3.0 * a_error,
+            "first crest {a} ± {a_error} against {}",
+            crest_angle.abs()
+        );
+        assert!(
+            (time - (crest_time - t[0])).abs() <= 3.0 * time_error + 1e-6,
+            "first crest at {time} ± {time_error} s against {}",
+            crest_time - t[0]
+        );
+        // The release amplitude lies a period before the record, above any
+        // crest in it: the reason the first crest is reported.
+        assert!(fit.fit.parameters[0] > crest_angle.abs());
+    }
+}

@@ -105,17 +105,16 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         a.model
     );
     for (name, value) in &a.parameters {
-        let se = a.standard_errors[name];
         let note = if a.undetermined.contains(name) {
             "  (not determined)"
         } else {
             ""
         };
-        out.push_str(&format!(
-            "  {name:<16} {} ± {}{note}\n",
-            num(*value, 8),
-            num(se, 2)
-        ));
+        let error = a
+            .standard_errors
+            .get(name)
+            .map_or(String::new(), |se| format!(" ± {}", num(*se, 2)));
+        out.push_str(&format!("  {name:<26} {}{error}{note}\n", num(*value, 8)));
     }
     if let (Some(LengthSource::TrackRadius), Some(l)) = (a.length_source, a.length_m) {
         out.push_str(&format!(
@@ -133,7 +132,8 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         out.push_str(&format!("  WARNING: {w}\n"));
     }
     out.push_str(&format!(
-        "  residual rms     {} rad ({}°)\n",
+        "  {:<26} {} rad ({}°)\n",
+        "residual rms",
         num(a.residual_rms_rad, 3),
         num(a.residual_rms_rad.to_degrees(), 3)
     ));

@@ -286,6 +286,15 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             });
         }
     }
+    // The first crest the record shows, beside the fitted amplitude (the
+    // envelope's at the first sample, or the release's up to a period
+    // before it).
+    if let Some([time, time_error, amplitude, error]) = fit.first_crest() {
+        parameters.insert("first_crest_time_s", time);
+        standard_errors.insert("first_crest_time_s", time_error);
+        parameters.insert("first_crest_amplitude_rad", amplitude);
+        standard_errors.insert("first_crest_amplitude_rad", error);
+    }
     let undetermined = fit.undetermined();
     if undetermined.contains(&"zeta") {
         warnings.push(TrackWarning::ZetaUndetermined);

@@ -150,6 +150,51 @@ impl TrajectoryFit {
         }
     }
 
+    /// The first crest in the record: its time from the first sample (s)
+    /// with its standard error (the phase's), its amplitude about the
+    /// offset (rad) with its standard error. The fitted amplitude is the envelope's at the first sample
+    /// (linear) or the release's, up to a period before it (nonlinear):
+    /// a record that starts just after a crest would report a swing
+    /// extrapolated back a whole period (issue 23); the first crest is what
+    /// the record shows. Linear: the crest of the cosine, `ω_d t + φ = kπ`,
+    /// at the envelope there; nonlinear: the fitted motion integrated from
+    /// the release to its first turning point at or after the first sample
+    /// (DOP853 at 1e-12). The error scales with the fitted amplitude's.
+    pub fn first_crest(&self) -> Option<[f64; 4]> {
+        let p = &self.fit.parameters;
+        let (a, a_error) = (p[0].abs(), self.fit.standard_errors[0]);
+        let phase_error = self.fit.standard_errors[3];
+        match self.model {
+            TrajectoryModel::Linear => {
+                let (wd, zeta, phase) = (p[1].abs(), p[2], p[3]);
+                let wn = wd / (1.0 - zeta * zeta).max(f64::MIN_POSITIVE).sqrt();
+                let pi = std::f64::consts::PI;
+                let t = if phase <= 0.0 {
+                    -phase / wd
+                } else {
+                    (pi - phase) / wd
+                };
+                let decay = (-zeta * wn * t).exp();
+                Some([t, phase_error / wd, a * decay, a_error * decay])
+                    .filter(|c| c[0].is_finite() && c[2].is_finite())
+            }
+            TrajectoryModel::Nonlinear => {
+                let wn = p[1].abs();
+                // The reported phase is a fraction of the true period; the
+                // release leads the first sample by phase·ratio/ω_n.
+                let ratio = release_period_ratio(a);
+                let lead = p[3].abs() * ratio / wn;
+                let time_error = phase_error * ratio / wn;
+                if lead <= 1e-9 * std::f64::consts::TAU / wn {
+                    return Some([0.0, time_error, a, a_error]);
+                }
+                let (time, angle) = turning_point_after(p, lead)?;
+                let crest = angle.abs();
+                Some([time - lead, time_error, crest, a_error * crest / a])
+            }
+        }
+    }
+
     /// `g = l ω_0²` and its standard error, for a pendulum of `length` m.
     pub fn gravity(&self, length: f64) -> (f64, f64) {
         let w = self.natural_angular_frequency;
@@ -312,6 +357,38 @@ fn crest_after_one_period(p: &[f64]) -> Option<(f64, f64)> {
     let mut second = Second(None);
     simulate(&model, amplitude, &options, &mut second).ok()?;
     second.0
+}
+
+/// The first turning point (time after the release, s, and signed angle,
+/// rad) at or after `after` seconds of the motion of nonlinear parameters
+/// `[A, ω_n, ζ, ...]` released from rest at `A`.
+fn turning_point_after(p: &[f64], after: f64) -> Option<(f64, f64)> {
+    let wn = p[1].abs();
+    let pendulum = Pendulum::with_standard_gravity(9.806_65 / (wn * wn)).ok()?;
+    let model = Model::new(pendulum, Damping::from_zeta(p[2].max(0.0)).ok()?, 0.0, 0.0).ok()?;
+    let amplitude = Amplitude::from_radians(p[0].abs().min(3.1)).ok()?;
+    struct After(f64, Option<(f64, f64)>);
+    impl Observer for After {
+        fn turning_point(
+            &mut self,
+            tp: &crate::simulation::TurningPoint,
+        ) -> crate::simulation::Action {
+            if tp.index >= 1 && tp.time >= self.0 {
+                self.1 = Some((tp.time, tp.angle));
+                return crate::simulation::Action::Stop;
+            }
+            crate::simulation::Action::Continue
+        }
+    }
+    let options = Options {
+        duration: after + 1.5 * pendulum.period(amplitude),
+        tolerance: 1e-12,
+        method: Method::Dop853,
+        sample_interval: None,
+    };
+    let mut found = After(after, None);
+    simulate(&model, amplitude, &options, &mut found).ok()?;
+    found.1
 }
 
 /// Starting values from the record itself: the offset is the mean, the

@@ -469,6 +469,7 @@ fn fit_trajectory(
             angle,
             model,
             length: length.map(|l| (l, LengthSource::Given)),
+            length_standard_error: None,
             force,
         })
     }))

@@ -29,7 +29,7 @@ from test_simulate import binary
 
 #: Keys of the binary's JSON about the file it read, not the analysis.
 READER_KEYS = {"file", "format", "zero_offset_rad", "turning_points_file", "residuals_file",
-               "pivot", "track_radius", "swings_file", "trajectory_file", "elapsed_s",
+               "pivot", "track_radius", "track_radius_standard_error", "swings_file", "trajectory_file", "elapsed_s",
                "channel", "plot_file", "ticks_file"}
 
 #: Flags whose name is not ``--`` and the keyword.

@@ -517,6 +517,7 @@ mod self_checks {
             angle,
             model: None,
             length,
+            length_standard_error: None,
             force: false,
         })
         .unwrap()
@@ -540,6 +541,7 @@ mod self_checks {
             angle: &a,
             model: None,
             length: Some((0.6, LengthSource::Given)),
+            length_standard_error: None,
             force: false,
         })
         .unwrap();
@@ -560,6 +562,7 @@ mod self_checks {
             angle: &a,
             model: None,
             length: Some((300.0, LengthSource::TrackRadius)),
+            length_standard_error: None,
             force: false,
         })
         .unwrap();
@@ -596,6 +599,7 @@ mod self_checks {
             angle: &a,
             model: Some("linear"),
             length: None,
+            length_standard_error: None,
             force: false,
         })
         .unwrap()
@@ -604,6 +608,37 @@ mod self_checks {
             c.contains(&"poor_fit") || c.contains(&"crossings_differ"),
             "{c:?}"
         );
+    }
+
+    #[test]
+    fn times_in_milliseconds_without_a_length_are_named_by_the_period() {
+        let (t, a) = record(1000.0, 5);
+        let c = codes(&t, &a, None);
+        assert_eq!(c, ["period_implausible"]);
+    }
+
+    #[test]
+    fn radians_read_as_degrees_are_named() {
+        // A 30° swing of a 0.6 m pendulum in radians, read as degrees: the
+        // swing looks 57 times smaller and g loses its finite-amplitude
+        // correction (3.4% low).
+        let mut noise = Noise(6);
+        let pendulum = pendulum_theory::Pendulum::with_standard_gravity(0.6).unwrap();
+        let amplitude = pendulum_theory::Amplitude::from_degrees(30.0).unwrap();
+        let w = std::f64::consts::TAU / pendulum.period(amplitude);
+        let (t, a): (Vec<f64>, Vec<f64>) = (0..900)
+            .map(|i| {
+                let t = f64::from(i) / 30.0;
+                // Near enough a 30° swing for the period (the test is of
+                // the hint, not of the model).
+                let theta = 30f64.to_radians() * (w * t).cos() + 2e-4 * noise.gaussian();
+                (t, theta.to_radians())
+            })
+            .unzip();
+        // (Undamped, so zeta is also not determined.)
+        let c = codes(&t, &a, Some((0.6, LengthSource::Given)));
+        assert!(c.contains(&"angle_unit"), "{c:?}");
+        // (A record read right raises none: a_fair_record_raises_no_warning.)
     }
 
     #[test]

@@ -28,6 +28,9 @@ struct TrajectoryJson {
     /// The radius of the circle the bob traced (`--pivot fit`), file units.
     #[serde(skip_serializing_if = "Option::is_none")]
     track_radius: Option<f64>,
+    /// Its standard error, carried into g's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    track_radius_standard_error: Option<f64>,
     #[serde(flatten)]
     analysis: Track,
 }
@@ -64,6 +67,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         angle: theta,
         model: args.model.as_deref(),
         length,
+        length_standard_error: track.track_radius_error.filter(|_| given_length.is_none()),
         force: args.read.force,
     })
     .map_err(|r| {
@@ -91,6 +95,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         format: track.table.format.clone(),
         pivot: track.pivot.clone(),
         track_radius: track.track_radius,
+        track_radius_standard_error: track.track_radius_error,
         analysis,
     };
     if args.json {

@@ -59,6 +59,8 @@ pub struct Track {
     pub pivot: Option<PivotJson>,
     /// The radius of the circle the bob traced (`--pivot fit`), file units.
     pub track_radius: Option<f64>,
+    /// Its standard error.
+    pub track_radius_error: Option<f64>,
 }
 
 /// Whether the header holds a swing: time with an angle, or with x and y.
@@ -101,6 +103,7 @@ pub fn track_of(table: Table, pivot: Option<&str>) -> Result<Track, CliError> {
             angle,
             pivot: None,
             track_radius: None,
+            track_radius_error: None,
         });
     }
     let (x, y) = (
@@ -121,7 +124,7 @@ pub fn track_of(table: Table, pivot: Option<&str>) -> Result<Track, CliError> {
                     y: circle.centre_y,
                     source: "fit",
                 },
-                Some(circle.radius),
+                Some((circle.radius, circle.radius_standard_error)),
             )
         }
         Some(text) => {
@@ -180,6 +183,7 @@ pub fn track_of(table: Table, pivot: Option<&str>) -> Result<Track, CliError> {
         time,
         angle,
         pivot: Some(pivot),
-        track_radius: radius,
+        track_radius: radius.map(|r| r.0),
+        track_radius_error: radius.map(|r| r.1),
     })
 }

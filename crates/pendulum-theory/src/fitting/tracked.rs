@@ -54,6 +54,9 @@ pub struct TrackInput<'a> {
     pub model: Option<&'a str>,
     /// The length g is computed with, m, and where it came from.
     pub length: Option<(f64, LengthSource)>,
+    /// The length's standard error, m (a radius fitted to the track has
+    /// one): carried into g's.
+    pub length_standard_error: Option<f64>,
     /// Runs estimated beyond [`crate::analysis::FORCE_SECONDS`] anyway.
     pub force: bool,
 }
@@ -79,6 +82,24 @@ pub enum TrackWarning {
         g: f64,
         /// The likely cause, in words.
         likely: &'static str,
+    },
+    /// The fitted period is no pendulum's of [`LENGTH_RANGE_M`] (no length
+    /// given to judge g by).
+    PeriodImplausible {
+        /// The small-angle period fitted, s.
+        period: f64,
+        /// The length it means at standard gravity, m.
+        length: f64,
+    },
+    /// g is further from standard gravity than the data allow, and the
+    /// angles read in the other unit would bring it close.
+    AngleUnit {
+        /// The fitted g, m/s².
+        g: f64,
+        /// g with the swing's size in the other unit, m/s².
+        other: f64,
+        /// `degrees` or `radians`: what the angles would then be.
+        read_as: &'static str,
     },
     /// The residuals are a large part of the swing: a false minimum, or a
     /// record that is not this motion.
@@ -108,6 +129,8 @@ impl TrackWarning {
             TrackWarning::ShapeUndetermined(_) => "shape_undetermined",
             TrackWarning::GravityImplausible { .. } => "gravity_implausible",
             TrackWarning::PoorFit { .. } => "poor_fit",
+            TrackWarning::PeriodImplausible { .. } => "period_implausible",
+            TrackWarning::AngleUnit { .. } => "angle_unit",
             TrackWarning::CrossingsDiffer { .. } => "crossings_differ",
         }
     }
@@ -133,6 +156,28 @@ impl fmt::Display for TrackWarning {
                 format_significant(*g, 4),
                 format_significant(100.0 * GRAVITY_TOLERANCE, 2),
                 crate::STANDARD_GRAVITY
+            ),
+            TrackWarning::PeriodImplausible { period, length } => write!(
+                f,
+                "a small-angle period of {} s is a pendulum of {} m at standard gravity, no \
+                 pendulum one can film: {}",
+                format_significant(*period, 4),
+                format_significant(*length, 3),
+                if *length > *LENGTH_RANGE_M.end() {
+                    "the times look like milliseconds (or frame numbers) read as seconds; give \
+                     the time column its unit"
+                } else {
+                    "the times look like seconds read as milliseconds; check the time column's \
+                     unit"
+                }
+            ),
+            TrackWarning::AngleUnit { g, other, read_as } => write!(
+                f,
+                "g = {} m/s² is off standard gravity by more than the data allow, and with the \
+                 angles read as {read_as} it would be {} m/s²: check the angle column's unit \
+                 (the swing's size sets the period's finite-amplitude correction)",
+                format_significant(*g, 5),
+                format_significant(*other, 5)
             ),
             TrackWarning::PoorFit { rms, swing } => write!(
                 f,
@@ -275,10 +320,17 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     if let Some((l, _)) = input.length {
         if fit.model.gives_gravity(theta) {
             let (g, se) = fit.gravity(l);
+            // g = l ω²: the length's error adds in quadrature.
+            let se = match input.length_standard_error {
+                Some(sl) if sl.is_finite() && l > 0.0 => se.hypot(g * sl / l),
+                _ => se,
+            };
             parameters.insert("g_m_s2", g);
             standard_errors.insert("g_m_s2", se);
             if let Some(likely) = implausible_gravity(g, input.length.map(|(_, s)| s)) {
                 warnings.push(TrackWarning::GravityImplausible { g, likely });
+            } else if let Some(w) = angle_unit_hint(g, se, largest_swing(theta)) {
+                warnings.push(w);
             }
         } else {
             warnings.push(TrackWarning::NoGravityFromLinear {
@@ -294,6 +346,17 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         standard_errors.insert("first_crest_time_s", time_error);
         parameters.insert("first_crest_amplitude_rad", amplitude);
         standard_errors.insert("first_crest_amplitude_rad", error);
+    }
+    // Without a length g cannot be judged; the period still can.
+    if input.length.is_none() {
+        let w0 = fit.natural_angular_frequency;
+        let length = crate::STANDARD_GRAVITY / (w0 * w0);
+        if w0 > 0.0 && length.is_finite() && !LENGTH_RANGE_M.contains(&length) {
+            warnings.push(TrackWarning::PeriodImplausible {
+                period: std::f64::consts::TAU / w0,
+                length,
+            });
+        }
     }
     let undetermined = fit.undetermined();
     if undetermined.contains(&"zeta") {
@@ -398,4 +461,34 @@ pub fn crossings(values: impl Iterator<Item = f64>, centre: f64, band: f64) -> u
         }
     }
     count
+}
+
+/// A g (standard error `se`) from a record whose largest swing is `swing`
+/// rad, judged for an angle unit mistaken: the swing's size sets the
+/// finite-amplitude correction, `g ∝ (T(A)/T0)²` for the same observed
+/// period, so angles in radians read as degrees (a swing 57 times too
+/// small) lose the correction and degrees read as radians inflate it. A
+/// hint when g is more than 2% and 3 standard errors from standard gravity
+/// and the swing in the other unit brings it at least three times closer.
+pub fn angle_unit_hint(g: f64, se: f64, swing: f64) -> Option<TrackWarning> {
+    use crate::pendulum::Amplitude;
+    use crate::period::period_ratio;
+    let gn = crate::STANDARD_GRAVITY;
+    let off = (g - gn).abs();
+    if off <= (0.02 * gn).max(3.0 * se) {
+        return None;
+    }
+    let ratio = |a: f64| Amplitude::from_radians(a).ok().map(period_ratio);
+    let here = ratio(swing)?;
+    [
+        (swing.to_degrees(), "radians"),
+        (swing.to_radians(), "degrees"),
+    ]
+    .into_iter()
+    .filter(|(a, _)| *a < 3.0)
+    .filter_map(|(a, read_as)| {
+        let other = g * (ratio(a)? / here).powi(2);
+        ((other - gn).abs() * 3.0 < off).then_some(TrackWarning::AngleUnit { g, other, read_as })
+    })
+    .next()
 }

@@ -733,3 +733,72 @@ mod first_crest {
         assert!(fit.fit.parameters[0] > crest_angle.abs());
     }
 }
+
+/// Issue 23, wrong answer 1: long records of large swings (78-94°
+/// releases, 136-375 s, Q 200-550) put the nonlinear fit in a false
+/// minimum (amplitude 0.3 rad for 1.5, ω_n 3% low, residuals the size of
+/// the swing, no warning). The fit over growing windows converges on each.
+mod long_large_swings {
+    use super::Noise;
+    use pendulum_theory::damping::Damping;
+    use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
+    use pendulum_theory::simulation::{simulate, Method, Model, Observer, Options};
+    use pendulum_theory::{Amplitude, Pendulum};
+
+    struct Samples(Vec<(f64, f64)>);
+
+    impl Observer for Samples {
+        fn sample(&mut self, time: f64, state: &pendulum_theory::damped::State) -> bool {
+            self.0.push((time, state.angle));
+            true
+        }
+    }
+
+    #[test]
+    fn the_staged_fit_converges_where_the_whole_record_fit_did_not() {
+        for (degrees, q, seconds, seed) in [
+            (85.0, 300.0, 200.0, 1),
+            (78.0, 200.0, 136.0, 2),
+            (94.0, 550.0, 375.0, 3),
+        ] {
+            let pendulum = Pendulum::with_standard_gravity(0.7).unwrap();
+            let model = Model::new(pendulum, Damping::from_q(q).unwrap(), 0.0, 0.0).unwrap();
+            let options = Options {
+                duration: seconds,
+                tolerance: 1e-12,
+                method: Method::Dop853,
+                sample_interval: Some(1.0 / 30.0),
+            };
+            let mut samples = Samples(Vec::new());
+            let release = Amplitude::from_degrees(degrees).unwrap();
+            simulate(&model, release, &options, &mut samples).unwrap();
+            let mut noise = Noise(seed);
+            let (t, a): (Vec<f64>, Vec<f64>) = samples
+                .0
+                .iter()
+                .map(|&(t, a)| (t, a + 0.2f64.to_radians() * noise.gaussian()))
+                .unzip();
+            let r = analyse(&TrackInput {
+                time: &t,
+                angle: &a,
+                model: Some("nonlinear"),
+                length: Some((0.7, LengthSource::Given)),
+                length_standard_error: None,
+                force: true,
+            })
+            .unwrap();
+            let (g, se) = (r.parameters["g_m_s2"], r.standard_errors["g_m_s2"]);
+            assert!((g - 9.80665).abs() <= 3.0 * se, "{degrees}°: g {g} ± {se}");
+            let crest = r.parameters["first_crest_amplitude_rad"];
+            assert!(
+                (crest - release.radians()).abs() < 0.02,
+                "{degrees}°: crest {crest}"
+            );
+            assert!(
+                r.warning_codes.is_empty(),
+                "{degrees}°: {:?}",
+                r.warning_codes
+            );
+        }
+    }
+}

@@ -13,6 +13,14 @@
 //!   which the release precedes the first sample. It is started from the
 //!   linear fit.
 //!
+//! Both are fitted over growing windows: the first four periods, then
+//! twice as long each time, each fit started from the last, the last the
+//! whole record. A long record of large swings, whose period changes by
+//! up to 10% as the amplitude decays, otherwise loses the phase and lands
+//! in a false minimum (issue 23: 78-94° releases over 136-375 s, now within
+//! 3σ of the truth in g, `tests/fitting.rs`); a window too short to
+//! determine every parameter is passed over.
+//!
 //! With the length, `g = l ω_0²` where `ω_0` is the small-angle natural
 //! frequency: for the linear model `ω_d` is first corrected for damping
 //! (`/ sqrt(1 - ζ²)`) and for the finite amplitude (times `T(A_mid)/T0`,
@@ -228,8 +236,23 @@ pub fn fit_trajectory(
     }
     let t0 = time.first().copied().unwrap_or(0.0);
     let t: Vec<f64> = time.iter().map(|x| x - t0).collect();
-    let start = initial_guess(&t, theta);
-    let mut lin = fit_curve(&linear, &t, theta, None, &start)?;
+    // Over a growing window: a long record of large swings, whose period
+    // changes with the amplitude, loses a fit started from the whole
+    // record's phase (a false minimum, issue 23); a few periods first,
+    // then twice as many, each fit started from the last, follow it.
+    let windows = stages(&t, theta);
+    let first = windows[0];
+    let mut lin = fit_curve(
+        &linear,
+        &t[..first],
+        &theta[..first],
+        None,
+        &initial_guess(&t[..first], &theta[..first]),
+    )?;
+    let lin_first = lin.clone();
+    for &n in &windows[1..] {
+        lin = fit_curve(&linear, &t[..n], &theta[..n], None, &lin.parameters)?;
+    }
     // The same curve with A >= 0 and φ in (-π, π]: a negative amplitude is
     // a phase shifted by π.
     if lin.parameters[0] < 0.0 {
@@ -266,12 +289,44 @@ pub fn fit_trajectory(
     if model == TrajectoryModel::Linear {
         return Ok(linear_fit(lin, None));
     }
-    let wn = wd / damping_factor * ratio;
+    // The nonlinear fit starts from the linear fit of the first window
+    // (where the phase is sure), over the same growing windows.
+    let (a1, wd1, zeta1) = {
+        let p = &lin_first.parameters;
+        (p[0].abs(), p[1], p[2])
+    };
+    let damping1 = (1.0 - zeta1 * zeta1).max(f64::MIN_POSITIVE).sqrt();
+    let ratio1 = Amplitude::from_radians(a1.min(3.1))
+        .map(period_ratio)
+        .unwrap_or(1.0);
+    let wn = wd1 / damping1 * ratio1;
     // Release from rest at the crest before the first sample: the phase
     // φ of the linear fit places it φ/ω_d earlier.
-    let phase = lin.parameters[3].rem_euclid(std::f64::consts::TAU);
-    let a_release = a * (zeta * wd / damping_factor * phase / wd).exp();
-    let initial = [a_release, wn, zeta.max(0.0), phase, lin.parameters[4]];
+    let mut phase = lin_first.parameters[3];
+    if lin_first.parameters[0] < 0.0 {
+        phase += std::f64::consts::PI;
+    }
+    let phase = phase.rem_euclid(std::f64::consts::TAU);
+    let a_release = a1 * (zeta1 * wd1 / damping1 * phase / wd1).exp();
+    let mut initial = vec![
+        a_release,
+        wn,
+        zeta1.max(0.0),
+        phase,
+        lin_first.parameters[4],
+    ];
+    for &n in &windows[..windows.len() - 1] {
+        let curve = NonlinearCurve {
+            times: &t[..n],
+            cache: RefCell::new(Simulated::default()),
+        };
+        // A window too short to determine every parameter (the damping
+        // over a few periods of a high Q) leaves the start as it was for
+        // the next, longer one.
+        if let Ok(f) = fit_curve(&curve, &t[..n], &theta[..n], None, &initial) {
+            initial = f.parameters;
+        }
+    }
     let curve = NonlinearCurve {
         times: &t,
         cache: RefCell::new(Simulated::default()),
@@ -320,6 +375,36 @@ pub fn fit_trajectory(
         nonlinear_rms_rejected: None,
     })
 }
+
+/// The sample counts of the growing windows a fit goes through: the first
+/// [`FIRST_WINDOW_PERIODS`] periods (by the record's own crossings), then
+/// twice as long each time, the last the whole record. A record of fewer
+/// than twice the first window's periods is one window.
+fn stages(t: &[f64], theta: &[f64]) -> Vec<usize> {
+    let n = t.len();
+    let guess = initial_guess(t, theta);
+    let wd = guess[1].abs();
+    let span = t.last().copied().unwrap_or(0.0);
+    let period = std::f64::consts::TAU / wd;
+    if !(wd.is_finite() && wd > 0.0) || span < 2.0 * FIRST_WINDOW_PERIODS * period {
+        return vec![n];
+    }
+    let mut out = Vec::new();
+    let mut end = FIRST_WINDOW_PERIODS * period;
+    while end < span {
+        let k = t.partition_point(|&x| x <= end);
+        // At least enough points to fit, and growing.
+        if k > 10 && out.last().is_none_or(|&last| k > last) {
+            out.push(k);
+        }
+        end *= 2.0;
+    }
+    out.push(n);
+    out
+}
+
+/// The first window of a staged fit, periods.
+pub const FIRST_WINDOW_PERIODS: f64 = 4.0;
 
 /// `T(A)/T0` at the release amplitude `a` (rad).
 fn release_period_ratio(a: f64) -> f64 {

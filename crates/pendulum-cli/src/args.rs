@@ -284,8 +284,15 @@ pub struct MeasurementArgs {
     #[arg(long, value_name = "NAMES")]
     pub columns: Option<String>,
     /// Rebuild the times as the row number over this frame rate (frames
-    /// per second), for times exported rounded.
-    #[arg(long, value_name = "FPS", allow_hyphen_values = true)]
+    /// per second), for times exported rounded; or make them, for a file
+    /// with no time column (a logger sampling at a fixed rate:
+    /// --sample-rate HZ).
+    #[arg(
+        long,
+        visible_alias = "sample-rate",
+        value_name = "FPS",
+        allow_hyphen_values = true
+    )]
     pub frame_rate: Option<Number>,
     /// For x and y positions: the pivot, as X,Y in the file's units
     /// [default: 0,0], or `fit` for the centre of the circle the bob traces.

@@ -717,7 +717,7 @@ mod first_crest {
             .find(|(time, _)| *time >= t[0])
             .unwrap();
         let fit = fit_trajectory(TrajectoryModel::Nonlinear, &t, &theta).unwrap();
-        let [time, time_error, a, a_error] = fit.first_crest().unwrap();
+        let [time, time_error, a, a_error] = fit.first_crest(t[1] - t[0]).unwrap();
         assert!(
             (a - crest_angle.abs()).abs() <= 3.0 * a_error,
             "first crest {a} ± {a_error} against {}",

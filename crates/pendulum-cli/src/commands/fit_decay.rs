@@ -55,7 +55,7 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     // per-frame columns a user may have called "amp".
     let choose = |found: &[Found]| {
         if has_track(found) {
-            track_roles(found)
+            track_roles(found, false)
         } else if found.iter().any(|f| f.role == Role::Amplitude) {
             need(&[&[Role::Time, Role::Swing], &[Role::Amplitude]])(found)
         } else {
@@ -117,7 +117,7 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         })?;
         (analysis, time, amplitude, None)
     } else {
-        let track = track_of(table, args.read.pivot.as_deref())?;
+        let track = track_of(table, args.read.pivot.as_deref(), None)?;
         let found = turning_points(&track.time, &track.angle);
         if found.turns.len() < 4 {
             return Err(CliError::other(format!(

@@ -69,16 +69,25 @@ pub fn has_track(found: &[Found]) -> bool {
     has(Role::Time) && (has(Role::Angle) || has(Role::X) && has(Role::Y))
 }
 
-/// The roles of a swing: time and angle, or time, x and y.
-pub fn track_roles(found: &[Found]) -> Result<Vec<Role>, String> {
+/// The roles of a swing: time and angle, or time, x and y; with `rate`
+/// (a fixed sampling rate given) the time may be absent, made from the row
+/// numbers.
+pub fn track_roles(found: &[Found], rate: bool) -> Result<Vec<Role>, String> {
     let has = |r: Role| found.iter().any(|f| f.role == r);
-    if !has(Role::Time) {
-        return Err("no time column".into());
+    let time = has(Role::Time);
+    if !time && !rate {
+        return Err(
+            "no time column; for a logger that samples at a fixed rate give --sample-rate HZ"
+                .into(),
+        );
     }
+    let mut roles = if time { vec![Role::Time] } else { Vec::new() };
     if has(Role::Angle) {
-        Ok(vec![Role::Time, Role::Angle])
+        roles.push(Role::Angle);
+        Ok(roles)
     } else if has(Role::X) && has(Role::Y) {
-        Ok(vec![Role::Time, Role::X, Role::Y])
+        roles.extend([Role::X, Role::Y]);
+        Ok(roles)
     } else {
         Err("no angle column (angle, theta, θ), nor x and y positions".into())
     }
@@ -87,14 +96,25 @@ pub fn track_roles(found: &[Found]) -> Result<Vec<Role>, String> {
 /// Reads a swing from `path`.
 pub fn read_track(path: &Path, args: &MeasurementArgs) -> Result<Track, CliError> {
     let options = read_options(args)?;
-    let table = read_table(path, &options, &track_roles)?;
-    track_of(table, args.pivot.as_deref())
+    let rate = options.frame_rate;
+    let table = read_table(path, &options, &|found: &[Found]| {
+        track_roles(found, rate.is_some())
+    })?;
+    track_of(table, args.pivot.as_deref(), rate)
 }
 
-/// The swing of a table read with [`track_roles`].
-pub fn track_of(table: Table, pivot: Option<&str>) -> Result<Track, CliError> {
+/// The swing of a table read with [`track_roles`]; without a time column
+/// the times are the row numbers over `rate` (samples a second).
+pub fn track_of(table: Table, pivot: Option<&str>, rate: Option<f64>) -> Result<Track, CliError> {
     table.require_increasing(Role::Time)?;
-    let time = table.column(Role::Time).unwrap_or(&[]).to_vec();
+    let time = match (table.column(Role::Time), rate) {
+        (Some(t), _) => t.to_vec(),
+        (None, Some(rate)) => {
+            let rows = table.values.first().map_or(0, Vec::len);
+            (0..rows).map(|i| i as f64 / rate).collect()
+        }
+        (None, None) => Vec::new(),
+    };
     if let Some(angle) = table.column(Role::Angle) {
         let angle = angle.to_vec();
         return Ok(Track {

@@ -239,3 +239,37 @@ fn absolute_times_are_measured_from_the_first_row() {
     assert!((f(&viscous["parameters"], "decay_rate_per_s") / 3e-4 - 1.0).abs() < 1e-6);
     assert!((f(&viscous["parameters"], "amplitude0_rad") - 3f64.to_radians()).abs() < 1e-9);
 }
+
+/// A logger that samples at a fixed rate writes no time column: refused
+/// with the flag that reads it, then read with `--sample-rate` (issue 23).
+#[test]
+fn a_fixed_rate_logger_without_times_is_read_with_its_rate() {
+    let dir = tempfile::tempdir().unwrap();
+    let w = (9.80665f64 / 0.6).sqrt();
+    let mut text = String::from("angle_deg\n");
+    for i in 0..600 {
+        let t = f64::from(i) / 50.0;
+        text.push_str(&format!("{}\n", 3.0 * (-0.02 * t).exp() * (w * t).cos()));
+    }
+    let file = write(dir.path(), "logger.csv", &text);
+    let message = refuses(&["fit", "trajectory", &file], "--sample-rate");
+    assert!(message.contains("no time column"), "{message}");
+    let v = json(&[
+        "fit",
+        "trajectory",
+        &file,
+        "--sample-rate",
+        "50",
+        "--length",
+        "0.6m",
+    ]);
+    assert_eq!(v["points"], 600);
+    let g = f(&v["parameters"], "g_m_s2");
+    assert!((g / 9.80665 - 1.0).abs() < 1e-3, "{g}");
+    // The same rate under the video name.
+    let v = json(&["fit", "trajectory", &file, "--frame-rate", "50"]);
+    assert!(
+        (f(&v["parameters"], "omega_d_rad_s") / w - 1.0).abs() < 2e-3,
+        "{v}"
+    );
+}

@@ -341,7 +341,8 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     // The first crest the record shows, beside the fitted amplitude (the
     // envelope's at the first sample, or the release's up to a period
     // before it).
-    if let Some([time, time_error, amplitude, error]) = fit.first_crest() {
+    let interval = time.get(1).zip(time.first()).map_or(0.0, |(b, a)| b - a);
+    if let Some([time, time_error, amplitude, error]) = fit.first_crest(interval) {
         parameters.insert("first_crest_time_s", time);
         standard_errors.insert("first_crest_time_s", time_error);
         parameters.insert("first_crest_amplitude_rad", amplitude);

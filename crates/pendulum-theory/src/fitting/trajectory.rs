@@ -168,7 +168,12 @@ impl TrajectoryFit {
     /// at the envelope there; nonlinear: the fitted motion integrated from
     /// the release to its first turning point at or after the first sample
     /// (DOP853 at 1e-12). The error scales with the fitted amplitude's.
-    pub fn first_crest(&self) -> Option<[f64; 4]> {
+    ///
+    /// A crest before the first sample by less than half the first
+    /// sampling `interval` (s) or twice the time's error counts as the
+    /// record's: the record starts on it.
+    pub fn first_crest(&self, interval: f64) -> Option<[f64; 4]> {
+        let near = |lead: f64, error: f64| lead <= (2.0 * error).max(0.5 * interval);
         let p = &self.fit.parameters;
         let (a, a_error) = (p[0].abs(), self.fit.standard_errors[0]);
         let phase_error = self.fit.standard_errors[3];
@@ -177,7 +182,10 @@ impl TrajectoryFit {
                 let (wd, zeta, phase) = (p[1].abs(), p[2], p[3]);
                 let wn = wd / (1.0 - zeta * zeta).max(f64::MIN_POSITIVE).sqrt();
                 let pi = std::f64::consts::PI;
-                let t = if phase <= 0.0 {
+                // A crest before the first sample by less than twice the
+                // time's error is the record's first (it starts on it).
+                let time_error = phase_error / wd;
+                let t = if phase <= 0.0 || near(phase / wd, time_error) {
                     -phase / wd
                 } else {
                     (pi - phase) / wd
@@ -193,8 +201,10 @@ impl TrajectoryFit {
                 let ratio = release_period_ratio(a);
                 let lead = p[3].abs() * ratio / wn;
                 let time_error = phase_error * ratio / wn;
-                if lead <= 1e-9 * std::f64::consts::TAU / wn {
-                    return Some([0.0, time_error, a, a_error]);
+                // A release before the first sample by less than twice the
+                // time's error is the record's first crest (it starts on it).
+                if near(lead, time_error) {
+                    return Some([-lead, time_error, a, a_error]);
                 }
                 let (time, angle) = turning_point_after(p, lead)?;
                 let crest = angle.abs();

@@ -24,14 +24,13 @@ pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
     )?;
     let period = args.period.0;
     let uncertainty = args.period_uncertainty.map(|t| t.0);
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
     let r = amplitude(
         pendulum.length_m(),
         Some(pendulum.g_m_s2()),
         period,
         uncertainty,
     )
-    .map_err(|e| CliError::refused(&e, &[], &no_file))?;
+    .map_err(|e| common::refused(&e))?;
     let result = AmplitudeJson {
         result: &r,
         g_source: gravity.g_source,

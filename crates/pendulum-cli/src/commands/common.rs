@@ -12,8 +12,7 @@ use serde::Serialize;
 /// A library refusal of a field said of its flag (`--field-name`), with
 /// no file to name.
 pub fn refused(e: &Refusal) -> CliError {
-    let no_data = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    CliError::refused(e, &[], &no_data)
+    CliError::refused(e, &[], &|_, reason| CliError::other(reason))
 }
 
 /// Checks an amplitude in radians, attributing a refusal to `flag`.
@@ -138,10 +137,9 @@ pub fn damping(
     let Some((field, value)) = damping_given(args)? else {
         return Ok(None);
     };
-    let no_data = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
     pendulum_theory::damped::analysis::damping_given(&field, value, p, mass)
         .map(|(d, _)| Some(d))
-        .map_err(|e| CliError::refused(&e, &[], &no_data))
+        .map_err(|e| refused(&e))
 }
 
 /// What `damped` and `simulate` read from [`SwingArgs`].

@@ -2,6 +2,7 @@
 //! compensator that cancels it (a tube or collar, a gridiron, a mercury
 //! jar), optionally written back as a design file.
 
+use super::common;
 use crate::args::CompensateArgs;
 use crate::error::CliError;
 use crate::file::AtomicFile;
@@ -35,8 +36,7 @@ pub fn run(args: &CompensateArgs) -> Result<String, CliError> {
         tube_diameter: length("--tube-diameter", &args.tube_diameter)?,
         tube_bore: length("--tube-bore", &args.tube_bore)?,
     };
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    let result = compensate(&read, &input).map_err(|r| CliError::refused(&r, &[], &no_file))?;
+    let result = compensate(&read, &input).map_err(|e| common::refused(&e))?;
     let mut written_to = None;
     match (&args.write, &result.compensated) {
         (Some(path), Some(c)) => {

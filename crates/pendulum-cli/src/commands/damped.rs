@@ -52,13 +52,13 @@ pub fn run(args: &DampedArgs) -> Result<String, CliError> {
         extrema: args.extrema,
         force: args.force,
     };
-    let r = damped(&input).map_err(|e| refused(&e))?;
+    let r = damped(&input).map_err(|e| common::refused(&e))?;
     let trajectory = match &args.trajectory {
         Some(path) => Some(write_trajectory(args, path, &r)?),
         None => None,
     };
     if let Some(target) = &plot {
-        let duration = r.span(duration(args)?).map_err(|e| refused(&e))?;
+        let duration = r.span(duration(args)?).map_err(|e| common::refused(&e))?;
         render(target, &figure(&r, duration))?;
     }
     let json = DampedJson {
@@ -70,12 +70,6 @@ pub fn run(args: &DampedArgs) -> Result<String, CliError> {
     } else {
         Ok(text(&json))
     }
-}
-
-/// A library refusal said of its flag.
-fn refused(e: &pendulum_theory::analysis::Refusal) -> CliError {
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    CliError::refused(e, &[], &no_file)
 }
 
 /// `--duration`, if given.
@@ -199,11 +193,11 @@ fn write_trajectory(
     path: &std::path::Path,
     r: &Damped,
 ) -> Result<TrajectoryJson, CliError> {
-    let duration = r.span(duration(args)?).map_err(|e| refused(&e))?;
+    let duration = r.span(duration(args)?).map_err(|e| common::refused(&e))?;
     let interval = args.sample_interval.map(|h| h.0);
     let (interval, samples) = r
         .sampling(duration, interval, args.force)
-        .map_err(|e| refused(&e))?;
+        .map_err(|e| common::refused(&e))?;
     // Measured: 0.3 µs and about 42 bytes a row (bench/RESULTS.md).
     let rows = samples as f64;
     work::check_time(

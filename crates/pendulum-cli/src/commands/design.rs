@@ -110,9 +110,7 @@ pub fn run(args: &DesignArgs) -> Result<String, CliError> {
         humidity: args.humidity.map(|h| h.0 / 100.0),
         regulated_at_c: args.regulated_at.map(|t| t.0),
     };
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    let sheet = datasheet(&design, Some(gravity.g_m_s2), &air)
-        .map_err(|r| CliError::refused(&r, &[], &no_file))?;
+    let sheet = datasheet(&design, Some(gravity.g_m_s2), &air).map_err(|e| common::refused(&e))?;
     if args.json {
         return output::json(&DesignJson {
             file: args.file.display().to_string(),

@@ -21,9 +21,7 @@ pub fn run(args: &LengthArgs) -> Result<String, CliError> {
     let nominal = common::nominal(args.period, args.bph)
         .ok_or_else(|| CliError::other("give --period or --bph"))?;
     let amplitude = args.amplitude.map(|a| a.0);
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    let r = length(nominal, amplitude, Some(gravity.g_m_s2))
-        .map_err(|e| CliError::refused(&e, &[], &no_file))?;
+    let r = length(nominal, amplitude, Some(gravity.g_m_s2)).map_err(|e| common::refused(&e))?;
     if args.json {
         return output::json(&LengthJson {
             result: &r,

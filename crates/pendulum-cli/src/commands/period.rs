@@ -73,8 +73,7 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
         amplitudes,
         series_terms: args.series_terms.map(i64::from),
     };
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    let rows = table(&input).map_err(|r| CliError::refused(&r, &[], &no_file))?;
+    let rows = table(&input).map_err(|e| common::refused(&e))?;
     if let Some(target) = &plot {
         let first = rows[0].amplitude_deg;
         let last = rows[rows.len() - 1].amplitude_deg;

@@ -1,6 +1,7 @@
 //! `pendulum regulate`: from a clock's rate to the turns of its rating nut,
 //! or the weight on a regulating tray.
 
+use super::common;
 use crate::args::RegulateArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
@@ -23,9 +24,7 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
         divisions: args.nut_divisions,
     };
     let tray = args.tray.map(|t| t.0);
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    let result =
-        regulate(&pendulum, r, nut, tray).map_err(|e| CliError::refused(&e, &[], &no_file))?;
+    let result = regulate(&pendulum, r, nut, tray).map_err(|e| common::refused(&e))?;
     if args.json {
         return output::json(&result);
     }

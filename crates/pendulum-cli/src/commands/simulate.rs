@@ -65,10 +65,9 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         Some(_) => {
             let default = pendulum.small_angle_period() / SAMPLES_PER_PERIOD;
             let interval = args.sample_interval.map(|h| h.0);
-            let no_data = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
             let (h, _) =
                 pendulum_theory::analysis::sampling(interval, default, duration, args.force)
-                    .map_err(|e| CliError::refused(&e, &[], &no_data))?;
+                    .map_err(|e| common::refused(&e))?;
             Some(h)
         }
     };

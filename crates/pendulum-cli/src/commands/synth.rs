@@ -1,5 +1,6 @@
 //! `pendulum synth ticks`: a recording of a ticking clock with known truth.
 
+use super::common;
 use crate::args::SynthTicksArgs;
 use crate::audio::{pcm16, wav_header};
 use crate::error::CliError;
@@ -25,9 +26,7 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
         missing: number(args.missing, d.missing),
         seed: args.seed.unwrap_or(d.seed),
     };
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    spec.check()
-        .map_err(|r| CliError::refused(&r, &[], &no_file))?;
+    spec.check().map_err(|e| common::refused(&e))?;
     let (bph, duration, sample_rate) = (spec.beats_per_hour, spec.duration, spec.sample_rate);
     // The samples are made and written a block at a time: an hour at
     // 48 kHz is 345 MB of WAV but a few MB of memory.

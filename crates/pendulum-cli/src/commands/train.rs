@@ -9,8 +9,7 @@ use pendulum_theory::train::analysis::{train, train_for};
 
 pub fn run(args: &TrainArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let no_file = |_: Option<(&'static str, usize)>, reason: &str| CliError::other(reason);
-    let refused = |r: pendulum_theory::analysis::Refusal| CliError::refused(&r, &[], &no_file);
+    let refused = |r: pendulum_theory::analysis::Refusal| common::refused(&r);
     if let Some(bph) = args.bph.map(|b| b.0) {
         let found =
             train_for(bph, args.escape_teeth, args.tolerance.map(|t| t.0)).map_err(refused)?;

@@ -426,49 +426,36 @@ fn release_period_ratio(a: f64) -> f64 {
 /// The time after release (s) and angle (rad) of the crest one period after
 /// the release, for nonlinear parameters `[A, ω_n, ζ, φ, θ_off]`.
 fn crest_after_one_period(p: &[f64]) -> Option<(f64, f64)> {
-    let wn = p[1].abs();
-    let pendulum = Pendulum::with_standard_gravity(9.806_65 / (wn * wn)).ok()?;
-    let model = Model::new(pendulum, Damping::from_zeta(p[2].max(0.0)).ok()?, 0.0, 0.0).ok()?;
-    let amplitude = Amplitude::from_radians(p[0].abs().min(3.1)).ok()?;
-    struct Second(Option<(f64, f64)>);
-    impl Observer for Second {
-        fn turning_point(
-            &mut self,
-            tp: &crate::simulation::TurningPoint,
-        ) -> crate::simulation::Action {
-            if tp.index == 2 {
-                self.0 = Some((tp.time, tp.angle));
-                return crate::simulation::Action::Stop;
-            }
-            crate::simulation::Action::Continue
-        }
-    }
-    let options = Options {
-        duration: 1.5 * pendulum.period(amplitude),
-        tolerance: 1e-12,
-        method: Method::Dop853,
-        sample_interval: None,
-    };
-    let mut second = Second(None);
-    simulate(&model, amplitude, &options, &mut second).ok()?;
-    second.0
+    turning_point_where(p, 0.0, |index, _| index == 2)
 }
 
 /// The first turning point (time after the release, s, and signed angle,
 /// rad) at or after `after` seconds of the motion of nonlinear parameters
 /// `[A, ω_n, ζ, ...]` released from rest at `A`.
 fn turning_point_after(p: &[f64], after: f64) -> Option<(f64, f64)> {
+    turning_point_where(p, after, |index, time| index >= 1 && time >= after)
+}
+
+/// The first turning point `pick` (its index from the release, its time)
+/// takes, of the motion of nonlinear parameters `[A, ω_n, ζ, ...]`
+/// released from rest at `A`, within `span` s and a period and a half
+/// (DOP853 at 1e-12).
+fn turning_point_where(
+    p: &[f64],
+    span: f64,
+    pick: impl Fn(u64, f64) -> bool,
+) -> Option<(f64, f64)> {
     let wn = p[1].abs();
     let pendulum = Pendulum::with_standard_gravity(9.806_65 / (wn * wn)).ok()?;
     let model = Model::new(pendulum, Damping::from_zeta(p[2].max(0.0)).ok()?, 0.0, 0.0).ok()?;
     let amplitude = Amplitude::from_radians(p[0].abs().min(3.1)).ok()?;
-    struct After(f64, Option<(f64, f64)>);
-    impl Observer for After {
+    struct Pick<F>(F, Option<(f64, f64)>);
+    impl<F: Fn(u64, f64) -> bool> Observer for Pick<F> {
         fn turning_point(
             &mut self,
             tp: &crate::simulation::TurningPoint,
         ) -> crate::simulation::Action {
-            if tp.index >= 1 && tp.time >= self.0 {
+            if (self.0)(tp.index, tp.time) {
                 self.1 = Some((tp.time, tp.angle));
                 return crate::simulation::Action::Stop;
             }
@@ -476,12 +463,12 @@ fn turning_point_after(p: &[f64], after: f64) -> Option<(f64, f64)> {
         }
     }
     let options = Options {
-        duration: after + 1.5 * pendulum.period(amplitude),
+        duration: span + 1.5 * pendulum.period(amplitude),
         tolerance: 1e-12,
         method: Method::Dop853,
         sample_interval: None,
     };
-    let mut found = After(after, None);
+    let mut found = Pick(pick, None);
     simulate(&model, amplitude, &options, &mut found).ok()?;
     found.1
 }

@@ -232,6 +232,10 @@ def _trajectory_cases():
         "length_above_range": (t, th, {"length": 1e5}),
         "length_nan": (t, th, {"length": NAN}),
         "length_inf": (t, th, {"length": INF}),
+        # Issue 23's self-checks, warned alike: a length 20% off, times in ms.
+        "length_wrong": (tw, thw, {"length": 0.4}),
+        "times_in_ms": (t * 1000.0, th, {"length": 0.5}),
+        "times_in_ms_no_length": (t * 1000.0, th, {}),
     }
 
 
@@ -247,6 +251,15 @@ def test_fit_trajectory(name, tmp_path):
     for k, v in kw.items():
         args += [f"--{k}", cli_value(v, "m" if k == "length" else "")]
     check(args, lambda: pt.fit_trajectory(t, th, **kw), reader_refuses=t.size == 0)
+
+
+def test_self_checks_warn_from_python_too():
+    codes = {name: pt.fit_trajectory(TRAJECTORY[name][0], TRAJECTORY[name][1],
+                                     **TRAJECTORY[name][2])["warning_codes"]
+             for name in ("length_wrong", "times_in_ms", "times_in_ms_no_length")}
+    assert "gravity_off" in codes["length_wrong"]
+    assert "gravity_implausible" in codes["times_in_ms"]
+    assert "period_implausible" in codes["times_in_ms_no_length"]
 
 
 def test_a_three_second_track_warns_from_python_too():

@@ -642,6 +642,18 @@ mod self_checks {
     }
 
     #[test]
+    fn a_length_far_from_the_pendulum_s_is_named() {
+        // The 0.6 m pendulum given as 0.5 m: g 17% low, far beyond its
+        // error, and no unit explains it.
+        let (t, a) = record(1.0, 7);
+        let c = codes(&t, &a, Some((0.5, LengthSource::Given)));
+        assert_eq!(c, ["gravity_off"]);
+        // 2% off (a ruler's error on a short pendulum) is not warned.
+        let c = codes(&t, &a, Some((0.588, LengthSource::Given)));
+        assert!(c.is_empty(), "{c:?}");
+    }
+
+    #[test]
     fn crossings_count_only_through_the_band() {
         // Noise at the centre crosses nothing; a full swing crosses twice
         // a period.

@@ -23,6 +23,11 @@ pub const LENGTH_RANGE_M: std::ops::RangeInclusive<f64> = 1e-4..=1e4;
 /// pendulum's on Earth: 30%, beyond any place (9.78 to 9.83 m/s²) and any
 /// fair measurement, well within what a unit mistaken makes of it.
 pub const GRAVITY_TOLERANCE: f64 = 0.3;
+/// A fitted g further than this from standard gravity (relative), and
+/// beyond three of its standard errors, says the length is not the
+/// pendulum's: 5%, beyond any place on Earth (0.5%) and a length measured
+/// with a ruler.
+pub const GRAVITY_CHECK: f64 = 0.05;
 /// Residuals (rms) beyond this fraction of the record's largest swing mean
 /// the model does not follow the record.
 pub const RESIDUAL_OF_SWING: f64 = 0.25;
@@ -101,6 +106,12 @@ pub enum TrackWarning {
         /// `degrees` or `radians`: what the angles would then be.
         read_as: &'static str,
     },
+    /// g lies further than [`GRAVITY_CHECK`] and three standard errors
+    /// from standard gravity, and no unit explains it: the length.
+    GravityOff {
+        /// The fitted g, m/s².
+        g: f64,
+    },
     /// The residuals are a large part of the swing: a false minimum, or a
     /// record that is not this motion.
     PoorFit {
@@ -131,6 +142,7 @@ impl TrackWarning {
             TrackWarning::PoorFit { .. } => "poor_fit",
             TrackWarning::PeriodImplausible { .. } => "period_implausible",
             TrackWarning::AngleUnit { .. } => "angle_unit",
+            TrackWarning::GravityOff { .. } => "gravity_off",
             TrackWarning::CrossingsDiffer { .. } => "crossings_differ",
         }
     }
@@ -178,6 +190,14 @@ impl fmt::Display for TrackWarning {
                  (the swing's size sets the period's finite-amplitude correction)",
                 format_significant(*g, 5),
                 format_significant(*other, 5)
+            ),
+            TrackWarning::GravityOff { g } => write!(
+                f,
+                "g = {} m/s² is {}% from standard gravity, far beyond its standard error: the \
+                 length is most likely not the pendulum's (measure from the pivot to the bob's \
+                 centre; a bob that is not a point needs its equivalent length)",
+                format_significant(*g, 5),
+                format_significant(100.0 * (g / crate::STANDARD_GRAVITY - 1.0).abs(), 2)
             ),
             TrackWarning::PoorFit { rms, swing } => write!(
                 f,
@@ -331,6 +351,10 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
                 warnings.push(TrackWarning::GravityImplausible { g, likely });
             } else if let Some(w) = angle_unit_hint(g, se, largest_swing(theta)) {
                 warnings.push(w);
+            } else if (g - crate::STANDARD_GRAVITY).abs()
+                > (GRAVITY_CHECK * crate::STANDARD_GRAVITY).max(3.0 * se)
+            {
+                warnings.push(TrackWarning::GravityOff { g });
             }
         } else {
             warnings.push(TrackWarning::NoGravityFromLinear {

@@ -277,6 +277,17 @@ def beats(n=400, beat=1.0, rate=12.0, beat_error=0.002, jitter=1e-4, seed=3):
     return np.concatenate([[0.0], np.cumsum(d)])
 
 
+def gate_off_centre(crests=300, period=1.18, gate=0.2):
+    """Passes of a decaying swing through a gate off its centre: the
+    intervals alternate 0.70/0.48 s at the start, 0.97/0.20 s at the end."""
+    w = 2 * np.pi / period
+    a0, a1 = gate / np.cos(0.24 * w), gate / np.cos(0.10 * w)
+    k = np.arange(1, crests + 1)
+    half = np.arccos(gate / (a0 * (a1 / a0) ** (k / crests))) / w
+    t = np.column_stack([k * period - half, k * period + half]).ravel()
+    return t - t[0]  # (the binary's reader counts time from the first row)
+
+
 def _beats_cases():
     t = beats()
     fast = beats(beat=0.5, n=2000)
@@ -311,6 +322,8 @@ def _beats_cases():
         "period_far": (t, {"period": 20.0}),
         "not_beats": (t * 1e4, {}),
         "milliseconds": (t * 1e-4, {}),
+        "gate_off_centre": (gate_off_centre(), {"period": 1.18}),
+        "gate_off_centre_holes": (np.delete(gate_off_centre(), [41, 300, 301]), {}),
     }
 
 

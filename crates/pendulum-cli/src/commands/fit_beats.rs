@@ -154,9 +154,20 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         ),
     )
     .row("Rate", rate_text(a.rate_s_per_day, a.nominal_beat_s))
-    .row("Beat error", format!("{} ms", num(a.beat_error_ms, 3)))
+    .row(
+        "Beat error",
+        format!(
+            "{} ms (first beats {} ms, last {} ms)",
+            num(a.beat_error_ms, 3),
+            num(a.beat_error_start_ms, 3),
+            num(a.beat_error_end_ms, 3)
+        ),
+    )
     .row("Jitter", format!("{} ms", num(a.jitter_ms, 3)));
     let mut out = s.render();
+    for w in &a.warnings {
+        out.push_str(&format!("WARNING: {w}\n"));
+    }
     if !a.allan_deviation.is_empty() {
         out.push_str("\nAllan deviation of the rate\n");
         let rows: Vec<Vec<String>> = a

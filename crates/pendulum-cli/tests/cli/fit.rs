@@ -186,6 +186,46 @@ fn beats_like_a_timegrapher() {
 }
 
 #[test]
+fn beats_of_a_gate_off_centre() {
+    // Issue 23: a photogate off the bob's centre, passes alternating
+    // 0.70/0.48 s and drifting to 0.97/0.20 s as the swing decays (a
+    // 1.18 s period). Every pass is kept, the rate is the period's, and
+    // the drift is reported.
+    let dir = tempfile::tempdir().unwrap();
+    let period: f64 = 1.18;
+    let omega = std::f64::consts::TAU / period;
+    let gate = 0.2;
+    let (a0, a1) = (gate / (0.24 * omega).cos(), gate / (0.10 * omega).cos());
+    let crests = 300;
+    let mut text = String::from("time_s\n");
+    for k in 1..=crests {
+        let crest = f64::from(k) * period;
+        let a = a0 * (a1 / a0).powf(f64::from(k) / f64::from(crests));
+        let half = (gate / a).acos() / omega;
+        text.push_str(&format!("{}\n{}\n", crest - half, crest + half));
+    }
+    let path = write(dir.path(), "gate.csv", &text);
+    let v = json(&["fit", "beats", path.to_str().unwrap(), "--period", "1.18s"]);
+    assert_eq!(v["beats"], 600, "{v}");
+    assert_eq!(v["repaired"]["missed"], 0, "{v}");
+    assert_eq!(v["repaired"]["doubled"], 0, "{v}");
+    assert!(f(&v, "rate_s_per_day").abs() < 0.5, "{v}");
+    assert!((f(&v, "beat_error_start_ms") - 110.0).abs() < 10.0, "{v}");
+    assert!(f(&v, "beat_error_end_ms") > 350.0, "{v}");
+    assert_eq!(v["warning_codes"][0], "sides_drift", "{v}");
+    // A steady clock says nothing of the kind.
+    let steady: String = std::iter::once("time_s\n".to_string())
+        .chain(
+            (0..2000).map(|i| format!("{}\n", f64::from(i) + if i % 2 == 1 { 0.003 } else { 0.0 })),
+        )
+        .collect();
+    let path = write(dir.path(), "steady.csv", &steady);
+    let v = json(&["fit", "beats", path.to_str().unwrap()]);
+    assert_eq!(v["warning_codes"].as_array().unwrap().len(), 0, "{v}");
+    assert!((f(&v, "beat_error_end_ms") - 3.0).abs() < 1e-6, "{v}");
+}
+
+#[test]
 fn bad_files_name_the_file_the_line_and_the_column() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();

@@ -31,6 +31,57 @@ pub struct AllanRow {
     pub deviation_s_per_day: f64,
 }
 
+/// A beat error that changes over the record by more than this part of
+/// the beat (and [`DRIFT_SIGMA`] standard errors, and a fifth of the larger
+/// end) is reported as sides drifting apart: 5 ms on a seconds pendulum,
+/// 0.6 ms on a watch at 28,800 beats an hour.
+pub const DRIFT_OF_BEAT: f64 = 0.005;
+/// Standard errors a change of the beat error must exceed to be reported.
+pub const DRIFT_SIGMA: f64 = 5.0;
+
+/// What a person must know about a beat analysis.
+#[derive(Clone, Debug, PartialEq)]
+pub enum BeatWarning {
+    /// The tick and tock intervals drift apart (or together) over the
+    /// record: the mean beat error describes neither end.
+    SidesDrift {
+        /// Beat error at the start, ms.
+        start_ms: f64,
+        /// Beat error at the end, ms.
+        end_ms: f64,
+    },
+}
+
+impl BeatWarning {
+    /// A stable code for programs.
+    pub fn code(&self) -> &'static str {
+        match self {
+            BeatWarning::SidesDrift { .. } => "sides_drift",
+        }
+    }
+}
+
+impl std::fmt::Display for BeatWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            BeatWarning::SidesDrift { start_ms, end_ms } => write!(
+                f,
+                "the beat error goes from {} ms at the start to {} ms at the end: the ticks \
+                 and tocks drift apart (a gate off the bob's centre as the swing changes, or a \
+                 clock going out of beat); the mean beat error describes neither end",
+                format_significant(*start_ms, 3),
+                format_significant(*end_ms, 3)
+            ),
+        }
+    }
+}
+
+impl Serialize for BeatWarning {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
 /// Beats dropped and filled in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Repaired {
@@ -55,17 +106,35 @@ pub struct Beats {
     pub rate_s_per_day: Option<f64>,
     /// Half the tick-tock difference, ms.
     pub beat_error_ms: f64,
+    /// The same over the first 16 pairs of beats, ms.
+    pub beat_error_start_ms: f64,
+    /// The same over the last 16 pairs of beats, ms.
+    pub beat_error_end_ms: f64,
     /// Spread of the intervals about their tick or tock mean, ms.
     pub jitter_ms: f64,
     /// What was repaired.
     pub repaired: Repaired,
     /// The overlapping Allan deviation of the rate.
     pub allan_deviation: Vec<AllanRow>,
+    /// What a person must know about these figures.
+    pub warnings: Vec<BeatWarning>,
+    /// Their codes, in the same order (for programs).
+    pub warning_codes: Vec<&'static str>,
 }
 
 impl Beats {
     /// The result of an analysis of beat times.
     pub fn of(a: BeatAnalysis) -> Self {
+        let change = (a.beat_error_end_ms - a.beat_error_start_ms).abs();
+        let warnings: Vec<BeatWarning> = (a.beat_error_change_sigma > DRIFT_SIGMA
+            && change > 1e3 * DRIFT_OF_BEAT * a.mean_beat
+            && change > 0.2 * a.beat_error_start_ms.max(a.beat_error_end_ms))
+        .then_some(BeatWarning::SidesDrift {
+            start_ms: a.beat_error_start_ms,
+            end_ms: a.beat_error_end_ms,
+        })
+        .into_iter()
+        .collect();
         Self {
             beats: a.beats,
             mean_beat_s: a.mean_beat,
@@ -73,12 +142,16 @@ impl Beats {
             nominal_beat_s: a.nominal_beat,
             rate_s_per_day: a.rate_s_per_day,
             beat_error_ms: a.beat_error_ms,
+            beat_error_start_ms: a.beat_error_start_ms,
+            beat_error_end_ms: a.beat_error_end_ms,
             jitter_ms: a.jitter_ms,
             repaired: Repaired {
                 missed: a.repaired.missed,
                 doubled: a.repaired.doubled,
             },
             allan_deviation: a.allan_deviation.iter().map(allan_row).collect(),
+            warning_codes: warnings.iter().map(BeatWarning::code).collect(),
+            warnings,
         }
     }
 }

@@ -2,17 +2,31 @@
 //! records them: the figures a timegrapher shows, for any beat rate from one
 //! beat in ten seconds to twenty a second.
 //!
-//! * Gaps and doubles are repaired first: against the median interval, an
-//!   interval under half of it marks a doubled (spurious) beat, which is
-//!   dropped, and one of `k` times it marks `k - 1` missed beats, which are
-//!   filled in evenly, up to [`MAX_FILLED`] of them. A longer gap is a
-//!   pause in the record, not missed beats: how many beats it held cannot be
-//!   told from the times (a 28-hour pause at +4 s/day is 4.6 beats off a
-//!   whole count), so it is refused with its place, to split the record.
+//! * Gaps and doubles are repaired first, each side against its own
+//!   interval: a record's intervals alternate (tick, tock), and out of beat
+//!   (a clock, or a gate off the bob's centre) the two differ, up to one
+//!   being a small part of the other. Each side's expected interval follows
+//!   the record (smoothed over the last few beats, so a drifting beat error
+//!   is followed); a pass is placed at the nearest of the expected next
+//!   passes: at the last one (less than half the next interval after it) it
+//!   is a doubled (spurious) beat and dropped, at the `k`-th it means
+//!   `k - 1` missed beats, which are filled in at their expected places,
+//!   up to [`MAX_FILLED`] of them. With the two sides equal this is the
+//!   classic rule (half a beat, then the rounded number of beats). A pass
+//!   at its own side's interval is never dropped, however short that is. A
+//!   longer gap is a pause in the record, not missed beats: how many beats
+//!   it held cannot be told from the times (a 28-hour pause at +4 s/day is
+//!   4.6 beats off a whole count), so it is refused with its place, to split
+//!   the record.
 //! * The mean beat is the slope of the least-squares line of time against
-//!   beat number, as timers compute it (robust to the jitter of single beats).
+//!   beat number, as timers compute it (robust to the jitter of single beats),
+//!   with an intercept per side, so that a beat error neither tilts it nor,
+//!   when the sides drift symmetrically apart about the turning points (a
+//!   gate off centre as the swing decays), biases it.
 //! * Beat error is half the difference between the mean "tick" and "tock"
-//!   intervals (alternate beats), in ms, as timegraphers report it.
+//!   intervals (alternate beats), in ms, as timegraphers report it; taken
+//!   also over the first and the last 16 pairs of beats, so that sides
+//!   drifting apart are reported, not averaged away.
 //! * Jitter is the standard deviation of the intervals about their own
 //!   tick or tock mean.
 //! * The Allan deviation of the rate (overlapping estimator, IEEE 1139) at
@@ -65,6 +79,14 @@ pub struct BeatAnalysis {
     pub rate_s_per_day: Option<f64>,
     /// Half the tick-tock difference, ms.
     pub beat_error_ms: f64,
+    /// The beat error over the record's first 16 pairs of beats (or its
+    /// first half, if shorter), ms.
+    pub beat_error_start_ms: f64,
+    /// The same over the last 16 pairs, ms.
+    pub beat_error_end_ms: f64,
+    /// The change between the two in its standard errors (from the
+    /// scatter at each end; 0 when too few beats to tell).
+    pub beat_error_change_sigma: f64,
     /// Spread of the intervals about their tick or tock mean, ms.
     pub jitter_ms: f64,
     /// What was repaired.
@@ -137,7 +159,7 @@ pub fn analyse_beats(times: &[f64], nominal_beat: Option<f64>) -> Result<BeatAna
 /// refused ([`BeatError::Gap`]).
 pub const MAX_FILLED: usize = 10;
 
-/// Timestamps buffered to find the typical interval before the stream starts.
+/// Timestamps buffered to find the typical beat before the stream starts.
 const WARM_UP: usize = 1001;
 /// The longest averaging time of the Allan deviation, in beats: its ring
 /// buffer of `2m + 1` time errors is the only memory that grows with `m`.
@@ -145,10 +167,11 @@ pub const MAX_ALLAN_BEATS: usize = 1 << 16;
 
 /// The beat analysis fed one timestamp at a time, in memory independent of
 /// the number of beats (about 2 MB: the Allan deviation's buffers). The
-/// first 1001 timestamps set the typical interval for the repairs (their
-/// median); then every beat updates running sums: the regression of time
-/// on beat number, the tick and tock intervals (Welford's mean and
-/// variance), and, for each `m = 2^k`, the overlapping Allan sum over a
+/// first 1001 timestamps set the typical beat (half their median period)
+/// and each side's interval at the start; then every beat updates running
+/// sums: the regression of time on beat number, the tick and tock
+/// intervals (Welford's mean and variance), the beat error at the ends, and,
+/// for each `m = 2^k`, the overlapping Allan sum over a
 /// ring buffer of the last `2m + 1` time errors. The time error is taken
 /// against the typical interval; the Allan deviation's second differences
 /// cancel any linear drift, so the final mean beat is not needed for it.
@@ -179,6 +202,174 @@ pub struct BeatStream {
     allan: Vec<AllanSum>,
     /// The longest gap filled with missed beats; 0 for [`MAX_FILLED`].
     max_filled: usize,
+    /// Each side's expected interval, followed through the record.
+    sides: Sides,
+    /// The interval that ended at the last beat accepted, s.
+    last_interval: f64,
+    /// The half tick-tock difference at the record's two ends.
+    ends: Ends,
+}
+
+/// The smoothing of each side's expected interval: each interval moves it
+/// a quarter of the way, so that it follows a beat error drifting by a few
+/// percent a beat and averages the jitter of four.
+const SIDE_SMOOTHING: f64 = 0.25;
+/// The intervals the starting sides are judged on.
+const FIRST_INTERVALS: usize = 40;
+
+/// The interval expected to end at a pass of each side: index
+/// `(n - 1) % 2` for the `n`-th pass.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Sides {
+    expected: [f64; 2],
+}
+
+/// Where a pass falls among the expected next ones.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Place {
+    /// Nearer the last pass than the next: a doubled beat.
+    Doubled,
+    /// At the `k`-th next pass: `k - 1` missed before it.
+    Beats(usize),
+    /// Beyond the most beats that may be filled in; about this many beats.
+    Pause(f64),
+}
+
+impl Sides {
+    /// The expected time from the last pass to the `k`-th next one, when
+    /// the next interval is of side `side`.
+    fn ahead(&self, side: usize, k: usize) -> f64 {
+        (0..k).map(|j| self.expected[(side + j) % 2]).sum()
+    }
+
+    /// Where a pass `gap` after the last one falls, the next interval being
+    /// of side `side`, with at most `limit` missed beats filled in: at the
+    /// nearest of the expected passes (0 = the last one itself).
+    fn place(&self, gap: f64, side: usize, limit: usize) -> Place {
+        let mut at = 0.0;
+        let mut k = 0;
+        loop {
+            let next = at + self.expected[(side + k) % 2];
+            if gap < 0.5 * (at + next) {
+                return if k == 0 {
+                    Place::Doubled
+                } else {
+                    Place::Beats(k)
+                };
+            }
+            if k > limit {
+                let beat = 0.5 * (self.expected[0] + self.expected[1]);
+                return Place::Pause(gap / beat);
+            }
+            at = next;
+            k += 1;
+        }
+    }
+
+    /// Moves side `side`'s expectation toward an interval measured.
+    fn learn(&mut self, side: usize, interval: f64) {
+        self.expected[side] += SIDE_SMOOTHING * (interval - self.expected[side]);
+    }
+
+    /// Repairs (missed plus doubled) the rule would make over `times`.
+    fn repairs_over(mut self, times: &[f64]) -> usize {
+        let (mut last, mut n, mut repairs) = (times[0], 1, 0);
+        for &t in &times[1..] {
+            let side = (n - 1) % 2;
+            match self.place(t - last, side, MAX_FILLED) {
+                Place::Doubled => repairs += 1,
+                Place::Beats(k) => {
+                    if k == 1 {
+                        self.learn(side, t - last);
+                    }
+                    repairs += k - 1;
+                    n += k;
+                    last = t;
+                }
+                Place::Pause(_) => return usize::MAX,
+            }
+        }
+        repairs
+    }
+
+    /// The sides at the record's start, from its first timestamps and its
+    /// median `period` (two beats): the medians of the alternate intervals
+    /// among the first [`FIRST_INTERVALS`], either way round, or half the
+    /// period each, whichever the rule repairs least over them (a missed or
+    /// doubled beat among them swaps the sides after it).
+    fn at_start(times: &[f64], period: f64) -> Self {
+        let first = &times[..times.len().min(FIRST_INTERVALS + 1)];
+        let intervals: Vec<f64> = first.windows(2).map(|w| w[1] - w[0]).collect();
+        let side = |k: usize| median(intervals.iter().skip(k).step_by(2).copied().collect());
+        let (a, b) = (side(0), side(1));
+        [[a, b], [b, a], [0.5 * period; 2]]
+            .into_iter()
+            .map(|expected| Sides { expected })
+            .filter(|s| s.expected.iter().all(|&e| e > 0.0))
+            .min_by_key(|s| s.repairs_over(first))
+            .unwrap_or(Sides {
+                expected: [0.5 * period; 2],
+            })
+    }
+}
+
+/// The median of `values` (the upper one of an even count; 0 for none).
+fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(0.0)
+}
+
+/// The pairs of intervals the beat error is taken over at each end of the
+/// record.
+const END_PAIRS: usize = 16;
+
+/// The half tick-tock difference of the first and last [`END_PAIRS`]
+/// pairs of intervals.
+#[derive(Clone, Debug, Default)]
+struct Ends {
+    first: Vec<f64>,
+    last: std::collections::VecDeque<f64>,
+    pairs: usize,
+}
+
+impl Ends {
+    fn push(&mut self, half_difference: f64) {
+        if self.first.len() < END_PAIRS {
+            self.first.push(half_difference);
+        }
+        if self.last.len() == END_PAIRS {
+            self.last.pop_front();
+        }
+        self.last.push_back(half_difference);
+        self.pairs += 1;
+    }
+
+    /// The mean half difference over the first and the last pairs (each at
+    /// most half the record), and their difference in its standard errors
+    /// (from the scatter within each end; 0 for fewer than four pairs).
+    fn ends(&self) -> (f64, f64, f64) {
+        let w = END_PAIRS.min(self.pairs / 2);
+        if w < 2 {
+            let all = self.first.iter().sum::<f64>() / self.first.len().max(1) as f64;
+            return (all, all, 0.0);
+        }
+        let stats = |v: Vec<f64>| {
+            let mean = v.iter().sum::<f64>() / w as f64;
+            let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (w - 1) as f64;
+            (mean, var)
+        };
+        let (a, va) = stats(self.first[..w].to_vec());
+        let (b, vb) = stats(self.last.iter().rev().take(w).copied().collect());
+        let error = ((va + vb) / w as f64).sqrt();
+        let sigma = if a == b {
+            0.0
+        } else if error > 0.0 {
+            (b - a).abs() / error
+        } else {
+            f64::MAX
+        };
+        (a, b, sigma)
+    }
 }
 
 #[derive(Clone, Copy, Debug, Default)]
@@ -246,9 +437,11 @@ impl BeatStream {
     /// Sets the typical interval from the buffered timestamps and replays them.
     fn start(&mut self) -> Result<(), BeatError> {
         let buffered = std::mem::take(&mut self.warm_up);
-        let mut intervals: Vec<f64> = buffered.windows(2).map(|w| w[1] - w[0]).collect();
-        intervals.sort_by(f64::total_cmp);
-        self.typical = intervals[intervals.len() / 2];
+        // The median period (two beats) is the same whatever the beat
+        // error; the median beat is not once the sides differ much.
+        let period = median(buffered.windows(3).map(|w| w[2] - w[0]).collect());
+        self.typical = 0.5 * period;
+        self.sides = Sides::at_start(&buffered, period);
         self.origin = buffered[0];
         // Every averaging time from the first beat, so that the sums are
         // exactly the overlapping estimator's.
@@ -267,39 +460,43 @@ impl BeatStream {
         Ok(())
     }
 
-    /// Drops a doubled beat, fills in missed ones, then accepts `t` (the
-    /// `index`-th timestamp); refuses a pause of more than [`MAX_FILLED`]
-    /// missed beats.
+    /// Drops a doubled beat, fills in missed ones at their sides' expected
+    /// places, then accepts `t` (the `index`-th timestamp); refuses a pause
+    /// of more than [`MAX_FILLED`] missed beats.
     fn repaired(&mut self, t: f64, index: usize) -> Result<(), BeatError> {
         let gap = t - self.last;
-        if gap < 0.5 * self.typical {
-            self.repairs.doubled += 1;
-            return Ok(());
-        }
-        let beats = gap / self.typical;
         let limit = if self.max_filled == 0 {
             MAX_FILLED
         } else {
             self.max_filled
         };
-        if beats > limit as f64 + 1.5 {
-            return Err(BeatError::Gap {
+        let side = (self.count - 1) % 2;
+        match self.sides.place(gap, side, limit) {
+            Place::Doubled => {
+                self.repairs.doubled += 1;
+                Ok(())
+            }
+            Place::Pause(beats) => Err(BeatError::Gap {
                 index,
                 time: t,
                 gap,
                 beats: beats.round(),
-            });
-        }
-        let k = beats.round() as usize;
-        if k >= 2 {
-            let last = self.last;
-            for j in 1..k {
-                self.accept(last + gap * j as f64 / k as f64);
+            }),
+            Place::Beats(k) => {
+                if k == 1 {
+                    self.sides.learn(side, gap);
+                } else {
+                    // Spread over the gap as the sides expect.
+                    let (last, whole) = (self.last, self.sides.ahead(side, k));
+                    for j in 1..k {
+                        self.accept(last + gap * self.sides.ahead(side, j) / whole);
+                    }
+                    self.repairs.missed += k - 1;
+                }
+                self.accept(t);
+                Ok(())
             }
-            self.repairs.missed += k - 1;
         }
-        self.accept(t);
-        Ok(())
     }
 
     fn accept(&mut self, t: f64) {
@@ -307,7 +504,12 @@ impl BeatStream {
         let x = t - self.origin;
         if self.count > 0 {
             let parity = (self.count - 1) % 2;
-            self.parity[parity].push(t - self.last);
+            let interval = t - self.last;
+            self.parity[parity].push(interval);
+            if parity == 1 {
+                self.ends.push(0.5 * (self.last_interval - interval));
+            }
+            self.last_interval = interval;
         }
         let error = x - n * self.typical;
         let side = self.count % 2;
@@ -367,6 +569,7 @@ impl BeatStream {
                 }
             })
             .collect();
+        let (start, end, change) = self.ends.ends();
         Ok(BeatAnalysis {
             beats: self.count,
             mean_beat,
@@ -374,6 +577,9 @@ impl BeatStream {
             nominal_beat,
             rate_s_per_day: nominal_beat.map(|nominal| 86_400.0 * (nominal / mean_beat - 1.0)),
             beat_error_ms: 1e3 * 0.5 * (tick.mean - tock.mean).abs(),
+            beat_error_start_ms: 1e3 * start.abs(),
+            beat_error_end_ms: 1e3 * end.abs(),
+            beat_error_change_sigma: change,
             jitter_ms: 1e3 * spread.sqrt(),
             repaired: self.repairs,
             allan_deviation,
@@ -529,6 +735,149 @@ mod tests {
         short.retain(|&x| !(40.0..50.0).contains(&x));
         let a = analyse_beats(&short, Some(1.0)).unwrap();
         assert_eq!(a.repaired.missed, 10);
+    }
+
+    /// Passes of a decaying pendulum through a gate off its centre (at
+    /// `gate` rad): `θ = A e^{-t/τ} cos ω t` crosses `gate` at
+    /// `ω t = 2πk ± arccos(gate / A)`, so the intervals alternate short
+    /// and long, the short one shrinking as the swing decays.
+    fn off_centre_gate(
+        period: f64,
+        amplitude: f64,
+        gate: f64,
+        tau: f64,
+        passes: usize,
+    ) -> Vec<f64> {
+        let omega = std::f64::consts::TAU / period;
+        let mut times = Vec::new();
+        let mut k = 0.0;
+        while times.len() < passes {
+            let crest = k * period;
+            // The amplitude at this crest (it hardly changes in a period).
+            let a = amplitude * (-crest / tau).exp();
+            let half = (gate / a).acos() / omega;
+            times.push(crest - half);
+            times.push(crest + half);
+            k += 1.0;
+        }
+        times.retain(|&t| t > 0.0);
+        times.truncate(passes);
+        times
+    }
+
+    #[test]
+    fn a_gate_off_centre_keeps_every_pass() {
+        // Issue 23's photogate: passes alternating 0.70/0.48 s drifting to
+        // 0.97/0.20 s, a period of 1.18 s. The rule against one median
+        // interval dropped the short passes and invented others.
+        let period = 1.18;
+        let omega = std::f64::consts::TAU / period;
+        // The short interval (beyond the gate, about a crest) is
+        // 2 arccos(gate / A) / ω: 0.48 s at the start, 0.20 s at the end.
+        let gate = 0.2;
+        let a0 = gate / (0.24 * omega).cos();
+        let a_end = gate / (0.10 * omega).cos();
+        let passes = 400;
+        let duration = passes as f64 / 2.0 * period;
+        let tau = duration / (a0 / a_end).ln();
+        let times = off_centre_gate(period, a0, gate, tau, passes);
+        let a = analyse_beats(&times, Some(0.5 * period)).unwrap();
+        assert_eq!(a.repaired, Repairs::default(), "{a:?}");
+        assert_eq!(a.beats, times.len());
+        assert!(a.rate_s_per_day.unwrap().abs() < 0.5, "{a:?}");
+        // The sides drift apart: from (0.70 - 0.48)/2 to (0.97 - 0.20)/2.
+        // Averaged over 16 pairs at each end: 110 ms at the first beat, and
+        // over the last pairs the mean of (long - short) / 2 as generated.
+        assert!((a.beat_error_start_ms - 110.0).abs() < 10.0, "{a:?}");
+        let last: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
+        let last = &last[last.len() - 32..];
+        let end = 1e3
+            * last
+                .chunks(2)
+                .map(|p| 0.5 * (p[0] - p[1]).abs())
+                .sum::<f64>()
+            / 16.0;
+        assert!(
+            (a.beat_error_end_ms - end).abs() < 1e-6 * end,
+            "{a:?} against {end}"
+        );
+        assert!(end > 350.0);
+        assert!(a.beat_error_change_sigma > 5.0, "{a:?}");
+        // A pass missed and one doubled on the short side are repaired
+        // as such, at the short side's place.
+        let mut broken = times.clone();
+        let short_at = 301;
+        broken.remove(short_at);
+        broken.insert(100, broken[99] + 0.05);
+        let b = analyse_beats(&broken, Some(0.5 * period)).unwrap();
+        assert_eq!(
+            b.repaired,
+            Repairs {
+                missed: 1,
+                doubled: 1
+            }
+        );
+        assert!((b.rate_s_per_day.unwrap() - a.rate_s_per_day.unwrap()).abs() < 1.0);
+    }
+
+    #[test]
+    fn out_of_beat_clocks_repaired_side_by_side() {
+        // Clocks 0-40% out of beat (one interval up to 2.3 times the
+        // other), 0.5% jitter, every 37th beat missed and a spurious pass
+        // early in every 53rd interval: each repair counted as made, the
+        // rate unmoved by them.
+        let mut seed = 7_u64;
+        let mut uniform = move || {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for case in 0..40 {
+            let beat = 0.25 + 2.0 * uniform();
+            let out = 0.4 * beat * (case as f64 / 39.0);
+            let rate = 20.0 * (uniform() - 0.5);
+            let mean = beat / (1.0 + rate / 86_400.0);
+            let mut clean = vec![0.0];
+            for i in 1..1200 {
+                let side = if i % 2 == 1 { out } else { -out };
+                let jitter = 0.005 * beat * (uniform() - 0.5);
+                clean.push(clean[i - 1] + mean + side + jitter);
+            }
+            let truth = analyse_beats(&clean, Some(beat)).unwrap();
+            let mut times = Vec::new();
+            let (mut missed, mut doubled) = (0, 0);
+            for i in 0..clean.len() {
+                if i % 37 == 20 {
+                    missed += 1;
+                    continue;
+                }
+                times.push(clean[i]);
+                if i % 53 == 30 {
+                    let f = 0.05 + 0.3 * uniform();
+                    times.push(clean[i] + f * (clean[i + 1] - clean[i]));
+                    doubled += 1;
+                }
+            }
+            let a = analyse_beats(&times, Some(beat)).unwrap();
+            assert_eq!(a.repaired, Repairs { missed, doubled }, "case {case}");
+            assert_eq!(a.beats, clean.len(), "case {case}");
+            let (r, t) = (a.rate_s_per_day.unwrap(), truth.rate_s_per_day.unwrap());
+            assert!((r - t).abs() < 0.5, "case {case}: {r} against {t}");
+            assert!(
+                (a.beat_error_ms - 1e3 * out).abs() < 0.02 * beat * 1e3,
+                "case {case}: {} against {}",
+                a.beat_error_ms,
+                1e3 * out
+            );
+        }
+    }
+
+    #[test]
+    fn a_steady_beat_error_has_no_trend() {
+        let a = analyse_beats(&clock(2001, 1.0, 0.002), None).unwrap();
+        assert!((a.beat_error_start_ms - 2.0).abs() < 1e-6, "{a:?}");
+        assert!((a.beat_error_end_ms - 2.0).abs() < 1e-6, "{a:?}");
     }
 
     #[test]

@@ -426,12 +426,13 @@ mod trajectory {
                 covered += 1;
             }
             let phase = fit.fit.parameters[3];
-            if (0.0..std::f64::consts::TAU).contains(&phase) {
+            let pi = std::f64::consts::PI;
+            if (-0.5 * pi..2.0 * pi).contains(&phase) {
                 phases_in_range += 1;
             }
         }
         eprintln!(
-            "nonlinear g 1-sigma coverage {covered} of 100; phase in [0, 2π) {phases_in_range}"
+            "nonlinear g 1-sigma coverage {covered} of 100; phase in [-π/2, 2π) {phases_in_range}"
         );
         assert!((55..=80).contains(&covered), "coverage {covered}");
         assert_eq!(phases_in_range, 100);

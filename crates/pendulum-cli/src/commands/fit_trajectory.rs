@@ -103,12 +103,19 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     }
     let a = &result.analysis;
     let mut out = format!(
-        "{}: {} points ({}), {} model\n",
+        "{}: {} points ({}), {} model, {} damping\n",
         result.file,
         a.points,
         result.format.describe(),
-        a.model
+        a.model,
+        a.damping_law
     );
+    if a.held_samples > 0 {
+        out.push_str(&format!(
+            "  the first {} samples hold the bob at rest before its release: not fitted\n",
+            a.held_samples
+        ));
+    }
     for (name, value) in &a.parameters {
         let note = if a.undetermined.contains(name) {
             "  (not determined)"

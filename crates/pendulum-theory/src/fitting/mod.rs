@@ -140,6 +140,30 @@ pub fn fit_curve(
     sigma: Option<&[f64]>,
     initial: &[f64],
 ) -> Result<Fit, FitError> {
+    fit_with(curve, x, y, sigma, initial, 200)
+}
+
+/// [`fit_curve`] unweighted, giving up after `patience` evaluations per
+/// parameter (and one) where [`fit_curve`] allows 200: for costly curves
+/// tried on the chance that they fit better.
+pub fn fit_curve_patient(
+    curve: &impl Curve,
+    x: &[f64],
+    y: &[f64],
+    initial: &[f64],
+    patience: usize,
+) -> Result<Fit, FitError> {
+    fit_with(curve, x, y, None, initial, patience)
+}
+
+fn fit_with(
+    curve: &impl Curve,
+    x: &[f64],
+    y: &[f64],
+    sigma: Option<&[f64]>,
+    initial: &[f64],
+    patience: usize,
+) -> Result<Fit, FitError> {
     let (n, k) = (x.len(), initial.len());
     if n <= k {
         return Err(FitError::TooFewPoints {
@@ -156,7 +180,7 @@ pub fn fit_curve(
         p: DVector::from_column_slice(initial),
     };
     let (problem, report) = LevenbergMarquardt::new()
-        .with_patience(200)
+        .with_patience(patience)
         .minimize(problem);
     if !report.termination.was_successful() {
         return Err(FitError::NoConvergence(format!("{:?}", report.termination)));
@@ -188,6 +212,23 @@ pub fn fit_curve(
         bic: log_likelihood_term + k as f64 * nf.ln(),
         residuals,
     })
+}
+
+/// The independent noise of a series from its fourth differences, which
+/// cancel any smooth pattern: `1.4826 · median|Δ⁴r| / √70` (a normal
+/// deviate's robust deviation; `Δ⁴` of white noise has variance `70σ²`).
+/// `None` for fewer than 20 values or none that differ.
+pub fn noise_of(values: &[f64]) -> Option<f64> {
+    if values.len() < 20 {
+        return None;
+    }
+    let mut d4: Vec<f64> = values
+        .windows(5)
+        .map(|w| (w[0] - 4.0 * w[1] + 6.0 * w[2] - 4.0 * w[3] + w[4]).abs())
+        .collect();
+    d4.sort_by(f64::total_cmp);
+    let noise = 1.4826 * d4[d4.len() / 2] / 70f64.sqrt();
+    (noise > 0.0 && noise.is_finite()).then_some(noise)
 }
 
 /// Least-squares line `y = a + b x`: `(a, b)`.

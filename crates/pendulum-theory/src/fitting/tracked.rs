@@ -4,6 +4,7 @@
 //! command line's `fit trajectory` and Python's `fit_trajectory` are this
 //! call.
 
+pub use super::noise_of;
 use super::rundown::{check_pairs, check_times};
 use super::trajectory::{fit_trajectory, largest_swing, TrajectoryModel};
 use crate::analysis::{judge_work, require_finite, require_finite_samples, Refusal};
@@ -31,6 +32,10 @@ pub const GRAVITY_CHECK: f64 = 0.05;
 /// Residuals (rms) beyond this fraction of the record's largest swing mean
 /// the model does not follow the record.
 pub const RESIDUAL_OF_SWING: f64 = 0.25;
+/// Residuals (rms) beyond this many times the record's own sample-to-sample
+/// noise say the model leaves a pattern in them.
+pub const RESIDUAL_OF_NOISE: f64 = 1.5;
+
 /// The band about the offset a zero crossing must cross, as a fraction of
 /// the largest swing (so that noise at the centre counts no crossing).
 pub const CROSSING_BAND: f64 = 0.1;
@@ -120,6 +125,14 @@ pub enum TrackWarning {
         /// The record's largest swing, rad.
         swing: f64,
     },
+    /// The residuals are larger than the record's own noise: the model
+    /// leaves a pattern (or the tracking errors are correlated).
+    ResidualsExceedNoise {
+        /// Residual rms, rad.
+        rms: f64,
+        /// The noise from the residuals' fourth differences, rad.
+        noise: f64,
+    },
     /// The fitted curve crosses the centre a different number of times
     /// than the data do: its frequency is not the record's.
     CrossingsDiffer {
@@ -144,6 +157,7 @@ impl TrackWarning {
             TrackWarning::AngleUnit { .. } => "angle_unit",
             TrackWarning::GravityOff { .. } => "gravity_off",
             TrackWarning::CrossingsDiffer { .. } => "crossings_differ",
+            TrackWarning::ResidualsExceedNoise { .. } => "residuals_exceed_noise",
         }
     }
 }
@@ -209,6 +223,17 @@ impl fmt::Display for TrackWarning {
                 format_significant(100.0 * rms / swing, 2),
                 format_significant(swing.to_degrees(), 3)
             ),
+            TrackWarning::ResidualsExceedNoise { rms, noise } => write!(
+                f,
+                "the residuals (rms {}°) are {} times the record's sample-to-sample noise ({}°): \
+                 the model leaves a pattern in them (a damping the laws fitted do not describe, a \
+                 bob that is not a point, the camera's perspective, a drifting tracker) or the \
+                 tracking errors are correlated; the standard errors, which assume independent \
+                 errors, are too small by up to that factor",
+                format_significant(rms.to_degrees(), 3),
+                format_significant(rms / noise, 2),
+                format_significant(noise.to_degrees(), 3)
+            ),
             TrackWarning::CrossingsDiffer { data, model } => write!(
                 f,
                 "the fitted curve crosses the centre {model} times where the data cross it \
@@ -241,6 +266,13 @@ pub struct Track {
     pub model: &'static str,
     /// The model asked for (`auto`, `linear` or `nonlinear`).
     pub model_requested: &'static str,
+    /// The damping laws fitted: `viscous` (always for the linear model),
+    /// or quadratic drag (`quadratic_drag_per_rad`) and dry friction
+    /// (`friction_angle_rad`) beside it where the record shows them.
+    pub damping_law: &'static str,
+    /// Samples at the start where the bob was held before its release,
+    /// left out of the fit (their residuals against the release angle).
+    pub held_samples: usize,
     /// The fitted parameters by name (and `g_m_s2` with a length).
     pub parameters: BTreeMap<&'static str, f64>,
     /// Their standard errors.
@@ -405,6 +437,12 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             swing,
         });
     }
+    if let Some(noise) = noise_of(&fit.fit.residuals[fit.held_samples..]) {
+        let rms = fit.fit.residual_rms;
+        if rms > RESIDUAL_OF_NOISE * noise {
+            warnings.push(TrackWarning::ResidualsExceedNoise { rms, noise });
+        }
+    }
     let band = CROSSING_BAND * swing;
     let data = crossings(theta.iter().copied(), offset, band);
     let model = crossings(
@@ -422,6 +460,8 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             TrajectoryModel::Nonlinear => "nonlinear",
         },
         model_requested: requested,
+        damping_law: fit.law.name(),
+        held_samples: fit.held_samples,
         parameters,
         standard_errors,
         residual_rms_rad: fit.fit.residual_rms,

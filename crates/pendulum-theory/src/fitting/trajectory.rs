@@ -1,17 +1,28 @@
 //! A pendulum's parameters from its tracked angle against time (video
 //! tracking: 30 to 1000 samples a second, noisy, with an unknown zero).
 //!
-//! Two models, five parameters each:
+//! Two models, five parameters each (the nonlinear one up to seven):
 //! * linear, the free vibration of seed section 1-4 about an offset:
 //!   `θ(t) = θ_off + A e^{-ζω_n t} cos(ω_d t + φ)`, `ω_n = ω_d / sqrt(1 - ζ²)`;
 //!   parameters `A, ω_d, ζ, φ, θ_off`;
 //! * nonlinear, the full equation `θ'' + 2ζω_n θ' + ω_n² sin θ = 0`
 //!   integrated inside the fit ([`crate::simulation`], DOP853 at 1e-12),
-//!   released from rest at amplitude `A` at the last crest at or before the
-//!   first sample; parameters `A, ω_n, ζ, φ, θ_off`, the phase reported as
-//!   the fraction of the true (finite-amplitude) period, `φ ∈ [0, 2π)`, by
-//!   which the release precedes the first sample. It is started from the
-//!   linear fit.
+//!   released from rest at amplitude `A` at a crest: the last at or before
+//!   the first sample, or the first after it when that is within a quarter
+//!   period (the samples before it are then the motion's mirror image);
+//!   parameters `A, ω_n, ζ, φ, θ_off`, the phase reported as the fraction
+//!   of the true (finite-amplitude) period by which the release precedes
+//!   the first sample (`φ` in `(-π/2, 2π)`, negative for a release after
+//!   it). A bob held at the start is left out ([`held_start`]). It is started from the
+//!   linear fit. Beside the viscous damping, quadratic air drag
+//!   `b θ'|θ'|` and dry friction (a friction angle `r`: the torque of a
+//!   pivot's friction as an angle of the bob, [`crate::forces`]) are each
+//!   tried, from the viscous fit, and kept when they lower the Bayesian
+//!   information criterion with the coefficient determined (beyond two
+//!   standard errors): a pendulum in air at a large swing, or on a knife
+//!   edge, decays by neither law alone, and a viscous fit to it misplaces
+//!   the first crest by tens of standard errors and g by up to fifty
+//!   (measured over the generated records of `tests/coverage.rs`).
 //!
 //! Both are fitted over growing windows: the first four periods, then
 //! twice as long each time, each fit started from the last, the last the
@@ -27,7 +38,7 @@
 //! the exact period ratio at the amplitude in the middle of the record);
 //! the nonlinear model has `ω_n` directly.
 
-use super::{fit_curve, Curve, Fit, FitError};
+use super::{fit_curve, fit_curve_patient, Curve, Fit, FitError};
 use crate::damped::State;
 use crate::damping::Damping;
 use crate::pendulum::{Amplitude, Pendulum};
@@ -44,11 +55,69 @@ pub enum TrajectoryModel {
     Nonlinear,
 }
 
+/// The damping laws of the nonlinear model beside the viscous one.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Law {
+    /// Quadratic air drag, `b θ'|θ'|`.
+    pub quadratic: bool,
+    /// Dry friction at the pivot.
+    pub friction: bool,
+}
+
+impl Law {
+    /// Viscous damping alone.
+    pub const VISCOUS: Law = Law {
+        quadratic: false,
+        friction: false,
+    };
+
+    /// The name, as the decay fit names laws.
+    pub fn name(self) -> &'static str {
+        match (self.friction, self.quadratic) {
+            (false, false) => "viscous",
+            (false, true) => "viscous+quadratic",
+            (true, false) => "viscous+coulomb",
+            (true, true) => "viscous+coulomb+quadratic",
+        }
+    }
+
+    /// The JSON names of the parameters it adds.
+    fn extra_names(self) -> Vec<&'static str> {
+        let mut out = Vec::new();
+        if self.quadratic {
+            out.push("quadratic_drag_per_rad");
+        }
+        if self.friction {
+            out.push("friction_angle_rad");
+        }
+        out
+    }
+
+    /// The full parameter set `[A, ω_n, ζ, φ, θ_off, b, r]` of fitted
+    /// parameters `p` (the laws absent are 0).
+    fn full(self, p: &[f64]) -> [f64; 7] {
+        let mut out = [0.0; 7];
+        out[..5].copy_from_slice(&p[..5]);
+        let mut next = 5;
+        if self.quadratic {
+            out[5] = p[next].abs();
+            next += 1;
+        }
+        if self.friction {
+            out[6] = p[next].abs();
+        }
+        out
+    }
+}
+
 /// The fitted trajectory.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TrajectoryFit {
     /// The model.
     pub model: TrajectoryModel,
+    /// The damping laws of the nonlinear model (viscous alone for the
+    /// linear one).
+    pub law: Law,
     /// The least-squares fit, parameters in the order of [`Self::names`].
     pub fit: Fit,
     /// The small-angle natural angular frequency ω_0, rad/s.
@@ -60,6 +129,13 @@ pub struct TrajectoryFit {
     /// linear one, which is then returned instead (`model` says `Linear`);
     /// `None` otherwise.
     pub nonlinear_rms_rejected: Option<f64>,
+    /// Samples at the record's start where the bob is held at rest before
+    /// its release (see [`held_start`]): not fitted, their residuals
+    /// against the fitted release angle; the parameters' phase and time
+    /// count from the first sample after them.
+    pub held_samples: usize,
+    /// The time from the record's first sample to the first fitted one, s.
+    pub held_seconds: f64,
 }
 
 /// The swing above which the linear model's finite-amplitude correction
@@ -139,7 +215,13 @@ impl TrajectoryFit {
     }
 
     /// Parameter names as in JSON.
-    pub fn names(&self) -> [&'static str; 5] {
+    pub fn names(&self) -> Vec<&'static str> {
+        let mut names = self.base_names().to_vec();
+        names.extend(self.law.extra_names());
+        names
+    }
+
+    fn base_names(&self) -> [&'static str; 5] {
         match self.model {
             TrajectoryModel::Linear => [
                 "amplitude_rad",
@@ -173,7 +255,10 @@ impl TrajectoryFit {
     /// sampling `interval` (s) or twice the time's error counts as the
     /// record's: the record starts on it.
     pub fn first_crest(&self, interval: f64) -> Option<[f64; 4]> {
-        let near = |lead: f64, error: f64| lead <= (2.0 * error).max(0.5 * interval);
+        // (After a held bob, the release lies within the held samples:
+        // the bob held there is the record's first crest.)
+        let near =
+            |lead: f64, error: f64| lead <= (2.0 * error).max(0.5 * interval) + self.held_seconds;
         let p = &self.fit.parameters;
         let (a, a_error) = (p[0].abs(), self.fit.standard_errors[0]);
         let phase_error = self.fit.standard_errors[3];
@@ -191,24 +276,34 @@ impl TrajectoryFit {
                     (pi - phase) / wd
                 };
                 let decay = (-zeta * wn * t).exp();
-                Some([t, phase_error / wd, a * decay, a_error * decay])
-                    .filter(|c| c[0].is_finite() && c[2].is_finite())
+                Some([
+                    t + self.held_seconds,
+                    phase_error / wd,
+                    a * decay,
+                    a_error * decay,
+                ])
+                .filter(|c| c[0].is_finite() && c[2].is_finite())
             }
             TrajectoryModel::Nonlinear => {
                 let wn = p[1].abs();
                 // The reported phase is a fraction of the true period; the
                 // release leads the first sample by phase·ratio/ω_n.
                 let ratio = release_period_ratio(a);
-                let lead = p[3].abs() * ratio / wn;
+                let lead = p[3] * ratio / wn;
                 let time_error = phase_error * ratio / wn;
                 // A release before the first sample by less than twice the
                 // time's error is the record's first crest (it starts on it).
                 if near(lead, time_error) {
-                    return Some([-lead, time_error, a, a_error]);
+                    return Some([self.held_seconds - lead, time_error, a, a_error]);
                 }
-                let (time, angle) = turning_point_after(p, lead)?;
+                let (time, angle) = turning_point_after(&self.law.full(p), lead)?;
                 let crest = angle.abs();
-                Some([time - lead, time_error, crest, a_error * crest / a])
+                Some([
+                    self.held_seconds + time - lead,
+                    time_error,
+                    crest,
+                    a_error * crest / a,
+                ])
             }
         }
     }
@@ -230,8 +325,77 @@ fn linear(t: f64, p: &[f64]) -> f64 {
     offset + a * (-zeta * wn * t).exp() * (wd * t + phase).cos()
 }
 
-/// Fits `model` to angles `theta` (rad) at times `time` (s, increasing).
+/// Fits `model` to angles `theta` (rad) at times `time` (s, increasing),
+/// from the release where the record starts with the bob held
+/// ([`held_start`]).
 pub fn fit_trajectory(
+    model: TrajectoryModel,
+    time: &[f64],
+    theta: &[f64],
+) -> Result<TrajectoryFit, FitError> {
+    let points = time.len().min(theta.len());
+    let held = held_start(&time[..points], &theta[..points]);
+    let mut fit = fit_released(model, &time[held..points], &theta[held..points])?;
+    if held > 0 {
+        // Held at the angle the fitted motion starts from.
+        let start = theta[held] - fit.fit.residuals[0];
+        let mut residuals: Vec<f64> = theta[..held].iter().map(|v| v - start).collect();
+        residuals.append(&mut fit.fit.residuals);
+        fit.fit.residuals = residuals;
+        fit.held_samples = held;
+        fit.held_seconds = time[held] - time[0];
+    }
+    Ok(fit)
+}
+
+/// The samples at the start of a record where the bob is held at rest
+/// before its release, to be left out of the fit: a free motion leaves a
+/// crest by `½ω² sin A · t²`, so it stays within three noise deviations
+/// of the crest for `t₃ = sqrt(6σ / (ω² sin A))`; a record that stays
+/// there longer than `2 t₃` and a sample was held; the fit starts at the
+/// plateau's last sample. The noise `σ` is [`super::noise_of`] the angles
+/// (a smooth motion's own fourth differences only raise it, so that less
+/// is taken as held), `ω` the
+/// record's crossings' and `A` its first sample from the mean. 0 when the
+/// record starts moving.
+pub fn held_start(time: &[f64], theta: &[f64]) -> usize {
+    let n = time.len().min(theta.len());
+    if n < 40 {
+        return 0;
+    }
+    let Some(sigma) = super::noise_of(theta) else {
+        return 0;
+    };
+    let t: Vec<f64> = time.iter().map(|x| x - time[0]).collect();
+    let guess = initial_guess(&t, theta);
+    let (wd, offset) = (guess[1].abs(), guess[4]);
+    let mut first = theta[..3].to_vec();
+    first.sort_by(f64::total_cmp);
+    let crest = first[1];
+    let sin_a = (crest - offset)
+        .abs()
+        .min(std::f64::consts::FRAC_PI_2)
+        .sin();
+    if !(sigma > 0.0 && wd > 0.0 && sin_a > 0.0) || (crest - offset).abs() < 10.0 * sigma {
+        return 0;
+    }
+    let t3 = (6.0 * sigma / (wd * wd * sin_a)).sqrt();
+    let plateau = theta
+        .iter()
+        .position(|v| (v - crest).abs() > 3.0 * sigma)
+        .unwrap_or(n);
+    let end = t[plateau.min(n - 1)];
+    if plateau >= n / 2 || end <= 2.0 * t3 + (t[1] - t[0]) {
+        return 0;
+    }
+    // From the plateau's last sample: the release lies at or before it,
+    // where the model puts it (a release after the first fitted sample
+    // would be placed a whole period earlier).
+    plateau - 1
+}
+
+/// Fits `model` to a record that starts at or after the release.
+fn fit_released(
     model: TrajectoryModel,
     time: &[f64],
     theta: &[f64],
@@ -291,10 +455,13 @@ pub fn fit_trajectory(
     let w0_error = lin.standard_errors[1] / damping_factor * ratio;
     let linear_fit = |fit: Fit, rejected: Option<f64>| TrajectoryFit {
         model: TrajectoryModel::Linear,
+        law: Law::VISCOUS,
         fit,
         natural_angular_frequency: w0,
         natural_angular_frequency_error: w0_error,
         nonlinear_rms_rejected: rejected,
+        held_samples: 0,
+        held_seconds: 0.0,
     };
     if model == TrajectoryModel::Linear {
         return Ok(linear_fit(lin, None));
@@ -316,7 +483,18 @@ pub fn fit_trajectory(
     if lin_first.parameters[0] < 0.0 {
         phase += std::f64::consts::PI;
     }
+    // A release more than three quarters of a period before the first
+    // sample is the crest just after it: released there, the few samples
+    // before it are the motion's mirror image (a record that starts just
+    // before a crest, or on a held bob, would otherwise be fitted from a
+    // release a whole period earlier, its amplitude carried through that
+    // period's decay).
     let phase = phase.rem_euclid(std::f64::consts::TAU);
+    let phase = if phase > LATEST_RELEASE {
+        phase - std::f64::consts::TAU
+    } else {
+        phase
+    };
     let a_release = a1 * (zeta1 * wd1 / damping1 * phase / wd1).exp();
     let mut initial = vec![
         a_release,
@@ -326,10 +504,7 @@ pub fn fit_trajectory(
         lin_first.parameters[4],
     ];
     for &n in &windows[..windows.len() - 1] {
-        let curve = NonlinearCurve {
-            times: &t[..n],
-            cache: RefCell::new(Simulated::default()),
-        };
+        let curve = NonlinearCurve::new(&t[..n], Law::VISCOUS);
         // A window too short to determine every parameter (the damping
         // over a few periods of a high Q) leaves the start as it was for
         // the next, longer one.
@@ -337,10 +512,7 @@ pub fn fit_trajectory(
             initial = f.parameters;
         }
     }
-    let curve = NonlinearCurve {
-        times: &t,
-        cache: RefCell::new(Simulated::default()),
-    };
+    let curve = NonlinearCurve::new(&t, Law::VISCOUS);
     let linear_rms = lin.residual_rms;
     let mut fit = fit_curve(&curve, &t, theta, None, &initial)?;
     // The release is the last crest at or before the first sample: a
@@ -353,10 +525,10 @@ pub fn fit_trajectory(
         if p[3].abs() < std::f64::consts::TAU * ratio {
             break;
         }
-        let Some((time, angle)) = crest_after_one_period(p) else {
+        let Some((time, angle)) = crest_after_one_period(&Law::VISCOUS.full(p)) else {
             break;
         };
-        let start = [angle, p[1], p[2], p[3].abs() - p[1].abs() * time, p[4]];
+        let start = [angle, p[1], p[2], p[3] - p[1].abs() * time, p[4]];
         fit = fit_curve(&curve, &t, theta, None, &start)?;
     }
     // A nonlinear fit that ran off (its release amplitude driven to the
@@ -370,20 +542,142 @@ pub fn fit_trajectory(
     if ran_off && (fit.residual_rms.is_nan() || fit.residual_rms > linear_rms) {
         return Ok(linear_fit(lin, Some(fit.residual_rms)));
     }
+    // Drag and friction, each and both, from the viscous fit: kept when
+    // the information criterion prefers them and their coefficients are
+    // determined.
+    let (fit, law) = with_damping_laws(&t, theta, fit);
     // Report the phase as a fraction of the true (finite-amplitude) period:
     // the release lies phase/2π of a period before the first sample.
+    let mut fit = fit;
     let ratio = release_period_ratio(fit.parameters[0]);
-    fit.parameters[3] = fit.parameters[3].abs() / ratio;
+    fit.parameters[3] /= ratio;
     fit.standard_errors[3] /= ratio;
     fit.parameters[0] = fit.parameters[0].abs();
+    for p in &mut fit.parameters[5..] {
+        *p = p.abs();
+    }
     let (w, e) = (fit.parameters[1].abs(), fit.standard_errors[1]);
     Ok(TrajectoryFit {
         model,
+        law,
         fit,
         natural_angular_frequency: w,
         natural_angular_frequency_error: e,
         nonlinear_rms_rejected: None,
+        held_samples: 0,
+        held_seconds: 0.0,
     })
+}
+
+/// A coefficient of a damping law must exceed this many of its standard
+/// errors to be kept: one that does not is at its bound, and the law is a
+/// smaller one.
+pub const LAW_DETERMINED_SIGMA: f64 = 2.0;
+
+/// The patience of the damping laws' fits (the evaluations allowed, per
+/// parameter and one): a law the record does not show leaves its
+/// coefficient wandering, and each evaluation integrates the whole record.
+pub const LAW_PATIENCE: usize = 20;
+
+/// The viscous nonlinear `fit` refitted with quadratic drag and dry
+/// friction beside the viscous damping, started from it with the decay
+/// shared between the laws; where one of the two added coefficients is
+/// not determined (within [`LAW_DETERMINED_SIGMA`] standard errors of its
+/// bound 0), the law without it, started from that fit. The best by the
+/// Bayesian information criterion among the viscous fit and the laws whose
+/// added coefficients are all determined, with its law. (Both laws at once
+/// first: from the viscous fit a single added law can lose its way on a
+/// record that needs the other, and each fit of a long record costs as
+/// much as the viscous one.)
+fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit) -> (Fit, Law) {
+    const BOTH: Law = Law {
+        quadratic: true,
+        friction: true,
+    };
+    let p = fit.parameters.clone();
+    let (a, zeta) = (p[0].abs().max(1e-6), p[2].max(1e-6));
+    // The viscous rate ζ shared equally among the laws: quadratic drag
+    // matches it at the swing A when b = 2ζ/A, friction when r = πζA/2
+    // (the same loss per half swing).
+    let share = zeta / 3.0;
+    let mut start = p.clone();
+    start[2] = share;
+    start.push(2.0 * share / a);
+    start.push(0.5 * std::f64::consts::PI * share * a);
+    let determined = |f: &Fit| -> Vec<bool> {
+        f.parameters[5..]
+            .iter()
+            .zip(&f.standard_errors[5..])
+            .map(|(v, se)| se.is_finite() && v.abs() > LAW_DETERMINED_SIGMA * se)
+            .collect()
+    };
+    let fit_law = |law: Law, start: &[f64]| {
+        fit_curve_patient(&NonlinearCurve::new(t, law), t, theta, start, LAW_PATIENCE)
+            .ok()
+            .filter(|f| f.parameters[2] >= -f.standard_errors[2])
+    };
+    let mut candidates: Vec<(Fit, Law)> = Vec::new();
+    match fit_law(BOTH, &start) {
+        Some(both) => {
+            let kept = determined(&both);
+            if kept.iter().all(|&k| k) {
+                candidates.push((both, BOTH));
+            } else {
+                // The law without the coefficient at its bound; with
+                // neither determined (the two laws and the viscous rate
+                // trade off over a short record), each alone.
+                let laws: &[(bool, usize)] = if kept[0] {
+                    &[(true, 5)]
+                } else if kept[1] {
+                    &[(false, 6)]
+                } else {
+                    &[(true, 5), (false, 6)]
+                };
+                for &(quadratic, index) in laws {
+                    let law = Law {
+                        quadratic,
+                        friction: !quadratic,
+                    };
+                    let mut reduced = both.parameters[..5].to_vec();
+                    reduced[2] = reduced[2].max(0.5 * zeta * 1e-3);
+                    reduced.push(both.parameters[index].abs().max(1e-9));
+                    if let Some(f) = fit_law(law, &reduced) {
+                        candidates.push((f, law));
+                    }
+                }
+            }
+        }
+        None => {
+            for law in [
+                Law {
+                    quadratic: true,
+                    friction: false,
+                },
+                Law {
+                    quadratic: false,
+                    friction: true,
+                },
+            ] {
+                let mut one = p.clone();
+                one[2] = 0.5 * zeta;
+                one.push(if law.quadratic {
+                    zeta / a
+                } else {
+                    0.25 * std::f64::consts::PI * zeta * a
+                });
+                if let Some(f) = fit_law(law, &one) {
+                    candidates.push((f, law));
+                }
+            }
+        }
+    }
+    let mut best = (fit, Law::VISCOUS);
+    for (f, law) in candidates {
+        if determined(&f).iter().all(|&k| k) && f.bic < best.0.bic {
+            best = (f, law);
+        }
+    }
+    best
 }
 
 /// The sample counts of the growing windows a fit goes through: the first
@@ -413,6 +707,11 @@ fn stages(t: &[f64], theta: &[f64]) -> Vec<usize> {
     out
 }
 
+/// The latest start of the nonlinear fit's release, as a phase before the
+/// first sample (rad of the linear fit's period): beyond it the release is
+/// placed at the crest after the first sample (a negative phase).
+pub const LATEST_RELEASE: f64 = 1.5 * std::f64::consts::PI;
+
 /// The first window of a staged fit, periods.
 pub const FIRST_WINDOW_PERIODS: f64 = 4.0;
 
@@ -424,15 +723,15 @@ fn release_period_ratio(a: f64) -> f64 {
 }
 
 /// The time after release (s) and angle (rad) of the crest one period after
-/// the release, for nonlinear parameters `[A, ω_n, ζ, φ, θ_off]`.
-fn crest_after_one_period(p: &[f64]) -> Option<(f64, f64)> {
+/// the release, for nonlinear parameters `[A, ω_n, ζ, φ, θ_off, b, r]`.
+fn crest_after_one_period(p: &[f64; 7]) -> Option<(f64, f64)> {
     turning_point_where(p, 0.0, |index, _| index == 2)
 }
 
 /// The first turning point (time after the release, s, and signed angle,
 /// rad) at or after `after` seconds of the motion of nonlinear parameters
 /// `[A, ω_n, ζ, ...]` released from rest at `A`.
-fn turning_point_after(p: &[f64], after: f64) -> Option<(f64, f64)> {
+fn turning_point_after(p: &[f64; 7], after: f64) -> Option<(f64, f64)> {
     turning_point_where(p, after, |index, time| index >= 1 && time >= after)
 }
 
@@ -441,13 +740,12 @@ fn turning_point_after(p: &[f64], after: f64) -> Option<(f64, f64)> {
 /// released from rest at `A`, within `span` s and a period and a half
 /// (DOP853 at 1e-12).
 fn turning_point_where(
-    p: &[f64],
+    p: &[f64; 7],
     span: f64,
     pick: impl Fn(u64, f64) -> bool,
 ) -> Option<(f64, f64)> {
-    let wn = p[1].abs();
-    let pendulum = Pendulum::with_standard_gravity(9.806_65 / (wn * wn)).ok()?;
-    let model = Model::new(pendulum, Damping::from_zeta(p[2].max(0.0)).ok()?, 0.0, 0.0).ok()?;
+    let model = model_of(p)?;
+    let pendulum = model.pendulum;
     let amplitude = Amplitude::from_radians(p[0].abs().min(3.1)).ok()?;
     struct Pick<F>(F, Option<(f64, f64)>);
     impl<F: Fn(u64, f64) -> bool> Observer for Pick<F> {
@@ -515,11 +813,26 @@ fn initial_guess(t: &[f64], theta: &[f64]) -> Vec<f64> {
     vec![a, wd, zeta, phase, offset]
 }
 
+/// The equation of motion of nonlinear parameters `[A, ω_n, ζ, φ, θ_off,
+/// b, r]`, if they make one.
+fn model_of(p: &[f64; 7]) -> Option<Model> {
+    let wn = p[1].abs();
+    let pendulum = Pendulum::with_standard_gravity(9.806_65 / (wn * wn)).ok()?;
+    Model::new(
+        pendulum,
+        Damping::from_zeta(p[2].max(0.0)).ok()?,
+        p[5].abs(),
+        p[6].abs(),
+    )
+    .ok()
+}
+
 /// The nonlinear model evaluated by simulation. The fit asks for the
 /// points one at a time but always a whole parameter set in a row, so one
 /// simulation per parameter set, kept in `cache`, serves them all.
 struct NonlinearCurve<'a> {
     times: &'a [f64],
+    law: Law,
     cache: RefCell<Simulated>,
 }
 
@@ -556,25 +869,31 @@ impl Curve for NonlinearCurve<'_> {
         if cache.states.len() < 2 {
             return f64::NAN;
         }
-        let lead = p[3].abs() / p[1].abs().max(f64::MIN_POSITIVE);
-        hermite(&cache.states, cache.interval, x + lead) + p[4]
+        // Before a release after the first sample, the motion's mirror
+        // image: from rest at a crest it is the same either way but for
+        // the damping's work over those few samples.
+        let lead = p[3] / p[1].abs().max(f64::MIN_POSITIVE);
+        hermite(&cache.states, cache.interval, (x + lead).abs()) + p[4]
     }
 }
 
-impl NonlinearCurve<'_> {
+impl<'a> NonlinearCurve<'a> {
+    fn new(times: &'a [f64], law: Law) -> Self {
+        Self {
+            times,
+            law,
+            cache: RefCell::new(Simulated::default()),
+        }
+    }
+
     fn simulate(&self, p: &[f64]) -> (Vec<State>, f64) {
-        let (a, wn, zeta, phase) = (p[0], p[1].abs(), p[2], p[3]);
+        let full = self.law.full(p);
+        let (a, wn, phase) = (full[0], full[1].abs(), full[3]);
         let span = self.times.last().copied().unwrap_or(0.0);
-        let lead = phase.abs() / wn.max(f64::MIN_POSITIVE);
-        let length = 9.806_65 / (wn * wn);
-        let (Ok(pendulum), Ok(damping), Ok(amplitude)) = (
-            Pendulum::with_standard_gravity(length),
-            Damping::from_zeta(zeta.max(0.0)),
-            Amplitude::from_radians(a.abs().min(3.1)),
-        ) else {
-            return (Vec::new(), 1.0);
-        };
-        let Ok(model) = Model::new(pendulum, damping, 0.0, 0.0) else {
+        let lead = (phase / wn.max(f64::MIN_POSITIVE)).max(0.0);
+        let (Some(model), Ok(amplitude)) =
+            (model_of(&full), Amplitude::from_radians(a.abs().min(3.1)))
+        else {
             return (Vec::new(), 1.0);
         };
         // Cubic Hermite between samples errs by about (ωh)^4/384 of the

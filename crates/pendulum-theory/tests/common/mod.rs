@@ -77,3 +77,4 @@ pub fn check_all(results: &[(&Worst, f64)]) {
         .collect();
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+pub mod records;

@@ -1,0 +1,169 @@
+//! Issue 23's acceptance for the trajectory fit: over seeded records made
+//! by a generator that varies what real records vary
+//! (`common/records.rs`), every fit either reports g, Q and the first
+//! crest's amplitude with 1σ intervals that cover the truth 55-80% of the
+//! time, or refuses or warns; and never a figure more than 5 standard
+//! errors from the truth without a warning. CI runs a fixed subset of
+//! short records; `cargo test --release --test coverage -- --ignored`
+//! runs the 200.
+
+mod common;
+
+use common::records::{record, Record};
+use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
+
+/// How one record's fit went (the fields only Debug reads are shown in
+/// the log).
+#[derive(Debug)]
+enum Outcome {
+    Refused(#[allow(dead_code)] String),
+    Warned(#[allow(dead_code)] Vec<&'static str>),
+    /// The law fitted and the standardised errors `(estimate - truth) / σ`
+    /// by name.
+    Reported(#[allow(dead_code)] &'static str, Vec<(&'static str, f64)>),
+}
+
+fn judge(rec: &Record) -> Outcome {
+    let t = &rec.truth;
+    let r = match analyse(&TrackInput {
+        time: &rec.time,
+        angle: &rec.angle,
+        model: None,
+        length: Some((t.length_m, LengthSource::Given)),
+        length_standard_error: None,
+        force: true,
+    }) {
+        Ok(r) => r,
+        Err(e) => return Outcome::Refused(e.to_string()),
+    };
+    // A Q the data cannot measure is said (zeta_undetermined); the other
+    // figures still stand.
+    let blocking: Vec<&'static str> = r
+        .warning_codes
+        .iter()
+        .copied()
+        .filter(|c| *c != "zeta_undetermined")
+        .collect();
+    if !blocking.is_empty() {
+        return Outcome::Warned(blocking);
+    }
+    let z = |name: &str, truth: f64| {
+        let (v, se) = (r.parameters.get(name)?, r.standard_errors.get(name)?);
+        Some((v - truth) / se)
+    };
+    let mut out = Vec::new();
+    if let Some(x) = z("g_m_s2", t.g) {
+        out.push(("g", x));
+    }
+    if let Some(x) = z("first_crest_amplitude_rad", t.first_crest_rad) {
+        out.push(("first_crest", x));
+    }
+    if t.viscous_only() && !r.warning_codes.contains(&"zeta_undetermined") {
+        if let Some(x) = z("zeta", 0.5 / t.q) {
+            out.push(("q", x));
+        }
+    }
+    Outcome::Reported(r.damping_law, out)
+}
+
+struct Tally {
+    lines: Vec<String>,
+    within: std::collections::BTreeMap<&'static str, (usize, usize)>,
+    far: Vec<String>,
+    refused: usize,
+    warned: usize,
+}
+
+fn run(seeds: impl Iterator<Item = u64>, small: bool) -> Tally {
+    let mut tally = Tally {
+        lines: Vec::new(),
+        within: Default::default(),
+        far: Vec::new(),
+        refused: 0,
+        warned: 0,
+    };
+    for seed in seeds {
+        let rec = record(seed, small);
+        let clock = std::time::Instant::now();
+        let outcome = judge(&rec);
+        let took = clock.elapsed().as_secs_f64();
+        let t = &rec.truth;
+        let line = format!(
+            "seed {seed} ({took:.1} s): {:.0}° Q {:.0} friction {:.1e} drag {:.1e} {:.0} fps {} samples noise {:.2}° held {}: {outcome:?}",
+            t.release_rad.to_degrees(),
+            t.q,
+            t.friction_rad,
+            t.quadratic,
+            t.frame_rate,
+            rec.time.len(),
+            t.noise_rad.to_degrees(),
+            t.held_frames
+        );
+        match &outcome {
+            Outcome::Refused(_) => tally.refused += 1,
+            Outcome::Warned(_) => tally.warned += 1,
+            Outcome::Reported(_, z) => {
+                for (name, x) in z {
+                    let e = tally.within.entry(name).or_default();
+                    e.1 += 1;
+                    if x.abs() <= 1.0 {
+                        e.0 += 1;
+                    }
+                    if x.abs() > 5.0 || !x.is_finite() {
+                        tally.far.push(format!("{name} {x:.1}σ: {line}"));
+                    }
+                }
+            }
+        }
+        tally.lines.push(line);
+    }
+    tally
+}
+
+fn check(tally: &Tally, band: bool) {
+    for l in &tally.lines {
+        eprintln!("{l}");
+    }
+    eprintln!(
+        "refused {}, warned {}; 1σ coverage: {:?}",
+        tally.refused, tally.warned, tally.within
+    );
+    assert!(
+        tally.far.is_empty(),
+        "beyond 5σ without a warning:\n{}",
+        tally.far.join("\n")
+    );
+    for (name, (inside, all)) in &tally.within {
+        let (k, n) = (*inside as f64, *all as f64);
+        if band {
+            // The 200: the issue's band.
+            assert!(
+                (0.55..=0.8).contains(&(k / n)),
+                "{name}: {inside} of {all} within 1σ"
+            );
+        } else {
+            // A subset of a few dozen cannot hold a band 25 points wide:
+            // its count must be what a 68.3% coverage gives (two-sided
+            // binomial at 1%, normal approximation with continuity).
+            let p = 0.6827;
+            let z = ((k - n * p).abs() - 0.5) / (n * p * (1.0 - p)).sqrt();
+            assert!(
+                z < 2.576,
+                "{name}: {inside} of {all} within 1σ (z = {z:.2})"
+            );
+        }
+    }
+}
+
+#[test]
+fn coverage_ci_subset() {
+    let clock = std::time::Instant::now();
+    check(&run(0..40, true), false);
+    eprintln!("TOOK {:?}", clock.elapsed());
+}
+
+#[test]
+#[ignore = "the 200 records of issue 23 (several minutes): cargo test --release --test coverage -- --ignored"]
+fn coverage_200() {
+    check(&run(1000..1200, false), true);
+}

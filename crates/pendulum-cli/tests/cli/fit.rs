@@ -334,8 +334,11 @@ fn a_record_the_nonlinear_fit_cannot_follow_falls_back_to_the_linear_one() {
     assert_eq!(v["model"], "linear", "{v}");
     assert_eq!(v["model_requested"], "auto");
     let warnings = v["warnings"].to_string();
+    // (It runs off, or does not converge at all from the linear start.)
     assert!(
-        warnings.contains("ran off") && warnings.contains("worse than the linear one"),
+        warnings.contains("the linear fit is reported")
+            && (warnings.contains("worse than the linear one")
+                || warnings.contains("did not converge")),
         "{warnings}"
     );
     // ln(46/20) / 2π gives ζ ≈ 0.13 for the first swing.

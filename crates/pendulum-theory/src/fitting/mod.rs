@@ -216,7 +216,8 @@ fn fit_with(
 
 /// The independent noise of a series from its fourth differences, which
 /// cancel any smooth pattern: `1.4826 · median|Δ⁴r| / √70` (a normal
-/// deviate's robust deviation; `Δ⁴` of white noise has variance `70σ²`).
+/// deviate's robust deviation; `Δ⁴` of white noise has variance `70σ²`),
+/// at least the [`rounding_noise`] of the values.
 /// `None` for fewer than 20 values or none that differ.
 pub fn noise_of(values: &[f64]) -> Option<f64> {
     if values.len() < 20 {
@@ -227,8 +228,25 @@ pub fn noise_of(values: &[f64]) -> Option<f64> {
         .map(|w| (w[0] - 4.0 * w[1] + 6.0 * w[2] - 4.0 * w[3] + w[4]).abs())
         .collect();
     d4.sort_by(f64::total_cmp);
-    let noise = 1.4826 * d4[d4.len() / 2] / 70f64.sqrt();
+    let noise = (1.4826 * d4[d4.len() / 2] / 70f64.sqrt()).max(rounding_noise(values));
     (noise > 0.0 && noise.is_finite()).then_some(noise)
+}
+
+/// The rounding noise of values read in steps (an encoder's counts, whole
+/// pixels, a file's last digit): `q / √12` for the smallest step `q`
+/// between successive values (0 when none differ). The fourth differences
+/// of such values are mostly 0, and their median says nothing.
+pub fn rounding_noise(values: &[f64]) -> f64 {
+    let step = values
+        .windows(2)
+        .map(|w| (w[1] - w[0]).abs())
+        .filter(|d| *d > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    if step.is_finite() {
+        step / 12f64.sqrt()
+    } else {
+        0.0
+    }
 }
 
 /// Least-squares line `y = a + b x`: `(a, b)`.

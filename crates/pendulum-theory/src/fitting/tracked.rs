@@ -437,7 +437,11 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             swing,
         });
     }
-    if let Some(noise) = noise_of(&fit.fit.residuals[fit.held_samples..]) {
+    // (The residuals of angles read in steps are not in steps; the
+    // steps' rounding is in them all the same.)
+    if let Some(noise) = noise_of(&fit.fit.residuals[fit.held_samples..])
+        .map(|n| n.max(super::rounding_noise(theta)))
+    {
         let rms = fit.fit.residual_rms;
         if rms > RESIDUAL_OF_NOISE * noise {
             warnings.push(TrackWarning::ResidualsExceedNoise { rms, noise });

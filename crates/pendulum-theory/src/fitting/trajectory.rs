@@ -203,6 +203,12 @@ impl TrajectoryFit {
     /// what happened and what to do.
     pub fn fallback_note(&self) -> Option<String> {
         self.nonlinear_rms_rejected.map(|rms| {
+            if !rms.is_finite() {
+                return "the nonlinear fit did not converge (its parameters are not determined \
+                        from the linear fit's start): the linear fit is reported; the record does \
+                        not follow a free decay from one release (heavy damping, friction?)"
+                    .to_string();
+            }
             format!(
                 "the nonlinear fit ran off (its release amplitude went to the top or is not \
                  determined) and fits worse than the linear one (residual rms {:.3}° against \
@@ -414,19 +420,32 @@ fn fit_released(
     // changes with the amplitude, loses a fit started from the whole
     // record's phase (a false minimum, issue 23); a few periods first,
     // then twice as many, each fit started from the last, follow it.
-    let windows = stages(&t, theta);
-    let first = windows[0];
-    let mut lin = fit_curve(
-        &linear,
-        &t[..first],
-        &theta[..first],
-        None,
-        &initial_guess(&t[..first], &theta[..first]),
-    )?;
-    let lin_first = lin.clone();
-    for &n in &windows[1..] {
-        lin = fit_curve(&linear, &t[..n], &theta[..n], None, &lin.parameters)?;
-    }
+    // (A window the linear model cannot fit, one where the swing stops,
+    // say, leaves the whole record in one.)
+    let staged = |windows: &[usize]| -> Result<(Fit, Fit), FitError> {
+        let first = windows[0];
+        let mut lin = fit_curve(
+            &linear,
+            &t[..first],
+            &theta[..first],
+            None,
+            &initial_guess(&t[..first], &theta[..first]),
+        )?;
+        let lin_first = lin.clone();
+        for &n in &windows[1..] {
+            lin = fit_curve(&linear, &t[..n], &theta[..n], None, &lin.parameters)?;
+        }
+        Ok((lin, lin_first))
+    };
+    let mut windows = stages(&t, theta);
+    let (mut lin, lin_first) = match staged(&windows) {
+        Ok(fits) => fits,
+        Err(_) if windows.len() > 1 => {
+            windows = vec![t.len()];
+            staged(&windows)?
+        }
+        Err(e) => return Err(e),
+    };
     // The same curve with A >= 0 and φ in (-π, π]: a negative amplitude is
     // a phase shifted by π.
     if lin.parameters[0] < 0.0 {
@@ -514,7 +533,11 @@ fn fit_released(
     }
     let curve = NonlinearCurve::new(&t, Law::VISCOUS);
     let linear_rms = lin.residual_rms;
-    let mut fit = fit_curve(&curve, &t, theta, None, &initial)?;
+    // A nonlinear fit that fails outright (its parameters not determined
+    // from this start) leaves the linear one, which says so.
+    let Ok(mut fit) = fit_curve(&curve, &t, theta, None, &initial) else {
+        return Ok(linear_fit(lin, Some(f64::NAN)));
+    };
     // The release is the last crest at or before the first sample: a
     // release a whole period (or more) earlier fits the same curve with a
     // larger amplitude, so move it one period later, to the crest the
@@ -616,8 +639,22 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit) -> (Fit, Law) {
             .ok()
             .filter(|f| f.parameters[2] >= -f.standard_errors[2])
     };
+    // Both laws over the growing windows of the viscous fit, each started
+    // from the last (from a viscous fit that missed a swing's stop by
+    // friction, the whole record at once is too far).
+    let both = {
+        let windows = stages(t, theta);
+        let mut start = start;
+        for &n in &windows[..windows.len() - 1] {
+            let curve = NonlinearCurve::new(&t[..n], BOTH);
+            if let Ok(f) = fit_curve_patient(&curve, &t[..n], &theta[..n], &start, LAW_PATIENCE) {
+                start = f.parameters;
+            }
+        }
+        fit_law(BOTH, &start)
+    };
     let mut candidates: Vec<(Fit, Law)> = Vec::new();
-    match fit_law(BOTH, &start) {
+    match both {
         Some(both) => {
             let kept = determined(&both);
             if kept.iter().all(|&k| k) {
@@ -682,19 +719,23 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit) -> (Fit, Law) {
 
 /// The sample counts of the growing windows a fit goes through: the first
 /// [`FIRST_WINDOW_PERIODS`] periods (by the record's own crossings), then
-/// twice as long each time, the last the whole record. A record of fewer
-/// than twice the first window's periods is one window.
+/// twice as long each time, the last the whole record. A shorter record
+/// starts on its first half; one of fewer than four periods is one window.
 fn stages(t: &[f64], theta: &[f64]) -> Vec<usize> {
     let n = t.len();
     let guess = initial_guess(t, theta);
     let wd = guess[1].abs();
     let span = t.last().copied().unwrap_or(0.0);
     let period = std::f64::consts::TAU / wd;
-    if !(wd.is_finite() && wd > 0.0) || span < 2.0 * FIRST_WINDOW_PERIODS * period {
+    // A record of fewer than twice the first window's periods starts on
+    // its first half (at least two periods): a short, heavily damped
+    // record of large swings loses its phase as a long one does.
+    let first = (FIRST_WINDOW_PERIODS * period).min(0.5 * span);
+    if !(wd.is_finite() && wd > 0.0) || first < 2.0 * period {
         return vec![n];
     }
     let mut out = Vec::new();
-    let mut end = FIRST_WINDOW_PERIODS * period;
+    let mut end = first;
     while end < span {
         let k = t.partition_point(|&x| x <= end);
         // At least enough points to fit, and growing.

@@ -53,9 +53,10 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     // A track (angle, or x and y, against time) to find the amplitudes in;
     // else a column of amplitudes. A track wins: Tracker files carry
     // per-frame columns a user may have called "amp".
+    let rate = options.frame_rate;
     let choose = |found: &[Found]| {
-        if has_track(found) {
-            track_roles(found, false)
+        if has_track(found, rate.is_some()) {
+            track_roles(found, rate.is_some())
         } else if found.iter().any(|f| f.role == Role::Amplitude) {
             need(&[&[Role::Time, Role::Swing], &[Role::Amplitude]])(found)
         } else {
@@ -80,6 +81,9 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     };
     let flags = [("time", "FILE"), ("g", "--g")];
     let (analysis, time, amplitude, turns_found) = if table.column(Role::Amplitude).is_some() {
+        // Out of order times named as the file has them (the library sees
+        // them less the first).
+        table.require_increasing(Role::Time)?;
         let amplitude = table.column(Role::Amplitude).unwrap_or(&[]).to_vec();
         let first = table.values[0].clone();
         let time = if table.roles[0] == Role::Swing {
@@ -117,7 +121,7 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         })?;
         (analysis, time, amplitude, None)
     } else {
-        let track = track_of(table, args.read.pivot.as_deref(), None)?;
+        let track = track_of(table, args.read.pivot.as_deref(), rate)?;
         let found = turning_points(&track.time, &track.angle);
         if found.turns.len() < 4 {
             return Err(CliError::other(format!(

@@ -63,10 +63,11 @@ pub struct Track {
     pub track_radius_error: Option<f64>,
 }
 
-/// Whether the header holds a swing: time with an angle, or with x and y.
-pub fn has_track(found: &[Found]) -> bool {
+/// Whether the header holds a swing: time (or `rate`, a fixed sampling
+/// rate given) with an angle, or with x and y.
+pub fn has_track(found: &[Found], rate: bool) -> bool {
     let has = |r: Role| found.iter().any(|f| f.role == r);
-    has(Role::Time) && (has(Role::Angle) || has(Role::X) && has(Role::Y))
+    (has(Role::Time) || rate) && (has(Role::Angle) || has(Role::X) && has(Role::Y))
 }
 
 /// The roles of a swing: time and angle, or time, x and y; with `rate`

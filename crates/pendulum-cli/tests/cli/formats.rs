@@ -285,4 +285,23 @@ fn a_fixed_rate_logger_without_times_is_read_with_its_rate() {
         (f(&v["parameters"], "omega_d_rad_s") / w - 1.0).abs() < 2e-3,
         "{v}"
     );
+    // fit decay reads the same file with the same flag (it refused it).
+    let d = json(&["fit", "decay", &file, "--sample-rate", "50"]);
+    let viscous = &d["models"][0];
+    let rate = f(&viscous["parameters"], "decay_rate_per_s");
+    assert!((rate / 0.02 - 1.0).abs() < 0.02, "{rate}");
+}
+
+/// Times out of order are quoted as the file writes them, not less the
+/// first time (a real extrema list, maxima then minima, read as it is).
+#[test]
+fn times_out_of_order_are_quoted_as_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = "time_s,amplitude_rad\n1.5,0.30\n3.5,0.28\n5.5,0.26\n0.25,0.29\n2.25,0.27\n";
+    let file = write(dir.path(), "extrema.csv", text);
+    let message = refuses(&["fit", "decay", &file], "line 5");
+    assert!(
+        message.contains("0.25 is not after the previous 5.5"),
+        "{message}"
+    );
 }

@@ -37,6 +37,8 @@
 //! All of it runs on a stream ([`BeatStream`]) in fixed memory, so a log of
 //! 10^7 beats needs no more than one of ten.
 
+use super::median;
+
 /// Beat rates (beats per hour) a clock is usually made for; the nominal
 /// beat is taken from here when none is given.
 pub const STANDARD_BEAT_RATES: [f64; 13] = [
@@ -300,7 +302,10 @@ impl Sides {
     fn at_start(times: &[f64], period: f64) -> Self {
         let first = &times[..times.len().min(FIRST_INTERVALS + 1)];
         let intervals: Vec<f64> = first.windows(2).map(|w| w[1] - w[0]).collect();
-        let side = |k: usize| median(intervals.iter().skip(k).step_by(2).copied().collect());
+        let side = |k: usize| {
+            let mut alternate: Vec<f64> = intervals.iter().skip(k).step_by(2).copied().collect();
+            median(&mut alternate)
+        };
         let (a, b) = (side(0), side(1));
         [[a, b], [b, a], [0.5 * period; 2]]
             .into_iter()
@@ -311,12 +316,6 @@ impl Sides {
                 expected: [0.5 * period; 2],
             })
     }
-}
-
-/// The median of `values` (the upper one of an even count; 0 for none).
-fn median(mut values: Vec<f64>) -> f64 {
-    values.sort_by(f64::total_cmp);
-    values.get(values.len() / 2).copied().unwrap_or(0.0)
 }
 
 /// The pairs of intervals the beat error is taken over at each end of the
@@ -439,7 +438,8 @@ impl BeatStream {
         let buffered = std::mem::take(&mut self.warm_up);
         // The median period (two beats) is the same whatever the beat
         // error; the median beat is not once the sides differ much.
-        let period = median(buffered.windows(3).map(|w| w[2] - w[0]).collect());
+        let mut periods: Vec<f64> = buffered.windows(3).map(|w| w[2] - w[0]).collect();
+        let period = median(&mut periods);
         self.typical = 0.5 * period;
         self.sides = Sides::at_start(&buffered, period);
         self.origin = buffered[0];

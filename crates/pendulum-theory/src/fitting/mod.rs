@@ -249,6 +249,16 @@ pub fn rounding_noise(values: &[f64]) -> f64 {
     }
 }
 
+/// The median of `values` (sorted in place; the upper one of an even
+/// count; 0 for none).
+pub(crate) fn median(values: &mut [f64]) -> f64 {
+    if values.is_empty() {
+        return 0.0;
+    }
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}
+
 /// Least-squares line `y = a + b x`: `(a, b)`.
 pub fn straight_line(x: &[f64], y: &[f64]) -> (f64, f64) {
     let n = x.len() as f64;

@@ -69,20 +69,10 @@ fn noise(y: &[f64]) -> f64 {
     d[d.len() / 2] / 0.6745 / 6f64.sqrt()
 }
 
-fn median(values: &[f64]) -> f64 {
-    let mut v = values.to_vec();
-    v.sort_by(f64::total_cmp);
-    if v.is_empty() {
-        0.0
-    } else {
-        v[v.len() / 2]
-    }
-}
-
 /// Finds the turning points of the track `(time, angle)`.
 pub fn turning_points(time: &[f64], angle: &[f64]) -> Turns {
     let n = time.len().min(angle.len());
-    let first_zero = median(&angle[..n]);
+    let first_zero = super::median(&mut angle[..n].to_vec());
     let turns = find(time, angle, n, first_zero);
     // Refine the zero from the turning angles, then measure again.
     let signed: Vec<f64> = turns

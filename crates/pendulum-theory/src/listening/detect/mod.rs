@@ -61,12 +61,4 @@ pub struct Coarse {
     pub drops: [Option<f64>; 2],
 }
 
-/// The median of `values` (sorted in place; the upper one of an even
-/// count; 0 for none).
-pub(crate) fn median(values: &mut [f64]) -> f64 {
-    if values.is_empty() {
-        return 0.0;
-    }
-    values.sort_by(f64::total_cmp);
-    values[values.len() / 2]
-}
+pub(crate) use crate::fitting::median;

@@ -271,6 +271,10 @@ pub enum FitCommand {
     Trajectory(FitTrajectoryArgs),
     /// One timestamp per beat: rate, beat error, jitter, Allan deviation.
     Beats(FitBeatsArgs),
+    /// A table of periods against amplitude (the exact law: T0, g, the
+    /// circular error's coefficient) or against length (g and the offset
+    /// of the lengths).
+    Period(FitPeriodArgs),
 }
 
 /// How to read a measurement file: shared by the `fit` commands.
@@ -366,6 +370,45 @@ pub struct FitTrajectoryArgs {
     #[arg(long, value_name = "FILE.csv")]
     pub residuals: Option<OutputPath>,
     /// Plot the data, the fitted curves and the residuals to this file (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<OutputPath>,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum fit period`.
+#[derive(Debug, Args)]
+pub struct FitPeriodArgs {
+    /// Periods (`period_s`, `T (s)`) against amplitude (`amplitude_deg`,
+    /// `release_angle (rad)`) or length (`length_m`, `L (cm)`), with their
+    /// uncertainties if measured (`period_err_s`, or an `error` column
+    /// right after the periods).
+    #[arg(value_name = "FILE")]
+    pub file: InputPath,
+    /// The unit of amplitude columns whose header names none.
+    #[arg(long, value_name = "UNIT", value_parser = ["deg", "rad"])]
+    pub angle_unit: Option<String>,
+    /// Names of the columns of a file without a header, in order
+    /// (e.g. amplitude_deg,period_s,period_err_s).
+    #[arg(long, value_name = "NAMES")]
+    pub columns: Option<String>,
+    /// The pendulum's length, for a table against amplitude: gives g.
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length: Option<Length>,
+    /// The standard uncertainty of --length, carried into g's.
+    #[arg(
+        long,
+        value_name = "L",
+        allow_hyphen_values = true,
+        requires = "length"
+    )]
+    pub length_uncertainty: Option<Length>,
+    /// The radius of a spherical bob whose centre the lengths reach: each
+    /// length becomes the physical pendulum's, L + 2r²/(5L).
+    #[arg(long, value_name = "R", allow_hyphen_values = true)]
+    pub bob_radius: Option<Length>,
+    /// Plot the periods and the fitted law to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<OutputPath>,
     /// Print one JSON object.

@@ -55,6 +55,13 @@ pub enum Role {
     Temperature,
     /// Air pressure (read in Pa).
     Pressure,
+    /// A measured period (a period table).
+    Period,
+    /// A period's uncertainty: named for it, or a generic `error`,
+    /// `uncertainty`, `sigma`, … column right after the period's.
+    PeriodError,
+    /// A pendulum's length (read in m).
+    Length,
 }
 
 impl Role {
@@ -69,6 +76,9 @@ impl Role {
             Role::DriveFactor => "drive_factor",
             Role::Temperature => "temperature",
             Role::Pressure => "pressure",
+            Role::Period => "period",
+            Role::PeriodError => "period_error",
+            Role::Length => "length",
         }
     }
 
@@ -81,9 +91,9 @@ impl Role {
             "swing" | "swings" | "half_swing" | "halfswing" => Role::Swing,
             "angle" | "theta" | "θ" | "phi" | "φ" | "angular_position" | "winkel" | "ángulo"
             | "angulo" | "angolo" | "hoek" => Role::Angle,
-            "amplitude" | "amp" | "peak" | "peaks" | "amplitud" | "ampiezza" | "amplitudine" => {
-                Role::Amplitude
-            }
+            "amplitude" | "amp" | "peak" | "peaks" | "amplitud" | "ampiezza" | "amplitudine"
+            | "release_angle" | "initial_angle" | "theta0" | "θ0" | "theta_0" | "θ_0" | "a0"
+            | "angle0" => Role::Amplitude,
             "x" => Role::X,
             "y" => Role::Y,
             "drive_factor" | "drive" | "factor" | "drive factor" | "antrieb" => Role::DriveFactor,
@@ -91,6 +101,16 @@ impl Role {
             | "temperatuur" => Role::Temperature,
             "pressure" | "barometer" | "air_pressure" | "air pressure" | "druck" | "luftdruck"
             | "pression" | "presión" | "pressione" | "luchtdruk" => Role::Pressure,
+            "period" | "periods" | "periode" | "période" | "periodo" | "período"
+            | "periodendauer" | "schwingungsdauer" | "t0" | "tau_period" => Role::Period,
+            "period_err" | "period_error" | "period_uncertainty" | "period_sd" | "period_std"
+            | "period_sigma" | "sigma_period" | "σ_period" | "u_period" | "dt" | "δt"
+            | "sigma_t" | "σ_t" | "σt" | "t_err" | "t_error" | "err_t" | "error_t" => {
+                Role::PeriodError
+            }
+            "length" | "l" | "len" | "länge" | "laenge" | "longueur" | "longitud" | "lunghezza"
+            | "lengte" | "comprimento" | "string_length" | "pendulum_length" | "cord_length"
+            | "wire_length" | "rod_length" | "thread_length" => Role::Length,
             _ => return None,
         })
     }
@@ -415,6 +435,46 @@ enum Kind {
     Pressure,
 }
 
+/// Whether a header's base names an uncertainty without saying of what
+/// (it is then the uncertainty of the column before it).
+fn is_generic_error(base: &str) -> bool {
+    matches!(
+        base,
+        "err"
+            | "error"
+            | "errors"
+            | "uncertainty"
+            | "unc"
+            | "sigma"
+            | "σ"
+            | "sd"
+            | "std"
+            | "stdev"
+            | "std_dev"
+            | "±"
+            | "+/-"
+            | "+-"
+            | "u"
+            | "fehler"
+            | "erreur"
+            | "incertitude"
+            | "error_abs"
+            | "abs_error"
+            | "absolute_error"
+    )
+}
+
+/// The SI factor of a length unit written in a header (pixels have none).
+fn length_factor(unit: &str) -> Option<f64> {
+    Some(match unit {
+        "m" => 1.0,
+        "cm" => 0.01,
+        "mm" => 1e-3,
+        "in" => 0.0254,
+        _ => return None,
+    })
+}
+
 /// The kind and SI factor of a unit written in a header (temperature in
 /// °C, its only unit here).
 fn unit_of(unit: &str) -> Option<(Kind, f64)> {
@@ -445,6 +505,8 @@ fn units_for(role: Role) -> &'static str {
         Role::Angle | Role::Amplitude => "deg, rad",
         Role::Temperature => "°C (c, degc, celsius)",
         Role::Pressure => "hPa, mbar, Pa, kPa, inHg, mmHg",
+        Role::Period | Role::PeriodError => "s, ms, us, min, h",
+        Role::Length => "m, cm, mm, in",
         _ => "none",
     }
 }
@@ -452,9 +514,15 @@ fn units_for(role: Role) -> &'static str {
 /// The columns a header holds, with their roles and units.
 fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
     let mut found: Vec<Found> = Vec::new();
+    let mut previous: Option<Role> = None;
     for (index, header) in headers.iter().enumerate() {
         let (base, unit) = split_header(header);
-        let Some(role) = Role::of(&base) else {
+        let role = Role::of(&base).or_else(|| {
+            (is_generic_error(&base) && matches!(previous, Some(Role::Period | Role::Time)))
+                .then_some(Role::PeriodError)
+        });
+        previous = role;
+        let Some(role) = role else {
             continue;
         };
         if found.iter().any(|f| f.role == role) {
@@ -477,7 +545,9 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
             | (Role::Temperature, None) => Some(1.0),
             // A pressure without a unit is in hPa (a barometer's).
             (Role::Pressure, None) => Some(100.0),
-            (Role::Time, Some(_)) => kind(Kind::Time),
+            (Role::Time | Role::Period | Role::PeriodError, Some(_)) => kind(Kind::Time),
+            (Role::Period | Role::PeriodError | Role::Length, None) => Some(1.0),
+            (Role::Length, Some(u)) => length_factor(u),
             (Role::Angle | Role::Amplitude, Some(_)) => kind(Kind::Angle),
             (Role::Temperature, Some(_)) => kind(Kind::Temperature),
             (Role::Pressure, Some(_)) => kind(Kind::Pressure),

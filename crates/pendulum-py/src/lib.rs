@@ -430,6 +430,45 @@ fn fit_decay(
     }))
 }
 
+/// The period-table analysis (the CLI's `fit period`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (period, period_standard_error, amplitude, length, pendulum_length, pendulum_length_standard_error, bob_radius))]
+#[allow(clippy::too_many_arguments)]
+fn fit_period(
+    py: Python<'_>,
+    period: In<'_>,
+    period_standard_error: Option<In<'_>>,
+    amplitude: Option<In<'_>>,
+    length: Option<In<'_>>,
+    pendulum_length: Option<f64>,
+    pendulum_length_standard_error: Option<f64>,
+    bob_radius: Option<f64>,
+) -> PyResult<String> {
+    use pendulum_theory::fitting::period_table::{analyse, PeriodTableInput};
+    let period = values(&period, "period")?;
+    let error = period_standard_error
+        .as_ref()
+        .map(|a| values(a, "period_standard_error"))
+        .transpose()?;
+    let amplitude = amplitude
+        .as_ref()
+        .map(|a| values(a, "amplitude"))
+        .transpose()?;
+    let length = length.as_ref().map(|a| values(a, "length")).transpose()?;
+    answer(py.detach(|| {
+        analyse(&PeriodTableInput {
+            period,
+            period_standard_error: error,
+            amplitude,
+            length,
+            pendulum_length,
+            pendulum_length_standard_error,
+            bob_radius,
+            force: false,
+        })
+    }))
+}
+
 /// The beat-log analysis (the CLI's `fit beats`) as JSON.
 #[pyfunction]
 #[pyo3(signature = (time, bph, period))]
@@ -956,6 +995,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(fit_decay, m)?)?;
     m.add_function(wrap_pyfunction!(fit_beats, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_period, m)?)?;
     m.add_function(wrap_pyfunction!(fit_trajectory, m)?)?;
     m.add_function(wrap_pyfunction!(clock, m)?)?;
     m.add_function(wrap_pyfunction!(listen, m)?)?;

@@ -33,7 +33,8 @@ READER_KEYS = {"file", "format", "zero_offset_rad", "turning_points_file", "resi
                "channel", "plot_file", "ticks_file"}
 
 #: Flags whose name is not ``--`` and the keyword.
-FLAG = {"time": "FILE", "amplitude": "FILE", "angle": "FILE"}
+FLAG = {"time": "FILE", "amplitude": "FILE", "angle": "FILE",
+        "pendulum_length": "--length", "pendulum_length_standard_error": "--length-uncertainty"}
 
 NAN, INF = float("nan"), float("inf")
 
@@ -339,6 +340,100 @@ def test_fit_beats(name, tmp_path):
     for k, v in kw.items():
         args += [f"--{k}", cli_value(v, "s" if k == "period" else "")]
     check(args, lambda: pt.fit_beats(t, **kw), reader_refuses=t.size == 0)
+
+
+# --- fit period -------------------------------------------------------------
+
+def _exact_period(length, g, a):
+    x, y = np.ones_like(a), np.cos(a / 2)
+    for _ in range(40):
+        x, y = (x + y) / 2, np.sqrt(x * y)
+    return 2 * math.pi * math.sqrt(length / g) / x
+
+
+def _period_cases():
+    rng = np.random.default_rng(23)
+    a = np.radians(np.arange(5.0, 95.0, 10.0))
+    t = _exact_period(0.9, 9.81, a) + rng.normal(0, 2e-3, a.size)
+    s = np.full(a.size, 2e-3)
+    lengths = np.linspace(0.2, 1.6, 8)
+    tl = np.array([_exact_period(l + 0.02, 9.80, np.array([0.1]))[0] for l in lengths])
+    tl = tl + rng.normal(0, 3e-3, tl.size)
+    negative = t.copy()
+    negative[3] = -2.0
+    nan_period = t.copy()
+    nan_period[2] = NAN
+    wide = a.copy()
+    wide[4] = 3.5
+    zero_error = s.copy()
+    zero_error[1] = 0.0
+    return {
+        "amplitude": ({"period": t, "amplitude": a}),
+        "amplitude_weighted": ({"period": t, "amplitude": a, "period_standard_error": s}),
+        "amplitude_length": ({"period": t, "amplitude": a, "pendulum_length": 0.9}),
+        "amplitude_length_se": ({"period": t, "amplitude": a, "pendulum_length": 0.9,
+                                 "pendulum_length_standard_error": 0.001}),
+        "amplitude_in_degrees_as_radians": ({"period": t, "amplitude": np.radians(a),
+                                             "period_standard_error": s}),
+        "overstated": ({"period": t, "amplitude": a, "period_standard_error": s * 100}),
+        "understated": ({"period": t, "amplitude": a, "period_standard_error": s / 100}),
+        "length": ({"period": tl, "length": lengths}),
+        "length_weighted": ({"period": tl, "length": lengths,
+                             "period_standard_error": np.full(tl.size, 3e-3)}),
+        "length_bob": ({"period": tl, "length": lengths, "bob_radius": 0.03}),
+        "length_cm": ({"period": tl, "length": lengths * 100}),
+        "half_periods": ({"period": tl / 2, "length": lengths}),
+        "two_lengths": ({"period": tl[:2], "length": lengths[:2]}),
+        "repeats": ({"period": t[:1].repeat(5) + rng.normal(0, 1e-3, 5),
+                     "amplitude": np.full(5, 0.05), "pendulum_length": 0.9}),
+        "one_row": ({"period": t[:1], "amplitude": a[:1]}),
+        "negative_period": ({"period": negative, "amplitude": a}),
+        "nan_period": ({"period": nan_period, "amplitude": a}),
+        "amplitude_past_180": ({"period": t, "amplitude": wide}),
+        "zero_error": ({"period": t, "amplitude": a, "period_standard_error": zero_error}),
+        "length_given_twice": ({"period": tl, "length": lengths, "pendulum_length": 1.0}),
+        "pendulum_length_negative": ({"period": t, "amplitude": a, "pendulum_length": -1.0}),
+        "pendulum_length_nan": ({"period": t, "amplitude": a, "pendulum_length": NAN}),
+        "bob_radius_zero": ({"period": tl, "length": lengths, "bob_radius": 0.0}),
+    }
+
+
+TABLES = _period_cases()
+#: The CSV header of each array given, and the flag and unit of each number.
+PERIOD_COLUMNS = {"period": "period_s", "period_standard_error": "period_err_s",
+                  "amplitude": "amplitude_rad", "length": "length_m"}
+PERIOD_FLAGS = {"pendulum_length": "--length", "pendulum_length_standard_error": "--length-uncertainty",
+                "bob_radius": "--bob-radius"}
+
+
+@pytest.mark.parametrize("name", sorted(TABLES))
+def test_fit_period(name, tmp_path):
+    kw = TABLES[name]
+    arrays = [k for k in PERIOD_COLUMNS if k in kw]
+    path = tmp_path / "periods.csv"
+    write_csv(path, [PERIOD_COLUMNS[k] for k in arrays], [kw[k] for k in arrays])
+    args = ["fit", "period", str(path), "--json"]
+    for k, flag in PERIOD_FLAGS.items():
+        if k in kw:
+            args += [flag, cli_value(kw[k], "m")]
+    check(args, lambda: pt.fit_period(**kw))
+
+
+def test_fit_period_answers_and_warns():
+    """The cases above answer or refuse as intended, and warn by cause."""
+    codes = {n: [w["code"] for w in pt.fit_period(**kw)["warnings"]]
+             for n, kw in TABLES.items()
+             if n not in {"one_row", "negative_period", "nan_period", "amplitude_past_180",
+                          "zero_error", "length_given_twice", "pendulum_length_negative",
+                          "pendulum_length_nan", "bob_radius_zero"}}
+    assert codes["amplitude"] == [] and codes["length"] == [], codes
+    assert codes["length_cm"] == ["gravity_implausible"]
+    assert codes["half_periods"] == ["gravity_implausible"]
+    assert "law_differs" in codes["amplitude_in_degrees_as_radians"]
+    assert codes["overstated"] == ["uncertainties_overstated"]
+    assert "residuals_exceed_uncertainties" in codes["understated"]
+    r = pt.fit_period(**TABLES["amplitude_length"])
+    assert abs(r.parameters["g_m_s2"] - 9.81) < 3 * r.standard_errors["g_m_s2"]
 
 
 # --- simulate ---------------------------------------------------------------

@@ -67,7 +67,6 @@ fn judge(rec: &Record) -> Outcome {
 }
 
 struct Tally {
-    lines: Vec<String>,
     within: std::collections::BTreeMap<&'static str, (usize, usize)>,
     far: Vec<String>,
     refused: usize,
@@ -76,29 +75,54 @@ struct Tally {
 
 fn run(seeds: impl Iterator<Item = u64>, small: bool) -> Tally {
     let mut tally = Tally {
-        lines: Vec::new(),
         within: Default::default(),
         far: Vec::new(),
         refused: 0,
         warned: 0,
     };
-    for seed in seeds {
-        let rec = record(seed, small);
-        let clock = std::time::Instant::now();
-        let outcome = judge(&rec);
-        let took = clock.elapsed().as_secs_f64();
-        let t = &rec.truth;
-        let line = format!(
-            "seed {seed} ({took:.1} s): {:.0}° Q {:.0} friction {:.1e} drag {:.1e} {:.0} fps {} samples noise {:.2}° held {}: {outcome:?}",
-            t.release_rad.to_degrees(),
-            t.q,
-            t.friction_rad,
-            t.quadratic,
-            t.frame_rate,
-            rec.time.len(),
-            t.noise_rad.to_degrees(),
-            t.held_frames
-        );
+    // The records are judged on every core, each printed as it finishes
+    // (the 200 take most of an hour of CPU), then tallied in seed order.
+    let seeds: Vec<u64> = seeds.collect();
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let mut done: Vec<(u64, String, Outcome)> = std::thread::scope(|s| {
+        let workers: Vec<_> = (0..threads)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut mine = Vec::new();
+                    loop {
+                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        let Some(&seed) = seeds.get(i) else { break };
+                        let rec = record(seed, small);
+                        let clock = std::time::Instant::now();
+                        let outcome = judge(&rec);
+                        let took = clock.elapsed().as_secs_f64();
+                        let t = &rec.truth;
+                        let line = format!(
+                            "seed {seed} ({took:.1} s): {:.0}° Q {:.0} friction {:.1e} drag {:.1e} {:.0} fps {} samples noise {:.2}° held {}: {outcome:?}",
+                            t.release_rad.to_degrees(),
+                            t.q,
+                            t.friction_rad,
+                            t.quadratic,
+                            t.frame_rate,
+                            rec.time.len(),
+                            t.noise_rad.to_degrees(),
+                            t.held_frames
+                        );
+                        eprintln!("{line}");
+                        mine.push((seed, line, outcome));
+                    }
+                    mine
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .flat_map(|w| w.join().expect("a coverage worker panicked"))
+            .collect()
+    });
+    done.sort_by_key(|d| d.0);
+    for (_, line, outcome) in done {
         match &outcome {
             Outcome::Refused(_) => tally.refused += 1,
             Outcome::Warned(_) => tally.warned += 1,
@@ -115,15 +139,11 @@ fn run(seeds: impl Iterator<Item = u64>, small: bool) -> Tally {
                 }
             }
         }
-        tally.lines.push(line);
     }
     tally
 }
 
 fn check(tally: &Tally, band: bool) {
-    for l in &tally.lines {
-        eprintln!("{l}");
-    }
     eprintln!(
         "refused {}, warned {}; 1σ coverage: {:?}",
         tally.refused, tally.warned, tally.within

@@ -9,6 +9,7 @@ pub(crate) mod damped;
 mod design;
 mod fit_beats;
 mod fit_decay;
+mod fit_period;
 mod fit_trajectory;
 mod gravity;
 mod length;
@@ -74,6 +75,7 @@ fn run_command(command: &Command) -> Result<Output, CliError> {
             FitCommand::Decay(a) => fit_decay::run(a),
             FitCommand::Trajectory(a) => fit_trajectory::run(a),
             FitCommand::Beats(a) => fit_beats::run(a),
+            FitCommand::Period(a) => fit_period::run(a),
         },
     };
     text.map(Output::from)

@@ -9,6 +9,7 @@ mod disk_full;
 mod extremes;
 mod figures;
 mod fit;
+mod fit_period;
 mod formats;
 mod hardening;
 mod listen;

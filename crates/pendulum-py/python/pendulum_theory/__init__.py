@@ -40,6 +40,7 @@ __all__ = [
     "simulate",
     "fit_decay",
     "fit_beats",
+    "fit_period",
     "fit_trajectory",
     "FitResult",
     "clock",
@@ -296,6 +297,23 @@ def fit_beats(time, *, bph=None, period=None):
     d = _json.loads(_native.fit_beats(_array(time), _number(bph), _number(period)))
     keys = ["rate_s_per_day", "beat_error_ms", "jitter_ms", "beats_per_hour"]
     return FitResult(d, {k: d[k] for k in keys}, {}, None)
+
+
+def fit_period(period, *, period_standard_error=None, amplitude=None, length=None,
+               pendulum_length=None, pendulum_length_standard_error=None, bob_radius=None):
+    """Fits a table of periods (s): against ``amplitude`` (rad) with the
+    exact law ``T0 (2/π) K(sin²(A/2))`` (and g with ``pendulum_length``,
+    m), or against ``length`` (m) with ``T² = 4π²(L + offset)/g``;
+    weighted by ``period_standard_error`` (s) when given. The CLI's ``fit
+    period``, the same library call. Returns the CLI's JSON as a dict
+    (rows, against, weighted, parameters, standard_errors, series,
+    residual_rms_s, chi_square, warnings)."""
+    def optional(x):
+        return None if x is None else _array(x)
+    d = _json.loads(_native.fit_period(
+        _array(period), optional(period_standard_error), optional(amplitude), optional(length),
+        _number(pendulum_length), _number(pendulum_length_standard_error), _number(bob_radius)))
+    return FitResult(d, d["parameters"], d["standard_errors"], None)
 
 
 def _clock(length, *, parts=None, drive_energy=None, drive_torque=None, q=None, escapement=None,

@@ -65,6 +65,16 @@ def fit_trajectory(
     force: Any = ...,
 ) -> FitResult: ...
 def fit_beats(time: npt.ArrayLike, *, bph: Optional[float] = ..., period: Optional[float] = ...) -> FitResult: ...
+def fit_period(
+    period: npt.ArrayLike,
+    *,
+    period_standard_error: Optional[npt.ArrayLike] = ...,
+    amplitude: Optional[npt.ArrayLike] = ...,
+    length: Optional[npt.ArrayLike] = ...,
+    pendulum_length: Optional[float] = ...,
+    pendulum_length_standard_error: Optional[float] = ...,
+    bob_radius: Optional[float] = ...,
+) -> FitResult: ...
 def clock(
     length: Optional[float] = ...,
     *,

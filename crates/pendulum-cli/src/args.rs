@@ -302,6 +302,19 @@ pub struct MeasurementArgs {
     /// [default: 0,0], or `fit` for the centre of the circle the bob traces.
     #[arg(long, value_name = "X,Y|fit", allow_hyphen_values = true)]
     pub pivot: Option<String>,
+    /// For x and y positions in image coordinates (pixels from OpenCV, a
+    /// screen): y grows downward, and is turned to point up (a given
+    /// --pivot is in the file's coordinates).
+    #[arg(long)]
+    pub y_down: bool,
+    /// For x and y positions: metres per unit of the file (e.g. 0.00125 for
+    /// 800 pixels a metre), so that the radius of a fitted pivot is a length.
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub scale: Option<Length>,
+    /// Of a file whose times restart (runs one after another), read run N
+    /// (from 1).
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    pub run: Option<u64>,
     /// Fit a file estimated to need more than a few seconds of computing
     /// (never one that would not end in a day).
     #[arg(long)]
@@ -425,6 +438,10 @@ pub struct FitBeatsArgs {
     /// Names of the columns of a file without a header, in order (e.g. time_s).
     #[arg(long, value_name = "NAMES")]
     pub columns: Option<String>,
+    /// Of a file whose times restart (runs one after another), read run N
+    /// (from 1).
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    pub run: Option<u64>,
     /// The nominal beat rate, beats per hour [default: the nearest standard rate].
     #[arg(
         long,

@@ -93,7 +93,9 @@ impl Role {
             | "angulo" | "angolo" | "hoek" => Role::Angle,
             "amplitude" | "amp" | "peak" | "peaks" | "amplitud" | "ampiezza" | "amplitudine"
             | "release_angle" | "initial_angle" | "theta0" | "θ0" | "theta_0" | "θ_0" | "a0"
-            | "angle0" => Role::Amplitude,
+            | "angle0" | "release angle" | "initial angle" | "initial amplitude"
+            | "initial_amplitude" | "release amplitude" | "release_amplitude"
+            | "starting angle" | "start_angle" | "max_angle" | "max angle" => Role::Amplitude,
             "x" => Role::X,
             "y" => Role::Y,
             "drive_factor" | "drive" | "factor" | "drive factor" | "antrieb" => Role::DriveFactor,
@@ -137,12 +139,14 @@ pub struct ReadOptions {
     /// Keep times as written instead of measuring them from the first row
     /// (a schedule against the run's own clock).
     pub absolute_time: bool,
+    /// `--run N`: of a file whose times restart, the N-th run (from 1).
+    pub run: Option<usize>,
 }
 
 /// What was read, for the JSON output (`format`).
 #[derive(Clone, Debug, Serialize)]
 pub struct Format {
-    /// `comma`, `semicolon`, `tab` or `spaces`.
+    /// `comma`, `semicolon`, `tab`, `spaces`, or `none` (one column).
     pub separator: &'static str,
     /// `point` or `comma`.
     pub decimal: &'static str,
@@ -154,6 +158,19 @@ pub struct Format {
     pub skipped_rows: usize,
     /// The frame rate the times were rebuilt from (`--frame-rate`), if any.
     pub frame_rate: Option<f64>,
+    /// When the file writes several readings under one time stamp: their
+    /// mean number, the readings spread evenly between stamps.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub readings_per_time: Option<f64>,
+    /// The run read (`--run`), counted from 1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub run: Option<usize>,
+    /// The runs the file holds (with `--run`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub runs: Option<usize>,
+    /// The point-mass track read from a Tracker project (`.trk`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tracker_track: Option<String>,
     /// The time of the first row, subtracted from every time (a data
     /// logger's Unix time, say), s; `null` when rebuilt from the frame rate
     /// or when there is no time column.
@@ -163,7 +180,11 @@ pub struct Format {
 impl Format {
     /// For people: "tab-separated, decimal commas, 4 rows with blank cells skipped".
     pub fn describe(&self) -> String {
-        let mut out = format!("{}-separated", self.separator);
+        let mut out = if self.separator == "none" {
+            "one column".to_string()
+        } else {
+            format!("{}-separated", self.separator)
+        };
         if self.decimal == "comma" {
             out.push_str(", decimal commas");
         }
@@ -296,6 +317,12 @@ pub fn read_table(
     if values.is_empty() {
         values = vec![Vec::new(); roles.len()];
     }
+    let mut format = format;
+    if let Some(k) = roles.iter().position(|&r| r == Role::Time) {
+        if format.frame_rate.is_none() && !options.absolute_time {
+            format.readings_per_time = spread_readings(&mut values[k]);
+        }
+    }
     Ok(Table {
         file,
         roles,
@@ -304,6 +331,38 @@ pub fn read_table(
         lines,
         format,
     })
+}
+
+/// A logger that writes several readings under one time stamp (its clock
+/// ticks slower than it samples): when most rows share their time with
+/// another, the readings of each stamp are spread evenly over the interval
+/// to the next (the last stamp's over the interval before it). Returns the
+/// mean number of readings a stamp, or `None` when the times are left as
+/// they are (a few repeats are rounding, said by the caller).
+fn spread_readings(time: &mut [f64]) -> Option<f64> {
+    let n = time.len();
+    let repeated = (1..n).filter(|&i| time[i] == time[i - 1]).count();
+    if n < 4 || 2 * repeated < n {
+        return None;
+    }
+    let mut starts: Vec<usize> = vec![0];
+    starts.extend((1..n).filter(|&i| time[i] != time[i - 1]));
+    if starts.len() < 2 {
+        return None;
+    }
+    let stamps: Vec<f64> = starts.iter().map(|&i| time[i]).collect();
+    for (g, &start) in starts.iter().enumerate() {
+        let end = starts.get(g + 1).copied().unwrap_or(n);
+        let step = match stamps.get(g + 1) {
+            Some(next) => next - stamps[g],
+            None => stamps[g] - stamps[g - 1],
+        };
+        let k = (end - start) as f64;
+        for (j, t) in time[start..end].iter_mut().enumerate() {
+            *t = stamps[g] + j as f64 * step / k;
+        }
+    }
+    Some(n as f64 / starts.len() as f64)
 }
 
 /// The separators tried, in order of preference.
@@ -318,6 +377,8 @@ const SEPARATORS: [(Separator, &str); 4] = [
 enum Separator {
     Char(char),
     Spaces,
+    /// One column: the whole line is the cell.
+    Whole,
 }
 
 impl Separator {
@@ -325,6 +386,7 @@ impl Separator {
         match self {
             Separator::Char(c) => line.split(c).map(str::trim).collect(),
             Separator::Spaces => line.split_whitespace().collect(),
+            Separator::Whole => vec![line.trim()],
         }
     }
 }
@@ -346,8 +408,35 @@ fn cell_value(cell: &str, decimal_comma: bool) -> Option<Option<f64>> {
     };
     match parsed {
         Ok(v) if v.is_finite() => Some(Some(v)),
-        _ => None,
+        Ok(_) => None,
+        Err(_) => datetime_seconds(cell).map(Some),
     }
+}
+
+/// A date and time (ISO 8601 / RFC 3339: `2024-07-19T09:27:13.125Z`,
+/// `2024-07-19 09:27:13.125+02:00`; without an offset read as UTC) as
+/// seconds since 1970, or a time of day (`09:27:13.125`) as seconds since
+/// midnight. Parsed by `jiff`; an f64 keeps 0.24 µs of a date in this
+/// century, below any logger's resolution.
+fn datetime_seconds(cell: &str) -> Option<f64> {
+    use jiff::civil::{DateTime, Time};
+    use jiff::Timestamp;
+    if !cell.contains(':') {
+        return None;
+    }
+    let of = |t: Timestamp| t.as_nanosecond() as f64 * 1e-9;
+    if let Ok(t) = cell.parse::<Timestamp>() {
+        return Some(of(t));
+    }
+    if let Ok(d) = cell.parse::<DateTime>() {
+        return jiff::tz::Offset::UTC.to_timestamp(d).ok().map(of);
+    }
+    cell.parse::<Time>().ok().map(|t| {
+        f64::from(t.hour()) * 3600.0
+            + f64::from(t.minute()) * 60.0
+            + f64::from(t.second())
+            + f64::from(t.subsec_nanosecond()) * 1e-9
+    })
 }
 
 /// Whether every cell is a number or empty, with at least one number.
@@ -390,12 +479,29 @@ fn sniff(lines: &[String]) -> (Separator, &'static str, bool) {
             }
         }
     }
-    if best.3 == 0 {
-        // One column: decimal commas are possible with no separator at all.
+    // One number a line, in more lines than any separator's rows (a
+    // logger's column under a few lines of metadata): one column.
+    let single = |comma: bool| {
+        lines
+            .iter()
+            .filter(|l| cell_value(l, comma).is_some_and(|v| v.is_some()))
+            .count()
+    };
+    if best.3 == 0 || single(false) > best.3 {
         let comma = lines
             .iter()
             .any(|l| l.trim().parse::<f64>().is_err() && cell_value(l, true).is_some());
-        return (SEPARATORS[2].0, SEPARATORS[2].1, comma);
+        return (Separator::Whole, "none", comma);
+    }
+    // Numbers with decimal commas under a header of one name: one column
+    // (`1,0017` is not two integers there).
+    let header_has_one_name = lines
+        .iter()
+        .take_while(|l| !is_numeric(&best.0.split(l), best.2))
+        .last()
+        .is_some_and(|h| !h.contains([',', ';', '\t']));
+    if best.0 == Separator::Char(',') && header_has_one_name && single(true) >= best.3 {
+        return (Separator::Whole, "none", true);
     }
     (best.0, best.1, best.2)
 }
@@ -408,6 +514,13 @@ fn split_header(header: &str) -> (String, Option<String>) {
     if let Some(i) = text.find("_{") {
         if text.ends_with('}') {
             text.truncate(i);
+        }
+    }
+    // `Time/s`, `Angle/rad`, `AngVel/rad/s`: the quantity over its unit.
+    if let Some((base, unit)) = text.split_once('/') {
+        let base = base.trim();
+        if !base.is_empty() && !unit.trim().is_empty() && !base.ends_with('+') {
+            return (base.to_string(), Some(unit.trim().to_string()));
         }
     }
     for (open, close) in [('(', ')'), ('[', ']'), ('{', '}')] {
@@ -433,6 +546,29 @@ enum Kind {
     Length,
     Temperature,
     Pressure,
+}
+
+/// The index of a column the reader makes (times from a sample rate).
+const MADE_COLUMN: usize = usize::MAX;
+
+/// Whether a file's setting names its sample rate (Hz).
+fn is_rate_name(name: &str) -> bool {
+    let (base, unit) = split_header(name);
+    matches!(
+        base.as_str(),
+        "sample_rate"
+            | "samplerate"
+            | "sampling_rate"
+            | "sample rate"
+            | "sampling rate"
+            | "fs"
+            | "rate"
+            | "sampling_frequency"
+            | "sample_frequency"
+            | "frame_rate"
+            | "framerate"
+            | "fps"
+    ) && unit.is_none_or(|u| u == "hz")
 }
 
 /// Whether a header's base names an uncertainty without saying of what
@@ -579,7 +715,29 @@ pub fn stream_table(
     if handle.metadata().is_ok_and(|m| m.is_dir()) {
         return Err(fail("is a folder; give a file".to_string()));
     }
-    let mut reader = BufReader::new(handle).take(MAX_FILE_BYTES + 1);
+    // A Tracker project is XML: its track becomes the table's text.
+    let is_project = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("trk"));
+    let mut track = None;
+    let mut reader: Box<dyn BufRead> = if is_project {
+        let mut text = String::new();
+        BufReader::new(handle)
+            .take(MAX_FILE_BYTES + 1)
+            .read_to_string(&mut text)
+            .map_err(|e| fail(format!("cannot read it: {e}")))?;
+        if text.len() as u64 > MAX_FILE_BYTES {
+            return Err(fail(format!(
+                "is larger than the {} GiB a measurement file may have",
+                MAX_FILE_BYTES >> 30
+            )));
+        }
+        let project = crate::tracker::read(&text).map_err(fail)?;
+        track = Some(project.track);
+        Box::new(std::io::Cursor::new(project.csv.into_bytes()))
+    } else {
+        Box::new(BufReader::new(handle).take(MAX_FILE_BYTES + 1))
+    };
     let mut total = 0_u64;
     let mut next_line = |number: &mut u64| -> Result<Option<String>, CliError> {
         let mut bytes = Vec::new();
@@ -623,34 +781,182 @@ pub fn stream_table(
     }
     let texts: Vec<String> = sample.iter().map(|(_, l)| l.clone()).collect();
     let (separator, separator_name, decimal_comma) = sniff(&texts);
-    let shown_separator = if decimal_comma {
+    let shown_separator = if separator == Separator::Whole {
+        format!(
+            "one column{}",
+            if decimal_comma {
+                " with decimal commas"
+            } else {
+                ""
+            }
+        )
+    } else if decimal_comma {
         format!("{separator_name}-separated with decimal commas")
     } else {
         format!("{separator_name}-separated")
     };
-    // The header: the last non-numeric line before the first numeric row.
+    // The rows of data are the numeric lines of the most common width;
+    // numeric lines of another width before the first of them are the
+    // file's metadata (a logger's settings), named by the line above.
+    let numeric = |l: &str| is_numeric(&separator.split(l), decimal_comma);
+    let width_of = |l: &str| separator.split(l).len();
+    let mut widths: Vec<(usize, usize)> = Vec::new();
+    for (_, l) in sample.iter().filter(|(_, l)| numeric(l)) {
+        let w = width_of(l);
+        match widths.iter_mut().find(|(n, _)| *n == w) {
+            Some(e) => e.1 += 1,
+            None => widths.push((w, 1)),
+        }
+    }
+    let width = widths.iter().max_by_key(|&&(w, c)| (c, w)).map(|&(w, _)| w);
     let first_numeric = sample
         .iter()
-        .position(|(_, l)| is_numeric(&separator.split(l), decimal_comma));
+        .position(|(_, l)| numeric(l) && Some(width_of(l)) == width);
     let Some(first_numeric) = first_numeric else {
         return Err(fail(format!(
-            "no rows of numbers found (read as {shown_separator})"
+            "no rows of numbers found (read as {shown_separator}){}",
+            if path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("trk"))
+            {
+                "; a Tracker project (.trk) holds its data as XML: export the track's data \
+                 table from Tracker (File > Export > Data) and give that file"
+            } else {
+                ""
+            }
         )));
     };
-    let headers: Vec<String> =
-        match (&options.columns, first_numeric) {
-            (Some(names), _) => names.clone(),
-            (None, 0) => return Err(fail(
-                "no header line: name the columns with --columns (e.g. --columns time_s,angle_deg)"
-                    .to_string(),
-            )),
-            (None, i) => separator
-                .split(&sample[i - 1].1)
+    // Settings: a line of names over a line of as many numbers, under any
+    // separator (a one-column file's settings are comma-separated).
+    let mut metadata: Vec<(String, f64)> = Vec::new();
+    let mut settings_line = None;
+    for j in 1..first_numeric {
+        let (names, values) = (&sample[j - 1].1, &sample[j].1);
+        let pair = [
+            separator,
+            Separator::Char(','),
+            Separator::Char(';'),
+            Separator::Char('\t'),
+            Separator::Spaces,
+        ]
+        .into_iter()
+        .map(|sep| (sep.split(names), sep.split(values)))
+        .find(|(n, v)| {
+            n.len() == v.len()
+                && v.len() > 1
+                && !is_numeric(n, decimal_comma)
+                && v.iter()
+                    .all(|c| matches!(cell_value(c, decimal_comma), Some(Some(_))))
+        });
+        if let Some((n, v)) = pair {
+            for (n, v) in n.iter().zip(&v) {
+                if let Some(Some(v)) = cell_value(v, decimal_comma) {
+                    metadata.push((n.trim().trim_matches('"').to_string(), v));
+                }
+            }
+            settings_line = Some(j);
+        }
+    }
+    let described = || {
+        metadata
+            .iter()
+            .map(|(n, v)| format!("{n} = {v}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let header_line = first_numeric
+        .checked_sub(1)
+        .filter(|&i| Some(i) != settings_line)
+        .map(|i| &sample[i].1)
+        .filter(|l| !numeric(l));
+    let width = width.unwrap_or(1);
+    let headers: Vec<String> = match (&options.columns, header_line) {
+        (Some(names), _) => names.clone(),
+        (None, None) => {
+            let above = if metadata.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    " (the lines above the data are read as the file's settings: {})",
+                    described()
+                )
+            };
+            return Err(fail(format!(
+                "no header line{above}: name the columns with --columns (e.g. --columns \
+                 time_s,angle_deg{})",
+                if width == 1 {
+                    ", or angle_deg alone"
+                } else {
+                    ""
+                }
+            )));
+        }
+        (None, Some(line)) => {
+            let mut cells: Vec<String> = separator
+                .split(line)
                 .into_iter()
                 .map(String::from)
-                .collect(),
-        };
-    let found = find_columns(&headers, options);
+                .collect();
+            let named: Vec<&String> = cells.iter().filter(|c| !c.trim().is_empty()).collect();
+            // `x y dx dy` written with spaces in a tab-separated file.
+            if named.len() == 1 && named[0].split_whitespace().count() == width {
+                cells = named[0].split_whitespace().map(String::from).collect();
+            }
+            // A header must name the columns the rows hold: names over
+            // columns that are not there shift every meaning.
+            let names = cells.iter().filter(|c| !c.trim().is_empty()).count();
+            let held = sample[first_numeric..]
+                .iter()
+                .filter(|(_, l)| numeric(l) && width_of(l) == width)
+                .map(|(_, l)| {
+                    separator
+                        .split(l)
+                        .iter()
+                        .filter(|c| !c.trim().is_empty())
+                        .count()
+                })
+                .max()
+                .unwrap_or(width);
+            if names != held && cells.len() != width {
+                return Err(fail(format!(
+                    "the header (line {}) names {names} columns ({}) where the rows hold {held}: \
+                     name the columns with --columns (e.g. --columns time_s,angle_deg)",
+                    sample[first_numeric - 1].0,
+                    cells
+                        .iter()
+                        .filter(|c| !c.trim().is_empty())
+                        .cloned()
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )));
+            }
+            cells
+        }
+    };
+    // A logger's sample rate among the settings makes the times of a file
+    // that writes none.
+    let file_rate = metadata
+        .iter()
+        .find(|(n, _)| is_rate_name(n))
+        .map(|&(_, v)| v)
+        .filter(|v| *v > 0.0 && v.is_finite());
+    let mut found = find_columns(&headers, options);
+    let made_time = options.frame_rate.is_none()
+        && file_rate.is_some()
+        && !found.iter().any(|f| f.role == Role::Time);
+    if made_time {
+        found.push(Found {
+            role: Role::Time,
+            header: format!(
+                "time from the file's sample rate ({} Hz)",
+                file_rate.unwrap_or(0.0)
+            ),
+            index: MADE_COLUMN,
+            unit: None,
+            factor: Some(1.0),
+        });
+    }
+    let rate = options.frame_rate.or(file_rate.filter(|_| made_time));
     let roles = choose(&found).map_err(|m| {
         fail(format!(
             "{m} (found: {}; read as {shown_separator})",
@@ -690,12 +996,19 @@ pub fn stream_table(
         columns_used: names.clone(),
         rows: 0,
         skipped_rows: 0,
-        frame_rate: options.frame_rate,
+        frame_rate: rate,
+        tracker_track: track,
+        run: None,
+        runs: None,
+        readings_per_time: None,
         time_origin_s: None,
     };
     let mut row = vec![0.0; used.len()];
     let mut first_time: Option<f64> = None;
     let mut index = 0_u64;
+    // The run being read (from 1), and its first and latest times.
+    let mut runs = 1_usize;
+    let mut run_span: Option<(f64, f64)> = None;
     let mut handle_line = |line_number: u64, line: &str, format: &mut Format| {
         let t = line.trim();
         if t.is_empty() || t.starts_with('#') {
@@ -706,6 +1019,9 @@ pub fn stream_table(
         index += 1;
         let mut blank = false;
         for (k, f) in used.iter().enumerate() {
+            if f.index == MADE_COLUMN {
+                continue; // Made from the rate below.
+            }
             let cell = cells.get(f.index).copied().unwrap_or("");
             match cell_value(cell, decimal_comma) {
                 Some(Some(v)) => row[k] = v * f.factor.unwrap_or(1.0),
@@ -732,12 +1048,37 @@ pub fn stream_table(
             return Ok(());
         }
         if let Some(k) = time_column {
-            if let Some(rate) = options.frame_rate {
+            if let Some(rate) = rate {
                 // Frames counted from the first row of numbers.
                 row[k] = row_index as f64 / rate;
             } else if options.absolute_time {
                 format.time_origin_s = Some(0.0);
             } else {
+                // Times that go back over half the run so far start a new
+                // run (a logger restarted, runs pasted one after another).
+                let raw = row[k];
+                if let Some((start, previous)) = run_span {
+                    if raw < previous && raw <= start + 0.5 * (previous - start) {
+                        runs += 1;
+                        if options.run.is_none() {
+                            return Err(fail(format!(
+                                "line {line_number}, column {}: {raw} is not after the \
+                                 previous {previous}: sort the rows by time, or, if the file \
+                                 holds runs one after another (the times restart), give --run 1 \
+                                 for the first, --run 2 for the next, …",
+                                used[k].header
+                            )));
+                        }
+                        run_span = Some((raw, raw));
+                    } else {
+                        run_span = Some((start, raw));
+                    }
+                } else {
+                    run_span = Some((raw, raw));
+                }
+                if options.run.is_some_and(|want| want != runs) {
+                    return Ok(());
+                }
                 let origin = *first_time.get_or_insert(row[k]);
                 format.time_origin_s = Some(origin);
                 row[k] -= origin;
@@ -756,6 +1097,19 @@ pub fn stream_table(
     }
     while let Some(line) = next_line(&mut number)? {
         handle_line(number, &line, &mut format)?;
+    }
+    if let Some(want) = options.run {
+        if want > runs {
+            return Err(CliError::flag(
+                "--run",
+                format!(
+                    "{file} holds {runs} run{}; there is no run {want}",
+                    if runs == 1 { "" } else { "s" }
+                ),
+            ));
+        }
+        format.run = Some(want);
+        format.runs = Some(runs);
     }
     Ok((file, roles, names, format))
 }

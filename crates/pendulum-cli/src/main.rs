@@ -16,6 +16,7 @@ mod interrupt;
 mod output;
 mod paths;
 mod plot;
+mod tracker;
 mod units;
 mod work;
 

@@ -510,6 +510,7 @@ fn fit_trajectory(
             length: length.map(|l| (l, LengthSource::Given)),
             length_standard_error: None,
             force,
+            angle_from_positions: false,
         })
     }))
 }

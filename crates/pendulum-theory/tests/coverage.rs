@@ -32,6 +32,7 @@ fn judge(rec: &Record) -> Outcome {
         length: Some((t.length_m, LengthSource::Given)),
         length_standard_error: None,
         force: true,
+        angle_from_positions: false,
     }) {
         Ok(r) => r,
         Err(e) => return Outcome::Refused(e.to_string()),

@@ -520,6 +520,7 @@ mod self_checks {
             length,
             length_standard_error: None,
             force: false,
+            angle_from_positions: false,
         })
         .unwrap()
         .warning_codes
@@ -544,6 +545,7 @@ mod self_checks {
             length: Some((0.6, LengthSource::Given)),
             length_standard_error: None,
             force: false,
+            angle_from_positions: false,
         })
         .unwrap();
         assert_eq!(r.warning_codes, ["gravity_implausible"]);
@@ -565,6 +567,7 @@ mod self_checks {
             length: Some((300.0, LengthSource::TrackRadius)),
             length_standard_error: None,
             force: false,
+            angle_from_positions: false,
         })
         .unwrap();
         assert_eq!(r.warning_codes, ["gravity_implausible"]);
@@ -602,6 +605,7 @@ mod self_checks {
             length: None,
             length_standard_error: None,
             force: false,
+            angle_from_positions: false,
         })
         .unwrap()
         .warning_codes;
@@ -798,6 +802,7 @@ mod long_large_swings {
                 length: Some((0.7, LengthSource::Given)),
                 length_standard_error: None,
                 force: true,
+                angle_from_positions: false,
             })
             .unwrap();
             let (g, se) = (r.parameters["g_m_s2"], r.standard_errors["g_m_s2"]);

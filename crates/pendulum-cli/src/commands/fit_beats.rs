@@ -60,6 +60,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     let mut log = BeatLog::new(nominal).map_err(|r| refused(&r, None))?;
     let options = ReadOptions {
         columns: super::measured::columns(args.columns.as_deref()),
+        run: super::measured::run(args.run)?,
         ..ReadOptions::default()
     };
     // Streamed: a log of 10^7 beats takes no more memory than one of ten.

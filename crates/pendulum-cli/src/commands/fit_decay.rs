@@ -1,7 +1,7 @@
 //! `pendulum fit decay`: which damping, and how much, from a run-down.
 
 use super::common;
-use super::measured::{has_track, read_options, track_of, track_roles};
+use super::measured::{has_track, read_options, track_of, track_roles, Positions};
 use crate::args::FitDecayArgs;
 use crate::data::{need, read_table, Format, Found, Role};
 use crate::error::CliError;
@@ -121,11 +121,25 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         })?;
         (analysis, time, amplitude, None)
     } else {
-        let track = track_of(table, args.read.pivot.as_deref(), rate)?;
+        let track = track_of(table, &Positions::of(&args.read)?, rate)?;
         let found = turning_points(&track.time, &track.angle);
         if found.turns.len() < 4 {
+            // A short table of angles is more likely a list of amplitudes
+            // under an angle's name than a track.
+            let hint = if track.time.len() < 200 {
+                format!(
+                    " (the file was read as a track of angle against time, {} rows of {}; if \
+                     its angles are the amplitudes of successive swings, call that column \
+                     amplitude: --columns with amplitude_rad or amplitude_deg in its place)",
+                    track.time.len(),
+                    track.table.names.join(", ")
+                )
+            } else {
+                String::new()
+            };
             return Err(CliError::other(format!(
-                "{file}: only {} turning points found in the track; a decay needs more swings",
+                "{file}: only {} turning points found in the track; a decay needs more \
+                 swings{hint}",
                 found.turns.len()
             )));
         }

@@ -67,6 +67,7 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
         frame_rate: None,
         // Periods are not times from a start.
         absolute_time: true,
+        run: None,
     };
     let table = read_table(&args.file, &options, &choose)?;
     let file = table.file.clone();

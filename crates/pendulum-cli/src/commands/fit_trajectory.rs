@@ -69,6 +69,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         length,
         length_standard_error: track.track_radius_error.filter(|_| given_length.is_none()),
         force: args.read.force,
+        angle_from_positions: track.pivot.is_some(),
     })
     .map_err(|r| {
         CliError::refused(&r, &[("time", "FILE")], &|at, reason| match at {

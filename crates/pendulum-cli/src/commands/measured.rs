@@ -20,7 +20,19 @@ pub fn read_options(args: &MeasurementArgs) -> Result<ReadOptions, CliError> {
         columns: columns(args.columns.as_deref()),
         frame_rate: frame_rate(args.frame_rate)?,
         absolute_time: false,
+        run: run(args.run)?,
     })
+}
+
+/// `--run N`: at least 1.
+pub fn run(n: Option<u64>) -> Result<Option<usize>, CliError> {
+    match n {
+        Some(0) => Err(CliError::flag(
+            "--run",
+            "must be at least 1 (the first run), got 0",
+        )),
+        n => Ok(n.map(|n| usize::try_from(n).unwrap_or(usize::MAX))),
+    }
 }
 
 /// `--columns a,b,c` as names.
@@ -78,7 +90,10 @@ pub fn track_roles(found: &[Found], rate: bool) -> Result<Vec<Role>, String> {
     let time = has(Role::Time);
     if !time && !rate {
         return Err(
-            "no time column; for a logger that samples at a fixed rate give --sample-rate HZ"
+            "no time column. If a column holds the times under another name (a plot's x and \
+             y are often time and angle), name the columns with --columns (e.g. --columns \
+             time_s,angle_deg); for a logger that writes no times, give its rate with \
+             --sample-rate HZ"
                 .into(),
         );
     }
@@ -101,12 +116,48 @@ pub fn read_track(path: &Path, args: &MeasurementArgs) -> Result<Track, CliError
     let table = read_table(path, &options, &|found: &[Found]| {
         track_roles(found, rate.is_some())
     })?;
-    track_of(table, args.pivot.as_deref(), rate)
+    track_of(table, &Positions::of(args)?, rate)
+}
+
+/// How x and y positions become angles: the pivot, the direction of y,
+/// and the metres a unit of the file is.
+#[derive(Clone, Debug, Default)]
+pub struct Positions<'a> {
+    /// `--pivot`: X,Y, `fit`, or none (0,0).
+    pub pivot: Option<&'a str>,
+    /// `--y-down`: image coordinates.
+    pub y_down: bool,
+    /// `--scale`: metres per file unit.
+    pub scale: Option<f64>,
+}
+
+impl<'a> Positions<'a> {
+    /// The flags given.
+    pub fn of(args: &'a MeasurementArgs) -> Result<Self, CliError> {
+        let scale = match args.scale {
+            Some(s) if !(s.0 > 0.0 && s.0.is_finite()) => {
+                return Err(CliError::flag(
+                    "--scale",
+                    format!("must be positive, got {} m", s.0),
+                ))
+            }
+            s => s.map(|s| s.0),
+        };
+        Ok(Self {
+            pivot: args.pivot.as_deref(),
+            y_down: args.y_down,
+            scale,
+        })
+    }
 }
 
 /// The swing of a table read with [`track_roles`]; without a time column
 /// the times are the row numbers over `rate` (samples a second).
-pub fn track_of(table: Table, pivot: Option<&str>, rate: Option<f64>) -> Result<Track, CliError> {
+pub fn track_of(
+    table: Table,
+    positions: &Positions<'_>,
+    rate: Option<f64>,
+) -> Result<Track, CliError> {
     table.require_increasing(Role::Time)?;
     let time = match (table.column(Role::Time), rate) {
         (Some(t), _) => t.to_vec(),
@@ -127,11 +178,16 @@ pub fn track_of(table: Table, pivot: Option<&str>, rate: Option<f64>) -> Result<
             track_radius_error: None,
         });
     }
-    let (x, y) = (
-        table.column(Role::X).unwrap_or(&[]),
-        table.column(Role::Y).unwrap_or(&[]),
-    );
-    let (pivot, radius) = match pivot.map(str::trim) {
+    let x = table.column(Role::X).unwrap_or(&[]);
+    let flip = if positions.y_down { -1.0 } else { 1.0 };
+    let y: Vec<f64> = table
+        .column(Role::Y)
+        .unwrap_or(&[])
+        .iter()
+        .map(|v| flip * v)
+        .collect();
+    let y = y.as_slice();
+    let (mut pivot, radius) = match positions.pivot.map(str::trim) {
         Some("fit") => {
             let circle = fit_circle(x, y).map_err(|e| {
                 CliError::flag(
@@ -160,7 +216,7 @@ pub fn track_of(table: Table, pivot: Option<&str>, rate: Option<f64>) -> Result<
                 return Err(bad());
             }
             let px = parse_number(parts[0]).map_err(|_| bad())?;
-            let py = parse_number(parts[1]).map_err(|_| bad())?;
+            let py = flip * parse_number(parts[1]).map_err(|_| bad())?;
             (
                 PivotJson {
                     x: px,
@@ -184,21 +240,46 @@ pub fn track_of(table: Table, pivot: Option<&str>, rate: Option<f64>) -> Result<
         .zip(y)
         .map(|(&xi, &yi)| angle_about(xi, yi, pivot.x, pivot.y))
         .collect();
-    // A bob above its pivot means the pivot is wrong (or y points down).
+    // A bob above its pivot means the pivot is wrong, or y points down:
+    // the advice names what was not tried.
     if let Some(i) = angle
         .iter()
         .position(|a| a.abs() >= std::f64::consts::FRAC_PI_2)
     {
+        let image = !positions.y_down && pivot.source == "fit" && y.iter().all(|&yi| yi > pivot.y);
+        let advice = if image {
+            "the bob hangs above the centre of the circle it traces: the positions look like \
+             image coordinates, y growing downward; give --y-down"
+                .to_string()
+        } else {
+            let mut ways = Vec::new();
+            if pivot.source != "given" {
+                ways.push("give the pivot with --pivot X,Y");
+            }
+            if pivot.source != "fit" {
+                ways.push("--pivot fit to find it");
+            }
+            if !positions.y_down {
+                ways.push("--y-down if y grows downward (image coordinates)");
+            }
+            ways.join(", or ")
+        };
         return Err(table.error_at(
             i,
             Role::Y,
             format!(
-                "the bob is level with or above the pivot ({}, {}): give the pivot with \
-                 --pivot X,Y, or --pivot fit",
-                pivot.x, pivot.y
+                "the bob is level with or above the pivot ({}, {}): {advice}",
+                pivot.x,
+                flip * pivot.y
             ),
         ));
     }
+    // Back in the file's coordinates for the JSON.
+    pivot.y *= flip;
+    let radius = radius.map(|(r, e)| match positions.scale {
+        Some(s) => (r * s, e * s),
+        None => (r, e),
+    });
     Ok(Track {
         table,
         time,

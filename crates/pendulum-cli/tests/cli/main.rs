@@ -12,6 +12,7 @@ mod fit;
 mod fit_period;
 mod formats;
 mod hardening;
+mod layouts;
 mod listen;
 mod period;
 mod plot;

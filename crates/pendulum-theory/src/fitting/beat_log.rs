@@ -39,9 +39,22 @@ pub const DRIFT_OF_BEAT: f64 = 0.005;
 /// Standard errors a change of the beat error must exceed to be reported.
 pub const DRIFT_SIGMA: f64 = 5.0;
 
+/// The fastest beat a clock or watch has, s: 72,000 beats an hour (a
+/// few chronographs beat faster; no pendulum comes near).
+pub const FASTEST_BEAT_S: f64 = 0.05;
+/// The slowest beat a pendulum has, s: Foucault's 67 m pendulum beats in
+/// 8 s.
+pub const SLOWEST_BEAT_S: f64 = 10.0;
+
 /// What a person must know about a beat analysis.
 #[derive(Clone, Debug, PartialEq)]
 pub enum BeatWarning {
+    /// The mean beat is no clock's: faster than [`FASTEST_BEAT_S`] or
+    /// slower than [`SLOWEST_BEAT_S`].
+    BeatImplausible {
+        /// The mean beat, s.
+        beat_s: f64,
+    },
     /// The tick and tock intervals drift apart (or together) over the
     /// record: the mean beat error describes neither end.
     SidesDrift {
@@ -57,6 +70,7 @@ impl BeatWarning {
     pub fn code(&self) -> &'static str {
         match self {
             BeatWarning::SidesDrift { .. } => "sides_drift",
+            BeatWarning::BeatImplausible { .. } => "beat_implausible",
         }
     }
 }
@@ -64,6 +78,19 @@ impl BeatWarning {
 impl std::fmt::Display for BeatWarning {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
+            BeatWarning::BeatImplausible { beat_s } if *beat_s < FASTEST_BEAT_S => write!(
+                f,
+                "a beat of {} s ({} an hour) is faster than any clock's or watch's (72,000 an \
+                 hour at most): are the times a logger's samples rather than beats?",
+                format_significant(*beat_s, 4),
+                format_significant(3600.0 / beat_s, 6)
+            ),
+            BeatWarning::BeatImplausible { beat_s } => write!(
+                f,
+                "a beat of {} s is slower than any pendulum's (Foucault's 67 m swings in 8 s): \
+                 are the times in another unit (minutes?) or of many swings?",
+                format_significant(*beat_s, 4)
+            ),
             BeatWarning::SidesDrift { start_ms, end_ms } => write!(
                 f,
                 "the beat error goes from {} ms at the start to {} ms at the end: the ticks \
@@ -126,15 +153,21 @@ impl Beats {
     /// The result of an analysis of beat times.
     pub fn of(a: BeatAnalysis) -> Self {
         let change = (a.beat_error_end_ms - a.beat_error_start_ms).abs();
-        let warnings: Vec<BeatWarning> = (a.beat_error_change_sigma > DRIFT_SIGMA
+        let mut warnings: Vec<BeatWarning> = Vec::new();
+        if !(FASTEST_BEAT_S..=SLOWEST_BEAT_S).contains(&a.mean_beat) {
+            warnings.push(BeatWarning::BeatImplausible {
+                beat_s: a.mean_beat,
+            });
+        }
+        if a.beat_error_change_sigma > DRIFT_SIGMA
             && change > 1e3 * DRIFT_OF_BEAT * a.mean_beat
-            && change > 0.2 * a.beat_error_start_ms.max(a.beat_error_end_ms))
-        .then_some(BeatWarning::SidesDrift {
-            start_ms: a.beat_error_start_ms,
-            end_ms: a.beat_error_end_ms,
-        })
-        .into_iter()
-        .collect();
+            && change > 0.2 * a.beat_error_start_ms.max(a.beat_error_end_ms)
+        {
+            warnings.push(BeatWarning::SidesDrift {
+                start_ms: a.beat_error_start_ms,
+                end_ms: a.beat_error_end_ms,
+            });
+        }
         Self {
             beats: a.beats,
             mean_beat_s: a.mean_beat,

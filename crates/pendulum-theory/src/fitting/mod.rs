@@ -184,7 +184,7 @@ fn fit_with(
         .with_patience(patience)
         .minimize(problem);
     if !report.termination.was_successful() {
-        return Err(FitError::NoConvergence(format!("{:?}", report.termination)));
+        return Err(FitError::NoConvergence(termination(&report.termination)));
     }
     let jac = problem.jacobian().ok_or(FitError::Singular)?;
     let p = problem.p.as_slice().to_vec();
@@ -213,6 +213,20 @@ fn fit_with(
         bic: log_likelihood_term + k as f64 * nf.ln(),
         residuals,
     })
+}
+
+/// Why the minimiser stopped, in words (its enum's names are not for
+/// people: `User("residuals")` is a model with no value at a guess).
+fn termination(reason: &levenberg_marquardt::TerminationReason) -> String {
+    use levenberg_marquardt::TerminationReason as T;
+    match reason {
+        T::User(_) | T::Numerical(_) => "the model has no finite value at the parameters tried: \
+                                         the record may not be a pendulum's swing"
+            .to_string(),
+        T::LostPatience => "it did not settle within its budget of evaluations".to_string(),
+        T::NoImprovementPossible(_) => "no step improves it, short of its tolerance".to_string(),
+        other => format!("{other:?}"),
+    }
 }
 
 /// The independent noise of a series from its fourth differences, which

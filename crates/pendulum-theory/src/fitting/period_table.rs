@@ -252,8 +252,11 @@ pub struct PeriodTable {
     pub against: Against,
     /// Whether the fit was weighted by uncertainties given.
     pub weighted: bool,
-    /// Fitted values by name: `small_angle_period_s`, `g_m_s2`,
-    /// `length_offset_m`, `circular_error_coefficient`.
+    /// Fitted values by name: `small_angle_period_s` (the exact law's),
+    /// `g_m_s2`, `length_offset_m`, `circular_error_coefficient`, and
+    /// `small_angle_period_free_s`: `T0` with that coefficient fitted too,
+    /// the data's own period at zero amplitude when they do not follow the
+    /// law.
     pub parameters: BTreeMap<&'static str, f64>,
     /// Their standard errors.
     pub standard_errors: BTreeMap<&'static str, f64>,
@@ -604,7 +607,7 @@ fn fit_amplitude(
             }
             // The law's own test: T = T0 F (1 + d A²).
             if n >= 3 {
-                let law = |a: &[f64]| -> Option<(f64, f64)> {
+                let law = |a: &[f64]| -> Option<(f64, f64, f64, f64)> {
                     let f: Vec<f64> = a
                         .iter()
                         .map(|&v| Amplitude::from_radians(v).map_or(f64::NAN, period_ratio))
@@ -620,11 +623,13 @@ fn fit_amplitude(
                     // c - 1/16 = e/t; its variance by propagation.
                     let d = e / t;
                     let var = (l.cov[1][1] - 2.0 * d * l.cov[0][1] + d * d * l.cov[0][0]) / (t * t);
-                    Some((d, var.max(0.0).sqrt()))
+                    Some((d, var.max(0.0).sqrt(), t, l.cov[0][0].max(0.0).sqrt()))
                 };
-                if let Some((d, se)) = law(a) {
+                if let Some((d, se, t_free, t_free_se)) = law(a) {
                     parameters.insert("circular_error_coefficient", CIRCULAR_COEFFICIENT + d);
                     standard_errors.insert("circular_error_coefficient", se);
+                    parameters.insert("small_angle_period_free_s", t_free);
+                    standard_errors.insert("small_angle_period_free_s", t_free_se);
                     theory = Some(CIRCULAR_COEFFICIENT);
                     if d.abs() > LAW_SIGMA * se {
                         let read_as = [
@@ -639,7 +644,7 @@ fn fit_amplitude(
                         ]
                         .into_iter()
                         .find_map(|(other, unit)| {
-                            let (d2, se2) = law(&other)?;
+                            let (d2, se2, _, _) = law(&other)?;
                             (d2.abs() <= 2.0 * se2 || d2.abs() * 10.0 < d.abs()).then_some(unit)
                         });
                         warnings.push(PeriodWarning::LawDiffers {
@@ -967,13 +972,6 @@ mod tests {
         let cases: Vec<(PeriodTableInput<'_>, &str)> = vec![
             (
                 PeriodTableInput {
-                    period: &[2.0],
-                    ..Default::default()
-                },
-                "period",
-            ),
-            (
-                PeriodTableInput {
                     period: &[2.0, -1.0],
                     ..Default::default()
                 },
@@ -1031,6 +1029,14 @@ mod tests {
             let e = analyse(&input).unwrap_err();
             assert_eq!(e.field_name(), Some(field), "{e:?}");
         }
+        // One row is the data's fault, not a field's.
+        let e = analyse(&PeriodTableInput {
+            period: &[2.0],
+            ..Default::default()
+        })
+        .unwrap_err();
+        assert_eq!(e.field_name(), None);
+        assert!(e.reason.contains("at least two periods"), "{e:?}");
     }
 
     #[test]

@@ -69,6 +69,9 @@ pub struct TrackInput<'a> {
     pub length_standard_error: Option<f64>,
     /// Runs estimated beyond [`crate::analysis::FORCE_SECONDS`] anyway.
     pub force: bool,
+    /// The angles were computed from x and y positions, so no unit of
+    /// theirs can be mistaken (no angle-unit hint for a g off).
+    pub angle_from_positions: bool,
 }
 
 /// What a person must know about a trajectory fit.
@@ -133,6 +136,15 @@ pub enum TrackWarning {
         /// The noise from the residuals' fourth differences, rad.
         noise: f64,
     },
+    /// The fitted damping is negative beyond three standard errors: the
+    /// swing grows (a driven or pushed pendulum), which a free decay does
+    /// not.
+    SwingGrows {
+        /// The fitted ζ.
+        zeta: f64,
+        /// Its standard error.
+        standard_error: f64,
+    },
     /// The fitted curve crosses the centre a different number of times
     /// than the data do: its frequency is not the record's.
     CrossingsDiffer {
@@ -150,6 +162,7 @@ impl TrackWarning {
             TrackWarning::NonlinearRejected(_) => "nonlinear_rejected",
             TrackWarning::NoGravityFromLinear { .. } => "no_gravity_from_linear",
             TrackWarning::ZetaUndetermined => "zeta_undetermined",
+            TrackWarning::SwingGrows { .. } => "swing_grows",
             TrackWarning::ShapeUndetermined(_) => "shape_undetermined",
             TrackWarning::GravityImplausible { .. } => "gravity_implausible",
             TrackWarning::PoorFit { .. } => "poor_fit",
@@ -172,9 +185,21 @@ impl fmt::Display for TrackWarning {
                  correction leaves a bias beyond the standard error; fit the nonlinear model",
                 format_significant(swing.to_degrees(), 3)
             ),
+            TrackWarning::SwingGrows {
+                zeta,
+                standard_error,
+            } => write!(
+                f,
+                "the swing grows (zeta = {} ± {}): the pendulum is driven or pushed, and the \
+                 fit of a free decay does not describe it",
+                format_significant(*zeta, 3),
+                format_significant(*standard_error, 2)
+            ),
             TrackWarning::ZetaUndetermined => f.write_str(
-                "zeta not determined (its standard error exceeds it): the swing decays too \
-                 little over the record to measure the damping; a longer record will",
+                "zeta not determined (its standard error exceeds it): the viscous part of the \
+                 damping is too small to measure in this record, beside the drag or friction \
+                 fitted with it, or because the swing decays too little over it (a longer \
+                 record would tell)",
             ),
             TrackWarning::GravityImplausible { g, likely } => write!(
                 f,
@@ -304,6 +329,15 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     check_pairs("time", "angle", time, theta)?;
     check_times("time", time)?;
     require_finite_samples("angle", theta)?;
+    if let (Some(first), true) = (theta.first(), theta.len() > 1) {
+        if theta.iter().all(|v| v == first) {
+            return Err(Refusal::data(format!(
+                "the angle never changes (every sample is {} rad): there is no swing to fit; \
+                 is it the pendulum's angle column?",
+                format_significant(*first, 6)
+            )));
+        }
+    }
     let requested = match input.model.unwrap_or(DEFAULT_MODEL) {
         "auto" => "auto",
         "linear" => "linear",
@@ -381,7 +415,9 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             standard_errors.insert("g_m_s2", se);
             if let Some(likely) = implausible_gravity(g, input.length.map(|(_, s)| s)) {
                 warnings.push(TrackWarning::GravityImplausible { g, likely });
-            } else if let Some(w) = angle_unit_hint(g, se, largest_swing(theta)) {
+            } else if let Some(w) =
+                angle_unit_hint(g, se, largest_swing(theta)).filter(|_| !input.angle_from_positions)
+            {
                 warnings.push(w);
             } else if (g - crate::STANDARD_GRAVITY).abs()
                 > (GRAVITY_CHECK * crate::STANDARD_GRAVITY).max(3.0 * se)
@@ -416,6 +452,14 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         }
     }
     let undetermined = fit.undetermined();
+    if let (Some(&zeta), Some(&se)) = (parameters.get("zeta"), standard_errors.get("zeta")) {
+        if zeta < -3.0 * se {
+            warnings.push(TrackWarning::SwingGrows {
+                zeta,
+                standard_error: se,
+            });
+        }
+    }
     if undetermined.contains(&"zeta") {
         warnings.push(TrackWarning::ZetaUndetermined);
     }
@@ -447,13 +491,23 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             warnings.push(TrackWarning::ResidualsExceedNoise { rms, noise });
         }
     }
+    // Counted over the span where both swing beyond the band: a curve
+    // that decays by another law leaves the band earlier or later than
+    // the data, with the same frequency.
     let band = CROSSING_BAND * swing;
-    let data = crossings(theta.iter().copied(), offset, band);
-    let model = crossings(
+    let data = crossing_indices(theta.iter().copied(), offset, band);
+    let model = crossing_indices(
         theta.iter().zip(&fit.fit.residuals).map(|(v, r)| v - r),
         offset,
         band,
     );
+    // (A curve that never crosses is compared whole.)
+    let end = match (data.last(), model.last()) {
+        (Some(&a), Some(&b)) => a.min(b),
+        _ => usize::MAX,
+    };
+    let data = data.iter().filter(|&&i| i <= end).count();
+    let model = model.iter().filter(|&&i| i <= end).count();
     if data.abs_diff(model) > 2 {
         warnings.push(TrackWarning::CrossingsDiffer { data, model });
     }
@@ -513,8 +567,14 @@ pub fn implausible_gravity(g: f64, source: Option<LengthSource>) -> Option<&'sta
 /// Times `values` cross `centre`, each crossing from one side of the band
 /// `centre ± band` to the other (noise within the band counts none).
 pub fn crossings(values: impl Iterator<Item = f64>, centre: f64, band: f64) -> usize {
-    let (mut side, mut count) = (0_i8, 0);
-    for v in values {
+    crossing_indices(values, centre, band).len()
+}
+
+/// Where `values` cross `centre` as [`crossings`] counts them: the index
+/// of the sample on the far side of each crossing.
+pub fn crossing_indices(values: impl Iterator<Item = f64>, centre: f64, band: f64) -> Vec<usize> {
+    let (mut side, mut out) = (0_i8, Vec::new());
+    for (i, v) in values.enumerate() {
         let s = if v > centre + band {
             1
         } else if v < centre - band {
@@ -524,12 +584,12 @@ pub fn crossings(values: impl Iterator<Item = f64>, centre: f64, band: f64) -> u
         };
         if s != 0 {
             if side != 0 && s != side {
-                count += 1;
+                out.push(i);
             }
             side = s;
         }
     }
-    count
+    out
 }
 
 /// A g (standard error `se`) from a record whose largest swing is `swing`

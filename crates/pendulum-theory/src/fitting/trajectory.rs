@@ -362,8 +362,10 @@ pub fn fit_trajectory(
 /// plateau's last sample. The noise `σ` is [`super::noise_of`] the angles
 /// (a smooth motion's own fourth differences only raise it, so that less
 /// is taken as held), `ω` the
-/// record's crossings' and `A` its first sample from the mean. 0 when the
-/// record starts moving.
+/// record's crossings' and `A` its first sample from the mean. A record
+/// that starts at the centre with three or more identical samples (where
+/// a swinging bob is fastest) is at rest until the last of them. 0 when
+/// the record starts moving.
 pub fn held_start(time: &[f64], theta: &[f64]) -> usize {
     let n = time.len().min(theta.len());
     if n < 40 {
@@ -382,7 +384,18 @@ pub fn held_start(time: &[f64], theta: &[f64]) -> usize {
         .abs()
         .min(std::f64::consts::FRAC_PI_2)
         .sin();
-    if !(sigma > 0.0 && wd > 0.0 && sin_a > 0.0) || (crest - offset).abs() < 10.0 * sigma {
+    // Samples that do not change at the centre, where a swinging bob is
+    // fastest, are a pendulum at rest before it is set going (a remote
+    // lab's record, a tracker started early).
+    if (crest - offset).abs() < 10.0 * sigma {
+        let still = theta.iter().position(|v| *v != theta[0]).unwrap_or(n);
+        return if (3..n / 2).contains(&still) {
+            still - 1
+        } else {
+            0
+        };
+    }
+    if !(sigma > 0.0 && wd > 0.0 && sin_a > 0.0) {
         return 0;
     }
     let t3 = (6.0 * sigma / (wd * wd * sin_a)).sqrt();

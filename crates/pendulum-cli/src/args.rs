@@ -442,6 +442,18 @@ pub struct FitBeatsArgs {
     /// (from 1).
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub run: Option<u64>,
+    /// For a photogate log whose times count a clock's ticks: the clock's
+    /// rate, ticks a second.
+    #[arg(long, value_name = "HZ", allow_hyphen_values = true)]
+    pub tick_rate: Option<Number>,
+    /// For a log of several light gates (a `gate` column): the gate to
+    /// read, by its label [default: the first logged].
+    #[arg(long, value_name = "LABEL")]
+    pub gate: Option<String>,
+    /// For a photogate log of both edges of each shadow: the bob's
+    /// diameter, to give its speed at the gate.
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
+    pub bob_diameter: Option<Length>,
     /// The nominal beat rate, beats per hour [default: the nearest standard rate].
     #[arg(
         long,

@@ -62,6 +62,10 @@ pub enum Role {
     PeriodError,
     /// A pendulum's length (read in m).
     Length,
+    /// Which light gate an event is of (a label: `U`, `D`, `A`…).
+    Gate,
+    /// Times counted in a clock's ticks (read with `--tick-rate`).
+    Ticks,
 }
 
 impl Role {
@@ -79,6 +83,8 @@ impl Role {
             Role::Period => "period",
             Role::PeriodError => "period_error",
             Role::Length => "length",
+            Role::Gate => "gate",
+            Role::Ticks => "ticks",
         }
     }
 
@@ -113,6 +119,10 @@ impl Role {
             "length" | "l" | "len" | "länge" | "laenge" | "longueur" | "longitud" | "lunghezza"
             | "lengte" | "comprimento" | "string_length" | "pendulum_length" | "cord_length"
             | "wire_length" | "rod_length" | "thread_length" => Role::Length,
+            "gate" | "eventtype" | "event_type" | "event type" | "channel" | "sensor"
+            | "photogate" => Role::Gate,
+            "clockticks" | "clock_ticks" | "clock ticks" | "ticks" | "tick" | "counts"
+            | "counter" | "timer_ticks" => Role::Ticks,
             _ => return None,
         })
     }
@@ -141,6 +151,8 @@ pub struct ReadOptions {
     pub absolute_time: bool,
     /// `--run N`: of a file whose times restart, the N-th run (from 1).
     pub run: Option<usize>,
+    /// `--tick-rate HZ`: the clock whose ticks a `ticks` column counts.
+    pub tick_rate: Option<f64>,
 }
 
 /// What was read, for the JSON output (`format`).
@@ -162,6 +174,10 @@ pub struct Format {
     /// mean number, the readings spread evenly between stamps.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub readings_per_time: Option<f64>,
+    /// The labels of a gate column, in the order first seen (their
+    /// numbers in the analysis).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub gate_labels: Vec<String>,
     /// The run read (`--run`), counted from 1.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub run: Option<usize>,
@@ -441,15 +457,27 @@ fn datetime_seconds(cell: &str) -> Option<f64> {
 
 /// Whether every cell is a number or empty, with at least one number.
 fn is_numeric(cells: &[&str], decimal_comma: bool) -> bool {
-    let mut any = false;
+    let (mut numbers, mut labels) = (0, 0);
     for c in cells {
         match cell_value(c, decimal_comma) {
+            None if is_label(c) => labels += 1,
             None => return false,
-            Some(Some(_)) => any = true,
+            Some(Some(_)) => numbers += 1,
             Some(None) => {}
         }
     }
-    any
+    // A row may carry short labels (a photogate's `U`/`D`) beside at
+    // least as many numbers; a header of names has no number.
+    numbers > 0 && labels <= numbers
+}
+
+/// A short label in a row of numbers: one to four letters or digits,
+/// starting with a letter (`U`, `D`, `A1`, `on`).
+fn is_label(cell: &str) -> bool {
+    let c = cell.trim().trim_matches('"');
+    (1..=4).contains(&c.chars().count())
+        && c.chars().next().is_some_and(char::is_alphabetic)
+        && c.chars().all(char::is_alphanumeric)
 }
 
 /// The separator and decimal mark of the sampled `lines`: the candidate
@@ -643,6 +671,7 @@ fn units_for(role: Role) -> &'static str {
         Role::Pressure => "hPa, mbar, Pa, kPa, inHg, mmHg",
         Role::Period | Role::PeriodError => "s, ms, us, min, h",
         Role::Length => "m, cm, mm, in",
+        Role::Ticks => "none: give the clock's rate with --tick-rate HZ",
         _ => "none",
     }
 }
@@ -682,7 +711,9 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
             // A pressure without a unit is in hPa (a barometer's).
             (Role::Pressure, None) => Some(100.0),
             (Role::Time | Role::Period | Role::PeriodError, Some(_)) => kind(Kind::Time),
-            (Role::Period | Role::PeriodError | Role::Length, None) => Some(1.0),
+            (Role::Period | Role::PeriodError | Role::Length | Role::Gate, None) => Some(1.0),
+            (Role::Gate, Some(_)) => Some(1.0),
+            (Role::Ticks, _) => options.tick_rate.map(|r| 1.0 / r),
             (Role::Length, Some(u)) => length_factor(u),
             (Role::Angle | Role::Amplitude, Some(_)) => kind(Kind::Angle),
             (Role::Temperature, Some(_)) => kind(Kind::Temperature),
@@ -971,6 +1002,13 @@ pub fn stream_table(
             .expect("choose returns found roles");
         match (&f.unit, f.factor) {
             (_, Some(_)) => {}
+            (_, None) if f.role == Role::Ticks => {
+                return Err(fail(format!(
+                    "column '{}' counts a clock's ticks: give the clock's rate with --tick-rate \
+                     HZ",
+                    f.header
+                )))
+            }
             (None, None) => {
                 return Err(fail(format!(
                     "column '{}' has no unit: give --angle-unit deg or --angle-unit rad",
@@ -989,7 +1027,9 @@ pub fn stream_table(
         used.push(f);
     }
     let names: Vec<String> = used.iter().map(|f| f.header.clone()).collect();
-    let time_column = roles.iter().position(|&r| r == Role::Time);
+    let time_column = roles
+        .iter()
+        .position(|&r| r == Role::Time || r == Role::Ticks);
     let mut format = Format {
         separator: separator_name,
         decimal: if decimal_comma { "comma" } else { "point" },
@@ -1001,6 +1041,7 @@ pub fn stream_table(
         run: None,
         runs: None,
         readings_per_time: None,
+        gate_labels: Vec::new(),
         time_origin_s: None,
     };
     let mut row = vec![0.0; used.len()];
@@ -1023,6 +1064,23 @@ pub fn stream_table(
                 continue; // Made from the rate below.
             }
             let cell = cells.get(f.index).copied().unwrap_or("");
+            if f.role == Role::Gate {
+                // A label, numbered in the order first seen.
+                let label = cell.trim().trim_matches('"');
+                if label.is_empty() {
+                    blank = true;
+                    continue;
+                }
+                let i = match format.gate_labels.iter().position(|l| l == label) {
+                    Some(i) => i,
+                    None => {
+                        format.gate_labels.push(label.to_string());
+                        format.gate_labels.len() - 1
+                    }
+                };
+                row[k] = i as f64;
+                continue;
+            }
             match cell_value(cell, decimal_comma) {
                 Some(Some(v)) => row[k] = v * f.factor.unwrap_or(1.0),
                 Some(None) => blank = true,

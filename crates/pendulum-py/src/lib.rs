@@ -469,6 +469,40 @@ fn fit_period(
     }))
 }
 
+/// A photogate log's analysis (the CLI's `fit beats` on a gate log) as
+/// JSON.
+#[pyfunction]
+#[pyo3(signature = (time, gate, select, bob_diameter, bph, period))]
+fn fit_photogate(
+    py: Python<'_>,
+    time: In<'_>,
+    gate: Option<In<'_>>,
+    select: Option<usize>,
+    bob_diameter: Option<f64>,
+    bph: Option<f64>,
+    period: Option<f64>,
+) -> PyResult<String> {
+    use pendulum_theory::fitting::beat_log::Nominal;
+    use pendulum_theory::fitting::photogate::{analyse, GateInput};
+    let time = values(&time, "time")?;
+    let gate = gate.as_ref().map(|g| values(g, "gate")).transpose()?;
+    let nominal = match (bph, period) {
+        (Some(_), Some(_)) => return Err(PyValueError::new_err("give bph or period, not both")),
+        (Some(b), None) => Some(Nominal::BeatsPerHour(b)),
+        (None, Some(p)) => Some(Nominal::Period(p)),
+        (None, None) => None,
+    };
+    answer(py.detach(|| {
+        analyse(&GateInput {
+            time,
+            gate,
+            select,
+            bob_diameter,
+            nominal,
+        })
+    }))
+}
+
 /// The beat-log analysis (the CLI's `fit beats`) as JSON.
 #[pyfunction]
 #[pyo3(signature = (time, bph, period))]
@@ -997,6 +1031,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(fit_decay, m)?)?;
     m.add_function(wrap_pyfunction!(fit_beats, m)?)?;
     m.add_function(wrap_pyfunction!(fit_period, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_photogate, m)?)?;
     m.add_function(wrap_pyfunction!(fit_trajectory, m)?)?;
     m.add_function(wrap_pyfunction!(clock, m)?)?;
     m.add_function(wrap_pyfunction!(listen, m)?)?;

@@ -28,7 +28,7 @@ import pendulum_theory as pt
 from test_simulate import binary
 
 #: Keys of the binary's JSON about the file it read, not the analysis.
-READER_KEYS = {"file", "format", "zero_offset_rad", "turning_points_file", "residuals_file",
+READER_KEYS = {"file", "format", "gate_label", "zero_offset_rad", "turning_points_file", "residuals_file",
                "pivot", "track_radius", "track_radius_standard_error", "swings_file", "trajectory_file", "elapsed_s",
                "channel", "plot_file", "ticks_file"}
 
@@ -434,6 +434,62 @@ def test_fit_period_answers_and_warns():
     assert "residuals_exceed_uncertainties" in codes["understated"]
     r = pt.fit_period(**TABLES["amplitude_length"])
     assert abs(r.parameters["g_m_s2"] - 9.81) < 3 * r.standard_errors["g_m_s2"]
+
+
+# --- fit beats on a photogate log ---------------------------------------------
+
+def _gate_log(passes=120, beat=0.586, error=1e-3, apart=0.05, d=0.05):
+    events = []
+    for k in range(passes):
+        centre = 3.0 + k * beat + (error if k % 2 == 0 else -error)
+        width = d / (1.9 - 0.4 * k / (passes - 1))
+        first, second = (0.0, 1.0) if k % 2 == 0 else (1.0, 0.0)
+        for gate, at in ((first, centre - apart / 2), (second, centre + apart / 2)):
+            events += [(at - width / 2, gate), (at + width / 2, gate)]
+    events.sort()
+    t, g = (np.array(v) for v in zip(*events))
+    return t - t[0], g
+
+
+def _gate_cases():
+    t, g = _gate_log()
+    lost = np.delete(np.arange(t.size), [41])
+    return {
+        "gate_0": (t, g, {}),
+        "gate_1_speed": (t, g, {"select": 1, "bob_diameter": 0.05}),
+        "gate_0_bph": (t, g, {"bph": 6143.0}),
+        "lost_edge": (t[lost], g[lost], {"select": 1}),
+        "one_gate_edges": (t[g == 0], None, {"bob_diameter": 0.05}),
+        "diameter_negative": (t, g, {"bob_diameter": -0.05}),
+        "diameter_nan": (t, g, {"bob_diameter": NAN}),
+    }
+
+
+GATES = _gate_cases()
+
+
+@pytest.mark.parametrize("name", sorted(GATES))
+def test_fit_photogate(name, tmp_path):
+    t, g, kw = GATES[name]
+    path = tmp_path / "gate.csv"
+    if g is None:
+        write_csv(path, ["time_s"], [t])
+    else:
+        with open(path, "w") as f:
+            f.write("time_s,gate\n")
+            for ti, gi in zip(t, g):
+                f.write(f"{float(ti)!r},{'AB'[int(gi)]}\n")
+    args = ["fit", "beats", str(path), "--json"]
+    if "select" in kw:
+        args += ["--gate", "AB"[kw["select"]]]
+    if "bob_diameter" in kw:
+        args += ["--bob-diameter", cli_value(kw["bob_diameter"], "m")]
+    if "bph" in kw:
+        args += ["--bph", cli_value(kw["bph"])]
+    out = check(args, lambda: pt.fit_photogate(t, gate=g, **kw))
+    if out == "answered":
+        r = pt.fit_photogate(t, gate=g, **kw)
+        assert r["photogate"]["passes"] >= 119
 
 
 # --- simulate ---------------------------------------------------------------

@@ -188,3 +188,65 @@ fn coverage_ci_subset() {
 fn coverage_200() {
     check(&run(1000..1200, false), true);
 }
+
+/// The records named in `COVERAGE_SEEDS` (comma-separated; of the 200
+/// unless `COVERAGE_SMALL` is set), judged and printed: for looking into
+/// one record.
+#[test]
+#[ignore = "looks into the seeds in COVERAGE_SEEDS"]
+fn coverage_seeds() {
+    let seeds: Vec<u64> = std::env::var("COVERAGE_SEEDS")
+        .unwrap_or_default()
+        .split(',')
+        .filter_map(|s| s.trim().parse().ok())
+        .collect();
+    let small = std::env::var("COVERAGE_SMALL").is_ok();
+    for &seed in &seeds {
+        let rec = record(seed, small);
+        let t = &rec.truth;
+        eprintln!(
+            "seed {seed}: {:.0}° Q {:.0} friction {:.1e} drag {:.1e} {:.0} fps {} samples noise {:.2}° held {}",
+            t.release_rad.to_degrees(),
+            t.q,
+            t.friction_rad,
+            t.quadratic,
+            t.frame_rate,
+            rec.time.len(),
+            t.noise_rad.to_degrees(),
+            t.held_frames
+        );
+        if std::env::var("COVERAGE_DESCRIBE").is_ok() {
+            continue;
+        }
+        if let Ok(r) = analyse(&TrackInput {
+            time: &rec.time,
+            angle: &rec.angle,
+            model: None,
+            length: Some((t.length_m, LengthSource::Given)),
+            length_standard_error: None,
+            force: true,
+            angle_from_positions: false,
+        }) {
+            let first: Vec<String> = rec
+                .angle
+                .iter()
+                .take(6)
+                .map(|a| format!("{a:.4}"))
+                .collect();
+            eprintln!(
+                "seed {seed}: truth crest {:.5} release {:.5}; fit {:?} ± {:?}; held {}; first angles {first:?}; dt {:.4}",
+                t.first_crest_rad,
+                t.release_rad,
+                r.parameters,
+                r.standard_errors,
+                r.held_samples,
+                rec.time[1] - rec.time[0]
+            );
+        }
+    }
+    if std::env::var("COVERAGE_DESCRIBE").is_ok() {
+        return;
+    }
+    let tally = run(seeds.into_iter(), small);
+    eprintln!("beyond 5σ: {:#?}", tally.far);
+}

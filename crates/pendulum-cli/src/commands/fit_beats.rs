@@ -2,7 +2,7 @@
 
 use super::common;
 use crate::args::FitBeatsArgs;
-use crate::data::{need, stream_table, ReadOptions, Role};
+use crate::data::{need, stream_table, Found, ReadOptions, Role};
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Series, Target};
@@ -11,6 +11,7 @@ use crate::plot::{render, Figure, Panel, Series, Target};
 const PLOT_LIMIT: usize = 8192;
 use pendulum_theory::analysis::Refusal;
 use pendulum_theory::fitting::beat_log::{BeatLog, Beats};
+use pendulum_theory::fitting::photogate::{self, GateInput, GateLog};
 use pendulum_theory::period::beats_per_hour;
 use serde::Serialize;
 
@@ -19,6 +20,12 @@ use serde::Serialize;
 struct BeatsJson {
     file: String,
     format: crate::data::Format,
+    /// A photogate log: the gate read, its shadows and the bob's speed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    photogate: Option<GateLog>,
+    /// The label of the gate read.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    gate_label: Option<String>,
     #[serde(flatten)]
     analysis: Beats,
 }
@@ -43,6 +50,17 @@ pub(crate) fn rate_text(rate_s_per_day: Option<f64>, nominal_beat: Option<f64>) 
     }
 }
 
+/// `--tick-rate`: positive and finite.
+fn tick_rate(rate: Option<crate::units::Number>) -> Result<Option<f64>, CliError> {
+    match rate {
+        Some(r) if !(r.0 > 0.0 && r.0.is_finite()) => Err(CliError::flag(
+            "--tick-rate",
+            format!("must be a positive number of ticks a second, got {}", r.0),
+        )),
+        r => Ok(r.map(|r| r.0)),
+    }
+}
+
 pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     let plot = args
         .plot
@@ -61,17 +79,41 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     let options = ReadOptions {
         columns: super::measured::columns(args.columns.as_deref()),
         run: super::measured::run(args.run)?,
+        tick_rate: tick_rate(args.tick_rate)?,
         ..ReadOptions::default()
     };
+    // A photogate log (a gate column, times in a clock's ticks, or a
+    // gate's flags given) is read whole and its edges paired; any other
+    // is streamed.
+    let gate_flags = args.gate.is_some() || args.bob_diameter.is_some();
+    let photogate = std::cell::Cell::new(false);
+    let (mut gate_time, mut gate_of, mut gate_lines) = (Vec::new(), Vec::new(), Vec::new());
     // Streamed: a log of 10^7 beats takes no more memory than one of ten.
     // For the plot: every `stride`-th interval, the stride doubling whenever
     // the kept points reach their limit, so memory stays bounded.
     let mut previous = f64::NEG_INFINITY;
     let mut intervals: Vec<(f64, f64)> = Vec::new();
     let (mut stride, mut seen) = (1_u64, 0_u64);
-    let groups: &[&[Role]] = &[&[Role::Time]];
-    let chooser = need(groups);
+    let chooser = |found: &[Found]| {
+        let has = |r: Role| found.iter().any(|f| f.role == r);
+        if has(Role::Gate) || has(Role::Ticks) || gate_flags {
+            photogate.set(true);
+            let mut roles = need(&[&[Role::Ticks, Role::Time]])(found)?;
+            if has(Role::Gate) {
+                roles.push(Role::Gate);
+            }
+            Ok(roles)
+        } else {
+            need(&[&[Role::Time]])(found)
+        }
+    };
     let (_, _, _, format) = stream_table(&args.file, &options, &chooser, |row, line| {
+        if photogate.get() {
+            gate_time.push(row[0]);
+            gate_of.push(row.get(1).copied().unwrap_or(0.0));
+            gate_lines.push(line);
+            return Ok(());
+        }
         let t = row[0];
         if plot.is_some() && previous.is_finite() {
             if seen % stride == 0 {
@@ -90,7 +132,55 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         previous = t;
         log.push(t).map_err(|r| refused(&r, Some(line)))
     })?;
-    let analysis = log.finish().map_err(|r| refused(&r, None))?;
+    let (analysis, gate_log) = if photogate.get() {
+        let select = match &args.gate {
+            Some(label) => Some(
+                format
+                    .gate_labels
+                    .iter()
+                    .position(|l| l.eq_ignore_ascii_case(label))
+                    .ok_or_else(|| {
+                        CliError::flag(
+                            "--gate",
+                            if format.gate_labels.is_empty() {
+                                format!("{file} has no gate column")
+                            } else {
+                                format!(
+                                    "'{label}' is not a gate of {file} ({})",
+                                    format.gate_labels.join(", ")
+                                )
+                            },
+                        )
+                    })?,
+            ),
+            None => None,
+        };
+        let has_gates = !format.gate_labels.is_empty();
+        let g = photogate::analyse(&GateInput {
+            time: &gate_time,
+            gate: has_gates.then_some(gate_of.as_slice()),
+            select,
+            bob_diameter: args.bob_diameter.map(|d| d.0),
+            nominal,
+        })
+        .map_err(|r| {
+            let line = match r.place {
+                pendulum_theory::analysis::Place::Sample(_, i) => gate_lines.get(i).copied(),
+                _ => None,
+            };
+            refused(&r, line)
+        })?;
+        if plot.is_some() {
+            intervals = g
+                .pass_times
+                .windows(2)
+                .map(|w| (w[1], 1e3 * (w[1] - w[0])))
+                .collect();
+        }
+        (g.beats, Some(g.photogate))
+    } else {
+        (log.finish().map_err(|r| refused(&r, None))?, None)
+    };
     let a = &analysis;
     if let Some(target) = &plot {
         let mean = vec![
@@ -130,9 +220,14 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         };
         render(target, &figure)?;
     }
+    let gate_label = gate_log
+        .as_ref()
+        .and_then(|g| format.gate_labels.get(g.gate).cloned());
     let result = BeatsJson {
         file,
         format,
+        photogate: gate_log,
+        gate_label,
         analysis: analysis.clone(),
     };
     if args.json {
@@ -165,6 +260,48 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         ),
     )
     .row("Jitter", format!("{} ms", num(a.jitter_ms, 3)));
+    if let Some(g) = &result.photogate {
+        s.row(
+            "Photogate",
+            format!(
+                "gate {} of {}: {} events, {} passes{}",
+                result.gate_label.as_deref().unwrap_or("1"),
+                g.gates,
+                g.events,
+                g.passes,
+                if g.unpaired_edges > 0 {
+                    format!(", {} lone edges left out", g.unpaired_edges)
+                } else {
+                    String::new()
+                }
+            ),
+        );
+        if let (Some(w), Some(w0), Some(w1)) = (
+            g.pulse_width_ms,
+            g.pulse_width_start_ms,
+            g.pulse_width_end_ms,
+        ) {
+            s.row(
+                "Shadow",
+                format!(
+                    "{} ms (first passes {} ms, last {} ms)",
+                    num(w, 4),
+                    num(w0, 4),
+                    num(w1, 4)
+                ),
+            );
+        }
+        if let (Some(v0), Some(v1)) = (g.gate_speed_start_m_s, g.gate_speed_end_m_s) {
+            s.row(
+                "Speed at gate",
+                format!(
+                    "{} m/s (first passes), {} m/s (last)",
+                    num(v0, 4),
+                    num(v1, 4)
+                ),
+            );
+        }
+    }
     let mut out = s.render();
     for w in &a.warnings {
         out.push_str(&format!("WARNING: {w}\n"));

@@ -68,6 +68,7 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
         // Periods are not times from a start.
         absolute_time: true,
         run: None,
+        tick_rate: None,
     };
     let table = read_table(&args.file, &options, &choose)?;
     let file = table.file.clone();

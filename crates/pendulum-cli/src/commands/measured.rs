@@ -21,6 +21,7 @@ pub fn read_options(args: &MeasurementArgs) -> Result<ReadOptions, CliError> {
         frame_rate: frame_rate(args.frame_rate)?,
         absolute_time: false,
         run: run(args.run)?,
+        tick_rate: None,
     })
 }
 

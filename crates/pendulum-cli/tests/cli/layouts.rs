@@ -367,7 +367,10 @@ fn times_as_loggers_write_them() {
         }
     }
     let p = write(dir.path(), "runs.csv", &text);
-    let e = refuses(&["fit", "trajectory", &p], "line 302, column time_s: 0 is not after the previous 9.9666");
+    let e = refuses(
+        &["fit", "trajectory", &p],
+        "line 302, column time_s: 0 is not after the previous 9.9666",
+    );
     assert!(e.contains("--run 1"), "{e}");
     let v = json(&["fit", "trajectory", &p, "--run", "2"]);
     assert_eq!(v["format"]["runs"], 3);
@@ -378,5 +381,97 @@ fn times_as_loggers_write_them() {
     refuses(
         &["fit", "trajectory", &p, "--run", "0"],
         "--run: must be at least 1",
+    );
+}
+
+/// A photogate event log as grahamwwilson/PendDataSimComp's Run76 is
+/// written: a `#` line, then `U 0 138975358`: the gate (two, side by
+/// side), an event number, and the time in ticks of a 5.01329 MHz clock,
+/// each shadow's two edges. Passes are the shadows' middles; the widths
+/// with the bob's diameter give its speed.
+#[test]
+fn a_photogate_log_in_clock_ticks() {
+    let dir = tempfile::tempdir().unwrap();
+    let (rate, beat, error, apart, d) = (5.01329e6, 0.586, 1e-3, 0.05, 0.05);
+    let mut events: Vec<(f64, &str)> = Vec::new();
+    for k in 0..120 {
+        let centre = 27.7 + k as f64 * beat + if k % 2 == 0 { error } else { -error };
+        // The bob slows as the swing decays: 1.9 m/s to 1.5 m/s.
+        let speed = 1.9 - 0.4 * k as f64 / 119.0;
+        let width = d / speed;
+        let (first, second) = if k % 2 == 0 { ("U", "D") } else { ("D", "U") };
+        for (gate, at) in [
+            (first, centre - apart / 2.0),
+            (second, centre + apart / 2.0),
+        ] {
+            events.push((at - width / 2.0, gate));
+            events.push((at + width / 2.0, gate));
+        }
+    }
+    events.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut text = String::from(
+        "# Column descriptions for data Run76. 0=eventtype (U/D), 1=event, 2=clockticks\n",
+    );
+    for (i, (t, g)) in events.iter().enumerate() {
+        text.push_str(&format!("{g} {i} {}\n", (t * rate).round()));
+    }
+    let p = write(dir.path(), "Run76.dat", &text);
+    let e = refuses(&["fit", "beats", &p], "no header line");
+    assert!(e.contains("--columns"), "{e}");
+    let cols = "gate,event,clockticks";
+    let e = refuses(&["fit", "beats", &p, "--columns", cols], "--tick-rate");
+    assert!(e.contains("clockticks"), "{e}");
+    let v = json(&[
+        "fit",
+        "beats",
+        &p,
+        "--columns",
+        cols,
+        "--tick-rate",
+        "5.01329e6",
+        "--gate",
+        "D",
+        "--bob-diameter",
+        "5cm",
+    ]);
+    assert_eq!(v["gate_label"], "D");
+    assert_eq!(v["format"]["gate_labels"], serde_json::json!(["U", "D"]));
+    let g = &v["photogate"];
+    assert_eq!(g["passes"], 120);
+    assert_eq!(g["unpaired_edges"], 0);
+    assert!(
+        (v["mean_beat_s"].as_f64().unwrap() - beat).abs() < 1e-6,
+        "{v}"
+    );
+    // Gate D is cut 25 ms after the centre on the beats that are 1 ms
+    // late and 25 ms before it on those 1 ms early: intervals of 586 - 2
+    // - 50 and 586 + 2 + 50 ms, a beat error of 52 ms there.
+    assert!(
+        (v["beat_error_ms"].as_f64().unwrap() - 52.0).abs() < 0.01,
+        "{v}"
+    );
+    let v0 = g["gate_speed_start_m_s"].as_f64().unwrap();
+    let v1 = g["gate_speed_end_m_s"].as_f64().unwrap();
+    assert!(
+        (v0 - 1.874).abs() < 0.01 && (v1 - 1.526).abs() < 0.01,
+        "{v0} {v1}"
+    );
+    refuses(
+        &[
+            "fit",
+            "beats",
+            &p,
+            "--columns",
+            cols,
+            "--tick-rate",
+            "5e6",
+            "--gate",
+            "X",
+        ],
+        "--gate: 'X' is not a gate",
+    );
+    refuses(
+        &["fit", "beats", &p, "--columns", cols, "--tick-rate", "0"],
+        "--tick-rate: must be a positive",
     );
 }

@@ -41,6 +41,7 @@ __all__ = [
     "fit_decay",
     "fit_beats",
     "fit_period",
+    "fit_photogate",
     "fit_trajectory",
     "FitResult",
     "clock",
@@ -314,6 +315,23 @@ def fit_period(period, *, period_standard_error=None, amplitude=None, length=Non
         _array(period), optional(period_standard_error), optional(amplitude), optional(length),
         _number(pendulum_length), _number(pendulum_length_standard_error), _number(bob_radius)))
     return FitResult(d, d["parameters"], d["standard_errors"], None)
+
+
+def fit_photogate(time, *, gate=None, select=None, bob_diameter=None, bph=None, period=None):
+    """A light gate's log: event times (s), with each event's ``gate``
+    (numbers, one per gate) when it holds several; ``select`` the gate to
+    read (the first logged by default). The two edges of each shadow are
+    paired into a pass at its middle; the passes are a beat log (rate
+    against ``bph`` or ``period``), and with ``bob_diameter`` (m) the
+    shadows give the bob's speed at the gate. The CLI's ``fit beats`` on a
+    gate log, the same library call; returns its JSON as a dict
+    (photogate, beats, mean_beat_s, beat_error_ms, …)."""
+    d = _json.loads(_native.fit_photogate(
+        _array(time), None if gate is None else _array(gate),
+        None if select is None else int(select), _number(bob_diameter), _number(bph),
+        _number(period)))
+    keys = ["rate_s_per_day", "beat_error_ms", "jitter_ms", "beats_per_hour"]
+    return FitResult(d, {k: d[k] for k in keys}, {}, None)
 
 
 def _clock(length, *, parts=None, drive_energy=None, drive_torque=None, q=None, escapement=None,

@@ -65,6 +65,15 @@ def fit_trajectory(
     force: Any = ...,
 ) -> FitResult: ...
 def fit_beats(time: npt.ArrayLike, *, bph: Optional[float] = ..., period: Optional[float] = ...) -> FitResult: ...
+def fit_photogate(
+    time: npt.ArrayLike,
+    *,
+    gate: Optional[npt.ArrayLike] = ...,
+    select: Optional[int] = ...,
+    bob_diameter: Optional[float] = ...,
+    bph: Optional[float] = ...,
+    period: Optional[float] = ...,
+) -> FitResult: ...
 def fit_period(
     period: npt.ArrayLike,
     *,

@@ -14,6 +14,7 @@ pub mod beat_log;
 pub mod beats;
 pub mod decay;
 pub mod period_table;
+pub mod photogate;
 pub mod rundown;
 pub mod track;
 pub mod tracked;

@@ -276,10 +276,15 @@ impl TrajectoryFit {
                 // A crest before the first sample by less than twice the
                 // time's error is the record's first (it starts on it).
                 let time_error = phase_error / wd;
-                let t = if phase <= 0.0 || near(phase / wd, time_error) {
+                // Crests at (kπ - phase)/ω_d: the first at or after the
+                // first sample, or before it by less than twice the time's
+                // error or half a sample (the record starts on it).
+                let tolerance = (2.0 * time_error).max(0.5 * interval) + self.held_seconds;
+                let k = ((phase - tolerance * wd) / pi).ceil().max(0.0);
+                let t = if phase <= 0.0 {
                     -phase / wd
                 } else {
-                    (pi - phase) / wd
+                    (k * pi - phase) / wd
                 };
                 let decay = (-zeta * wn * t).exp();
                 Some([
@@ -302,7 +307,11 @@ impl TrajectoryFit {
                 if near(lead, time_error) {
                     return Some([self.held_seconds - lead, time_error, a, a_error]);
                 }
-                let (time, angle) = turning_point_after(&self.law.full(p), lead)?;
+                // A crest before the first sample by less than twice the
+                // time's error or half a sample is the record's first.
+                let tolerance = (2.0 * time_error).max(0.5 * interval);
+                let (time, angle) =
+                    turning_point_after(&self.law.full(p), (lead - tolerance).max(0.0))?;
                 let crest = angle.abs();
                 Some([
                     self.held_seconds + time - lead,
@@ -376,7 +385,12 @@ pub fn held_start(time: &[f64], theta: &[f64]) -> usize {
     };
     let t: Vec<f64> = time.iter().map(|x| x - time[0]).collect();
     let guess = initial_guess(&t, theta);
-    let (wd, offset) = (guess[1].abs(), guess[4]);
+    let offset = guess[4];
+    // The frequency from the record's own crossings of its centre (the
+    // guess's can be a harmonic, and a frequency too high takes a free
+    // crest's dwell for a held bob).
+    let swing = theta.iter().map(|v| (v - offset).abs()).fold(0.0, f64::max);
+    let wd = crossing_frequency(&t, theta, offset, 0.1 * swing).unwrap_or(guess[1].abs());
     let mut first = theta[..3].to_vec();
     first.sort_by(f64::total_cmp);
     let crest = first[1];
@@ -411,6 +425,32 @@ pub fn held_start(time: &[f64], theta: &[f64]) -> usize {
     // where the model puts it (a release after the first fitted sample
     // would be placed a whole period earlier).
     plateau - 1
+}
+
+/// `π (k - 1) / (t_k - t_1)` over the `k` crossings of `centre` from one
+/// side of the band `centre ± band` to the other: the record's angular
+/// frequency, whatever its harmonics; `None` below three crossings.
+fn crossing_frequency(t: &[f64], theta: &[f64], centre: f64, band: f64) -> Option<f64> {
+    let (mut side, mut first, mut last, mut count) = (0_i8, None, 0.0, 0_usize);
+    for (&ti, &v) in t.iter().zip(theta) {
+        let s = if v > centre + band {
+            1
+        } else if v < centre - band {
+            -1
+        } else {
+            0
+        };
+        if s != 0 {
+            if side != 0 && s != side {
+                count += 1;
+                first.get_or_insert(ti);
+                last = ti;
+            }
+            side = s;
+        }
+    }
+    let first = first?;
+    (count >= 3 && last > first).then(|| std::f64::consts::PI * (count - 1) as f64 / (last - first))
 }
 
 /// Fits `model` to a record that starts at or after the release.

@@ -67,6 +67,22 @@ fn judge(rec: &Record) -> Outcome {
     Outcome::Reported(r.damping_law, out)
 }
 
+/// What a record varies, in a line.
+fn describe(rec: &Record) -> String {
+    let t = &rec.truth;
+    format!(
+        "{:.0}° Q {:.0} friction {:.1e} drag {:.1e} {:.0} fps {} samples noise {:.2}° held {}",
+        t.release_rad.to_degrees(),
+        t.q,
+        t.friction_rad,
+        t.quadratic,
+        t.frame_rate,
+        rec.time.len(),
+        t.noise_rad.to_degrees(),
+        t.held_frames
+    )
+}
+
 struct Tally {
     within: std::collections::BTreeMap<&'static str, (usize, usize)>,
     far: Vec<String>,
@@ -98,18 +114,8 @@ fn run(seeds: impl Iterator<Item = u64>, small: bool) -> Tally {
                         let clock = std::time::Instant::now();
                         let outcome = judge(&rec);
                         let took = clock.elapsed().as_secs_f64();
-                        let t = &rec.truth;
-                        let line = format!(
-                            "seed {seed} ({took:.1} s): {:.0}° Q {:.0} friction {:.1e} drag {:.1e} {:.0} fps {} samples noise {:.2}° held {}: {outcome:?}",
-                            t.release_rad.to_degrees(),
-                            t.q,
-                            t.friction_rad,
-                            t.quadratic,
-                            t.frame_rate,
-                            rec.time.len(),
-                            t.noise_rad.to_degrees(),
-                            t.held_frames
-                        );
+                        let line =
+                            format!("seed {seed} ({took:.1} s): {}: {outcome:?}", describe(&rec));
                         eprintln!("{line}");
                         mine.push((seed, line, outcome));
                     }
@@ -204,17 +210,7 @@ fn coverage_seeds() {
     for &seed in &seeds {
         let rec = record(seed, small);
         let t = &rec.truth;
-        eprintln!(
-            "seed {seed}: {:.0}° Q {:.0} friction {:.1e} drag {:.1e} {:.0} fps {} samples noise {:.2}° held {}",
-            t.release_rad.to_degrees(),
-            t.q,
-            t.friction_rad,
-            t.quadratic,
-            t.frame_rate,
-            rec.time.len(),
-            t.noise_rad.to_degrees(),
-            t.held_frames
-        );
+        eprintln!("seed {seed}: {}", describe(&rec));
         if std::env::var("COVERAGE_DESCRIBE").is_ok() {
             continue;
         }

@@ -135,6 +135,9 @@ pub enum TrackWarning {
         rms: f64,
         /// The noise from the residuals' fourth differences, rad.
         noise: f64,
+        /// The factor the standard errors were widened by for the
+        /// residuals' correlation.
+        inflation: f64,
     },
     /// The fitted damping is negative beyond three standard errors: the
     /// swing grows (a driven or pushed pendulum), which a free decay does
@@ -248,16 +251,22 @@ impl fmt::Display for TrackWarning {
                 format_significant(100.0 * rms / swing, 2),
                 format_significant(swing.to_degrees(), 3)
             ),
-            TrackWarning::ResidualsExceedNoise { rms, noise } => write!(
+            TrackWarning::ResidualsExceedNoise {
+                rms,
+                noise,
+                inflation,
+            } => write!(
                 f,
                 "the residuals (rms {}°) are {} times the record's sample-to-sample noise ({}°): \
                  the model leaves a pattern in them (a damping the laws fitted do not describe, a \
                  bob that is not a point, the camera's perspective, a drifting tracker) or the \
-                 tracking errors are correlated; the standard errors, which assume independent \
-                 errors, are too small by up to that factor",
+                 tracking errors are correlated; the standard errors are widened {} times for \
+                 the residuals' correlation from sample to sample, but a pattern the model \
+                 cannot follow may still bias the figures",
                 format_significant(rms.to_degrees(), 3),
                 format_significant(rms / noise, 2),
-                format_significant(noise.to_degrees(), 3)
+                format_significant(noise.to_degrees(), 3),
+                format_significant(*inflation, 3)
             ),
             TrackWarning::CrossingsDiffer { data, model } => write!(
                 f,
@@ -304,6 +313,11 @@ pub struct Track {
     pub standard_errors: BTreeMap<&'static str, f64>,
     /// Root mean square of the residuals, rad.
     pub residual_rms_rad: f64,
+    /// The residuals' lag-one autocorrelation.
+    pub residual_autocorrelation: f64,
+    /// The factor every standard error was widened by for it,
+    /// `√((1 + ρ)/(1 − ρ))` (1 for independent errors).
+    pub standard_error_inflation: f64,
     /// The length g is computed with, m.
     pub length_m: Option<f64>,
     /// Where it came from.
@@ -378,7 +392,15 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         "nonlinear" => TrajectoryModel::Nonlinear,
         _ => TrajectoryModel::auto(theta),
     };
-    let fit = fit_trajectory(model, time, theta).map_err(|e| Refusal::data(e.to_string()))?;
+    let mut fit = fit_trajectory(model, time, theta).map_err(|e| Refusal::data(e.to_string()))?;
+    // Errors correlated from sample to sample carry less information than
+    // the fit assumed: every standard error is widened for it.
+    let (autocorrelation, inflation) =
+        correlation_inflation(&fit.fit.residuals[fit.held_samples.min(fit.fit.residuals.len())..]);
+    for se in &mut fit.fit.standard_errors {
+        *se *= inflation;
+    }
+    fit.natural_angular_frequency_error *= inflation;
     let names = fit.names();
     let mut parameters: BTreeMap<&'static str, f64> = names
         .iter()
@@ -488,7 +510,11 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     {
         let rms = fit.fit.residual_rms;
         if rms > RESIDUAL_OF_NOISE * noise {
-            warnings.push(TrackWarning::ResidualsExceedNoise { rms, noise });
+            warnings.push(TrackWarning::ResidualsExceedNoise {
+                rms,
+                noise,
+                inflation,
+            });
         }
     }
     // Counted over the span where both swing beyond the band: a curve
@@ -523,6 +549,8 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         parameters,
         standard_errors,
         residual_rms_rad: fit.fit.residual_rms,
+        residual_autocorrelation: autocorrelation,
+        standard_error_inflation: inflation,
         length_m: input.length.map(|(l, _)| l),
         length_source: input.length.map(|(_, s)| s),
         warning_codes: warnings.iter().map(TrackWarning::code).collect(),
@@ -562,6 +590,42 @@ pub fn implausible_gravity(g: f64, source: Option<LengthSource>) -> Option<&'sta
     } else {
         "check the length, the time column's unit and that the column is the pendulum's angle"
     })
+}
+
+/// The largest lag-one autocorrelation of the residuals counted, so that
+/// the widening stays finite (45 times).
+pub const MAX_AUTOCORRELATION: f64 = 0.999;
+
+/// The residuals' lag-one autocorrelation `ρ` (mean removed) and the
+/// factor `√((1 + ρ)/(1 − ρ))` by which errors correlated from sample to
+/// sample widen the standard errors of a least-squares fit that took them
+/// as independent: the AR(1) variance inflation, the effective number of
+/// independent points being `n(1 − ρ)/(1 + ρ)` (Bartlett 1946; von Storch
+/// & Zwiers, *Statistical Analysis in Climate Research*, 1999, §17.1).
+/// `ρ` is held within `[0, MAX_AUTOCORRELATION]`: independent or
+/// alternating errors leave the errors as they are. Exact for the mean of
+/// an AR(1) series; for the slowly varying parameters of a swing it is
+/// the usual first-order correction (measured on the generated records:
+/// 1 for white noise, to within 1/√n).
+pub fn correlation_inflation(residuals: &[f64]) -> (f64, f64) {
+    let n = residuals.len();
+    if n < 3 {
+        return (0.0, 1.0);
+    }
+    let mean = residuals.iter().sum::<f64>() / n as f64;
+    let (mut c0, mut c1) = (0.0, 0.0);
+    for i in 0..n {
+        let d = residuals[i] - mean;
+        c0 += d * d;
+        if i + 1 < n {
+            c1 += d * (residuals[i + 1] - mean);
+        }
+    }
+    if !(c0 > 0.0) {
+        return (0.0, 1.0);
+    }
+    let rho = (c1 / c0).clamp(0.0, MAX_AUTOCORRELATION);
+    (c1 / c0, ((1.0 + rho) / (1.0 - rho)).sqrt())
 }
 
 /// Times `values` cross `centre`, each crossing from one side of the band
@@ -620,4 +684,74 @@ pub fn angle_unit_hint(g: f64, se: f64, swing: f64) -> Option<TrackWarning> {
         ((other - gn).abs() * 3.0 < off).then_some(TrackWarning::AngleUnit { g, other, read_as })
     })
     .next()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A deterministic AR(1) series `x_i = ρ x_{i-1} + e_i` (xorshift and
+    /// Box-Muller), whose mean's standard error the independent formula
+    /// understates by `√((1 + ρ)/(1 − ρ))`.
+    fn ar1(rho: f64, n: usize, seed: u64) -> Vec<f64> {
+        let mut s = seed;
+        let mut uniform = move || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            ((s >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+        };
+        let mut x = 0.0;
+        (0..n)
+            .map(|_| {
+                let (u, v) = (uniform(), uniform());
+                let e = (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos();
+                x = rho * x + e;
+                x
+            })
+            .collect()
+    }
+
+    #[test]
+    fn correlated_residuals_widen_the_errors_by_the_ar1_factor() {
+        for rho in [0.0, 0.5, 0.9, 0.98] {
+            let (r, f) = correlation_inflation(&ar1(rho, 200_000, 7));
+            let expected = ((1.0 + rho) / (1.0 - rho)).sqrt();
+            assert!((r - rho).abs() < 0.01, "ρ {rho}: {r}");
+            assert!(
+                (f / expected - 1.0).abs() < 0.05,
+                "ρ {rho}: {f} vs {expected}"
+            );
+        }
+        // Alternating errors are not counted as more information.
+        let alternating: Vec<f64> = (0..100)
+            .map(|i| if i % 2 == 0 { 1.0 } else { -1.0 })
+            .collect();
+        assert_eq!(correlation_inflation(&alternating).1, 1.0);
+        // A smooth pattern is capped.
+        let smooth: Vec<f64> = (0..10_000).map(|i| (i as f64 * 1e-4).sin()).collect();
+        let f = correlation_inflation(&smooth).1;
+        assert!((f - (1.999f64 / 0.001).sqrt()).abs() < 1e-9, "{f}");
+    }
+
+    /// The standard error of a mean of AR(1) data, measured over many
+    /// series, is the independent one times the factor (the property the
+    /// widening stands on).
+    #[test]
+    fn the_factor_matches_the_scatter_of_means() {
+        let (rho, n, trials) = (0.8, 2000, 400);
+        let means: Vec<f64> = (0..trials)
+            .map(|k| ar1(rho, n, 1000 + k as u64).iter().sum::<f64>() / n as f64)
+            .collect();
+        let spread = (means.iter().map(|m| m * m).sum::<f64>() / trials as f64).sqrt();
+        // Independent formula: σ_x / √n with σ_x² = 1/(1 − ρ²).
+        let naive = (1.0 / (1.0 - rho * rho) / n as f64).sqrt();
+        let ratio = spread / naive;
+        let expected = ((1.0 + rho) / (1.0 - rho)).sqrt();
+        // 400 trials: the spread's own error is 1/√800 = 3.5%.
+        assert!(
+            (ratio / expected - 1.0).abs() < 0.12,
+            "{ratio} vs {expected}"
+        );
+    }
 }

@@ -621,7 +621,7 @@ pub fn correlation_inflation(residuals: &[f64]) -> (f64, f64) {
             c1 += d * (residuals[i + 1] - mean);
         }
     }
-    if !(c0 > 0.0) {
+    if c0.is_nan() || c0 <= 0.0 {
         return (0.0, 1.0);
     }
     let rho = (c1 / c0).clamp(0.0, MAX_AUTOCORRELATION);

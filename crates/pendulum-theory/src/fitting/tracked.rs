@@ -474,8 +474,21 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         }
     }
     let undetermined = fit.undetermined();
+    // A swing that grows: a negative damping beyond its errors, or the
+    // record's own last swings a fifth larger than its first.
     if let (Some(&zeta), Some(&se)) = (parameters.get("zeta"), standard_errors.get("zeta")) {
-        if zeta < -3.0 * se {
+        let turns = super::turning::turning_points(
+            &time[fit.held_samples.min(time.len())..],
+            &theta[fit.held_samples.min(theta.len())..],
+        )
+        .turns;
+        let quarter = turns.len() / 4;
+        let mean = |t: &[super::turning::Turn]| {
+            t.iter().map(|t| t.amplitude).sum::<f64>() / t.len().max(1) as f64
+        };
+        let grows = quarter >= 2
+            && mean(&turns[turns.len() - quarter..]) > 1.2 * mean(&turns[..quarter]);
+        if zeta < -3.0 * se || (grows && zeta < 0.0) {
             warnings.push(TrackWarning::SwingGrows {
                 zeta,
                 standard_error: se,
@@ -580,7 +593,8 @@ pub fn implausible_gravity(g: f64, source: Option<LengthSource>) -> Option<&'sta
          time column's unit"
     } else if source == Some(LengthSource::TrackRadius) && ratio > 1.0 {
         "the length is the radius of the tracked arc, in the file's units: positions in pixels \
-         or centimetres? give the length in metres"
+         or centimetres? give the length in metres, or the metres a unit of the file is \
+         (--scale)"
     } else if near(3.0) {
         "the length looks like millimetres read as metres (g rises a thousand-fold); give it \
          with its unit (994mm)"

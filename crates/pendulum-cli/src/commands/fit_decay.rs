@@ -284,7 +284,14 @@ fn text(r: &DecayJson) -> String {
             }
         }
         if let Some(q) = fitted.q_factor {
-            out.push_str(&format!("  {:<28} {}\n", "Q (viscous part)", num(q, 5)));
+            let error = fitted
+                .q_factor_standard_error
+                .map_or(String::new(), |e| format!(" ± {}", num(e, 2)));
+            out.push_str(&format!(
+                "  {:<28} {}{error}\n",
+                "Q (viscous part)",
+                num(q, 5)
+            ));
         } else if let Some(q) = fitted.q_factor_lower_bound {
             out.push_str(&format!(
                 "  {:<28} no measurable decay: Q > {} (two standard errors)\n",

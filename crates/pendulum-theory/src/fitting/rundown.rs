@@ -107,6 +107,9 @@ pub struct Fitted {
     pub standard_errors: BTreeMap<&'static str, f64>,
     /// Q of the viscous part, when measurable.
     pub q_factor: Option<f64>,
+    /// Its standard error, `Q σ_ζ / ζ` (first order in `σ_ζ/ζ`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q_factor_standard_error: Option<f64>,
     /// With no measurable viscous decay: the two-sigma lower bound on Q.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub q_factor_lower_bound: Option<f64>,
@@ -361,6 +364,10 @@ fn law_fit(f: &DecayFit, weight: f64, pendulum: Option<&Pendulum>, mass: Option<
             parameters,
             standard_errors,
             q_factor: f.q_factor.and_then(finite),
+            q_factor_standard_error: f.q_factor.and_then(|q| {
+                let z = f.parameters.iter().find(|e| e.name == "zeta")?;
+                finite(q * z.standard_error / z.value)
+            }),
             q_factor_lower_bound: f.q_factor_lower_bound.and_then(finite),
             q_factor_mean: f.q_factor_mean.and_then(finite),
             at_bound: f.at_bound.clone(),

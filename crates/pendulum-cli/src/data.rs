@@ -1050,6 +1050,7 @@ pub fn stream_table(
     // The run being read (from 1), and its first and latest times.
     let mut runs = 1_usize;
     let mut run_span: Option<(f64, f64)> = None;
+    let mut day_offset = 0.0_f64;
     let mut handle_line = |line_number: u64, line: &str, format: &mut Format| {
         let t = line.trim();
         if t.is_empty() || t.starts_with('#') {
@@ -1114,6 +1115,17 @@ pub fn stream_table(
             } else {
                 // Times that go back over half the run so far start a new
                 // run (a logger restarted, runs pasted one after another).
+                // Times of day that pass midnight go on into the next day.
+                if let Some((_, previous)) = run_span {
+                    let raw = row[k] + day_offset;
+                    if (82_800.0..86_400.0).contains(&(previous - day_offset))
+                        && (0.0..3_600.0).contains(&(raw - day_offset))
+                        && raw < previous
+                    {
+                        day_offset += 86_400.0;
+                    }
+                }
+                row[k] += day_offset;
                 let raw = row[k];
                 if let Some((start, previous)) = run_span {
                     if raw < previous && raw <= start + 0.5 * (previous - start) {

@@ -258,10 +258,10 @@ pub fn track_of(
                 ways.push("give the pivot with --pivot X,Y");
             }
             if pivot.source != "fit" {
-                ways.push("--pivot fit to find it");
+                ways.push("give --pivot fit to find it");
             }
             if !positions.y_down {
-                ways.push("--y-down if y grows downward (image coordinates)");
+                ways.push("give --y-down if y grows downward (image coordinates)");
             }
             ways.join(", or ")
         };
@@ -270,8 +270,8 @@ pub fn track_of(
             Role::Y,
             format!(
                 "the bob is level with or above the pivot ({}, {}): {advice}",
-                pivot.x,
-                flip * pivot.y
+                crate::output::num(pivot.x, 9),
+                crate::output::num(flip * pivot.y, 9)
             ),
         ));
     }

@@ -378,6 +378,34 @@ fn times_as_loggers_write_them() {
     assert!((wd / 6.6 - 1.0).abs() < 1e-5, "{wd}");
     check(&p, &["--run", "3"]);
     refuses(&["fit", "trajectory", &p, "--run", "4"], "--run: ");
+    // Times of day that pass midnight go on into the next day.
+    let mut text = String::from("time,angle_deg\n");
+    for i in 0..600 {
+        let s = 86_390.0 + i as f64 / 30.0;
+        let s = if s >= 86_400.0 { s - 86_400.0 } else { s };
+        let (h, m, sec) = (
+            (s / 3600.0).floor(),
+            ((s % 3600.0) / 60.0).floor(),
+            s % 60.0,
+        );
+        text.push_str(&format!(
+            "{h:02}:{m:02}:{sec:06.3},{}\n",
+            angle(i as f64 / 30.0)
+        ));
+    }
+    let p = write(dir.path(), "midnight.csv", &text);
+    check(&p, &[]);
+    // Degrees under a radian's name: no pendulum swings 570°.
+    let mut text = String::from("time_s,angle_rad\n");
+    for i in 0..300 {
+        text.push_str(&format!(
+            "{},{}\n",
+            i as f64 / 30.0,
+            10.0 * (6.0 * i as f64 / 30.0).cos()
+        ));
+    }
+    let p = write(dir.path(), "degrees.csv", &text);
+    refuses(&["fit", "trajectory", &p], "are the angles in degrees");
     refuses(
         &["fit", "trajectory", &p, "--run", "0"],
         "--run: must be at least 1",

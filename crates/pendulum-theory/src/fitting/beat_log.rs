@@ -55,6 +55,14 @@ pub enum BeatWarning {
         /// The mean beat, s.
         beat_s: f64,
     },
+    /// A gate log's intervals alternate short and long but were not paired
+    /// as the two edges of each shadow.
+    EdgesUnpaired {
+        /// The median short interval, s.
+        short: f64,
+        /// The median long interval, s.
+        long: f64,
+    },
     /// The tick and tock intervals drift apart (or together) over the
     /// record: the mean beat error describes neither end.
     SidesDrift {
@@ -71,6 +79,7 @@ impl BeatWarning {
         match self {
             BeatWarning::SidesDrift { .. } => "sides_drift",
             BeatWarning::BeatImplausible { .. } => "beat_implausible",
+            BeatWarning::EdgesUnpaired { .. } => "edges_unpaired",
         }
     }
 }
@@ -90,6 +99,14 @@ impl std::fmt::Display for BeatWarning {
                 "a beat of {} s is slower than any pendulum's (Foucault's 67 m swings in 8 s): \
                  are the times in another unit (minutes?) or of many swings?",
                 format_significant(*beat_s, 4)
+            ),
+            BeatWarning::EdgesUnpaired { short, long } => write!(
+                f,
+                "the intervals alternate {} s and {} s: if the log holds both edges of each \
+                 shadow (a large bob, a small swing), give the bob's diameter to pair them; \
+                 else the clock is far out of beat",
+                format_significant(*short, 4),
+                format_significant(*long, 4)
             ),
             BeatWarning::SidesDrift { start_ms, end_ms } => write!(
                 f,
@@ -225,13 +242,18 @@ impl BeatLog {
         let i = self.pushed;
         require_finite_sample("time", i, t)?;
         if t <= self.previous {
+            let (now, before) = (
+                format_significant(t, 12),
+                format_significant(self.previous, 12),
+            );
             return Err(Refusal::sample(
                 "time",
                 i,
-                format!(
-                    "the time {t} is not after the previous {}; sort by time",
-                    self.previous
-                ),
+                if t == self.previous {
+                    format!("the time {now} repeats the one before it: a row written twice?")
+                } else {
+                    format!("the time {now} is not after the previous {before}; sort by time")
+                },
             ));
         }
         self.previous = t;

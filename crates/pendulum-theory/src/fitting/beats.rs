@@ -123,9 +123,12 @@ pub enum BeatError {
     },
     /// A pause in the record too long to fill with missed beats.
     #[error(
-        "beat {index} at {time} s comes {gap} s after the one before, about {beats} beats: \
+        "beat {index} at {} s comes {} s after the one before, about {} beats: \
          a pause in the record, not missed beats (at most 10 are filled in); \
-         analyse the parts before and after it separately"
+         analyse the parts before and after it separately",
+        crate::error::format_significant(*time, 12),
+        crate::error::format_significant(*gap, 6),
+        crate::error::format_significant(*beats, 4)
     )]
     Gap {
         /// Index of the timestamp after the gap.

@@ -389,6 +389,17 @@ pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
             format!("must be positive, got {} s", period[i]),
         ));
     }
+    let range = crate::fitting::rundown::PERIOD_RANGE_S;
+    if let Some(i) = period.iter().position(|t| !range.contains(t)) {
+        return Err(Refusal::sample(
+            "period",
+            i,
+            format!(
+                "must lie between 1 ms and 10,000 s for a pendulum, got {} s",
+                crate::error::format_significant(period[i], 6)
+            ),
+        ));
+    }
     let same_length = |name: &'static str, v: Option<&[f64]>| match v {
         Some(v) if v.len() != n => Err(Refusal::field(
             name,
@@ -406,6 +417,19 @@ pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
                 "period_standard_error",
                 i,
                 format!("must be positive, got {} s", s[i]),
+            ));
+        }
+        // An uncertainty below a picosecond or above the period itself is
+        // no measurement's (and breaks the weights' arithmetic).
+        if let Some(i) = (0..n).find(|&i| s[i] < 1e-12 || s[i] > period[i]) {
+            return Err(Refusal::sample(
+                "period_standard_error",
+                i,
+                format!(
+                    "must lie between 1 ps and the period ({} s), got {} s",
+                    crate::error::format_significant(period[i], 6),
+                    crate::error::format_significant(s[i], 6)
+                ),
             ));
         }
     }
@@ -427,6 +451,17 @@ pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
                 format!("must be positive, got {} m", l[i]),
             ));
         }
+        let range = crate::fitting::tracked::LENGTH_RANGE_M;
+        if let Some(i) = l.iter().position(|v| !range.contains(v)) {
+            return Err(Refusal::sample(
+                "length",
+                i,
+                format!(
+                    "must lie between 0.1 mm and 10 km for a pendulum, got {} m",
+                    crate::error::format_significant(l[i], 6)
+                ),
+            ));
+        }
     }
     for (name, v) in [
         ("pendulum_length", input.pendulum_length),
@@ -440,6 +475,15 @@ pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
             require_finite(name, v)?;
             if v <= 0.0 {
                 return Err(Refusal::field(name, format!("must be positive, got {v} m")));
+            }
+            if v > *crate::fitting::tracked::LENGTH_RANGE_M.end() {
+                return Err(Refusal::field(
+                    name,
+                    format!(
+                        "must be at most 10 km for a pendulum, got {} m",
+                        crate::error::format_significant(v, 6)
+                    ),
+                ));
             }
         }
     }
@@ -1026,6 +1070,45 @@ mod tests {
             ),
         ];
         for (input, field) in cases {
+            let e = analyse(&input).unwrap_err();
+            assert_eq!(e.field_name(), Some(field), "{e:?}");
+        }
+        // Numbers no pendulum has are refused, naming the row or the field.
+        let huge = [2.0, 1e308];
+        for (input, field) in [
+            (
+                PeriodTableInput {
+                    period: &huge,
+                    amplitude: Some(&[0.1, 0.2]),
+                    ..Default::default()
+                },
+                "period",
+            ),
+            (
+                PeriodTableInput {
+                    period: &t,
+                    length: Some(&[1.0, 1e308]),
+                    ..Default::default()
+                },
+                "length",
+            ),
+            (
+                PeriodTableInput {
+                    period: &t,
+                    period_standard_error: Some(&[1e-300, 0.1]),
+                    ..Default::default()
+                },
+                "period_standard_error",
+            ),
+            (
+                PeriodTableInput {
+                    period: &t,
+                    pendulum_length: Some(1e308),
+                    ..Default::default()
+                },
+                "pendulum_length",
+            ),
+        ] {
             let e = analyse(&input).unwrap_err();
             assert_eq!(e.field_name(), Some(field), "{e:?}");
         }

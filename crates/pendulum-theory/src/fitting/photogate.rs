@@ -24,6 +24,13 @@ use serde::Serialize;
 /// Intervals of one parity shorter than this fraction of the other's
 /// median make the events pairs of edges.
 pub const PAIR_RATIO: f64 = 0.25;
+/// The same when the bob's diameter is given (the log is said to hold
+/// both edges): a long shadow (a small swing, a large bob) is still a
+/// shadow.
+pub const EDGES_GIVEN_RATIO: f64 = 0.9;
+/// Alternating intervals below this ratio, not paired, are said: they may
+/// be the edges of long shadows.
+pub const ALTERNATION_SAID: f64 = 0.6;
 
 /// A gate log to analyse.
 #[derive(Clone, Debug, Default)]
@@ -147,13 +154,37 @@ pub fn analyse(input: &GateInput<'_>) -> Result<GateAnalysis, Refusal> {
         }
     }
     let times: Vec<f64> = events.iter().map(|e| e.1).collect();
-    let (passes, widths, unpaired) = pair(&times);
+    // A bob's diameter says the log holds both edges of each shadow: any
+    // alternation of the intervals is then a shadow and a gap.
+    let ratio = if input.bob_diameter.is_some() {
+        EDGES_GIVEN_RATIO
+    } else {
+        PAIR_RATIO
+    };
+    let (passes, widths, unpaired) = pair(&times, ratio);
+    if input.bob_diameter.is_some() && widths.is_empty() {
+        return Err(Refusal::field(
+            "bob_diameter",
+            "is for a log of both edges of each shadow; this log's intervals do not \
+             alternate short and long, so it holds one event a pass",
+        ));
+    }
     let analysis = beats_of(&passes, input.nominal).map_err(|r| match r.place {
         crate::analysis::Place::Sample(f, i) => {
             Refusal::sample(f, events.get(i).map_or(i, |e| e.0), r.reason)
         }
         _ => r,
     })?;
+    let mut analysis = analysis;
+    if widths.is_empty() {
+        if let Some((short, long)) = alternation(&times) {
+            if short < ALTERNATION_SAID * long {
+                let w = super::beat_log::BeatWarning::EdgesUnpaired { short, long };
+                analysis.warning_codes.push(w.code());
+                analysis.warnings.push(w);
+            }
+        }
+    }
     let mean = |w: &[f64]| (!w.is_empty()).then(|| w.iter().sum::<f64>() / w.len() as f64);
     let start = &widths[..widths.len().min(ENDS)];
     let end = &widths[widths.len().saturating_sub(ENDS)..];
@@ -178,17 +209,13 @@ pub fn analyse(input: &GateInput<'_>) -> Result<GateAnalysis, Refusal> {
 }
 
 /// Pairs a gate's events into shadows: `(pass times, widths, lone
-/// edges)`; one pass an event (no widths) when they do not alternate.
-pub fn pair(times: &[f64]) -> (Vec<f64>, Vec<f64>, usize) {
-    let d: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
-    if d.len() < 3 {
+/// edges)`; one pass an event (no widths) when the median intervals of
+/// the two parities are not in a ratio below `pair_ratio`.
+pub fn pair(times: &[f64], pair_ratio: f64) -> (Vec<f64>, Vec<f64>, usize) {
+    let Some((short, long)) = alternation(times) else {
         return (times.to_vec(), Vec::new(), 0);
-    }
-    let mut even: Vec<f64> = d.iter().step_by(2).copied().collect();
-    let mut odd: Vec<f64> = d.iter().skip(1).step_by(2).copied().collect();
-    let (e, o) = (median(&mut even), median(&mut odd));
-    let (short, long) = (e.min(o), e.max(o));
-    if !(short > 0.0 && short < PAIR_RATIO * long) {
+    };
+    if !(short > 0.0 && short < pair_ratio * long) {
         return (times.to_vec(), Vec::new(), 0);
     }
     let threshold = (short * long).sqrt();
@@ -208,6 +235,19 @@ pub fn pair(times: &[f64]) -> (Vec<f64>, Vec<f64>, usize) {
         }
     }
     (passes, widths, lone)
+}
+
+/// The median intervals of the two parities, shorter first; `None` for
+/// fewer than four events.
+fn alternation(times: &[f64]) -> Option<(f64, f64)> {
+    let d: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
+    if d.len() < 3 {
+        return None;
+    }
+    let mut even: Vec<f64> = d.iter().step_by(2).copied().collect();
+    let mut odd: Vec<f64> = d.iter().skip(1).step_by(2).copied().collect();
+    let (e, o) = (median(&mut even), median(&mut odd));
+    Some((e.min(o), e.max(o)))
 }
 
 #[cfg(test)]
@@ -283,6 +323,38 @@ mod tests {
         assert_eq!(r.photogate.unpaired_edges, 1);
         assert_eq!(r.beats.repaired.missed, 1);
         assert!((r.beats.mean_beat_s - 0.586).abs() < 1e-6);
+    }
+
+    /// A seconds pendulum at 3° with a 5 cm bob: each shadow lasts 306 ms
+    /// of a 1 s beat. With the diameter given they are paired; without,
+    /// the alternation is said.
+    #[test]
+    fn long_shadows_are_paired_when_the_bob_is_given() {
+        let (beat, width) = (1.000362, 0.306);
+        let mut t = Vec::new();
+        for k in 0..60 {
+            let centre = k as f64 * beat + if k % 2 == 0 { 0.004 } else { -0.004 };
+            t.extend([centre - width / 2.0, centre + width / 2.0]);
+        }
+        let r = analyse(&GateInput {
+            time: &t,
+            bob_diameter: Some(0.05),
+            ..Default::default()
+        })
+        .unwrap();
+        assert_eq!(r.photogate.passes, 60);
+        assert!((r.beats.mean_beat_s - beat).abs() < 1e-9);
+        assert!(
+            (r.beats.beat_error_ms - 8.0).abs() < 1e-6,
+            "{}",
+            r.beats.beat_error_ms
+        );
+        let r = analyse(&GateInput {
+            time: &t,
+            ..Default::default()
+        })
+        .unwrap();
+        assert_eq!(r.beats.warning_codes, ["edges_unpaired"]);
     }
 
     #[test]

@@ -352,6 +352,22 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             )));
         }
     }
+    // No swinging pendulum goes half a turn from its centre: angles that
+    // do are in another unit (degrees under a radian's name) or not
+    // angles at all.
+    if theta.len() > 1 {
+        let centre = super::median(&mut theta.to_vec());
+        let swing = theta.iter().map(|v| (v - centre).abs()).fold(0.0, f64::max);
+        if swing >= std::f64::consts::PI {
+            return Err(Refusal::data(format!(
+                "the angle goes {} rad ({}°) from its middle, more than the half turn a \
+                 swinging pendulum can: are the angles in degrees under a radian's name (or not \
+                 angles)?",
+                format_significant(swing, 4),
+                format_significant(swing.to_degrees(), 4)
+            )));
+        }
+    }
     let requested = match input.model.unwrap_or(DEFAULT_MODEL) {
         "auto" => "auto",
         "linear" => "linear",
@@ -486,8 +502,8 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         let mean = |t: &[super::turning::Turn]| {
             t.iter().map(|t| t.amplitude).sum::<f64>() / t.len().max(1) as f64
         };
-        let grows = quarter >= 2
-            && mean(&turns[turns.len() - quarter..]) > 1.2 * mean(&turns[..quarter]);
+        let grows =
+            quarter >= 2 && mean(&turns[turns.len() - quarter..]) > 1.2 * mean(&turns[..quarter]);
         if zeta < -3.0 * se || (grows && zeta < 0.0) {
             warnings.push(TrackWarning::SwingGrows {
                 zeta,

@@ -395,6 +395,7 @@ def _period_cases():
         "pendulum_length_negative": ({"period": t, "amplitude": a, "pendulum_length": -1.0}),
         "pendulum_length_nan": ({"period": t, "amplitude": a, "pendulum_length": NAN}),
         "bob_radius_zero": ({"period": tl, "length": lengths, "bob_radius": 0.0}),
+        "bob_radius_without_length": ({"period": t, "amplitude": a, "bob_radius": 0.02}),
     }
 
 
@@ -425,7 +426,7 @@ def test_fit_period_answers_and_warns():
              for n, kw in TABLES.items()
              if n not in {"one_row", "negative_period", "nan_period", "amplitude_past_180",
                           "zero_error", "length_given_twice", "pendulum_length_negative",
-                          "pendulum_length_nan", "bob_radius_zero"}}
+                          "pendulum_length_nan", "bob_radius_zero", "bob_radius_without_length"}}
     assert codes["amplitude"] == [] and codes["length"] == [], codes
     assert codes["length_cm"] == ["gravity_implausible"]
     assert codes["half_periods"] == ["gravity_implausible"]

@@ -214,7 +214,11 @@ impl fmt::Display for PeriodWarning {
                     n(*standard_error)
                 )?;
                 match read_as {
-                    Some(unit) => write!(f, "the amplitudes look like {unit}; give their unit"),
+                    Some(unit) => write!(
+                        f,
+                        "the amplitudes look like {unit}; check their unit (the column's \
+                         header, or the unit given for it)"
+                    ),
                     None if *coefficient > CIRCULAR_COEFFICIENT => write!(
                         f,
                         "faster than any pendulum's. Are the amplitudes smaller than the swings \
@@ -355,11 +359,11 @@ pub fn gravity_cause(g: f64) -> Option<&'static str> {
     }
     let near = |r: f64| (ratio / r).ln().abs() < 0.2;
     Some(if near(100.0) {
-        "the lengths look like centimetres read as metres; give their unit (length_cm)"
+        "the lengths look like centimetres read as metres; give their unit (length_cm in a header, 99.4cm given as a length)"
     } else if near(1000.0) {
-        "the lengths look like millimetres read as metres; give their unit (length_mm)"
+        "the lengths look like millimetres read as metres; give their unit (length_mm in a header, 994mm given as a length)"
     } else if near(39.37) {
-        "the lengths look like inches read as metres; give their unit (length_in)"
+        "the lengths look like inches read as metres; give their unit (length_in in a header, 39.1in given as a length)"
     } else if near(4.0) {
         "g is 4 times too large: the periods look like half periods (one swing across, not \
          there and back)"
@@ -511,6 +515,12 @@ pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
             });
         hi > lo * (1.0 + tolerance)
     };
+    if input.bob_radius.is_some() && input.length.is_none() && input.pendulum_length.is_none() {
+        return Err(Refusal::field(
+            "bob_radius",
+            "needs the lengths it corrects: the pendulum's length, or a column of lengths",
+        ));
+    }
     let lengths_vary = input.length.is_some_and(|l| varies(l, SAME_LENGTH));
     if let (true, Some(_)) = (lengths_vary, input.pendulum_length) {
         return Err(Refusal::field(
@@ -1112,6 +1122,15 @@ mod tests {
             let e = analyse(&input).unwrap_err();
             assert_eq!(e.field_name(), Some(field), "{e:?}");
         }
+        // A bob's radius with no length to correct.
+        let e = analyse(&PeriodTableInput {
+            period: &t,
+            amplitude: Some(&[0.1, 0.2]),
+            bob_radius: Some(0.02),
+            ..Default::default()
+        })
+        .unwrap_err();
+        assert_eq!(e.field_name(), Some("bob_radius"));
         // One row is the data's fault, not a field's.
         let e = analyse(&PeriodTableInput {
             period: &[2.0],

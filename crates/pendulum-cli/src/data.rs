@@ -429,6 +429,17 @@ fn cell_value(cell: &str, decimal_comma: bool) -> Option<Option<f64>> {
     }
 }
 
+/// For a date-time cell (`2024-07-19T09:27:13Z`, `2024-07-19 09:27:13`):
+/// whether it carries an offset from UTC; `None` for anything else.
+fn datetime_has_offset(cell: &str) -> Option<bool> {
+    let c = cell.trim().trim_matches('"');
+    let (date, time) = c.split_once(['T', 't', ' '])?;
+    if date.len() != 10 || date.as_bytes().get(4) != Some(&b'-') || !time.contains(':') {
+        return None;
+    }
+    Some(time.ends_with(['Z', 'z']) || time.contains(['+', '-']))
+}
+
 /// A date and time (ISO 8601 / RFC 3339: `2024-07-19T09:27:13.125Z`,
 /// `2024-07-19 09:27:13.125+02:00`; without an offset read as UTC) as
 /// seconds since 1970, or a time of day (`09:27:13.125`) as seconds since
@@ -1051,6 +1062,7 @@ pub fn stream_table(
     let mut runs = 1_usize;
     let mut run_span: Option<(f64, f64)> = None;
     let mut day_offset = 0.0_f64;
+    let mut time_offsets: Option<bool> = None;
     let mut handle_line = |line_number: u64, line: &str, format: &mut Format| {
         let t = line.trim();
         if t.is_empty() || t.starts_with('#') {
@@ -1081,6 +1093,29 @@ pub fn stream_table(
                 };
                 row[k] = i as f64;
                 continue;
+            }
+            if Some(k) == time_column {
+                // Date-times with an offset and without one do not mix:
+                // the naive ones would be read as UTC, hours away.
+                if let Some(offset) = datetime_has_offset(cell) {
+                    match time_offsets {
+                        Some(first) if first != offset => {
+                            return Err(fail(format!(
+                                "line {line_number}, column {}: '{}' {} where the times \
+                                 before it {}: give every time its offset, or none",
+                                f.header,
+                                cell.trim(),
+                                if offset {
+                                    "has an offset from UTC"
+                                } else {
+                                    "has no offset from UTC"
+                                },
+                                if first { "have one" } else { "have none" }
+                            )));
+                        }
+                        _ => time_offsets = Some(offset),
+                    }
+                }
             }
             match cell_value(cell, decimal_comma) {
                 Some(Some(v)) => row[k] = v * f.factor.unwrap_or(1.0),

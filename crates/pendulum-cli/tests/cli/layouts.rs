@@ -345,6 +345,18 @@ fn times_as_loggers_write_them() {
         let p = write(dir.path(), name, &text);
         check(&p, &[]);
     }
+    // Times with an offset and then without one are not read hours apart.
+    let mut text = String::from("timestamp,angle_deg\n");
+    for i in 0..300 {
+        let s = 13.0 + i as f64 / 30.0;
+        let zone = if i < 150 { "+02:00" } else { "" };
+        text.push_str(&format!(
+            "2024-07-19T11:27:{s:06.3}{zone},{}\n",
+            angle(i as f64 / 30.0)
+        ));
+    }
+    let p = write(dir.path(), "mixed.csv", &text);
+    refuses(&["fit", "trajectory", &p], "line 152, column timestamp");
     // Five readings under each tenth-of-a-second stamp.
     let mut text = String::from("time_s,angle_deg\n");
     for i in 0..1500 {

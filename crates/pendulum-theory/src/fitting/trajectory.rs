@@ -990,6 +990,13 @@ impl<'a> NonlinearCurve<'a> {
         else {
             return (Vec::new(), 1.0);
         };
+        // A step of the minimiser to a frequency no record of these times
+        // could show (more periods than samples) would integrate for
+        // hours: it has no value, and the step is refused.
+        let periods = (span * wn + phase.max(0.0)) / std::f64::consts::TAU;
+        if periods.is_nan() || periods > self.times.len() as f64 + 10.0 {
+            return (Vec::new(), 1.0);
+        }
         // Cubic Hermite between samples errs by about (ωh)^4/384 of the
         // amplitude: 2e-9 at 200 samples a period, below any video's noise.
         let h = std::f64::consts::TAU / wn / 200.0;

@@ -607,24 +607,6 @@ fn fit_released(
         let start = [angle, p[1], p[2], p[3] - p[1].abs() * time, p[4]];
         fit = fit_curve(&curve, &t, theta, None, &start)?;
     }
-    // A release placed after the first sample (its first samples taken as
-    // the mirror image) and a free swing through that crest a period
-    // after an earlier release fit the first samples alike: the other is
-    // tried, and the better kept.
-    if fit.parameters[3] < 0.0 {
-        let p = &fit.parameters;
-        let ratio = release_period_ratio(p[0]);
-        let period = std::f64::consts::TAU * ratio / p[1].abs().max(f64::MIN_POSITIVE);
-        let grown = p[0] * (p[2].max(0.0) * p[1].abs() * period).exp();
-        let mut earlier = p.clone();
-        earlier[0] = grown.min(3.0);
-        earlier[3] = p[3] + std::f64::consts::TAU * ratio;
-        if let Ok(other) = fit_curve(&curve, &t, theta, None, &earlier) {
-            if other.residual_rms < fit.residual_rms && other.parameters[3] >= 0.0 {
-                fit = other;
-            }
-        }
-    }
     // A nonlinear fit that ran off (its release amplitude driven to the
     // top, or not determined by the data: a release rewound through heavy
     // damping, a record that does not follow a free decay) and fits worse

@@ -10,7 +10,8 @@
 mod common;
 
 use common::records::{record, Record};
-use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
+use pendulum_theory::analysis::Refusal;
+use pendulum_theory::fitting::tracked::{analyse, LengthSource, Track, TrackInput};
 
 /// How one record's fit went (the fields only Debug reads are shown in
 /// the log).
@@ -23,17 +24,22 @@ enum Outcome {
     Reported(#[allow(dead_code)] &'static str, Vec<(&'static str, f64)>),
 }
 
-fn judge(rec: &Record) -> Outcome {
-    let t = &rec.truth;
-    let r = match analyse(&TrackInput {
+/// The library's analysis of a record, with its length given.
+fn fit(rec: &Record) -> Result<Track, Refusal> {
+    analyse(&TrackInput {
         time: &rec.time,
         angle: &rec.angle,
         model: None,
-        length: Some((t.length_m, LengthSource::Given)),
+        length: Some((rec.truth.length_m, LengthSource::Given)),
         length_standard_error: None,
         force: true,
         angle_from_positions: false,
-    }) {
+    })
+}
+
+fn judge(rec: &Record) -> Outcome {
+    let t = &rec.truth;
+    let r = match fit(rec) {
         Ok(r) => r,
         Err(e) => return Outcome::Refused(e.to_string()),
     };
@@ -214,15 +220,7 @@ fn coverage_seeds() {
         if std::env::var("COVERAGE_DESCRIBE").is_ok() {
             continue;
         }
-        if let Ok(r) = analyse(&TrackInput {
-            time: &rec.time,
-            angle: &rec.angle,
-            model: None,
-            length: Some((t.length_m, LengthSource::Given)),
-            length_standard_error: None,
-            force: true,
-            angle_from_positions: false,
-        }) {
+        if let Ok(r) = fit(&rec) {
             let first: Vec<String> = rec
                 .angle
                 .iter()

@@ -53,9 +53,14 @@ pub(crate) fn rate_text(rate_s_per_day: Option<f64>, nominal_beat: Option<f64>) 
 /// `--tick-rate`: positive and finite.
 fn tick_rate(rate: Option<crate::units::Number>) -> Result<Option<f64>, CliError> {
     match rate {
-        Some(r) if !(r.0 > 0.0 && r.0.is_finite()) => Err(CliError::flag(
+        // From a 1 Hz counter to a 1 THz clock: beyond, the times in
+        // seconds are not numbers a log could hold.
+        Some(r) if !(1.0..=1e12).contains(&r.0) => Err(CliError::flag(
             "--tick-rate",
-            format!("must be a positive number of ticks a second, got {}", r.0),
+            format!(
+                "must be a positive number of ticks a second, from 1 to 10^12, got {}",
+                crate::output::num(r.0, 6)
+            ),
         )),
         r => Ok(r.map(|r| r.0)),
     }

@@ -1,7 +1,7 @@
 //! `pendulum fit period`: a table of periods against amplitude or length.
 
 use crate::args::FitPeriodArgs;
-use crate::data::{read_table, AngleUnit, Format, Found, ReadOptions, Role};
+use crate::data::{read_table, Format, Found, ReadOptions, Role};
 use crate::error::CliError;
 use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
@@ -59,10 +59,7 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
     let options = ReadOptions {
-        angle_unit: args.angle_unit.as_deref().map(|u| match u {
-            "rad" => AngleUnit::Radians,
-            _ => AngleUnit::Degrees,
-        }),
+        angle_unit: super::measured::angle_unit(args.angle_unit.as_deref()),
         columns: super::measured::columns(args.columns.as_deref()),
         frame_rate: None,
         // Periods are not times from a start.

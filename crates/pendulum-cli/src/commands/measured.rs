@@ -13,15 +13,20 @@ use std::path::Path;
 /// The reading options given on the command line.
 pub fn read_options(args: &MeasurementArgs) -> Result<ReadOptions, CliError> {
     Ok(ReadOptions {
-        angle_unit: args.angle_unit.as_deref().map(|u| match u {
-            "rad" => AngleUnit::Radians,
-            _ => AngleUnit::Degrees,
-        }),
+        angle_unit: angle_unit(args.angle_unit.as_deref()),
         columns: columns(args.columns.as_deref()),
         frame_rate: frame_rate(args.frame_rate)?,
         absolute_time: false,
         run: run(args.run)?,
         tick_rate: None,
+    })
+}
+
+/// `--angle-unit deg|rad` (clap has checked the value).
+pub fn angle_unit(unit: Option<&str>) -> Option<AngleUnit> {
+    unit.map(|u| match u {
+        "rad" => AngleUnit::Radians,
+        _ => AngleUnit::Degrees,
     })
 }
 

@@ -365,11 +365,21 @@ pub struct FitDecayArgs {
 #[derive(Debug, Args)]
 pub struct FitTrajectoryArgs {
     /// Angle against time (`time_s`, `t`, `Time (s)` and `angle_deg`,
-    /// `θ (rad)`, …) or tracked positions `x`, `y` (a Tracker export).
+    /// `θ (rad)`, …), tracked positions `x`, `y` (a Tracker export), or a
+    /// gyroscope's angular velocity (phyphox's `Gyroscope x (rad/s)`, …,
+    /// CSV or its Excel workbook), fitted by the models' derivative.
     #[arg(value_name = "FILE")]
     pub file: InputPath,
     #[command(flatten)]
     pub read: MeasurementArgs,
+    /// Fit from this time on (s from the record's first sample, as the plot
+    /// shows it): leave out a release by hand.
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub from: Option<Time>,
+    /// Fit up to this time (s from the record's first sample): leave out
+    /// the bob caught at the end.
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub to: Option<Time>,
     /// Pendulum length, to give g.
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub length: Option<Length>,

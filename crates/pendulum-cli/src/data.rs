@@ -66,7 +66,18 @@ pub enum Role {
     Gate,
     /// Times counted in a clock's ticks (read with `--tick-rate`).
     Ticks,
+    /// An angular velocity (read in rad/s), about no named axis.
+    AngularVelocity,
+    /// A gyroscope's angular velocity about its x axis (rad/s).
+    GyroX,
+    /// About its y axis.
+    GyroY,
+    /// About its z axis.
+    GyroZ,
 }
+
+/// The angular-velocity roles, a gyroscope's axes after the axis-less one.
+pub const RATE_ROLES: [Role; 4] = [Role::AngularVelocity, Role::GyroX, Role::GyroY, Role::GyroZ];
 
 impl Role {
     fn name(self) -> &'static str {
@@ -85,6 +96,10 @@ impl Role {
             Role::Length => "length",
             Role::Gate => "gate",
             Role::Ticks => "ticks",
+            Role::AngularVelocity => "angular velocity",
+            Role::GyroX => "gyroscope x",
+            Role::GyroY => "gyroscope y",
+            Role::GyroZ => "gyroscope z",
         }
     }
 
@@ -123,8 +138,58 @@ impl Role {
             | "photogate" => Role::Gate,
             "clockticks" | "clock_ticks" | "clock ticks" | "ticks" | "tick" | "counts"
             | "counter" | "timer_ticks" => Role::Ticks,
+            "angular_velocity"
+            | "angular velocity"
+            | "angularvelocity"
+            | "omega"
+            | "ω"
+            | "angvel"
+            | "ang_vel"
+            | "winkelgeschwindigkeit"
+            | "vitesse angulaire"
+            | "velocidad angular"
+            | "velocità angolare"
+            | "gyro"
+            | "gyroscope" => Role::AngularVelocity,
+            // phyphox's raw gyroscope data, in the app's languages.
+            _ if gyro_axis(base).is_some() => gyro_axis(base)?,
             _ => return None,
         })
+    }
+}
+
+/// The gyroscope axis a header base names: `gyroscope x`, `Gyroskop y`,
+/// `gyro_z`, `ω_x`, `wx`.
+fn gyro_axis(base: &str) -> Option<Role> {
+    let (name, axis) = base.rsplit_once([' ', '_']).or_else(|| {
+        let (i, _) = base.char_indices().last()?;
+        Some(base.split_at(i))
+    })?;
+    let named = matches!(
+        name.trim(),
+        "gyroscope"
+            | "gyro"
+            | "gyroskop"
+            | "giroscopio"
+            | "gyroscoop"
+            | "giroscópio"
+            | "angular velocity"
+            | "angular_velocity"
+            | "rotation"
+            | "rotation rate"
+            | "drehrate"
+            | "rotación"
+            | "rotazione"
+            | "omega"
+            | "ω"
+            | "w"
+            | "g"
+    );
+    match (named, axis.trim()) {
+        (true, "x") => Some(Role::GyroX),
+        (true, "y") => Some(Role::GyroY),
+        (true, "z") => Some(Role::GyroZ),
+        _ => None,
     }
 }
 
@@ -184,6 +249,21 @@ pub struct Format {
     /// The runs the file holds (with `--run`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub runs: Option<usize>,
+    /// A gyroscope's angular-velocity columns read (the analysis finds
+    /// the swing's axis among them).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub angular_velocity_columns: Vec<String>,
+    /// The file lines of rows dropped for going back in time to repeat an
+    /// earlier row cell for cell.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub repeated_rows_dropped: Option<Vec<u64>>,
+    /// The first and last times fitted (`--from`, `--to`), s from the
+    /// record's first sample.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub window_s: Option<[f64; 2]>,
+    /// The sheet read from a spreadsheet workbook (`.xls`, `.xlsx`, `.ods`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sheet: Option<String>,
     /// The point-mass track read from a Tracker project (`.trk`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tracker_track: Option<String>,
@@ -208,6 +288,16 @@ impl Format {
             out.push_str(&format!(
                 ", {} rows with blank cells skipped",
                 self.skipped_rows
+            ));
+        }
+        if let Some(lines) = &self.repeated_rows_dropped {
+            let shown: Vec<String> = lines.iter().take(3).map(u64::to_string).collect();
+            out.push_str(&format!(
+                ", {} rows that repeat an earlier one out of time order dropped (line{} {}{})",
+                lines.len(),
+                if lines.len() > 1 { "s" } else { "" },
+                shown.join(", "),
+                if lines.len() > 3 { ", …" } else { "" }
             ));
         }
         out
@@ -335,6 +425,10 @@ pub fn read_table(
     }
     let mut format = format;
     if let Some(k) = roles.iter().position(|&r| r == Role::Time) {
+        let dropped = drop_repeated_rows(&mut values, &mut lines, k);
+        if !dropped.is_empty() {
+            format.repeated_rows_dropped = Some(dropped);
+        }
         if format.frame_rate.is_none() && !options.absolute_time {
             format.readings_per_time = spread_readings(&mut values[k]);
         }
@@ -347,6 +441,51 @@ pub fn read_table(
         lines,
         format,
     })
+}
+
+/// How far back a row out of time order is looked for as a copy.
+const REPEAT_LOOKBACK: usize = 10;
+
+/// Rows whose time does not advance and that repeat, cell for cell (time
+/// and readings), one of the [`REPEAT_LOOKBACK`] rows before them (a
+/// logger's buffer written twice: 10 of the 12 faults of a real
+/// 18,000-row phyphox file) are dropped: they hold nothing new, and every
+/// analysis needs times in order. Returns their file lines. A row out of
+/// order with a time or a reading of its own (a schedule's repeated
+/// factor under an earlier time) is left for the time check to name.
+fn drop_repeated_rows(values: &mut [Vec<f64>], lines: &mut Vec<u64>, time: usize) -> Vec<u64> {
+    let rows = lines.len();
+    let mut keep = vec![true; rows];
+    let mut last_kept: Option<usize> = None;
+    for i in 0..rows {
+        let back = last_kept.is_some_and(|j| values[time][i] <= values[time][j]);
+        if back {
+            let repeats = (i.saturating_sub(REPEAT_LOOKBACK)..i)
+                .filter(|&j| keep[j])
+                .any(|j| values.iter().all(|v| v[j] == v[i]));
+            if repeats {
+                keep[i] = false;
+                continue;
+            }
+        }
+        last_kept = Some(i);
+    }
+    if keep.iter().all(|&k| k) {
+        return Vec::new();
+    }
+    let dropped: Vec<u64> = lines
+        .iter()
+        .zip(&keep)
+        .filter(|(_, &k)| !k)
+        .map(|(l, _)| *l)
+        .collect();
+    for column in values.iter_mut() {
+        let mut k = keep.iter();
+        column.retain(|_| *k.next().unwrap_or(&true));
+    }
+    let mut k = keep.iter();
+    lines.retain(|_| *k.next().unwrap_or(&true));
+    dropped
 }
 
 /// A logger that writes several readings under one time stamp (its clock
@@ -555,18 +694,19 @@ fn split_header(header: &str) -> (String, Option<String>) {
             text.truncate(i);
         }
     }
-    // `Time/s`, `Angle/rad`, `AngVel/rad/s`: the quantity over its unit.
-    if let Some((base, unit)) = text.split_once('/') {
-        let base = base.trim();
-        if !base.is_empty() && !unit.trim().is_empty() && !base.ends_with('+') {
-            return (base.to_string(), Some(unit.trim().to_string()));
-        }
-    }
+    // `Time (s)`, `t [s]`, `Gyroscope x (rad/s)`: the unit in brackets.
     for (open, close) in [('(', ')'), ('[', ']'), ('{', '}')] {
         if let (Some(i), true) = (text.find(open), text.ends_with(close)) {
             let unit = text[i + 1..text.len() - 1].trim().to_string();
             let base = text[..i].trim().to_string();
             return (base, Some(unit));
+        }
+    }
+    // `Time/s`, `Angle/rad`, `AngVel/rad/s`: the quantity over its unit.
+    if let Some((base, unit)) = text.split_once('/') {
+        let base = base.trim();
+        if !base.is_empty() && !unit.trim().is_empty() && !base.ends_with('+') {
+            return (base.to_string(), Some(unit.trim().to_string()));
         }
     }
     if let Some((base, unit)) = text.rsplit_once(['_', ' ']) {
@@ -585,6 +725,7 @@ enum Kind {
     Length,
     Temperature,
     Pressure,
+    Rate,
 }
 
 /// The index of a column the reader makes (times from a sample rate).
@@ -659,6 +800,9 @@ fn unit_of(unit: &str) -> Option<(Kind, f64)> {
         "us" | "µs" => (Kind::Time, 1e-6),
         "min" => (Kind::Time, 60.0),
         "h" => (Kind::Time, 3600.0),
+        "rad/s" | "rad/sec" | "rad s^-1" | "rad*s^-1" | "rad s-1" | "rad·s⁻¹" | "rad s⁻¹"
+        | "rads" | "rad_s" => (Kind::Rate, 1.0),
+        "deg/s" | "°/s" | "deg/sec" | "dps" | "deg s^-1" | "deg_s" | "degs" => (Kind::Rate, DEG),
         "deg" | "degree" | "degrees" | "°" => (Kind::Angle, DEG),
         "rad" | "radian" | "radians" => (Kind::Angle, 1.0),
         "m" | "cm" | "mm" | "px" | "pixels" | "pixel" | "in" => (Kind::Length, 1.0),
@@ -683,6 +827,7 @@ fn units_for(role: Role) -> &'static str {
         Role::Period | Role::PeriodError => "s, ms, us, min, h",
         Role::Length => "m, cm, mm, in",
         Role::Ticks => "none: give the clock's rate with --tick-rate HZ",
+        Role::AngularVelocity | Role::GyroX | Role::GyroY | Role::GyroZ => "rad/s, deg/s",
         _ => "none",
     }
 }
@@ -711,7 +856,15 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
                 .map(|(_, f)| f)
         };
         let factor = match (role, unit.as_deref()) {
-            (Role::Angle | Role::Amplitude, None) => options.angle_unit.map(|u| match u {
+            (
+                Role::Angle
+                | Role::Amplitude
+                | Role::AngularVelocity
+                | Role::GyroX
+                | Role::GyroY
+                | Role::GyroZ,
+                None,
+            ) => options.angle_unit.map(|u| match u {
                 AngleUnit::Degrees => DEG,
                 AngleUnit::Radians => 1.0,
             }),
@@ -727,6 +880,9 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
             (Role::Ticks, _) => options.tick_rate.map(|r| 1.0 / r),
             (Role::Length, Some(u)) => length_factor(u),
             (Role::Angle | Role::Amplitude, Some(_)) => kind(Kind::Angle),
+            (Role::AngularVelocity | Role::GyroX | Role::GyroY | Role::GyroZ, Some(_)) => {
+                kind(Kind::Rate)
+            }
             (Role::Temperature, Some(_)) => kind(Kind::Temperature),
             (Role::Pressure, Some(_)) => kind(Kind::Pressure),
         };
@@ -762,21 +918,36 @@ pub fn stream_table(
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("trk"));
     let mut track = None;
-    let mut reader: Box<dyn BufRead> = if is_project {
-        let mut text = String::new();
+    let mut sheet = None;
+    let workbook = crate::workbook::is_workbook(path);
+    let mut reader: Box<dyn BufRead> = if workbook || is_project {
+        // A workbook (cells compressed or in records) or a Tracker project
+        // (XML) is read whole, and its sheet or track becomes the table's
+        // text.
+        let mut bytes = Vec::new();
         BufReader::new(handle)
             .take(MAX_FILE_BYTES + 1)
-            .read_to_string(&mut text)
+            .read_to_end(&mut bytes)
             .map_err(|e| fail(format!("cannot read it: {e}")))?;
-        if text.len() as u64 > MAX_FILE_BYTES {
+        if bytes.len() as u64 > MAX_FILE_BYTES {
             return Err(fail(format!(
                 "is larger than the {} GiB a measurement file may have",
                 MAX_FILE_BYTES >> 30
             )));
         }
-        let project = crate::tracker::read(&text).map_err(fail)?;
-        track = Some(project.track);
-        Box::new(std::io::Cursor::new(project.csv.into_bytes()))
+        let text = if workbook {
+            let found = crate::workbook::read(bytes).map_err(fail)?;
+            sheet = Some(found.name);
+            found.text
+        } else {
+            let text = String::from_utf8(bytes).map_err(|_| {
+                fail("cannot read it: stream did not contain valid UTF-8".to_string())
+            })?;
+            let project = crate::tracker::read(&text).map_err(fail)?;
+            track = Some(project.track);
+            project.csv
+        };
+        Box::new(std::io::Cursor::new(text.into_bytes()))
     } else {
         Box::new(BufReader::new(handle).take(MAX_FILE_BYTES + 1))
     };
@@ -1049,6 +1220,10 @@ pub fn stream_table(
         skipped_rows: 0,
         frame_rate: rate,
         tracker_track: track,
+        sheet,
+        angular_velocity_columns: Vec::new(),
+        window_s: None,
+        repeated_rows_dropped: None,
         run: None,
         runs: None,
         readings_per_time: None,

@@ -19,6 +19,7 @@ mod plot;
 mod tracker;
 mod units;
 mod work;
+mod workbook;
 
 use clap::error::ErrorKind;
 use clap::{CommandFactory, FromArgMatches};

@@ -525,21 +525,38 @@ fn fit_beats(
 
 /// The tracked-swing analysis (the CLI's `fit trajectory`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, angle, model, length, force))]
+#[pyo3(signature = (time, angle, model, length, force, angular_velocity))]
 fn fit_trajectory(
     py: Python<'_>,
     time: In<'_>,
-    angle: In<'_>,
+    angle: Option<In<'_>>,
     model: Option<&str>,
     length: Option<f64>,
     force: bool,
+    angular_velocity: Option<Vec<In<'_>>>,
 ) -> PyResult<String> {
     use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
-    let (time, angle) = (values(&time, "time")?, values(&angle, "angle")?);
+    let time = values(&time, "time")?;
+    let angle = angle.as_ref().map(|a| values(a, "angle")).transpose()?;
+    // One array per gyroscope axis.
+    let rate = angular_velocity
+        .as_ref()
+        .map(|axes| {
+            axes.iter()
+                .map(|a| values(a, "angular_velocity"))
+                .collect::<PyResult<Vec<&[f64]>>>()
+        })
+        .transpose()?;
+    if angle.is_none() && rate.is_none() {
+        return Err(PyValueError::new_err(
+            "angle: give the angle (or the angular_velocity) at each time",
+        ));
+    }
     answer(py.detach(|| {
         analyse(&TrackInput {
             time,
-            angle,
+            angle: angle.unwrap_or(&[]),
+            angular_velocity: rate.as_deref().unwrap_or(&[]),
             model,
             length: length.map(|l| (l, LengthSource::Given)),
             length_standard_error: None,

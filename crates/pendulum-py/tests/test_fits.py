@@ -87,3 +87,30 @@ def test_fit_trajectory_as_the_binary(tmp_path):
     # The linear model at 8° gives no g, and says why.
     linear = pt.fit_trajectory(t, theta, "linear", length=0.5)
     assert "g_m_s2" not in linear.parameters and linear["warnings"]
+
+
+def test_fit_trajectory_of_a_gyroscope_as_the_binary():
+    """A phyphox gyroscope record (tests/data/gyroscope, made by SciPy):
+    the three axes as an (n, 3) array give the binary's figures whole."""
+    from pathlib import Path
+    path = Path(__file__).parents[2] / "pendulum-cli" / "tests" / "data" / "gyroscope" / "gyroscope-comma.csv"
+    cli = json.loads(subprocess.run(
+        [str(binary()), "fit", "trajectory", str(path), "--length", "0.45m", "--json"],
+        capture_output=True, text=True, check=True,
+    ).stdout)
+    d = np.genfromtxt(path, delimiter=",", skip_header=1)
+    t = d[:, 0] - d[0, 0]  # the reader measures times from the first row
+    ours = pt.fit_trajectory(t, angular_velocity=d[:, 1:4], length=0.45)
+    assert ours["observed"] == cli["observed"] == "angular_velocity"
+    assert ours.parameters == pytest.approx(cli["parameters"], rel=1e-9, abs=1e-12)
+    assert ours.standard_errors == pytest.approx(cli["standard_errors"], rel=1e-6)
+    assert ours["gyroscope_axis"] == pytest.approx(cli["gyroscope_axis"], rel=1e-12)
+    assert ours["residual_rms_rad_s"] == pytest.approx(cli["residual_rms_rad_s"], rel=1e-9)
+    assert "residual_rms_rad" not in ours
+    # One axis alone is that axis.
+    one = pt.fit_trajectory(t, angular_velocity=d[:, 2])
+    assert one["gyroscope_axis"] == [1.0]
+    with pytest.raises(ValueError, match="not both"):
+        pt.fit_trajectory(t, np.zeros_like(t), angular_velocity=d[:, 2])
+    with pytest.raises(ValueError, match="angle"):
+        pt.fit_trajectory(t)

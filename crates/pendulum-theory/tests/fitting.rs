@@ -521,6 +521,7 @@ mod self_checks {
             length_standard_error: None,
             force: false,
             angle_from_positions: false,
+            angular_velocity: &[],
         })
         .unwrap()
         .warning_codes
@@ -546,6 +547,7 @@ mod self_checks {
             length_standard_error: None,
             force: false,
             angle_from_positions: false,
+            angular_velocity: &[],
         })
         .unwrap();
         assert_eq!(r.warning_codes, ["gravity_implausible"]);
@@ -568,6 +570,7 @@ mod self_checks {
             length_standard_error: None,
             force: false,
             angle_from_positions: false,
+            angular_velocity: &[],
         })
         .unwrap();
         assert_eq!(r.warning_codes, ["gravity_implausible"]);
@@ -606,6 +609,7 @@ mod self_checks {
             length_standard_error: None,
             force: false,
             angle_from_positions: false,
+            angular_velocity: &[],
         })
         .unwrap()
         .warning_codes;
@@ -803,6 +807,7 @@ mod long_large_swings {
                 length_standard_error: None,
                 force: true,
                 angle_from_positions: false,
+                angular_velocity: &[],
             })
             .unwrap();
             let (g, se) = (r.parameters["g_m_s2"], r.standard_errors["g_m_s2"]);

@@ -3,7 +3,7 @@
 use super::common;
 use super::measured::{has_track, read_options, track_of, track_roles, Positions};
 use crate::args::FitDecayArgs;
-use crate::data::{need, read_table, Format, Found, Role};
+use crate::data::{need, read_table, Format, Found, Role, RATE_ROLES};
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num};
@@ -59,6 +59,12 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
             track_roles(found, rate.is_some())
         } else if found.iter().any(|f| f.role == Role::Amplitude) {
             need(&[&[Role::Time, Role::Swing], &[Role::Amplitude]])(found)
+        } else if found.iter().any(|f| RATE_ROLES.contains(&f.role)) {
+            Err(
+                "no amplitude column, nor a track: a gyroscope's angular velocity is fitted \
+                 by fit trajectory (its damping laws and Q)"
+                    .to_string(),
+            )
         } else {
             Err(
                 "no amplitude column (amplitude_deg, amplitude (rad), …), nor a track \

@@ -47,7 +47,8 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             Some(common::pendulum_of(l, d.as_deref(), &common::gravity_default()?)?.length_m())
         }
     };
-    let track = read_track(&args.file, &args.read)?;
+    let track =
+        read_track(&args.file, &args.read)?.window(args.from.map(|t| t.0), args.to.map(|t| t.0))?;
     // Without --length, a fitted pivot's radius is the length (in the
     // file's units, which Tracker calibrates to metres).
     let length = match (given_length, track.track_radius) {
@@ -56,7 +57,9 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         (None, Some(r)) => Some((r, LengthSource::TrackRadius)),
         (None, None) => None,
     };
+    let rate = !track.angular_velocity.is_empty();
     let (time, theta) = (&track.time, &track.angle);
+    let axes: Vec<&[f64]> = track.angular_velocity.iter().map(Vec::as_slice).collect();
     let file = track.table.file.clone();
     let _spinner = crate::work::Spinner::start(
         format!("fitting {} rows", time.len()),
@@ -65,6 +68,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     let analysis = analyse(&TrackInput {
         time,
         angle: theta,
+        angular_velocity: &axes,
         model: args.model.as_deref(),
         length,
         length_standard_error: track.track_radius_error.filter(|_| given_length.is_none()),
@@ -78,11 +82,23 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         })
     })?;
     if let Some(target) = &plot {
-        render(target, &figure(time, theta, &analysis.residuals))?;
+        // The rate about the swing's axis, as fitted.
+        let values: Vec<f64> = match &analysis.gyroscope_axis {
+            Some(d) => (0..time.len())
+                .map(|i| axes.iter().zip(d).map(|(a, c)| a[i] * c).sum())
+                .collect(),
+            None => theta.clone(),
+        };
+        render(target, &figure(time, &values, &analysis.residuals, rate))?;
     }
     let residuals_file = match &args.residuals {
         Some(path) => {
-            let mut file = CsvFile::create(path, "--residuals", "time_s,residual_rad")?;
+            let header = if rate {
+                "time_s,residual_rad_s"
+            } else {
+                "time_s,residual_rad"
+            };
+            let mut file = CsvFile::create(path, "--residuals", header)?;
             for (t, r) in time.iter().zip(&analysis.residuals) {
                 file.number(Some(*t)).number(Some(*r)).end_row()?;
             }
@@ -111,11 +127,27 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         a.model,
         a.damping_law
     );
-    if a.held_samples > 0 {
+    if let (Some(d), Some(share)) = (&a.gyroscope_axis, a.gyroscope_axis_share) {
+        let columns = &result.format.angular_velocity_columns;
+        let axis: Vec<String> = columns
+            .iter()
+            .zip(d)
+            .map(|(c, v)| format!("{} {c}", num(*v, 3)))
+            .collect();
         out.push_str(&format!(
-            "  the first {} samples hold the bob at rest before its release: not fitted\n",
-            a.held_samples
+            "  a gyroscope's angular velocity, fitted by the models' derivative: the swing's \
+             axis is {} ({}% of the rotation)\n",
+            axis.join(" + "),
+            num(100.0 * share, 3)
         ));
+    }
+    match a.held_samples {
+        0 => {}
+        1 => out
+            .push_str("  the first sample holds the bob at rest before its release: not fitted\n"),
+        n => out.push_str(&format!(
+            "  the first {n} samples hold the bob at rest before its release: not fitted\n"
+        )),
     }
     for (name, value) in &a.parameters {
         let note = if a.undetermined.contains(name) {
@@ -144,18 +176,38 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     for w in &a.warnings {
         out.push_str(&format!("  WARNING: {w}\n"));
     }
-    out.push_str(&format!(
-        "  {:<26} {} rad ({}°)\n",
-        "residual rms",
-        num(a.residual_rms_rad, 3),
-        num(a.residual_rms_rad.to_degrees(), 3)
-    ));
+    let (rms, per) = match (a.residual_rms_rad, a.residual_rms_rad_s) {
+        (Some(rms), _) => (rms, ""),
+        (None, Some(rms)) => (rms, "/s"),
+        (None, None) => (f64::NAN, ""),
+    };
+    if rms.is_finite() {
+        out.push_str(&format!(
+            "  {:<26} {} rad{per} ({}°{per})\n",
+            "residual rms",
+            num(rms, 3),
+            num(rms.to_degrees(), 3)
+        ));
+    }
     Ok(out)
 }
 
-/// The tracked angle with the fitted curve (the data less the residuals),
-/// and the residuals.
-fn figure(time: &[f64], theta: &[f64], residuals: &[f64]) -> Figure {
+/// The tracked angle (or angular velocity) with the fitted curve (the
+/// data less the residuals), and the residuals.
+fn figure(time: &[f64], theta: &[f64], residuals: &[f64], rate: bool) -> Figure {
+    let (title, unit, residual_unit) = if rate {
+        (
+            "Angular velocity and the fitted motion's",
+            "angular velocity (°/s)",
+            "measured − fitted (°/s)",
+        )
+    } else {
+        (
+            "Tracked angle and the fitted motion",
+            "angle (°)",
+            "measured − fitted (°)",
+        )
+    };
     let deg = |v: f64| v.to_degrees();
     let data = time.iter().zip(theta).map(|(t, y)| (*t, deg(*y))).collect();
     let fitted = time
@@ -171,9 +223,9 @@ fn figure(time: &[f64], theta: &[f64], residuals: &[f64]) -> Figure {
     Figure {
         panels: vec![
             Panel::new(
-                "Tracked angle and the fitted motion",
+                title,
                 "time (s)",
-                "angle (°)",
+                unit,
                 vec![
                     Series::dots("measured", data),
                     Series::line("fitted", fitted),
@@ -182,7 +234,7 @@ fn figure(time: &[f64], theta: &[f64], residuals: &[f64]) -> Figure {
             Panel::new(
                 "Residuals",
                 "time (s)",
-                "measured − fitted (°)",
+                residual_unit,
                 vec![Series::dots("residual", res)],
             ),
         ],

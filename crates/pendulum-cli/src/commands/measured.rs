@@ -3,7 +3,7 @@
 //! from an angle column or from x/y positions about a pivot.
 
 use crate::args::MeasurementArgs;
-use crate::data::{read_table, AngleUnit, Found, ReadOptions, Role, Table};
+use crate::data::{read_table, AngleUnit, Found, ReadOptions, Role, Table, RATE_ROLES};
 use crate::error::CliError;
 use crate::units::parse_number;
 use pendulum_theory::fitting::track::{angle_about, fit_circle};
@@ -71,8 +71,11 @@ pub struct Track {
     pub table: Table,
     /// Times, s.
     pub time: Vec<f64>,
-    /// Angles, rad.
+    /// Angles, rad (empty for a gyroscope's record).
     pub angle: Vec<f64>,
+    /// A gyroscope's angular velocities, rad/s, one vector per axis read
+    /// (empty for angles).
+    pub angular_velocity: Vec<Vec<f64>>,
     /// The pivot, when the angles came from positions.
     pub pivot: Option<PivotJson>,
     /// The radius of the circle the bob traced (`--pivot fit`), file units.
@@ -110,19 +113,119 @@ pub fn track_roles(found: &[Found], rate: bool) -> Result<Vec<Role>, String> {
     } else if has(Role::X) && has(Role::Y) {
         roles.extend([Role::X, Role::Y]);
         Ok(roles)
+    } else if RATE_ROLES.iter().any(|&r| has(r)) {
+        Err(
+            "no angle column (angle, theta, θ), nor x and y positions; a gyroscope's angular \
+             velocity is fitted by fit trajectory"
+                .into(),
+        )
     } else {
         Err("no angle column (angle, theta, θ), nor x and y positions".into())
     }
 }
 
-/// Reads a swing from `path`.
+/// The roles of a swing `fit trajectory` reads: [`track_roles`], or time
+/// with a gyroscope's angular velocities (every axis the header has, to
+/// choose the one the swing turns about once read).
+pub fn trajectory_roles(found: &[Found], rate: bool) -> Result<Vec<Role>, String> {
+    let has = |r: Role| found.iter().any(|f| f.role == r);
+    let angles = has(Role::Angle) || has(Role::X) && has(Role::Y);
+    let rates: Vec<Role> = RATE_ROLES.iter().copied().filter(|&r| has(r)).collect();
+    if angles || rates.is_empty() {
+        return track_roles(found, rate);
+    }
+    if !has(Role::Time) && !rate {
+        // Its sentence: no time column, and how to give the rate.
+        return track_roles(found, rate);
+    }
+    let mut roles = if has(Role::Time) {
+        vec![Role::Time]
+    } else {
+        Vec::new()
+    };
+    roles.extend(rates);
+    Ok(roles)
+}
+
+/// Reads a swing from `path`: angles, positions, or a gyroscope's
+/// angular velocities.
 pub fn read_track(path: &Path, args: &MeasurementArgs) -> Result<Track, CliError> {
     let options = read_options(args)?;
     let rate = options.frame_rate;
     let table = read_table(path, &options, &|found: &[Found]| {
-        track_roles(found, rate.is_some())
+        trajectory_roles(found, rate.is_some())
     })?;
     track_of(table, &Positions::of(args)?, rate)
+}
+
+/// A gyroscope's axes as read, with their header names: the library
+/// finds the one the swing turns about. (A magnitude column, phyphox's
+/// `Absolute`, would double the frequency, and is never read.)
+fn gyroscope_axes(table: &Table) -> (Vec<Vec<f64>>, Vec<String>) {
+    RATE_ROLES
+        .iter()
+        .filter_map(|&r| {
+            let i = table.roles.iter().position(|&x| x == r)?;
+            Some((table.values[i].clone(), table.names[i].clone()))
+        })
+        .unzip()
+}
+
+impl Track {
+    /// The samples from `from` to `to` (s from the record's first sample,
+    /// either open), for `--from` and `--to`; the window is noted in the
+    /// format.
+    pub fn window(mut self, from: Option<f64>, to: Option<f64>) -> Result<Track, CliError> {
+        if from.is_none() && to.is_none() {
+            return Ok(self);
+        }
+        for (flag, v) in [("--from", from), ("--to", to)] {
+            if let Some(v) = v.filter(|v| !v.is_finite()) {
+                return Err(CliError::flag(flag, format!("must be a time, got {v} s")));
+            }
+        }
+        let (lo, hi) = (
+            from.unwrap_or(f64::NEG_INFINITY),
+            to.unwrap_or(f64::INFINITY),
+        );
+        if lo >= hi {
+            return Err(CliError::flag(
+                "--to",
+                format!("must be after --from ({lo} s), got {hi} s"),
+            ));
+        }
+        let keep: Vec<bool> = self.time.iter().map(|t| (lo..=hi).contains(t)).collect();
+        let kept = keep.iter().filter(|&&k| k).count();
+        if kept == 0 {
+            let last = self.time.last().copied().unwrap_or(0.0);
+            return Err(CliError::flag(
+                if from.is_some() { "--from" } else { "--to" },
+                format!(
+                    "no sample lies between {} s and {} s (the record runs from 0 to {} s)",
+                    crate::output::num(lo, 6),
+                    crate::output::num(hi, 6),
+                    crate::output::num(last, 6)
+                ),
+            ));
+        }
+        let pick = |v: &[f64]| -> Vec<f64> {
+            v.iter()
+                .zip(&keep)
+                .filter(|(_, &k)| k)
+                .map(|(x, _)| *x)
+                .collect()
+        };
+        self.time = pick(&self.time);
+        if !self.angle.is_empty() {
+            self.angle = pick(&self.angle);
+        }
+        self.angular_velocity = self.angular_velocity.iter().map(|a| pick(a)).collect();
+        self.table.format.window_s = Some([
+            self.time.first().copied().unwrap_or(0.0),
+            self.time.last().copied().unwrap_or(0.0),
+        ]);
+        Ok(self)
+    }
 }
 
 /// How x and y positions become angles: the pivot, the direction of y,
@@ -173,12 +276,29 @@ pub fn track_of(
         }
         (None, None) => Vec::new(),
     };
+    if table.column(Role::Angle).is_none() {
+        let (rates, names) = gyroscope_axes(&table);
+        if !rates.is_empty() {
+            let mut table = table;
+            table.format.angular_velocity_columns = names;
+            return Ok(Track {
+                table,
+                time,
+                angle: Vec::new(),
+                angular_velocity: rates,
+                pivot: None,
+                track_radius: None,
+                track_radius_error: None,
+            });
+        }
+    }
     if let Some(angle) = table.column(Role::Angle) {
         let angle = angle.to_vec();
         return Ok(Track {
             table,
             time,
             angle,
+            angular_velocity: Vec::new(),
             pivot: None,
             track_radius: None,
             track_radius_error: None,
@@ -290,6 +410,7 @@ pub fn track_of(
         table,
         time,
         angle,
+        angular_velocity: Vec::new(),
         pivot: Some(pivot),
         track_radius: radius.map(|r| r.0),
         track_radius_error: radius.map(|r| r.1),

@@ -11,6 +11,7 @@ mod figures;
 mod fit;
 mod fit_period;
 mod formats;
+mod gyroscope;
 mod hardening;
 mod layouts;
 mod listen;

@@ -275,16 +275,27 @@ def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=None,
                      d["preferred"])
 
 
-def fit_trajectory(time, angle, model="auto", *, length=None, force=False):
+def fit_trajectory(time, angle=None, model="auto", *, angular_velocity=None, length=None,
+                   force=False):
     """Fits section 1-4's closed form (``"linear"``) or the nonlinear
     damped equation integrated inside the fit (``"nonlinear"``; ``"auto"``:
-    nonlinear above a 5° swing) to ``angle`` (rad) at ``time`` (s): the
-    CLI's ``fit trajectory``, the same library call; with ``length`` (m),
-    g. Returns the CLI's JSON as a dict (points, model, model_requested,
-    parameters, standard_errors, residual_rms_rad, length_m, length_source,
-    warnings)."""
-    d = _json.loads(_native.fit_trajectory(_array(time), _array(angle), _text(model),
-                                           _number(length), bool(force)))
+    nonlinear above a 5° swing) to ``angle`` (rad) at ``time`` (s), or by
+    the models' derivative to a gyroscope's ``angular_velocity`` (rad/s)
+    instead (one array, or one column per sensor axis, shape (n, 3): the
+    swing's axis is found among them): the CLI's ``fit trajectory``, the
+    same library call; with ``length`` (m), g. Returns the CLI's JSON as a
+    dict (points, model, model_requested, observed, parameters,
+    standard_errors, residual_rms_rad or residual_rms_rad_s,
+    gyroscope_axis, length_m, length_source, warnings)."""
+    rates = None
+    if angular_velocity is not None:
+        a = _np.asarray(angular_velocity, dtype=float)
+        if a.ndim == 2:
+            rates = [_np.ascontiguousarray(a[:, j]) for j in range(a.shape[1])]
+        else:
+            rates = [_array(a)]
+    d = _json.loads(_native.fit_trajectory(_array(time), None if angle is None else _array(angle),
+                                           _text(model), _number(length), bool(force), rates))
     return FitResult(d, d["parameters"], d["standard_errors"], d["model"])
 
 

@@ -58,9 +58,10 @@ def fit_decay(
 ) -> FitResult: ...
 def fit_trajectory(
     time: npt.ArrayLike,
-    angle: npt.ArrayLike,
+    angle: Optional[npt.ArrayLike] = ...,
     model: str = ...,
     *,
+    angular_velocity: Optional[npt.ArrayLike] = ...,
     length: Optional[float] = ...,
     force: Any = ...,
 ) -> FitResult: ...

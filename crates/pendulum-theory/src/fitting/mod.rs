@@ -13,6 +13,7 @@
 pub mod beat_log;
 pub mod beats;
 pub mod decay;
+pub mod gyroscope;
 pub mod period_table;
 pub mod photogate;
 pub mod rundown;

@@ -4,9 +4,10 @@
 //! command line's `fit trajectory` and Python's `fit_trajectory` are this
 //! call.
 
+use super::gyroscope::principal_axis;
 pub use super::noise_of;
 use super::rundown::{check_pairs, check_times};
-use super::trajectory::{fit_trajectory, largest_swing, TrajectoryModel};
+use super::trajectory::{fit_observed, swing_of, Observed, TrajectoryModel};
 use crate::analysis::{judge_work, require_finite, require_finite_samples, Refusal};
 use crate::error::format_significant;
 use serde::Serialize;
@@ -36,6 +37,11 @@ pub const RESIDUAL_OF_SWING: f64 = 0.25;
 /// noise say the model leaves a pattern in them.
 pub const RESIDUAL_OF_NOISE: f64 = 1.5;
 
+/// Of a gyroscope's rotation, the share about the swing's axis below
+/// which the phone is turning about others too (twisting on its strings,
+/// a conical swing): 0.9.
+pub const GYROSCOPE_AXIS_SHARE: f64 = 0.9;
+
 /// The band about the offset a zero crossing must cross, as a fraction of
 /// the largest swing (so that noise at the centre counts no crossing).
 pub const CROSSING_BAND: f64 = 0.1;
@@ -59,6 +65,12 @@ pub struct TrackInput<'a> {
     pub time: &'a [f64],
     /// The angle at each time, rad.
     pub angle: &'a [f64],
+    /// Or, with `angle` empty, the angular velocity at each time, rad/s: a
+    /// gyroscope that swings with the pendulum (a phone's), one slice per
+    /// sensor axis (one to three). The rotation about their principal axis
+    /// ([`super::gyroscope::principal_axis`]) is fitted by the models'
+    /// derivative, never integrated; the offset is the gyroscope's zero.
+    pub angular_velocity: &'a [&'a [f64]],
     /// `auto` (the default: nonlinear above a 5° swing), `linear` or
     /// `nonlinear`.
     pub model: Option<&'a str>,
@@ -123,18 +135,22 @@ pub enum TrackWarning {
     /// The residuals are a large part of the swing: a false minimum, or a
     /// record that is not this motion.
     PoorFit {
-        /// Residual rms, rad.
+        /// Residual rms, rad (rad/s for angular velocities).
         rms: f64,
-        /// The record's largest swing, rad.
+        /// The record's largest swing, rad (rad/s for angular velocities).
         swing: f64,
+        /// Whether the record is of angular velocities.
+        rate: bool,
     },
     /// The residuals are larger than the record's own noise: the model
     /// leaves a pattern (or the tracking errors are correlated).
     ResidualsExceedNoise {
-        /// Residual rms, rad.
+        /// Residual rms, rad (rad/s for angular velocities).
         rms: f64,
-        /// The noise from the residuals' fourth differences, rad.
+        /// The noise from the residuals' fourth differences, rad (rad/s).
         noise: f64,
+        /// Whether the record is of angular velocities.
+        rate: bool,
         /// The factor the standard errors were widened by for the
         /// residuals' correlation.
         inflation: f64,
@@ -147,6 +163,12 @@ pub enum TrackWarning {
         zeta: f64,
         /// Its standard error.
         standard_error: f64,
+    },
+    /// A gyroscope's rotation is not about one axis: the fit follows the
+    /// principal one.
+    SeveralAxes {
+        /// The share of the rotation's variance about the principal axis.
+        share: f64,
     },
     /// The fitted curve crosses the centre a different number of times
     /// than the data do: its frequency is not the record's.
@@ -173,6 +195,7 @@ impl TrackWarning {
             TrackWarning::AngleUnit { .. } => "angle_unit",
             TrackWarning::GravityOff { .. } => "gravity_off",
             TrackWarning::CrossingsDiffer { .. } => "crossings_differ",
+            TrackWarning::SeveralAxes { .. } => "several_axes",
             TrackWarning::ResidualsExceedNoise { .. } => "residuals_exceed_noise",
         }
     }
@@ -241,32 +264,52 @@ impl fmt::Display for TrackWarning {
                 format_significant(*g, 5),
                 format_significant(100.0 * (g / crate::STANDARD_GRAVITY - 1.0).abs(), 2)
             ),
-            TrackWarning::PoorFit { rms, swing } => write!(
+            TrackWarning::PoorFit { rms, swing, rate } => write!(
                 f,
-                "the residuals (rms {}°) are {}% of the largest swing ({}°): the fitted curve \
+                "the residuals (rms {}{}) are {}% of the largest swing ({}{}): the fitted curve \
                  does not follow the record (a false minimum on a long record of large swings, \
                  the wrong column, a record that is not one swinging pendulum); do not use its \
                  figures",
                 format_significant(rms.to_degrees(), 3),
+                degrees(*rate),
                 format_significant(100.0 * rms / swing, 2),
-                format_significant(swing.to_degrees(), 3)
+                format_significant(swing.to_degrees(), 3),
+                degrees(*rate)
             ),
             TrackWarning::ResidualsExceedNoise {
                 rms,
                 noise,
                 inflation,
+                rate,
             } => write!(
                 f,
-                "the residuals (rms {}°) are {} times the record's sample-to-sample noise ({}°): \
-                 the model leaves a pattern in them (a damping the laws fitted do not describe, a \
-                 bob that is not a point, the camera's perspective, a drifting tracker) or the \
-                 tracking errors are correlated; the standard errors are widened {} times for \
-                 the residuals' correlation from sample to sample, but a pattern the model \
-                 cannot follow may still bias the figures",
+                "the residuals (rms {}{}) are {} times the record's sample-to-sample noise ({}{}): \
+                 the model leaves a pattern in them ({}) or the {} errors are correlated; the \
+                 standard errors are widened {} times for the residuals' correlation from sample \
+                 to sample, but a pattern the model cannot follow may still bias the figures",
                 format_significant(rms.to_degrees(), 3),
+                degrees(*rate),
                 format_significant(rms / noise, 2),
                 format_significant(noise.to_degrees(), 3),
+                degrees(*rate),
+                if *rate {
+                    "the phone wobbling or twisting on its strings, a release by hand or a catch \
+                     in the record (fit the free swing only), a damping the laws fitted do not \
+                     describe"
+                } else {
+                    "a damping the laws fitted do not describe, a bob that is not a point, the \
+                     camera's perspective, a drifting tracker"
+                },
+                if *rate { "sensor's" } else { "tracking" },
                 format_significant(*inflation, 3)
+            ),
+            TrackWarning::SeveralAxes { share } => write!(
+                f,
+                "only {}% of the gyroscope's rotation turns about one axis: the phone also \
+                 twists on its strings or swings in a cone (a pendulum that does not swing in \
+                 one plane); the fit follows the principal axis, and its damping and \
+                 residuals carry the rest",
+                format_significant(100.0 * share, 2)
             ),
             TrackWarning::CrossingsDiffer { data, model } => write!(
                 f,
@@ -282,6 +325,15 @@ impl fmt::Display for TrackWarning {
                 names.join(", ")
             ),
         }
+    }
+}
+
+/// The unit of an angle in degrees, or of a rate.
+fn degrees(rate: bool) -> &'static str {
+    if rate {
+        "°/s"
+    } else {
+        "°"
     }
 }
 
@@ -311,8 +363,22 @@ pub struct Track {
     pub parameters: BTreeMap<&'static str, f64>,
     /// Their standard errors.
     pub standard_errors: BTreeMap<&'static str, f64>,
-    /// Root mean square of the residuals, rad.
-    pub residual_rms_rad: f64,
+    /// What was fitted: `angle`, or `angular_velocity` (a gyroscope's,
+    /// by the models' derivative).
+    pub observed: &'static str,
+    /// A gyroscope's swing axis in its sensor axes (a unit vector), when
+    /// angular velocities were given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gyroscope_axis: Option<Vec<f64>>,
+    /// The share of the gyroscope's rotation (variance) about that axis.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gyroscope_axis_share: Option<f64>,
+    /// Root mean square of the residuals, rad (of angles).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub residual_rms_rad: Option<f64>,
+    /// Root mean square of the residuals, rad/s (of angular velocities).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub residual_rms_rad_s: Option<f64>,
     /// The residuals' lag-one autocorrelation.
     pub residual_autocorrelation: f64,
     /// The factor every standard error was widened by for it,
@@ -329,7 +395,7 @@ pub struct Track {
     /// The parameters the data do not determine.
     #[serde(skip)]
     pub undetermined: Vec<&'static str>,
-    /// The residuals, rad, one per sample.
+    /// The residuals, rad (rad/s of angular velocities), one per sample.
     #[serde(skip)]
     pub residuals: Vec<f64>,
 }
@@ -339,23 +405,78 @@ pub const DEFAULT_MODEL: &str = "auto";
 
 /// Analyses a tracked swing (see the module notes).
 pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
-    let (time, theta) = (input.time, input.angle);
-    check_pairs("time", "angle", time, theta)?;
+    let time = input.time;
+    let axes = input.angular_velocity;
+    if !input.angle.is_empty() && !axes.is_empty() {
+        return Err(Refusal::field(
+            "angular_velocity",
+            "give the angle or the angular velocity, not both",
+        ));
+    }
+    if axes.len() > 3 {
+        return Err(Refusal::field(
+            "angular_velocity",
+            format!("a gyroscope has at most three axes, got {}", axes.len()),
+        ));
+    }
+    for axis in axes {
+        check_pairs("time", "angular_velocity", time, axis)?;
+        require_finite_samples("angular_velocity", axis)?;
+    }
+    let principal = if axes.is_empty() {
+        None
+    } else {
+        Some(principal_axis(axes).ok_or_else(|| {
+            Refusal::data(
+                "the angular velocity never changes about any axis: there is no swing to fit; \
+                 is it the gyroscope of the swinging phone?",
+            )
+        })?)
+    };
+    let (theta, observed, name) = match &principal {
+        Some(p) => (
+            p.rate.as_slice(),
+            Observed::AngularVelocity,
+            "angular_velocity",
+        ),
+        None => (input.angle, Observed::Angle, "angle"),
+    };
+    let rate = observed == Observed::AngularVelocity;
+    check_pairs("time", name, time, theta)?;
     check_times("time", time)?;
-    require_finite_samples("angle", theta)?;
+    require_finite_samples(name, theta)?;
     if let (Some(first), true) = (theta.first(), theta.len() > 1) {
         if theta.iter().all(|v| v == first) {
-            return Err(Refusal::data(format!(
-                "the angle never changes (every sample is {} rad): there is no swing to fit; \
-                 is it the pendulum's angle column?",
-                format_significant(*first, 6)
-            )));
+            return Err(Refusal::data(if rate {
+                format!(
+                    "the angular velocity never changes (every sample is {} rad/s): there is no \
+                     swing to fit; is it the axis the pendulum swings about?",
+                    format_significant(*first, 6)
+                )
+            } else {
+                format!(
+                    "the angle never changes (every sample is {} rad): there is no swing to fit; \
+                     is it the pendulum's angle column?",
+                    format_significant(*first, 6)
+                )
+            }));
         }
+    }
+    // The swing, as an angle (a rate's over the record's frequency).
+    let swing_angle = swing_of(time, theta, observed);
+    if rate && swing_angle >= std::f64::consts::PI {
+        return Err(Refusal::data(format!(
+            "the angular velocity means a swing of {} rad ({}°) from the middle, more than the \
+             half turn a swinging pendulum can: are the rates in degrees a second under a \
+             radian's name?",
+            format_significant(swing_angle, 4),
+            format_significant(swing_angle.to_degrees(), 4)
+        )));
     }
     // No swinging pendulum goes half a turn from its centre: angles that
     // do are in another unit (degrees under a radian's name) or not
     // angles at all.
-    if theta.len() > 1 {
+    if theta.len() > 1 && !rate {
         let centre = super::median(&mut theta.to_vec());
         let swing = theta.iter().map(|v| (v - centre).abs()).fold(0.0, f64::max);
         if swing >= std::f64::consts::PI {
@@ -406,9 +527,10 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     let model = match requested {
         "linear" => TrajectoryModel::Linear,
         "nonlinear" => TrajectoryModel::Nonlinear,
-        _ => TrajectoryModel::auto(theta),
+        _ => TrajectoryModel::auto_at(swing_angle),
     };
-    let mut fit = fit_trajectory(model, time, theta).map_err(|e| Refusal::data(e.to_string()))?;
+    let mut fit =
+        fit_observed(model, time, theta, observed).map_err(|e| Refusal::data(e.to_string()))?;
     // Errors correlated from sample to sample carry less information than
     // the fit assumed: every standard error is widened for it.
     let (autocorrelation, inflation) =
@@ -442,7 +564,7 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     // standard error above a few degrees (the correction takes the
     // amplitude at mid-record, but the swing decays through it).
     if let Some((l, _)) = input.length {
-        if fit.model.gives_gravity(theta) {
+        if fit.model.gives_gravity_at(swing_angle) {
             let (g, se) = fit.gravity(l);
             // g = l ω²: the length's error adds in quadrature.
             let se = match input.length_standard_error {
@@ -454,7 +576,10 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             if let Some(likely) = implausible_gravity(g, input.length.map(|(_, s)| s)) {
                 warnings.push(TrackWarning::GravityImplausible { g, likely });
             } else if let Some(w) =
-                angle_unit_hint(g, se, largest_swing(theta)).filter(|_| !input.angle_from_positions)
+                // (Rates carry their unit, and one mistaken is a swing 57
+                // times too large, refused above, or too small.)
+                angle_unit_hint(g, se, swing_angle)
+                    .filter(|_| !input.angle_from_positions && !rate)
             {
                 warnings.push(w);
             } else if (g - crate::STANDARD_GRAVITY).abs()
@@ -463,9 +588,7 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
                 warnings.push(TrackWarning::GravityOff { g });
             }
         } else {
-            warnings.push(TrackWarning::NoGravityFromLinear {
-                swing: largest_swing(theta),
-            });
+            warnings.push(TrackWarning::NoGravityFromLinear { swing: swing_angle });
         }
     }
     // The first crest the record shows, beside the fitted amplitude (the
@@ -488,6 +611,12 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
                 length,
             });
         }
+    }
+    if let Some(p) = principal
+        .as_ref()
+        .filter(|p| p.share < GYROSCOPE_AXIS_SHARE)
+    {
+        warnings.push(TrackWarning::SeveralAxes { share: p.share });
     }
     let undetermined = fit.undetermined();
     // A swing that grows: a negative damping beyond its errors, or the
@@ -524,12 +653,17 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     }
     // The fit checks itself against the record: residuals against the
     // swing, and its zero crossings against the data's.
-    let offset = parameters.get("offset_rad").copied().unwrap_or(0.0);
+    let offset = parameters
+        .get("offset_rad")
+        .or(parameters.get("rate_offset_rad_s"))
+        .copied()
+        .unwrap_or(0.0);
     let swing = theta.iter().map(|v| (v - offset).abs()).fold(0.0, f64::max);
     if fit.fit.residual_rms > RESIDUAL_OF_SWING * swing {
         warnings.push(TrackWarning::PoorFit {
             rms: fit.fit.residual_rms,
             swing,
+            rate,
         });
     }
     // (The residuals of angles read in steps are not in steps; the
@@ -543,6 +677,7 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
                 rms,
                 noise,
                 inflation,
+                rate,
             });
         }
     }
@@ -577,7 +712,11 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         held_samples: fit.held_samples,
         parameters,
         standard_errors,
-        residual_rms_rad: fit.fit.residual_rms,
+        observed: if rate { "angular_velocity" } else { "angle" },
+        gyroscope_axis: principal.as_ref().map(|p| p.direction.clone()),
+        gyroscope_axis_share: principal.as_ref().map(|p| p.share),
+        residual_rms_rad: (!rate).then_some(fit.fit.residual_rms),
+        residual_rms_rad_s: rate.then_some(fit.fit.residual_rms),
         residual_autocorrelation: autocorrelation,
         standard_error_inflation: inflation,
         length_m: input.length.map(|(l, _)| l),

@@ -32,6 +32,12 @@
 //! 3σ of the truth in g, `tests/fitting.rs`); a window too short to
 //! determine every parameter is passed over.
 //!
+//! A gyroscope's record (angular velocity, [`Observed::AngularVelocity`])
+//! is fitted by the same models' derivative: the closed form's
+//! (`linear_rate`) and the integrated equation's own velocity; the
+//! offset is then the gyroscope's zero, and a bob held at the start is
+//! found by its rates ([`held_still`]).
+//!
 //! With the length, `g = l ω_0²` where `ω_0` is the small-angle natural
 //! frequency: for the linear model `ω_d` is first corrected for damping
 //! (`/ sqrt(1 - ζ²)`) and for the finite amplitude (times `T(A_mid)/T0`,
@@ -53,6 +59,19 @@ pub enum TrajectoryModel {
     Linear,
     /// The nonlinear equation, integrated.
     Nonlinear,
+}
+
+/// What a record measures of the swing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Observed {
+    /// The angle, rad (a video's track, an encoder).
+    #[default]
+    Angle,
+    /// The angular velocity `dθ/dt`, rad/s: a gyroscope that swings with
+    /// the pendulum (a phone's, phyphox). Both models are then fitted by
+    /// their derivative, the offset being the gyroscope's zero (its bias);
+    /// the record is never integrated, so the bias cannot drift the angle.
+    AngularVelocity,
 }
 
 /// The damping laws of the nonlinear model beside the viscous one.
@@ -136,6 +155,9 @@ pub struct TrajectoryFit {
     pub held_samples: usize,
     /// The time from the record's first sample to the first fitted one, s.
     pub held_seconds: f64,
+    /// What the record measured (the residuals and the offset are in its
+    /// unit: rad, or rad/s).
+    pub observed: Observed,
 }
 
 /// The swing above which the linear model's finite-amplitude correction
@@ -157,7 +179,13 @@ impl TrajectoryModel {
     /// The model `auto` chooses for a record: nonlinear when its largest
     /// swing exceeds [`AUTO_NONLINEAR_ABOVE`].
     pub fn auto(theta: &[f64]) -> Self {
-        if largest_swing(theta) > AUTO_NONLINEAR_ABOVE {
+        Self::auto_at(largest_swing(theta))
+    }
+
+    /// The model `auto` chooses for a record whose largest swing is
+    /// `swing` rad.
+    pub fn auto_at(swing: f64) -> Self {
+        if swing > AUTO_NONLINEAR_ABOVE {
             TrajectoryModel::Nonlinear
         } else {
             TrajectoryModel::Linear
@@ -167,7 +195,13 @@ impl TrajectoryModel {
     /// Whether g from this model fit is free of the finite-amplitude bias
     /// at the record's largest swing (always for the nonlinear model).
     pub fn gives_gravity(self, theta: &[f64]) -> bool {
-        self == TrajectoryModel::Nonlinear || largest_swing(theta) <= AUTO_NONLINEAR_ABOVE
+        self.gives_gravity_at(largest_swing(theta))
+    }
+
+    /// [`Self::gives_gravity`] for a record whose largest swing is `swing`
+    /// rad.
+    pub fn gives_gravity_at(self, swing: f64) -> bool {
+        self == TrajectoryModel::Nonlinear || swing <= AUTO_NONLINEAR_ABOVE
     }
 }
 
@@ -180,7 +214,7 @@ pub fn undetermined(names: &[&'static str], values: &[f64], errors: &[f64]) -> V
         .iter()
         .zip(values.iter().zip(errors))
         .filter(|(name, (value, se))| match **name {
-            "offset_rad" => false,
+            "offset_rad" | "rate_offset_rad_s" => false,
             "phase_rad" => se.is_nan() || **se >= std::f64::consts::PI,
             _ => se.is_nan() || **se >= value.abs(),
         })
@@ -228,6 +262,14 @@ impl TrajectoryFit {
     }
 
     fn base_names(&self) -> [&'static str; 5] {
+        let mut names = self.angle_names();
+        if self.observed == Observed::AngularVelocity {
+            names[4] = "rate_offset_rad_s";
+        }
+        names
+    }
+
+    fn angle_names(&self) -> [&'static str; 5] {
         match self.model {
             TrajectoryModel::Linear => [
                 "amplitude_rad",
@@ -340,6 +382,24 @@ fn linear(t: f64, p: &[f64]) -> f64 {
     offset + a * (-zeta * wn * t).exp() * (wd * t + phase).cos()
 }
 
+/// The derivative of [`linear`] (without its offset) plus a rate offset
+/// `p[4]`: `A e^{-ζω_n t} (-ζω_n cos(ω_d t + φ) - ω_d sin(ω_d t + φ))`,
+/// the angular velocity of the same motion as a gyroscope reads it.
+fn linear_rate(t: f64, p: &[f64]) -> f64 {
+    let (a, wd, zeta, phase, offset) = (p[0], p[1], p[2], p[3], p[4]);
+    let wn = wd / (1.0 - zeta * zeta).max(f64::MIN_POSITIVE).sqrt();
+    let x = wd * t + phase;
+    offset + a * (-zeta * wn * t).exp() * (-zeta * wn * x.cos() - wd * x.sin())
+}
+
+/// The closed form of `observed`: [`linear`] or [`linear_rate`].
+fn linear_of(observed: Observed) -> fn(f64, &[f64]) -> f64 {
+    match observed {
+        Observed::Angle => linear,
+        Observed::AngularVelocity => linear_rate,
+    }
+}
+
 /// Fits `model` to angles `theta` (rad) at times `time` (s, increasing),
 /// from the release where the record starts with the bob held
 /// ([`held_start`]).
@@ -348,12 +408,33 @@ pub fn fit_trajectory(
     time: &[f64],
     theta: &[f64],
 ) -> Result<TrajectoryFit, FitError> {
+    fit_observed(model, time, theta, Observed::Angle)
+}
+
+/// Fits `model` to `values` at times `time` (s, increasing): angles (rad)
+/// or, by the model's derivative, angular velocities (rad/s), as
+/// `observed` says; from the release where the record starts with the bob
+/// held ([`held_start`]).
+pub fn fit_observed(
+    model: TrajectoryModel,
+    time: &[f64],
+    values: &[f64],
+    observed: Observed,
+) -> Result<TrajectoryFit, FitError> {
+    let theta = values;
     let points = time.len().min(theta.len());
-    let held = held_start(&time[..points], &theta[..points]);
-    let mut fit = fit_released(model, &time[held..points], &theta[held..points])?;
+    let held = match observed {
+        Observed::Angle => held_start(&time[..points], &theta[..points]),
+        Observed::AngularVelocity => held_still(&time[..points], &theta[..points]),
+    };
+    let mut fit = fit_released(model, &time[held..points], &theta[held..points], observed)?;
     if held > 0 {
-        // Held at the angle the fitted motion starts from.
-        let start = theta[held] - fit.fit.residuals[0];
+        // Held at the angle the fitted motion starts from (at rest: the
+        // gyroscope reads its zero).
+        let start = match observed {
+            Observed::Angle => theta[held] - fit.fit.residuals[0],
+            Observed::AngularVelocity => fit.fit.parameters[4],
+        };
         let mut residuals: Vec<f64> = theta[..held].iter().map(|v| v - start).collect();
         residuals.append(&mut fit.fit.residuals);
         fit.fit.residuals = residuals;
@@ -453,12 +534,94 @@ fn crossing_frequency(t: &[f64], theta: &[f64], centre: f64, band: f64) -> Optio
     (count >= 3 && last > first).then(|| std::f64::consts::PI * (count - 1) as f64 / (last - first))
 }
 
+/// [`held_start`] for a gyroscope's angular velocities: a bob held (or
+/// hanging still) reads the gyroscope's zero; a free motion leaves a
+/// crest's zero rate by `ω² sin A · t`, so it stays within three noise
+/// deviations `σ` for `t₃ = 3σ / (ω² sin A)`, the swing `A` being the
+/// largest rate over the crossings' `ω`. A record whose first samples stay
+/// at their own level longer than `2 t₃` was held: the fit starts at the
+/// plateau's last sample. 0 when the record starts moving.
+pub fn held_still(time: &[f64], rate: &[f64]) -> usize {
+    let n = time.len().min(rate.len());
+    if n < 40 {
+        return 0;
+    }
+    let Some(sigma) = super::noise_of(rate) else {
+        return 0;
+    };
+    let t: Vec<f64> = time.iter().map(|x| x - time[0]).collect();
+    let offset = rate.iter().sum::<f64>() / n as f64;
+    let peak = rate.iter().map(|v| (v - offset).abs()).fold(0.0, f64::max);
+    let Some(wd) = crossing_frequency(&t, rate, offset, 0.1 * peak) else {
+        return 0;
+    };
+    let mut first = rate[..3].to_vec();
+    first.sort_by(f64::total_cmp);
+    let level = first[1];
+    // Moving at the start: a rate well away from the zero.
+    if (level - offset).abs() > 0.2 * peak {
+        return 0;
+    }
+    let sin_a = (peak / wd).min(std::f64::consts::FRAC_PI_2).sin();
+    if !(sigma > 0.0 && wd > 0.0 && sin_a > 0.0) {
+        return 0;
+    }
+    let t3 = 3.0 * sigma / (wd * wd * sin_a);
+    let plateau = rate
+        .iter()
+        .position(|v| (v - level).abs() > 3.0 * sigma)
+        .unwrap_or(n);
+    let end = t[plateau.min(n - 1)];
+    if plateau >= n / 2 || end <= 2.0 * t3 + (t[1] - t[0]) {
+        return 0;
+    }
+    plateau - 1
+}
+
+/// The angle swing of a record of `observed` values: the largest swing
+/// about the middle ([`largest_swing`]) of angles, or of rates divided by
+/// the record's angular frequency (its crossings'), rad.
+pub fn swing_of(time: &[f64], values: &[f64], observed: Observed) -> f64 {
+    let swing = largest_swing(values);
+    match observed {
+        Observed::Angle => swing,
+        Observed::AngularVelocity => {
+            let n = time.len().min(values.len());
+            if n < 2 {
+                return 0.0;
+            }
+            let t: Vec<f64> = time[..n].iter().map(|x| x - time[0]).collect();
+            let centre = values[..n].iter().sum::<f64>() / n as f64;
+            let w = crossing_frequency(&t, &values[..n], centre, 0.1 * swing)
+                .unwrap_or_else(|| initial_guess(&t, &values[..n])[1].abs());
+            swing / w
+        }
+    }
+}
+
+/// Starting values for the closed form of `observed` from the record
+/// itself ([`initial_guess`]); for rates, the guess of the rate's own
+/// cosine `R cos(ω_d t + ψ)` is the angle's `A = R/ω_n`, `φ = ψ - π/2 - δ`
+/// with `sin δ = ζ`.
+fn guess_of(t: &[f64], values: &[f64], observed: Observed) -> Vec<f64> {
+    let mut guess = initial_guess(t, values);
+    if observed == Observed::AngularVelocity {
+        let (wd, zeta) = (guess[1].abs().max(f64::MIN_POSITIVE), guess[2]);
+        let wn = wd / (1.0 - zeta * zeta).max(f64::MIN_POSITIVE).sqrt();
+        guess[0] /= wn;
+        guess[3] -= std::f64::consts::FRAC_PI_2 + zeta.clamp(-1.0, 1.0).asin();
+    }
+    guess
+}
+
 /// Fits `model` to a record that starts at or after the release.
 fn fit_released(
     model: TrajectoryModel,
     time: &[f64],
     theta: &[f64],
+    observed: Observed,
 ) -> Result<TrajectoryFit, FitError> {
+    let linear = linear_of(observed);
     // Five parameters and a residual to judge them by.
     let points = time.len().min(theta.len());
     if points <= 5 {
@@ -482,7 +645,7 @@ fn fit_released(
             &t[..first],
             &theta[..first],
             None,
-            &initial_guess(&t[..first], &theta[..first]),
+            &guess_of(&t[..first], &theta[..first], observed),
         )?;
         let lin_first = lin.clone();
         for &n in &windows[1..] {
@@ -534,6 +697,7 @@ fn fit_released(
         nonlinear_rms_rejected: rejected,
         held_samples: 0,
         held_seconds: 0.0,
+        observed,
     };
     if model == TrajectoryModel::Linear {
         return Ok(linear_fit(lin, None));
@@ -576,7 +740,7 @@ fn fit_released(
         lin_first.parameters[4],
     ];
     for &n in &windows[..windows.len() - 1] {
-        let curve = NonlinearCurve::new(&t[..n], Law::VISCOUS);
+        let curve = NonlinearCurve::new(&t[..n], Law::VISCOUS, observed);
         // A window too short to determine every parameter (the damping
         // over a few periods of a high Q) leaves the start as it was for
         // the next, longer one.
@@ -584,7 +748,7 @@ fn fit_released(
             initial = f.parameters;
         }
     }
-    let curve = NonlinearCurve::new(&t, Law::VISCOUS);
+    let curve = NonlinearCurve::new(&t, Law::VISCOUS, observed);
     let linear_rms = lin.residual_rms;
     // A nonlinear fit that fails outright (its parameters not determined
     // from this start) leaves the linear one, which says so.
@@ -621,7 +785,7 @@ fn fit_released(
     // Drag and friction, each and both, from the viscous fit: kept when
     // the information criterion prefers them and their coefficients are
     // determined.
-    let (fit, law) = with_damping_laws(&t, theta, fit);
+    let (fit, law) = with_damping_laws(&t, theta, fit, observed);
     // Report the phase as a fraction of the true (finite-amplitude) period:
     // the release lies phase/2π of a period before the first sample.
     let mut fit = fit;
@@ -642,6 +806,7 @@ fn fit_released(
         nonlinear_rms_rejected: None,
         held_samples: 0,
         held_seconds: 0.0,
+        observed,
     })
 }
 
@@ -665,7 +830,7 @@ pub const LAW_PATIENCE: usize = 20;
 /// first: from the viscous fit a single added law can lose its way on a
 /// record that needs the other, and each fit of a long record costs as
 /// much as the viscous one.)
-fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit) -> (Fit, Law) {
+fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> (Fit, Law) {
     const BOTH: Law = Law {
         quadratic: true,
         friction: true,
@@ -688,9 +853,15 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit) -> (Fit, Law) {
             .collect()
     };
     let fit_law = |law: Law, start: &[f64]| {
-        fit_curve_patient(&NonlinearCurve::new(t, law), t, theta, start, LAW_PATIENCE)
-            .ok()
-            .filter(|f| f.parameters[2] >= -f.standard_errors[2])
+        fit_curve_patient(
+            &NonlinearCurve::new(t, law, observed),
+            t,
+            theta,
+            start,
+            LAW_PATIENCE,
+        )
+        .ok()
+        .filter(|f| f.parameters[2] >= -f.standard_errors[2])
     };
     // Both laws over the growing windows of the viscous fit, each started
     // from the last (from a viscous fit that missed a swing's stop by
@@ -699,7 +870,7 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit) -> (Fit, Law) {
         let windows = stages(t, theta);
         let mut start = start;
         for &n in &windows[..windows.len() - 1] {
-            let curve = NonlinearCurve::new(&t[..n], BOTH);
+            let curve = NonlinearCurve::new(&t[..n], BOTH, observed);
             if let Ok(f) = fit_curve_patient(&curve, &t[..n], &theta[..n], &start, LAW_PATIENCE) {
                 start = f.parameters;
             }
@@ -927,6 +1098,7 @@ fn model_of(p: &[f64; 7]) -> Option<Model> {
 struct NonlinearCurve<'a> {
     times: &'a [f64],
     law: Law,
+    observed: Observed,
     cache: RefCell<Simulated>,
 }
 
@@ -967,15 +1139,23 @@ impl Curve for NonlinearCurve<'_> {
         // image: from rest at a crest it is the same either way but for
         // the damping's work over those few samples.
         let lead = p[3] / p[1].abs().max(f64::MIN_POSITIVE);
-        hermite(&cache.states, cache.interval, (x + lead).abs()) + p[4]
+        let s = x + lead;
+        match self.observed {
+            Observed::Angle => hermite(&cache.states, cache.interval, s.abs()) + p[4],
+            // The mirror image's velocity changes sign.
+            Observed::AngularVelocity => {
+                s.signum() * cubic_velocity(&cache.states, cache.interval, s.abs()) + p[4]
+            }
+        }
     }
 }
 
 impl<'a> NonlinearCurve<'a> {
-    fn new(times: &'a [f64], law: Law) -> Self {
+    fn new(times: &'a [f64], law: Law, observed: Observed) -> Self {
         Self {
             times,
             law,
+            observed,
             cache: RefCell::new(Simulated::default()),
         }
     }
@@ -1010,6 +1190,39 @@ impl<'a> NonlinearCurve<'a> {
         match simulate(&model, amplitude, &options, &mut samples) {
             Ok(_) => (samples.0, h),
             Err(_) => (Vec::new(), h),
+        }
+    }
+}
+
+/// The angular velocity at `t` by four-point Lagrange interpolation of the
+/// samples' velocities every `h` seconds from 0 (no acceleration is kept
+/// to interpolate by Hermite): errs by about `(ωh)^4/40` of the peak rate,
+/// 2e-8 at the 200 samples a period of [`NonlinearCurve`].
+fn cubic_velocity(states: &[State], h: f64, t: f64) -> f64 {
+    let n = states.len();
+    if n < 4 {
+        return linear_velocity(states, h, t);
+    }
+    let i = ((t / h).floor().max(0.0) as usize).clamp(1, n - 3) - 1;
+    let x = t / h - i as f64;
+    let v = |k: usize| states[i + k].angular_velocity;
+    // Nodes at x = 0, 1, 2, 3.
+    let l0 = -(x - 1.0) * (x - 2.0) * (x - 3.0) / 6.0;
+    let l1 = x * (x - 2.0) * (x - 3.0) / 2.0;
+    let l2 = -x * (x - 1.0) * (x - 3.0) / 2.0;
+    let l3 = x * (x - 1.0) * (x - 2.0) / 6.0;
+    l0 * v(0) + l1 * v(1) + l2 * v(2) + l3 * v(3)
+}
+
+/// Linear interpolation of the samples' velocities (fewer than four).
+fn linear_velocity(states: &[State], h: f64, t: f64) -> f64 {
+    match states.len() {
+        0 => f64::NAN,
+        1 => states[0].angular_velocity,
+        n => {
+            let i = ((t / h).floor().max(0.0) as usize).min(n - 2);
+            let x = t / h - i as f64;
+            (1.0 - x) * states[i].angular_velocity + x * states[i + 1].angular_velocity
         }
     }
 }

@@ -196,6 +196,19 @@ fn coverage_ci_subset() {
     eprintln!("TOOK {:?}", clock.elapsed());
 }
 
+/// Records of the 200 whose damping law was once chosen wrong, beyond 5σ
+/// without a warning: 1007 (51°, Q 1325 with dry friction: drag fitted in
+/// place of the viscous part, the first crest 6.8σ off) and 1008 (13°,
+/// Q 322 with friction: the fit of both laws did not settle, friction was
+/// missed, g -7.7σ and the first crest +31σ); and 1106, which a first
+/// mend of 1008 broke. Each is now reported, every figure within 5σ.
+#[test]
+fn records_whose_damping_law_was_missed() {
+    let tally = run([1007, 1008, 1106].into_iter(), false);
+    assert_eq!((tally.refused, tally.warned), (0, 0));
+    assert!(tally.far.is_empty(), "{:#?}", tally.far);
+}
+
 #[test]
 #[ignore = "the 200 records of issue 23 (several minutes): cargo test --release --test coverage -- --ignored"]
 fn coverage_200() {
@@ -218,6 +231,15 @@ fn coverage_seeds() {
         let rec = record(seed, small);
         let t = &rec.truth;
         eprintln!("seed {seed}: {}", describe(&rec));
+        // COVERAGE_DUMP=DIR writes the record as DIR/seed-N.csv, to run
+        // through the binary.
+        if let Ok(dir) = std::env::var("COVERAGE_DUMP") {
+            let mut text = String::from("time_s,angle_rad\n");
+            for (t, a) in rec.time.iter().zip(&rec.angle) {
+                text.push_str(&format!("{t},{a}\n"));
+            }
+            std::fs::write(format!("{dir}/seed-{seed}.csv"), text).unwrap();
+        }
         if std::env::var("COVERAGE_DESCRIBE").is_ok() {
             continue;
         }

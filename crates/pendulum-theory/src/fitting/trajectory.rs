@@ -822,14 +822,19 @@ pub const LAW_PATIENCE: usize = 20;
 
 /// The viscous nonlinear `fit` refitted with quadratic drag and dry
 /// friction beside the viscous damping, started from it with the decay
-/// shared between the laws; where one of the two added coefficients is
-/// not determined (within [`LAW_DETERMINED_SIGMA`] standard errors of its
-/// bound 0), the law without it, started from that fit. The best by the
-/// Bayesian information criterion among the viscous fit and the laws whose
-/// added coefficients are all determined, with its law. (Both laws at once
-/// first: from the viscous fit a single added law can lose its way on a
-/// record that needs the other, and each fit of a long record costs as
-/// much as the viscous one.)
+/// shared between the laws, over the growing windows; then each law alone,
+/// started from that fit with the dropped law's decay handed to the
+/// viscous rate (only the law without a coefficient within
+/// [`LAW_DETERMINED_SIGMA`] standard errors of its bound 0, when just one
+/// is); where the whole record does not settle with both laws (a rate at
+/// its bound has no gradient), each alone from where the windows left
+/// them. The best by the Bayesian information criterion among the viscous
+/// fit and the laws whose added coefficients are all determined, with its
+/// law. (Both laws first: from the viscous fit a single added law can
+/// lose its way on a record that needs the other. Each alone too: the
+/// three rates trade one for another, and both laws can settle on drag in
+/// place of the viscous part. Each fit of a long record costs as much as
+/// the viscous one.)
 fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> (Fit, Law) {
     const BOTH: Law = Law {
         quadratic: true,
@@ -866,6 +871,7 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> 
     // Both laws over the growing windows of the viscous fit, each started
     // from the last (from a viscous fit that missed a swing's stop by
     // friction, the whole record at once is too far).
+    let mut windowed = start.clone();
     let both = {
         let windows = stages(t, theta);
         let mut start = start;
@@ -875,37 +881,49 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> 
                 start = f.parameters;
             }
         }
+        windowed.clone_from(&start);
         fit_law(BOTH, &start)
     };
     let mut candidates: Vec<(Fit, Law)> = Vec::new();
     match both {
         Some(both) => {
             let kept = determined(&both);
+            // The law without the coefficient at its bound; with neither
+            // determined (the two laws and the viscous rate trade off over
+            // a short record), each alone; with both determined, each
+            // alone too: three rates can trade one for another (a record
+            // of viscous damping and friction fitted with drag in place of
+            // the viscous part, seed 1007 of the coverage records), and
+            // the information criterion judges the smaller laws on their
+            // own fits.
+            let laws: &[(bool, usize)] = match (kept[0], kept[1]) {
+                (true, false) => &[(true, 5)],
+                (false, true) => &[(false, 6)],
+                _ => &[(true, 5), (false, 6)],
+            };
+            for &(quadratic, index) in laws {
+                let law = Law {
+                    quadratic,
+                    friction: !quadratic,
+                };
+                // The dropped law's decay handed to the viscous rate (the
+                // loss per half swing at the amplitude, as above).
+                let q = &both.parameters;
+                let amplitude = q[0].abs().max(1e-6);
+                let handed = if quadratic {
+                    2.0 * q[6].abs() / (std::f64::consts::PI * amplitude)
+                } else {
+                    0.5 * q[5].abs() * amplitude
+                };
+                let mut reduced = q[..5].to_vec();
+                reduced[2] = (reduced[2] + handed).max(0.5 * zeta * 1e-3);
+                reduced.push(q[index].abs().max(1e-9));
+                if let Some(f) = fit_law(law, &reduced) {
+                    candidates.push((f, law));
+                }
+            }
             if kept.iter().all(|&k| k) {
                 candidates.push((both, BOTH));
-            } else {
-                // The law without the coefficient at its bound; with
-                // neither determined (the two laws and the viscous rate
-                // trade off over a short record), each alone.
-                let laws: &[(bool, usize)] = if kept[0] {
-                    &[(true, 5)]
-                } else if kept[1] {
-                    &[(false, 6)]
-                } else {
-                    &[(true, 5), (false, 6)]
-                };
-                for &(quadratic, index) in laws {
-                    let law = Law {
-                        quadratic,
-                        friction: !quadratic,
-                    };
-                    let mut reduced = both.parameters[..5].to_vec();
-                    reduced[2] = reduced[2].max(0.5 * zeta * 1e-3);
-                    reduced.push(both.parameters[index].abs().max(1e-9));
-                    if let Some(f) = fit_law(law, &reduced) {
-                        candidates.push((f, law));
-                    }
-                }
             }
         }
         None => {
@@ -919,6 +937,14 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> 
                     friction: true,
                 },
             ] {
+                // From where the growing windows left both laws (the whole
+                // record may not settle with both when one is at its
+                // bound: its rate has no gradient there), else from the
+                // viscous fit with the decay shared.
+                let index = if law.quadratic { 5 } else { 6 };
+                let mut from_windows = windowed[..5].to_vec();
+                from_windows[2] = from_windows[2].max(0.5 * zeta * 1e-3);
+                from_windows.push(windowed[index].abs().max(1e-9));
                 let mut one = p.clone();
                 one[2] = 0.5 * zeta;
                 one.push(if law.quadratic {
@@ -926,7 +952,7 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> 
                 } else {
                     0.25 * std::f64::consts::PI * zeta * a
                 });
-                if let Some(f) = fit_law(law, &one) {
+                if let Some(f) = fit_law(law, &from_windows).or_else(|| fit_law(law, &one)) {
                     candidates.push((f, law));
                 }
             }

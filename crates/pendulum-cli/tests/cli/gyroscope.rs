@@ -227,3 +227,21 @@ fn a_row_repeated_out_of_time_order_is_dropped_and_named() {
     let e = String::from_utf8(out).unwrap();
     assert!(e.contains("line 503"), "{e}");
 }
+
+/// A record whose fit is estimated beyond five seconds (60,000 samples at
+/// the measured 100 µs each) needs --force, and says so before any work;
+/// nothing is written.
+#[test]
+fn a_long_record_needs_force() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("long.csv");
+    let mut text = String::from("time_s,angle_deg\n");
+    for i in 0..60_000 {
+        let t = i as f64 / 500.0;
+        text.push_str(&format!("{t},{}\n", 10.0 * (3.0 * t).cos()));
+    }
+    std::fs::write(&path, text).unwrap();
+    let e = refuses(&["fit", "trajectory", path.to_str().unwrap()], "--force");
+    assert!(e.contains("60000 rows"), "{e}");
+    assert_eq!(super::util::files_in(dir.path()).len(), 1);
+}

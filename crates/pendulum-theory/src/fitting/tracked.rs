@@ -14,9 +14,14 @@ use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt;
 
-/// Computing time of a sample (nonlinear fit), s: measured, 2 million
-/// samples of a 10° swing in 29 s.
-pub const SECONDS_PER_ROW: f64 = 20e-6;
+/// Computing time of a sample (nonlinear fit with its damping laws), s:
+/// measured over the 200 generated records of `tests/coverage.rs`
+/// (30 to 685,000 samples, two records at once on two cores): a median of
+/// 170 µs a sample, so about 85 µs on a core of its own; 10% of the records
+/// took more than 800 µs (short high-rate records of large swings, where
+/// three damping laws are fitted), the worst 3.4 ms. (It was 20 µs,
+/// measured on a 10° swing fitted with the viscous law alone.)
+pub const SECONDS_PER_ROW: f64 = 100e-6;
 /// Lengths a measured pendulum can have, m: from a 0.1 mm hair spring to
 /// a 10 km shaft.
 pub const LENGTH_RANGE_M: std::ops::RangeInclusive<f64> = 1e-4..=1e4;

@@ -171,6 +171,11 @@ pub struct ListenArgs {
     /// unlocking and drop sounds.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub lift_angle: Option<Angle>,
+    /// What swings, for the amplitude: a pendulum (its exact motion) or a
+    /// balance wheel (harmonic) [default: a balance above 10,800 beats an
+    /// hour].
+    #[arg(long, value_name = "KIND")]
+    pub oscillator: Option<String>,
     /// Draw the timegrapher's paper strip and the averaged tick and tock
     /// sounds (SVG or PNG by the extension; - for SVG on standard output).
     #[arg(long, value_name = "FILE.svg|FILE.png")]

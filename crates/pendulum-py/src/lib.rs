@@ -699,8 +699,8 @@ fn clock<'py>(
 /// Listening to a recording in memory (the CLI's `listen`) as JSON, and
 /// the ticks kept (time_s, side, amplitude).
 #[pyfunction]
-#[pyo3(signature = (samples, sample_rate, bph, period, sample_rate_error_ppm, lift_angle))]
-#[allow(clippy::type_complexity)]
+#[pyo3(signature = (samples, sample_rate, bph, period, sample_rate_error_ppm, lift_angle, oscillator=None))]
+#[allow(clippy::type_complexity, clippy::too_many_arguments)]
 fn listen<'py>(
     py: Python<'py>,
     samples: numpy::PyReadonlyArray1<'py, f32>,
@@ -709,9 +709,10 @@ fn listen<'py>(
     period: Option<f64>,
     sample_rate_error_ppm: Option<f64>,
     lift_angle: Option<f64>,
+    oscillator: Option<&str>,
 ) -> PyResult<(String, [Array1<'py>; 3])> {
     use pendulum_theory::fitting::beat_log::Nominal;
-    use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput};
+    use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput, Oscillator};
     let samples = samples
         .as_slice()
         .map_err(|_| PyValueError::new_err("samples: must be contiguous"))?;
@@ -723,6 +724,10 @@ fn listen<'py>(
         },
         sample_rate_error_ppm,
         lift_angle,
+        oscillator: oscillator
+            .map(Oscillator::parse)
+            .transpose()
+            .map_err(|r| PyValueError::new_err(r.to_string()))?,
     };
     let result = py.detach(|| listen_to_samples(samples, sample_rate, &input));
     let ticks = result.as_ref().map(|r| r.ticks.clone()).unwrap_or_default();

@@ -803,8 +803,16 @@ LISTEN = {
     "nominal_half": (["--bph", "18000", "--duration", "20s"], {"bph": 9000.0}),
     "nominal_five_times": (["--bph", "18000", "--duration", "20s"], {"period": 2.0}),
     "nominal_a_fifth": ([], {"bph": 18000.0}),
+    "watch_lift": (["--bph", "28800", "--duration", "20s"], {"lift_angle": 0.9}),
+    "watch_as_pendulum": (["--bph", "28800", "--duration", "20s"],
+                          {"lift_angle": 0.9, "oscillator": "pendulum"}),
+    "clock_as_balance": (["--duration", "30s"], {"lift_angle": 0.03, "oscillator": "balance"}),
+    "oscillator_unknown": ([], {"oscillator": "spring"}),
+    "missing_40_percent": (["--missing", "0.4", "--rate", "-20", "--duration", "2min"],
+                           {"bph": 3600.0}),
 }
-LISTEN_UNITS = {"bph": "", "period": "s", "sample_rate_error_ppm": "", "lift_angle": "rad"}
+LISTEN_UNITS = {"bph": "", "period": "s", "sample_rate_error_ppm": "", "lift_angle": "rad",
+                "oscillator": ""}
 FLAG.update({"samples": "FILE"})
 
 

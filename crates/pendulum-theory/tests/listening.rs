@@ -202,10 +202,31 @@ fn strong_noise_reports_missed_beats_and_invents_none() {
                 found.reported
             );
             assert_eq!(sc.invented, 0, "{label}");
-            // Every beat of the record is accounted for: found, or reported.
+            // Every beat of the record between the first tick kept and the
+            // last is accounted for: found, or reported missed (none is
+            // counted before the first or after the last, issue 24).
+            let (Some(first), Some(last)) = (found.ticks.first(), found.ticks.last()) else {
+                continue;
+            };
+            let half = 1800.0 / bph;
+            let inside = rec
+                .ticks
+                .iter()
+                .filter(|&&t| t > first.time - half && t < last.time + half)
+                .count();
             assert!(
-                found.ticks.len() + found.reported + 2 >= rec.ticks.len() || found.ticks.is_empty(),
-                "{label}"
+                found.ticks.len() + found.reported + 2 >= inside,
+                "{label}: {} found, {} reported, {inside} inside",
+                found.ticks.len(),
+                found.reported
+            );
+            // Nor many more: the tracker's count across long runs of
+            // misses may slip a beat in a few hundred (4 in 1,705 at 6 dB).
+            assert!(
+                found.ticks.len() + found.reported <= inside + 2 + inside / 100,
+                "{label}: {} found, {} reported, {inside} inside",
+                found.ticks.len(),
+                found.reported
             );
         }
     }

@@ -30,11 +30,17 @@ struct BeatsJson {
     analysis: Beats,
 }
 
-/// The rate for people: "12 s/day (gaining) against 3600 beats/hour".
-pub(crate) fn rate_text(rate_s_per_day: Option<f64>, nominal_beat: Option<f64>) -> String {
+/// The rate for people: "12 s/day (gaining) against 3600 beats/hour
+/// (seconds pendulum, 0.994 m: …)", the kind when the beat is a standard
+/// rate.
+pub(crate) fn rate_text(
+    rate_s_per_day: Option<f64>,
+    nominal_beat: Option<f64>,
+    kind: Option<&str>,
+) -> String {
     match (rate_s_per_day, nominal_beat) {
         (Some(r), Some(n)) => format!(
-            "{} s/day ({}) against {} beats/hour",
+            "{} s/day ({}) against {} beats/hour{}",
             // Below a microsecond a day the sign is rounding, not the clock.
             num(if r.abs() < 1e-6 { 0.0 } else { r }, 4),
             if r >= 1e-6 {
@@ -44,7 +50,8 @@ pub(crate) fn rate_text(rate_s_per_day: Option<f64>, nominal_beat: Option<f64>) 
             } else {
                 "keeping time"
             },
-            num(beats_per_hour(2.0 * n), 6)
+            num(beats_per_hour(2.0 * n), 6),
+            kind.map_or(String::new(), |k| format!(" ({k})"))
         ),
         _ => "unknown: give --bph or --period (no standard rate within 2%)".into(),
     }
@@ -254,7 +261,10 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
             num(a.beats_per_hour, 8)
         ),
     )
-    .row("Rate", rate_text(a.rate_s_per_day, a.nominal_beat_s))
+    .row(
+        "Rate",
+        rate_text(a.rate_s_per_day, a.nominal_beat_s, a.nominal_kind),
+    )
     .row(
         "Beat error",
         format!(

@@ -366,3 +366,135 @@ fn a_nominal_beat_that_is_not_the_recordings_is_refused() {
     let rate = f(&json(&["listen", w, "--bph", "18000"]), "rate_s_per_day");
     assert!((rate - 5.0).abs() < 0.05, "{rate}");
 }
+
+/// Issue 24's named failures, through the binary: ten seconds of white
+/// noise given `--bph 3600` (it reported 4 beats and -43,188 s/day), a
+/// clock with 40% of its ticks missing (it reported 2,006 beats an hour and
+/// -38,240 s/day), and an 18,000 bph watch with a 5 ms beat error (read as
+/// 9,000 bph by another generator's recording).
+#[test]
+fn noise_missing_ticks_and_a_watch_out_of_beat() {
+    let dir = tempfile::tempdir().unwrap();
+    // White noise, 16-bit, 10 s at 44.1 kHz (xorshift, Box-Muller).
+    let noise = dir.path().join("noise.wav");
+    let spec = hound::WavSpec {
+        channels: 1,
+        sample_rate: 44_100,
+        bits_per_sample: 16,
+        sample_format: hound::SampleFormat::Int,
+    };
+    let mut w = hound::WavWriter::create(&noise, spec).unwrap();
+    let mut s = 88_172_645_463_325_252_u64;
+    let mut uniform = move || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        ((s >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    };
+    for _ in 0..441_000 {
+        let g = (-2.0 * uniform().ln()).sqrt() * (std::f64::consts::TAU * uniform()).cos();
+        w.write_sample((3000.0 * g).clamp(-32767.0, 32767.0) as i16)
+            .unwrap();
+    }
+    w.finalize().unwrap();
+    let e = refuses(
+        &["listen", noise.to_str().unwrap(), "--bph", "3600"],
+        "noise",
+    );
+    assert!(e.contains("no beat stands out"), "{e}");
+    refuses(&["listen", noise.to_str().unwrap()], "noise");
+    // 40% of the ticks missing, losing 20 s/day.
+    for seed in ["1", "2", "3"] {
+        let missing = dir.path().join(format!("missing{seed}.wav"));
+        pendulum()
+            .args(["synth", "ticks", missing.to_str().unwrap(), "--bph", "3600"])
+            .args(["--missing", "0.4", "--rate", "-20", "--duration", "2min"])
+            .args(["--seed", seed])
+            .assert()
+            .success();
+        for nominal in [&["--bph", "3600"][..], &[]] {
+            let mut args = vec!["listen", missing.to_str().unwrap()];
+            args.extend_from_slice(nominal);
+            let v = json(&args);
+            let rate = f(&v, "rate_s_per_day");
+            assert!((rate + 20.0).abs() < 0.5, "seed {seed} {nominal:?}: {rate}");
+            assert!((f(&v, "beats_per_hour") - 3600.0 * (1.0 - 20.0 / 86_400.0)).abs() < 0.5);
+            // Missed beats lie between the first tick and the last.
+            let missed = v["missed"].as_u64().unwrap();
+            let beats = v["beats"].as_u64().unwrap();
+            assert!(missed < beats, "{v}");
+        }
+    }
+    // 18,000 bph with a 5 ms beat error: the beat, not half of it.
+    let watch = dir.path().join("watch.wav");
+    pendulum()
+        .args(["synth", "ticks", watch.to_str().unwrap(), "--bph", "18000"])
+        .args(["--beat-error", "5", "--duration", "30s"])
+        .assert()
+        .success();
+    for nominal in [&["--bph", "18000"][..], &[]] {
+        let mut args = vec!["listen", watch.to_str().unwrap()];
+        args.extend_from_slice(nominal);
+        let v = json(&args);
+        assert!((f(&v, "beats_per_hour") - 18_000.0).abs() < 1.0, "{v}");
+        assert!((f(&v, "beat_error_ms") - 5.0).abs() < 0.05, "{v}");
+        assert!(f(&v, "rate_s_per_day").abs() < 0.1, "{v}");
+    }
+}
+
+/// The amplitude from the lift is a balance wheel's (harmonic: the
+/// first-order formula) above 10,800 beats an hour and a pendulum's
+/// (exact) below, unless `--oscillator` says; the standard rates now
+/// include 2,880 (a 1.25 s turret pendulum), whose kind is printed.
+#[test]
+fn the_oscillator_and_the_standard_rates() {
+    let dir = tempfile::tempdir().unwrap();
+    let watch = dir.path().join("watch.wav");
+    pendulum()
+        .args(["synth", "ticks", watch.to_str().unwrap(), "--bph", "28800"])
+        .args(["--duration", "20s"])
+        .assert()
+        .success();
+    let w = watch.to_str().unwrap();
+    let v = json(&["listen", w, "--lift-angle", "52"]);
+    assert_eq!(v["oscillator"], "balance");
+    assert_eq!(v["oscillator_from_beat"], true);
+    assert_eq!(f(&v, "amplitude_deg"), f(&v, "amplitude_first_order_deg"));
+    assert!(
+        v["nominal_kind"].as_str().unwrap().contains("4 Hz balance"),
+        "{v}"
+    );
+    let p = json(&[
+        "listen",
+        w,
+        "--lift-angle",
+        "52",
+        "--oscillator",
+        "pendulum",
+    ]);
+    assert_eq!(p["oscillator"], "pendulum");
+    assert_eq!(p["oscillator_from_beat"], false);
+    assert!(f(&p, "amplitude_deg") != f(&p, "amplitude_first_order_deg"));
+    refuses(&["listen", w, "--oscillator", "spring"], "--oscillator");
+    let turret = dir.path().join("turret.wav");
+    pendulum()
+        .args(["synth", "ticks", turret.to_str().unwrap(), "--bph", "2880"])
+        .args(["--rate", "3", "--duration", "2min"])
+        .assert()
+        .success();
+    let t = json(&["listen", turret.to_str().unwrap(), "--lift-angle", "2"]);
+    assert!((f(&t, "rate_s_per_day") - 3.0).abs() < 0.1, "{t}");
+    assert_eq!(t["oscillator"], "pendulum");
+    assert!(
+        t["nominal_kind"].as_str().unwrap().contains("turret"),
+        "{t}"
+    );
+    let text = pendulum()
+        .args(["listen", turret.to_str().unwrap()])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    assert!(String::from_utf8(text).unwrap().contains("1.25 s pendulum"));
+}

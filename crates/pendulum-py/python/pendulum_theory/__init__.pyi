@@ -123,6 +123,7 @@ def listen(
     period: Any = ...,
     sample_rate_error_ppm: Any = ...,
     lift_angle: Any = ...,
+    oscillator: Optional[str] = ...,
 ) -> Dict[str, Any]: ...
 def period_table(
     length: Any,

@@ -146,6 +146,10 @@ pub struct Beats {
     pub beats_per_hour: f64,
     /// The beat the rate is measured against, s.
     pub nominal_beat_s: Option<f64>,
+    /// What keeps the nominal beat, when it is a standard rate
+    /// ([`super::beats::STANDARD_RATES`]): "seconds pendulum, 0.994 m: …".
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nominal_kind: Option<&'static str>,
     /// Gain per day against it, s/day (positive: the clock gains).
     pub rate_s_per_day: Option<f64>,
     /// Half the tick-tock difference, ms.
@@ -190,6 +194,13 @@ impl Beats {
             mean_beat_s: a.mean_beat,
             beats_per_hour: a.beats_per_hour,
             nominal_beat_s: a.nominal_beat,
+            nominal_kind: a
+                .nominal_beat
+                .and_then(|b| super::beats::standard_rate_near(3600.0 / b))
+                .filter(|r| {
+                    (r.beats_per_hour * a.nominal_beat.unwrap_or(0.0) / 3600.0 - 1.0).abs() < 1e-9
+                })
+                .map(|r| r.kind),
             rate_s_per_day: a.rate_s_per_day,
             beat_error_ms: a.beat_error_ms,
             beat_error_start_ms: a.beat_error_start_ms,

@@ -39,12 +39,158 @@
 
 use super::median;
 
-/// Beat rates (beats per hour) a clock is usually made for; the nominal
-/// beat is taken from here when none is given.
-pub const STANDARD_BEAT_RATES: [f64; 13] = [
-    3600.0, 5400.0, 7200.0, 9000.0, 14_400.0, 18_000.0, 19_800.0, 21_600.0, 25_200.0, 28_800.0,
-    36_000.0, 43_200.0, 72_000.0,
+/// A beat rate clocks or watches are made for, with what keeps it and
+/// where that is said.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StandardRate {
+    /// Beats an hour.
+    pub beats_per_hour: f64,
+    /// What keeps it: for a pendulum, its length (a simple pendulum of
+    /// that beat at standard gravity, by the small-angle law
+    /// `L = g (T_b/π)²`) and the clocks that have one; for a balance, its
+    /// frequency and the watches.
+    pub kind: &'static str,
+    /// Where the rate is said to be used.
+    pub source: &'static str,
+}
+
+const PAGES: &str = "crownwatchblog.com/glossary/vibrations-per-hour; \
+                     luxurious.whatsoever.hk/2008/04/beat-count.html; \
+                     professionalwatches.com/glossary/frequency";
+
+/// Beat rates clocks and watches are made for (issue 24's list), slowest
+/// first; the nominal beat is taken from here when none is given. The
+/// pendulum rates' lengths follow from the beat; the clocks named for
+/// them are the usual ones of that length.
+pub const STANDARD_RATES: [StandardRate; 22] = [
+    StandardRate {
+        beats_per_hour: 1800.0,
+        kind: "2 s pendulum, 3.97 m: tower clocks (the Great Clock of Westminster)",
+        source: "UK Parliament, How the Great Clock works: the pendulum beats every two seconds",
+    },
+    StandardRate {
+        beats_per_hour: 2880.0,
+        kind: "1.25 s pendulum, 1.55 m: turret clocks",
+        source: "issue 24's list (the 1¼-second turret pendulum)",
+    },
+    StandardRate {
+        beats_per_hour: 3600.0,
+        kind: "seconds pendulum, 0.994 m: longcase clocks and regulators",
+        source: "the seconds pendulum (seed section 1-6)",
+    },
+    StandardRate {
+        beats_per_hour: 4800.0,
+        kind: "0.75 s pendulum, 0.56 m: wall regulators",
+        source: "issue 24's list",
+    },
+    StandardRate {
+        beats_per_hour: 5400.0,
+        kind: "2/3 s pendulum, 0.44 m: wall and bracket clocks",
+        source: "issue 24's list",
+    },
+    StandardRate {
+        beats_per_hour: 6000.0,
+        kind: "0.6 s pendulum, 0.36 m: wall clocks",
+        source: "issue 24's list",
+    },
+    StandardRate {
+        beats_per_hour: 7200.0,
+        kind: "half-seconds pendulum, 0.248 m: bracket and mantel clocks",
+        source: "issue 24's list",
+    },
+    StandardRate {
+        beats_per_hour: 8100.0,
+        kind: "0.44 s pendulum, 0.196 m: mantel clocks",
+        source: "issue 24's list",
+    },
+    StandardRate {
+        beats_per_hour: 9000.0,
+        kind: "0.4 s pendulum, 0.159 m: mantel and shelf clocks",
+        source: "issue 24's list",
+    },
+    StandardRate {
+        beats_per_hour: 10_800.0,
+        kind: "1.5 Hz balance (or a 0.11 m pendulum): carriage and alarm clocks",
+        source: "issue 24's list",
+    },
+    StandardRate {
+        beats_per_hour: 12_000.0,
+        kind: "1.67 Hz balance: clocks with a platform escapement",
+        source: "issue 24's list",
+    },
+    StandardRate {
+        beats_per_hour: 14_400.0,
+        kind: "2 Hz balance: older pocket watches, alarm clocks",
+        source: PAGES,
+    },
+    StandardRate {
+        beats_per_hour: 16_200.0,
+        kind: "2.25 Hz balance: older pocket watches",
+        source: PAGES,
+    },
+    StandardRate {
+        beats_per_hour: 17_280.0,
+        kind: "2.4 Hz balance: pocket watches",
+        source: "issue 24's list",
+    },
+    StandardRate {
+        beats_per_hour: 18_000.0,
+        kind: "2.5 Hz balance: pocket watches, early wristwatches",
+        source: PAGES,
+    },
+    StandardRate {
+        beats_per_hour: 19_800.0,
+        kind: "2.75 Hz balance: wristwatches from the late 1940s",
+        source: "watchtalkforums.info, Horology 101: b.p.h. & accuracy",
+    },
+    StandardRate {
+        beats_per_hour: 21_600.0,
+        kind: "3 Hz balance: wristwatches",
+        source: PAGES,
+    },
+    StandardRate {
+        beats_per_hour: 25_200.0,
+        kind: "3.5 Hz balance: wristwatches (Omega's co-axial)",
+        source: "watchtalkforums.info, Horology 101: b.p.h. & accuracy",
+    },
+    StandardRate {
+        beats_per_hour: 28_800.0,
+        kind: "4 Hz balance: most modern wristwatches",
+        source: PAGES,
+    },
+    StandardRate {
+        beats_per_hour: 36_000.0,
+        kind: "5 Hz balance: high-beat wristwatches (Zenith El Primero, Grand Seiko)",
+        source: PAGES,
+    },
+    StandardRate {
+        beats_per_hour: 43_200.0,
+        kind: "6 Hz balance: high-beat wristwatches",
+        source: "professionalwatches.com/glossary/frequency",
+    },
+    StandardRate {
+        beats_per_hour: 72_000.0,
+        kind: "10 Hz balance: Breguet Type XXII",
+        source: "professionalwatches.com/glossary/frequency; brooch-repair.com (Cal. 589F)",
+    },
 ];
+
+/// The beat rates of [`STANDARD_RATES`], beats per hour.
+pub fn standard_beat_rates() -> impl Iterator<Item = f64> {
+    STANDARD_RATES.iter().map(|r| r.beats_per_hour)
+}
+
+/// The standard rate nearest `beats_per_hour` within 2%, if any.
+pub fn standard_rate_near(beats_per_hour: f64) -> Option<&'static StandardRate> {
+    STANDARD_RATES
+        .iter()
+        .min_by(|a, b| {
+            (a.beats_per_hour / beats_per_hour - 1.0)
+                .abs()
+                .total_cmp(&(b.beats_per_hour / beats_per_hour - 1.0).abs())
+        })
+        .filter(|r| (r.beats_per_hour / beats_per_hour - 1.0).abs() <= 0.02)
+}
 
 /// Beats dropped and filled in.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -183,6 +329,10 @@ pub const MAX_ALLAN_BEATS: usize = 1 << 16;
 #[derive(Clone, Debug, Default)]
 pub struct BeatStream {
     warm_up: Vec<f64>,
+    /// The typical beat, s, when the source of the timestamps knows it
+    /// (a recording's ticks, numbered beat by beat): else the warm-up's
+    /// median.
+    known_beat: Option<f64>,
     typical: f64,
     origin: f64,
     count: usize,
@@ -301,8 +451,11 @@ impl Sides {
     /// median `period` (two beats): the medians of the alternate intervals
     /// among the first [`FIRST_INTERVALS`], either way round, or half the
     /// period each, whichever the rule repairs least over them (a missed or
-    /// doubled beat among them swaps the sides after it).
-    fn at_start(times: &[f64], period: f64) -> Self {
+    /// doubled beat among them swaps the sides after it). With the `period`
+    /// known (not the timestamps' median), sides that do not add up to it
+    /// within 10% are not taken: with many beats missed, the alternate
+    /// intervals' medians are two beats each, and would repair least.
+    fn at_start(times: &[f64], period: f64, known: bool) -> Self {
         let first = &times[..times.len().min(FIRST_INTERVALS + 1)];
         let intervals: Vec<f64> = first.windows(2).map(|w| w[1] - w[0]).collect();
         let side = |k: usize| {
@@ -314,6 +467,7 @@ impl Sides {
             .into_iter()
             .map(|expected| Sides { expected })
             .filter(|s| s.expected.iter().all(|&e| e > 0.0))
+            .filter(|s| !known || ((s.expected[0] + s.expected[1]) / period - 1.0).abs() <= 0.1)
             .min_by_key(|s| s.repairs_over(first))
             .unwrap_or(Sides {
                 expected: [0.5 * period; 2],
@@ -416,6 +570,15 @@ impl BeatStream {
         }
     }
 
+    /// The same, with the typical beat `beat` (s) known rather than taken
+    /// from the first timestamps' median period: a record with many missed
+    /// beats (40% of a recording's ticks lost in its noise) has a median
+    /// period of three or four beats, and every gap would then be misread.
+    pub fn with_beat(mut self, beat: f64) -> Self {
+        self.known_beat = (beat > 0.0 && beat.is_finite()).then_some(beat);
+        self
+    }
+
     /// Adds the next timestamp, s.
     pub fn push(&mut self, t: f64) -> Result<(), BeatError> {
         if self.raw_count > 0 && t <= self.raw_last {
@@ -442,9 +605,12 @@ impl BeatStream {
         // The median period (two beats) is the same whatever the beat
         // error; the median beat is not once the sides differ much.
         let mut periods: Vec<f64> = buffered.windows(3).map(|w| w[2] - w[0]).collect();
-        let period = median(&mut periods);
+        let period = match self.known_beat {
+            Some(beat) => 2.0 * beat,
+            None => median(&mut periods),
+        };
         self.typical = 0.5 * period;
-        self.sides = Sides::at_start(&buffered, period);
+        self.sides = Sides::at_start(&buffered, period, self.known_beat.is_some());
         self.origin = buffered[0];
         // Every averaging time from the first beat, so that the sums are
         // exactly the overlapping estimator's.
@@ -592,16 +758,52 @@ impl BeatStream {
 
 /// The nearest standard beat (s) within 2% of `beat`, if any.
 fn nearest_standard(beat: f64) -> Option<f64> {
-    STANDARD_BEAT_RATES
-        .iter()
-        .map(|&r| 3600.0 / r)
-        .min_by(|a, b| (a - beat).abs().total_cmp(&(b - beat).abs()))
-        .filter(|&nominal| (nominal / beat - 1.0).abs() <= 0.02)
+    standard_rate_near(3600.0 / beat).map(|r| 3600.0 / r.beats_per_hour)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The list holds issue 24's rates, slowest first, each more than 4%
+    /// from the next (so that no beat is within 2% of two), and every
+    /// pendulum's length is the small-angle law's for its beat, computed
+    /// here independently: `L = g (T_b/π)²`.
+    #[test]
+    fn the_standard_rates_are_the_issues_and_their_lengths_the_laws() {
+        let wanted = [
+            1800.0, 2880.0, 3600.0, 4800.0, 5400.0, 6000.0, 7200.0, 8100.0, 9000.0, 10_800.0,
+            12_000.0, 14_400.0, 16_200.0, 17_280.0, 18_000.0, 19_800.0, 21_600.0, 25_200.0,
+            28_800.0, 36_000.0, 43_200.0, 72_000.0,
+        ];
+        let rates: Vec<f64> = standard_beat_rates().collect();
+        assert_eq!(rates, wanted);
+        for w in rates.windows(2) {
+            assert!(w[1] / w[0] > 1.04, "{w:?}");
+        }
+        for r in &STANDARD_RATES {
+            assert!(!r.source.is_empty() && !r.kind.is_empty());
+            if let Some(m) = r.kind.split(", ").nth(1).and_then(|x| x.split(" m").next()) {
+                if let Ok(length) = m.parse::<f64>() {
+                    let beat = 3600.0 / r.beats_per_hour;
+                    let law = 9.80665 * (beat / std::f64::consts::PI).powi(2);
+                    let digits = m.split('.').nth(1).map_or(0, str::len) as i32;
+                    assert!(
+                        (length - law).abs() <= 0.51 * 10f64.powi(-digits),
+                        "{}: {length} vs {law}",
+                        r.beats_per_hour
+                    );
+                }
+            }
+            assert_eq!(
+                standard_rate_near(r.beats_per_hour * 1.015).map(|x| x.beats_per_hour),
+                Some(r.beats_per_hour)
+            );
+        }
+        // 2,880 and 1,800 bph have a rate now; a beat between rates none.
+        assert!(standard_rate_near(2900.0).is_some());
+        assert!(standard_rate_near(4200.0).is_none());
+    }
 
     fn clock(beats: usize, beat: f64, beat_error: f64) -> Vec<f64> {
         // Tick-tock: intervals beat + e, beat - e alternately.

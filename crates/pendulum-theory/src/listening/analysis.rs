@@ -38,6 +38,9 @@ pub const MAX_FILLED_BEATS: usize = 1000;
 pub const MAX_SAMPLE_RATE_ERROR_PPM: f64 = 1e4;
 /// The fewest ticks analysed.
 pub const MIN_TICKS: usize = 4;
+/// Ticks kept on the fewer side below this fraction of the other side's
+/// are every other beat: refused.
+pub const ONE_SIDE: f64 = 0.25;
 /// Samples per block of [`SliceSource`] (as a decoder's packets).
 pub const SLICE_BLOCK: usize = 4096;
 
@@ -88,6 +91,57 @@ impl SampleSource for SliceSource<'_> {
     }
 }
 
+/// What swings in the clock: it sets how the time across the lift becomes
+/// an amplitude.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Oscillator {
+    /// A pendulum: its exact motion ([`crate::lift`]), whose crossing of
+    /// the lift slows as the swing grows.
+    Pendulum,
+    /// A balance wheel and hairspring: harmonic at any swing, so the
+    /// first-order formula `lift / (2 sin(π Δt / T))` is exact.
+    Balance,
+}
+
+/// Above this beat rate (beats an hour) a clock's oscillator is taken for
+/// a balance wheel unless said: 10,800 (1.5 Hz; a pendulum of that beat is
+/// 11 cm long, the shortest clocks have).
+pub const BALANCE_ABOVE_BPH: f64 = 10_800.0;
+
+impl Oscillator {
+    /// The oscillator of a clock beating `beat` s apart: a balance above
+    /// [`BALANCE_ABOVE_BPH`].
+    pub fn of_beat(beat: f64) -> Self {
+        if 3600.0 / beat > BALANCE_ABOVE_BPH {
+            Oscillator::Balance
+        } else {
+            Oscillator::Pendulum
+        }
+    }
+
+    /// The oscillator named `name` (`pendulum`, `balance`), else a refusal
+    /// of the field `oscillator`.
+    pub fn parse(name: &str) -> Result<Self, Refusal> {
+        match name {
+            "pendulum" => Ok(Oscillator::Pendulum),
+            "balance" => Ok(Oscillator::Balance),
+            other => Err(Refusal::field(
+                "oscillator",
+                format!("'{other}' is not one of pendulum, balance"),
+            )),
+        }
+    }
+
+    /// `pendulum` or `balance`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Oscillator::Pendulum => "pendulum",
+            Oscillator::Balance => "balance",
+        }
+    }
+}
+
 /// What to listen for.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ListenInput {
@@ -99,6 +153,8 @@ pub struct ListenInput {
     pub sample_rate_error_ppm: Option<f64>,
     /// The escapement's lift angle, rad, for the amplitude.
     pub lift_angle: Option<f64>,
+    /// What swings (else chosen by the beat: [`Oscillator::of_beat`]).
+    pub oscillator: Option<Oscillator>,
 }
 
 /// Why listening failed: the input, or the source.
@@ -129,7 +185,8 @@ pub struct Listening {
     pub beats: Beats,
     /// The split of the two intervals, % (50/50 is in beat).
     pub in_beat_percent: [f64; 2],
-    /// Beats followed with no tick kept (no sound, or noise dropped).
+    /// Beats between the first tick kept and the last with no tick kept
+    /// (no sound, or noise dropped).
     pub missed: usize,
     /// Doubled beats dropped.
     pub extra: usize,
@@ -141,10 +198,18 @@ pub struct Listening {
     /// The lift angle given, degrees.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lift_angle_deg: Option<f64>,
-    /// From the exact motion; null when no drop was heard.
+    /// What swings, as given or chosen by the beat rate (a balance above
+    /// [`BALANCE_ABOVE_BPH`]): it sets `amplitude_deg`.
+    pub oscillator: Oscillator,
+    /// Whether the oscillator was chosen by the beat rate (not given).
+    pub oscillator_from_beat: bool,
+    /// The amplitude: a pendulum's from its exact motion, a balance's from
+    /// the harmonic motion (the first-order formula); null when no drop
+    /// was heard.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub amplitude_deg: Option<Option<f64>>,
-    /// From the first-order formula lift / (2 sin(π Δt / T)).
+    /// From the first-order formula lift / (2 sin(π Δt / T)) (a balance's
+    /// exact figure, a pendulum's approximation).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub amplitude_first_order_deg: Option<Option<f64>>,
     /// The ticks kept, their times rescaled by the sound card's error.
@@ -261,13 +326,26 @@ pub fn listen<S: SampleSource>(
     let beat = match nominal {
         Some(p) => {
             let b = 0.5 * p;
-            beat_period(
+            match beat_period(
                 &env.values,
                 env_rate,
                 (1.0 - NOMINAL_SLACK) * b,
                 (1.0 + NOMINAL_SLACK) * b,
-            )
-            .unwrap_or(b)
+            ) {
+                Some(found) => found,
+                // (A search this narrow can miss a beat the wide one finds.)
+                None if free.is_some() => b,
+                // Nothing repeats at any beat: the ticks the tracker would
+                // find at the nominal beat are the noise's crests.
+                None => {
+                    return Err(Refusal::data(
+                        "no beat stands out of the noise at any beat from 0.05 to 2 s: the \
+                         recording is noise or silence, or the clock is too faint in it; record \
+                         nearer the clock",
+                    )
+                    .into())
+                }
+            }
         }
         None => {
             beat_period(&env.values, env_rate, BEAT_RANGE_S.0, BEAT_RANGE_S.1).ok_or_else(|| {
@@ -309,12 +387,60 @@ pub fn listen<S: SampleSource>(
     if ticks.len() < MIN_TICKS {
         return Err(too_few(ticks.len(), duration, beat, snr_db).into());
     }
-    let missed = (coarse.onsets.len() + coarse.missed).saturating_sub(ticks.len());
+    // Both sides in proportion: ticks kept on one side only are every
+    // other beat (the tocks too weak to time, or a beat half the clock's
+    // followed), and the analysis would fill the other side in as missed
+    // beats, with no beat error to show.
+    let tocks = ticks.iter().filter(|t| t.side == 1).count();
+    let sides = [ticks.len() - tocks, tocks];
+    if ticks.len() >= 2 * MIN_TICKS
+        && (sides[0].min(sides[1]) as f64) < ONE_SIDE * sides[0].max(sides[1]) as f64
+    {
+        let per_hour = |b: f64| format_significant(3600.0 / b, 6);
+        let cause = match input.nominal {
+            Some(_) => format!(
+                "the tocks are too weak to time at this beat, or the clock beats at {} beats an \
+                 hour (give that)",
+                per_hour(2.0 * beat)
+            ),
+            None => format!(
+                "the tocks are too weak to time, or the clock is far out of beat at {} beats an \
+                 hour (give --bph to say which)",
+                per_hour(0.5 * beat)
+            ),
+        };
+        let refusal = format!(
+            "only every other beat of {} beats an hour stands out ({} ticks on one side, {} on \
+             the other): {cause}",
+            per_hour(beat),
+            sides[0].max(sides[1]),
+            sides[0].min(sides[1])
+        );
+        return Err(match input.nominal {
+            Some(n) => Refusal::field(n.field(), refusal),
+            None => Refusal::data(refusal),
+        }
+        .into());
+    }
+    // Missed: the beats between the first tick kept and the last with no
+    // tick kept (none before the first or after the last: a recording
+    // starts and stops where it will).
+    let missed = match (ticks.first(), ticks.last()) {
+        (Some(a), Some(b)) => ((b.beat - a.beat + 1) as usize).saturating_sub(ticks.len()),
+        _ => 0,
+    };
     let scale = 1.0 / (1.0 + ppm * 1e-6);
     for t in &mut ticks {
         t.time *= scale;
     }
-    let mut stream = BeatStream::filling_up_to(MAX_FILLED_BEATS);
+    // The beat the ticks' own numbers give (the tracker followed the clock
+    // beat by beat, so a gap's beats are counted, not guessed from the
+    // intervals: with many ticks lost the median interval is not a beat).
+    let numbered = match (ticks.first(), ticks.last()) {
+        (Some(a), Some(b)) if b.beat > a.beat => (b.time - a.time) / (b.beat - a.beat) as f64,
+        _ => beat,
+    };
+    let mut stream = BeatStream::filling_up_to(MAX_FILLED_BEATS).with_beat(numbered);
     for t in &ticks {
         stream
             .push(t.time)
@@ -339,20 +465,28 @@ pub fn listen<S: SampleSource>(
             .lift_angle
             .map(|_| amplitude.as_ref().map(|x| f(x).to_degrees()))
     };
+    let oscillator = input
+        .oscillator
+        .unwrap_or_else(|| Oscillator::of_beat(a.mean_beat));
     Ok(Listening {
         sample_rate_hz: sample_rate,
         duration_s: duration,
         in_beat_percent: in_beat(&a),
-        // Every beat the tracker followed, less the ticks kept: missed,
-        // whether no sound was there or it was dropped as noise (counted
-        // once, though the analysis fills the same gaps).
+        // The beats from the first tick kept to the last, less the ticks
+        // kept: missed, whether no sound was there or it was dropped as
+        // noise (counted once, though the analysis fills the same gaps).
         missed,
         extra: a.repaired.doubled,
         beats: Beats::of(a),
         snr_db,
         drop_ms: drops.map(|d| d.map(|d| d * 1e3)),
         lift_angle_deg: input.lift_angle.map(f64::to_degrees),
-        amplitude_deg: lifted(&|x| x.amplitude),
+        oscillator,
+        oscillator_from_beat: input.oscillator.is_none(),
+        amplitude_deg: match oscillator {
+            Oscillator::Pendulum => lifted(&|x| x.amplitude),
+            Oscillator::Balance => lifted(&|x| x.first_order),
+        },
         amplitude_first_order_deg: lifted(&|x| x.first_order),
         ticks,
         sounds,

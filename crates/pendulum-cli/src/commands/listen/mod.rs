@@ -13,7 +13,9 @@ use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output;
 use crate::plot::Target;
-use pendulum_theory::listening::analysis::{listen, ListenFailure, ListenInput, Listening};
+use pendulum_theory::listening::analysis::{
+    listen, ListenFailure, ListenInput, Listening, Oscillator,
+};
 use serde::Serialize;
 
 /// The command's JSON: the file's keys around the library's result.
@@ -35,6 +37,12 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         nominal: common::nominal(args.period, args.bph),
         sample_rate_error_ppm: args.sample_rate_error_ppm.map(|p| p.0),
         lift_angle: args.lift_angle.map(|a| a.0),
+        oscillator: args
+            .oscillator
+            .as_deref()
+            .map(Oscillator::parse)
+            .transpose()
+            .map_err(|r| CliError::flag("--oscillator", r.reason))?,
     };
     let plot = args
         .plot

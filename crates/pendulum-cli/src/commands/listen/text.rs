@@ -3,6 +3,7 @@
 use super::super::fit_beats::rate_text;
 use super::ListenJson;
 use crate::output::{num, Summary};
+use pendulum_theory::listening::analysis::Oscillator;
 
 /// The summary of `r`, a recording of `channels` channels.
 pub(super) fn render(r: &ListenJson, channels: usize) -> String {
@@ -32,6 +33,7 @@ pub(super) fn render(r: &ListenJson, channels: usize) -> String {
         rate_text(
             r.listening.beats.rate_s_per_day,
             r.listening.beats.nominal_beat_s,
+            r.listening.beats.nominal_kind,
         ),
     )
     .row(
@@ -62,11 +64,26 @@ pub(super) fn render(r: &ListenJson, channels: usize) -> String {
         },
     );
     if let (Some(lift), Some(amplitude)) = (r.listening.lift_angle_deg, r.listening.amplitude_deg) {
+        let balance = r.listening.oscillator == Oscillator::Balance;
+        // Said when the beat rate chose the oscillator, with the other.
+        let chosen = if !r.listening.oscillator_from_beat {
+            String::new()
+        } else {
+            format!(
+                ", taken from the beat rate: --oscillator {} if it is not",
+                if balance { "pendulum" } else { "balance" }
+            )
+        };
         s.row(
             "Amplitude",
             match (amplitude, r.listening.amplitude_first_order_deg.flatten()) {
+                (Some(a), Some(_)) if balance => format!(
+                    "{}° from the {}° lift (a balance wheel's harmonic motion{chosen})",
+                    num(a, 4),
+                    num(lift, 4),
+                ),
                 (Some(exact), Some(first)) => format!(
-                    "{}° from the {}° lift (first order: {}°)",
+                    "{}° from the {}° lift (a pendulum's exact motion{chosen}; first order: {}°)",
                     num(exact, 4),
                     num(lift, 4),
                     num(first, 4)

@@ -440,6 +440,34 @@ fn noise_missing_ticks_and_a_watch_out_of_beat() {
         assert!((f(&v, "beat_error_ms") - 5.0).abs() < 0.05, "{v}");
         assert!(f(&v, "rate_s_per_day").abs() < 0.1, "{v}");
     }
+    // Watches far out of beat, whose tick-to-tock lag the autocorrelation
+    // splits: found at twice the beat (every other tick followed, 10,800,
+    // 18,000 and 36,000 bph, beat error 0) until the sound between the
+    // ticks was looked for.
+    for (bph, error, seed) in [
+        ("21600", 8.0, "21638"),
+        ("36000", 8.0, "36038"),
+        ("72000", 3.0, "72033"),
+    ] {
+        let out = dir.path().join(format!("out{bph}.wav"));
+        pendulum()
+            .args(["synth", "ticks", out.to_str().unwrap(), "--bph", bph])
+            .args(["--beat-error", &error.to_string(), "--duration", "40s"])
+            .args(["--seed", seed])
+            .assert()
+            .success();
+        let v = json(&["listen", out.to_str().unwrap()]);
+        let nominal: f64 = bph.parse().unwrap();
+        assert!(
+            (f(&v, "beats_per_hour") - nominal).abs() < 1.0,
+            "{bph}: {v}"
+        );
+        assert!((f(&v, "beat_error_ms") - error).abs() < 0.1, "{bph}: {v}");
+        // Told half the beat, it says the recording beats twice as fast.
+        let half = format!("{}", nominal / 2.0);
+        let e = refuses(&["listen", out.to_str().unwrap(), "--bph", &half], "--bph");
+        assert!(e.contains("twice"), "{bph}: {e}");
+    }
 }
 
 /// The amplitude from the lift is a balance wheel's (harmonic: the

@@ -358,23 +358,58 @@ pub fn listen<S: SampleSource>(
     };
     // Pass 2: each beat's onset on the envelope, streamed (a recording
     // within the first pass is not read again).
-    let mut tracker = OnsetTracker::new(env_rate, beat);
-    let samples = if pushed < span {
-        tracker.push(&env.values);
-        env.samples
-    } else {
-        let mut env = Envelope::new(rate);
-        source
-            .read(None, &mut |block| {
-                env.push(block);
-                tracker.push(&env.values);
-                env.values.clear();
-            })
-            .map_err(ListenFailure::Source)?;
-        env.samples
+    let track = |source: &mut S, beat: f64| -> Result<_, ListenFailure<S::Error>> {
+        let mut tracker = OnsetTracker::new(env_rate, beat);
+        let samples = if pushed < span {
+            tracker.push(&env.values);
+            env.samples
+        } else {
+            let mut env = Envelope::new(rate);
+            source
+                .read(None, &mut |block| {
+                    env.push(block);
+                    tracker.push(&env.values);
+                    env.values.clear();
+                })
+                .map_err(ListenFailure::Source)?;
+            env.samples
+        };
+        Ok((tracker.finish(), samples))
     };
+    let (mut coarse, mut samples) = track(source, beat)?;
+    // The beat against its half: a sound that stands between every tick
+    // and the next, aligned on the onsets found, says the beat followed is
+    // two of the clock's (every other tick: a clock far out of beat, whose
+    // tick-to-tock lag the autocorrelation splits). Followed again at half
+    // the beat; with a nominal beat, refused.
+    let mut beat = beat;
+    // (Half a beat shorter than any a clock has is not followed.)
+    if 0.5 * beat >= BEAT_RANGE_S.0 / (1.0 + NOMINAL_SLACK)
+        && sound_between_ticks(&env.values, env_rate, &coarse)
+    {
+        let per_hour = |b: f64| format_significant(3600.0 / b, 6);
+        if let Some(n) = input.nominal {
+            return Err(Refusal::field(
+                n.field(),
+                format!(
+                    "the recording beats twice as fast: a sound stands between every two ticks \
+                     of {} beats an hour; give {} beats an hour",
+                    per_hour(beat),
+                    per_hour(0.5 * beat)
+                ),
+            )
+            .into());
+        }
+        beat = beat_period(
+            &env.values,
+            env_rate,
+            0.5 * (1.0 - NOMINAL_SLACK) * beat,
+            0.5 * (1.0 + NOMINAL_SLACK) * beat,
+        )
+        .unwrap_or(0.5 * beat);
+        (coarse, samples) = track(source, beat)?;
+    }
     let duration = samples as f64 / rate;
-    let coarse = tracker.finish();
     let snr_db = 20.0 * (coarse.peak / coarse.floor.max(f64::MIN_POSITIVE)).log10();
     // Pass 3: each tick refined on the samples.
     let mut refiner = Refiner::new(rate, &coarse);
@@ -491,6 +526,64 @@ pub fn listen<S: SampleSource>(
         ticks,
         sounds,
     })
+}
+
+/// A sound between two ticks this large against a tick's rise over the
+/// floor is the other side of a beat half as long: a quarter.
+pub const HALF_BEAT_RISE: f64 = 0.25;
+
+/// Whether a sound stands between consecutive ticks: the envelope (the
+/// first pass's, at `rate` values a second) from 30% to 70% of the way
+/// from each onset to the next (`coarse`'s, consecutive beats only),
+/// averaged over the pairs on the fraction of the way, peaks more than
+/// [`HALF_BEAT_RISE`] of the ticks' rise over the floor and six robust
+/// standard deviations above the average's own median, and not within
+/// 3 ms of a beat's own second sound (the drop, 16 ms after the unlocking:
+/// a third of the way at 72,000 beats an hour). Aligned on the onsets,
+/// the other side of a clock out of beat stays at one fraction whatever
+/// the rate; noise and a room's reverberation average flat.
+fn sound_between_ticks(envelope: &[f32], rate: f64, coarse: &super::detect::Coarse) -> bool {
+    let rise = coarse.peak - coarse.floor;
+    let pairs: Vec<(f64, f64)> = coarse
+        .onsets
+        .windows(2)
+        .filter(|w| w[1].0 == w[0].0 + 1)
+        .map(|w| (w[0].1, w[1].1))
+        .filter(|&(_, b)| ((b * rate) as usize) < envelope.len())
+        .collect();
+    if pairs.len() < 8 || rise.is_nan() || rise <= 0.0 {
+        return false;
+    }
+    let typical = pairs.iter().map(|(a, b)| b - a).sum::<f64>() / pairs.len() as f64;
+    let bins = ((0.4 * typical * rate).round() as usize).clamp(8, 20_000);
+    let mut profile = vec![0.0; bins];
+    for &(a, b) in &pairs {
+        for (j, p) in profile.iter_mut().enumerate() {
+            let fraction = 0.3 + 0.4 * j as f64 / (bins - 1) as f64;
+            let i = ((a + fraction * (b - a)) * rate).round() as usize;
+            *p += f64::from(envelope[i.min(envelope.len() - 1)]);
+        }
+    }
+    profile.iter_mut().for_each(|p| *p /= pairs.len() as f64);
+    let centre = super::detect::median_of(&profile);
+    let spread = 1.4826
+        * super::detect::median_of(
+            &profile
+                .iter()
+                .map(|p| (p - centre).abs())
+                .collect::<Vec<_>>(),
+        );
+    let Some((at, &top)) = profile.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
+        return false;
+    };
+    let after = (0.3 + 0.4 * at as f64 / (bins - 1) as f64) * typical;
+    let drop = coarse
+        .drops
+        .iter()
+        .flatten()
+        .any(|d| (after - d).abs() < 0.003);
+    let peak = top - centre;
+    !drop && peak >= HALF_BEAT_RISE * rise && peak >= 6.0 * spread
 }
 
 /// The split of the tick and tock intervals, %.

@@ -62,3 +62,8 @@ pub struct Coarse {
 }
 
 pub(crate) use crate::fitting::median;
+
+/// The median of `values` (copied).
+pub(crate) fn median_of(values: &[f64]) -> f64 {
+    median(&mut values.to_vec())
+}

@@ -468,6 +468,26 @@ fn noise_missing_ticks_and_a_watch_out_of_beat() {
         let e = refuses(&["listen", out.to_str().unwrap(), "--bph", &half], "--bph");
         assert!(e.contains("twice"), "{bph}: {e}");
     }
+    // A nominal beat searched a percent off loses the clock: five ticks
+    // over 107 beats gave 850 s/day; now refused, never a figure.
+    let lost = dir.path().join("lost.wav");
+    pendulum()
+        .args(["synth", "ticks", lost.to_str().unwrap(), "--bph", "18000"])
+        .args(["--beat-error", "3", "--duration", "40s", "--seed", "18033"])
+        .assert()
+        .success();
+    let out = pendulum()
+        .args(["listen", lost.to_str().unwrap(), "--bph", "18000", "--json"])
+        .output()
+        .unwrap();
+    if out.status.success() {
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert!(f(&v, "rate_s_per_day").abs() < 1.0, "{v}");
+    } else {
+        let e = String::from_utf8(out.stderr).unwrap();
+        assert!(e.contains("stand out of the noise"), "{e}");
+        assert_eq!(out.status.code(), Some(2));
+    }
 }
 
 /// The amplitude from the lift is a balance wheel's (harmonic: the

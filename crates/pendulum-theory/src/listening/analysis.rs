@@ -41,6 +41,9 @@ pub const MIN_TICKS: usize = 4;
 /// Ticks kept on the fewer side below this fraction of the other side's
 /// are every other beat: refused.
 pub const ONE_SIDE: f64 = 0.25;
+/// Ticks kept below this fraction of the beats between the first and the
+/// last are a beat not followed: refused.
+pub const HEARD_FRACTION: f64 = 0.25;
 /// Samples per block of [`SliceSource`] (as a decoder's packets).
 pub const SLICE_BLOCK: usize = 4096;
 
@@ -456,6 +459,30 @@ pub fn listen<S: SampleSource>(
             None => Refusal::data(refusal),
         }
         .into());
+    }
+    // Most beats between the first tick kept and the last must be heard: a
+    // handful of ticks over a stretch where the rest were lost is a beat
+    // not followed (a nominal beat searched a percent off, noise), and
+    // their rate is anything.
+    if let (Some(a), Some(b)) = (ticks.first(), ticks.last()) {
+        let spanned = (b.beat - a.beat + 1) as f64;
+        if (ticks.len() as f64) < HEARD_FRACTION * spanned {
+            let nominal_note = nominal.map_or(String::new(), |p| {
+                format!(
+                    ", or the clock does not beat at {} beats an hour",
+                    format_significant(7200.0 / p, 6)
+                )
+            });
+            return Err(Refusal::data(format!(
+                "only {} of the {} beats between the first tick heard and the last stand out of \
+                 the noise (signal to noise {} dB): the beat was not followed; record nearer \
+                 the clock, or in a quieter room{nominal_note}",
+                ticks.len(),
+                spanned,
+                format_significant(snr_db, 2)
+            ))
+            .into());
+        }
     }
     // Missed: the beats between the first tick kept and the last with no
     // tick kept (none before the first or after the last: a recording

@@ -180,8 +180,8 @@ impl Track {
             return Ok(self);
         }
         for (flag, v) in [("--from", from), ("--to", to)] {
-            if let Some(v) = v.filter(|v| !v.is_finite()) {
-                return Err(CliError::flag(flag, format!("must be a time, got {v} s")));
+            if v.is_some_and(|v| !v.is_finite()) {
+                return Err(CliError::flag(flag, "must be a finite time"));
             }
         }
         let (lo, hi) = (
@@ -198,12 +198,21 @@ impl Track {
         let kept = keep.iter().filter(|&&k| k).count();
         if kept == 0 {
             let last = self.time.last().copied().unwrap_or(0.0);
+            // The window as given (an open end is not a number to print).
+            let window = match (from, to) {
+                (Some(a), Some(b)) => format!(
+                    "between {} s and {} s",
+                    crate::output::num(a, 6),
+                    crate::output::num(b, 6)
+                ),
+                (Some(a), None) => format!("from {} s on", crate::output::num(a, 6)),
+                (None, Some(b)) => format!("up to {} s", crate::output::num(b, 6)),
+                (None, None) => String::new(),
+            };
             return Err(CliError::flag(
                 if from.is_some() { "--from" } else { "--to" },
                 format!(
-                    "no sample lies between {} s and {} s (the record runs from 0 to {} s)",
-                    crate::output::num(lo, 6),
-                    crate::output::num(hi, 6),
+                    "no sample lies {window} (the record runs from 0 to {} s)",
                     crate::output::num(last, 6)
                 ),
             ));

@@ -121,10 +121,16 @@ fn a_window_leaves_out_the_ends_of_a_record() {
     assert_eq!(r["held_samples"], 0);
     let points = r["points"].as_u64().unwrap();
     assert!((699..=701).contains(&points), "{points}");
-    refuses(
+    let e = refuses(
         &["fit", "trajectory", &data("gyroscope.xls"), "--from", "50"],
         "--from",
     );
+    assert!(e.contains("from 50 s on") && !e.contains("inf"), "{e}");
+    let e = refuses(
+        &["fit", "trajectory", &data("gyroscope.xls"), "--to", "-5"],
+        "--to",
+    );
+    assert!(e.contains("up to -5 s") && !e.contains("inf"), "{e}");
     refuses(
         &[
             "fit",

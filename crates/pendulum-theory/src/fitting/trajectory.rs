@@ -457,14 +457,9 @@ pub fn fit_observed(
 /// a swinging bob is fastest) is at rest until the last of them. 0 when
 /// the record starts moving.
 pub fn held_start(time: &[f64], theta: &[f64]) -> usize {
-    let n = time.len().min(theta.len());
-    if n < 40 {
-        return 0;
-    }
-    let Some(sigma) = super::noise_of(theta) else {
+    let Some((n, sigma, t)) = held_inputs(time, theta) else {
         return 0;
     };
-    let t: Vec<f64> = time.iter().map(|x| x - time[0]).collect();
     let guess = initial_guess(&t, theta);
     let offset = guess[4];
     // The frequency from the record's own crossings of its centre (the
@@ -508,6 +503,18 @@ pub fn held_start(time: &[f64], theta: &[f64]) -> usize {
     plateau - 1
 }
 
+/// What both rules for a held start need of a record: its samples (of
+/// 40 or more), the noise of its values ([`super::noise_of`]) and the
+/// times from its first sample.
+fn held_inputs(time: &[f64], values: &[f64]) -> Option<(usize, f64, Vec<f64>)> {
+    let n = time.len().min(values.len());
+    if n < 40 {
+        return None;
+    }
+    let sigma = super::noise_of(values)?;
+    Some((n, sigma, time.iter().map(|x| x - time[0]).collect()))
+}
+
 /// `π (k - 1) / (t_k - t_1)` over the `k` crossings of `centre` from one
 /// side of the band `centre ± band` to the other: the record's angular
 /// frequency, whatever its harmonics; `None` below three crossings.
@@ -542,14 +549,9 @@ fn crossing_frequency(t: &[f64], theta: &[f64], centre: f64, band: f64) -> Optio
 /// at their own level longer than `2 t₃` was held: the fit starts at the
 /// plateau's last sample. 0 when the record starts moving.
 pub fn held_still(time: &[f64], rate: &[f64]) -> usize {
-    let n = time.len().min(rate.len());
-    if n < 40 {
-        return 0;
-    }
-    let Some(sigma) = super::noise_of(rate) else {
+    let Some((n, sigma, t)) = held_inputs(time, rate) else {
         return 0;
     };
-    let t: Vec<f64> = time.iter().map(|x| x - time[0]).collect();
     let offset = rate.iter().sum::<f64>() / n as f64;
     let peak = rate.iter().map(|v| (v - offset).abs()).fold(0.0, f64::max);
     let Some(wd) = crossing_frequency(&t, rate, offset, 0.1 * peak) else {

@@ -212,7 +212,10 @@ fn beats_of_a_gate_off_centre() {
     assert!(f(&v, "rate_s_per_day").abs() < 0.5, "{v}");
     assert!((f(&v, "beat_error_start_ms") - 110.0).abs() < 10.0, "{v}");
     assert!(f(&v, "beat_error_end_ms") > 350.0, "{v}");
-    assert_eq!(v["warning_codes"][0], "sides_drift", "{v}");
+    // (The drift also scatters each side's intervals: the rate and the
+    // beat error are said to be uncertain too.)
+    let codes = v["warning_codes"].as_array().unwrap();
+    assert!(codes.iter().any(|c| c == "sides_drift"), "{v}");
     // A steady clock says nothing of the kind.
     let steady: String = std::iter::once("time_s\n".to_string())
         .chain(

@@ -46,6 +46,14 @@ pub const FASTEST_BEAT_S: f64 = 0.05;
 /// 8 s.
 pub const SLOWEST_BEAT_S: f64 = 10.0;
 
+/// A rate whose standard error exceeds this, s/day, is said to be
+/// uncertain (a third of the 1 s/day a clockmaker regulates to: a figure
+/// 1 s/day off is then three standard errors out).
+pub const RATE_SE_WARN: f64 = 0.33;
+/// A beat error whose standard error exceeds this, ms, is said to be
+/// uncertain.
+pub const BEAT_ERROR_SE_WARN: f64 = 0.15;
+
 /// What a person must know about a beat analysis.
 #[derive(Clone, Debug, PartialEq)]
 pub enum BeatWarning {
@@ -62,6 +70,22 @@ pub enum BeatWarning {
         short: f64,
         /// The median long interval, s.
         long: f64,
+    },
+    /// The rate's standard error exceeds [`RATE_SE_WARN`]: too few beats,
+    /// or too much scatter in their times (noise, a beat timed on two
+    /// different sounds).
+    RateUncertain {
+        /// The standard error, s/day.
+        se: f64,
+    },
+    /// A recording's tick and tock sound different: each is timed from its
+    /// own onset, and the beat error takes in where each onset falls on
+    /// its sound (a few tenths of a ms).
+    SoundsDiffer,
+    /// The beat error's standard error exceeds [`BEAT_ERROR_SE_WARN`].
+    BeatErrorUncertain {
+        /// The standard error, ms.
+        se_ms: f64,
     },
     /// The tick and tock intervals drift apart (or together) over the
     /// record: the mean beat error describes neither end.
@@ -80,6 +104,9 @@ impl BeatWarning {
             BeatWarning::SidesDrift { .. } => "sides_drift",
             BeatWarning::BeatImplausible { .. } => "beat_implausible",
             BeatWarning::EdgesUnpaired { .. } => "edges_unpaired",
+            BeatWarning::RateUncertain { .. } => "rate_uncertain",
+            BeatWarning::SoundsDiffer => "sounds_differ",
+            BeatWarning::BeatErrorUncertain { .. } => "beat_error_uncertain",
         }
     }
 }
@@ -107,6 +134,25 @@ impl std::fmt::Display for BeatWarning {
                  else the clock is far out of beat",
                 format_significant(*short, 4),
                 format_significant(*long, 4)
+            ),
+            BeatWarning::RateUncertain { se } => write!(
+                f,
+                "the rate is uncertain by ±{} s/day (one standard error): too few beats or too \
+                 much scatter in their times; record longer, nearer the clock, or in a quieter \
+                 room",
+                format_significant(*se, 2)
+            ),
+            BeatWarning::SoundsDiffer => write!(
+                f,
+                "the tick and the tock sound different (see the plot's two sounds): each is \
+                 timed from its own start, and the beat error may be off by a few tenths of a \
+                 ms where the two starts are taken differently"
+            ),
+            BeatWarning::BeatErrorUncertain { se_ms } => write!(
+                f,
+                "the beat error is uncertain by ±{} ms (one standard error): too few beats or \
+                 too much scatter in their times",
+                format_significant(*se_ms, 2)
             ),
             BeatWarning::SidesDrift { start_ms, end_ms } => write!(
                 f,
@@ -152,8 +198,13 @@ pub struct Beats {
     pub nominal_kind: Option<&'static str>,
     /// Gain per day against it, s/day (positive: the clock gains).
     pub rate_s_per_day: Option<f64>,
+    /// The rate's standard error, s/day (from the ticks' scatter about
+    /// the line through them; null when too few to tell).
+    pub rate_se_s_per_day: Option<f64>,
     /// Half the tick-tock difference, ms.
     pub beat_error_ms: f64,
+    /// Its standard error, ms.
+    pub beat_error_se_ms: Option<f64>,
     /// The same over the first 16 pairs of beats, ms.
     pub beat_error_start_ms: f64,
     /// The same over the last 16 pairs of beats, ms.
@@ -180,6 +231,19 @@ impl Beats {
                 beat_s: a.mean_beat,
             });
         }
+        if a.rate_s_per_day.is_some()
+            && a.rate_se_s_per_day.is_finite()
+            && a.rate_se_s_per_day > RATE_SE_WARN
+        {
+            warnings.push(BeatWarning::RateUncertain {
+                se: a.rate_se_s_per_day,
+            });
+        }
+        if a.beat_error_se_ms.is_finite() && a.beat_error_se_ms > BEAT_ERROR_SE_WARN {
+            warnings.push(BeatWarning::BeatErrorUncertain {
+                se_ms: a.beat_error_se_ms,
+            });
+        }
         if a.beat_error_change_sigma > DRIFT_SIGMA
             && change > 1e3 * DRIFT_OF_BEAT * a.mean_beat
             && change > 0.2 * a.beat_error_start_ms.max(a.beat_error_end_ms)
@@ -202,7 +266,12 @@ impl Beats {
                 })
                 .map(|r| r.kind),
             rate_s_per_day: a.rate_s_per_day,
+            rate_se_s_per_day: a
+                .rate_se_s_per_day
+                .is_finite()
+                .then_some(a.rate_se_s_per_day),
             beat_error_ms: a.beat_error_ms,
+            beat_error_se_ms: a.beat_error_se_ms.is_finite().then_some(a.beat_error_se_ms),
             beat_error_start_ms: a.beat_error_start_ms,
             beat_error_end_ms: a.beat_error_end_ms,
             jitter_ms: a.jitter_ms,

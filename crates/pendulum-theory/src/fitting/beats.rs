@@ -225,8 +225,14 @@ pub struct BeatAnalysis {
     pub nominal_beat: Option<f64>,
     /// Gain per day against the nominal beat, s/day (positive: fast).
     pub rate_s_per_day: Option<f64>,
+    /// The rate's standard error, s/day: the slope's of the least-squares
+    /// line (one slope, an intercept a side) from the scatter about it
+    /// (white timing noise; a clock whose rate wanders has more).
+    pub rate_se_s_per_day: f64,
     /// Half the tick-tock difference, ms.
     pub beat_error_ms: f64,
+    /// Its standard error, ms, from the scatter of each side's intervals.
+    pub beat_error_se_ms: f64,
     /// The beat error over the record's first 16 pairs of beats (or its
     /// first half, if shorter), ms.
     pub beat_error_start_ms: f64,
@@ -333,6 +339,9 @@ pub struct BeatStream {
     /// (a recording's ticks, numbered beat by beat): else the warm-up's
     /// median.
     known_beat: Option<f64>,
+    /// The beat numbers of the timestamps, when their source counted the
+    /// beats (a recording's tracker): the warm-up's, then the last one's.
+    numbers: Vec<u64>,
     typical: f64,
     origin: f64,
     count: usize,
@@ -351,6 +360,7 @@ pub struct BeatStream {
     mean_t: [f64; 2],
     co_nt: [f64; 2],
     co_nn: [f64; 2],
+    co_tt: [f64; 2],
     side_count: [usize; 2],
     // Interval statistics by parity (Welford).
     parity: [Welford; 2],
@@ -361,6 +371,9 @@ pub struct BeatStream {
     sides: Sides,
     /// The interval that ended at the last beat accepted, s.
     last_interval: f64,
+    /// Whether the last beat was filled in (the next interval is then not
+    /// a measured one).
+    last_filled: bool,
     /// The half tick-tock difference at the record's two ends.
     ends: Ends,
 }
@@ -599,6 +612,42 @@ impl BeatStream {
         self.repaired(t, self.raw_count - 1)
     }
 
+    /// Adds the next timestamp, s, with its beat number (counted by the
+    /// source through any gap, so that a gap's missed beats are known, not
+    /// placed by the intervals: with many beats missed and a large beat
+    /// error a gap can be misread by one, and every later beat then counted
+    /// on the wrong side). Numbers must increase with the times.
+    pub fn push_numbered(&mut self, beat: u64, t: f64) -> Result<(), BeatError> {
+        if let Some(&last) = self.numbers.last() {
+            if beat <= last {
+                return Err(BeatError::NotIncreasing {
+                    index: self.raw_count,
+                    time: t,
+                });
+            }
+        }
+        if self.typical == 0.0 || self.numbers.is_empty() {
+            self.numbers.push(beat);
+        } else {
+            self.numbers = vec![self.numbers[self.numbers.len() - 1], beat];
+        }
+        self.push(t)
+    }
+
+    /// The beats from the last timestamp to the `index`-th when numbered.
+    fn numbered_step(&self, index: usize) -> Option<usize> {
+        match self.numbers.len() {
+            0 => None,
+            2 if self.typical != 0.0 && index + 1 == self.raw_count => {
+                Some((self.numbers[1] - self.numbers[0]) as usize)
+            }
+            n if index < n && index > 0 => {
+                Some((self.numbers[index] - self.numbers[index - 1]) as usize)
+            }
+            _ => None,
+        }
+    }
+
     /// Sets the typical interval from the buffered timestamps and replays them.
     fn start(&mut self) -> Result<(), BeatError> {
         let buffered = std::mem::take(&mut self.warm_up);
@@ -640,7 +689,12 @@ impl BeatStream {
             self.max_filled
         };
         let side = (self.count - 1) % 2;
-        match self.sides.place(gap, side, limit) {
+        let place = match self.numbered_step(index) {
+            Some(k) if k > limit => Place::Pause(k as f64),
+            Some(k) => Place::Beats(k),
+            None => self.sides.place(gap, side, limit),
+        };
+        match place {
             Place::Doubled => {
                 self.repairs.doubled += 1;
                 Ok(())
@@ -658,7 +712,7 @@ impl BeatStream {
                     // Spread over the gap as the sides expect.
                     let (last, whole) = (self.last, self.sides.ahead(side, k));
                     for j in 1..k {
-                        self.accept(last + gap * self.sides.ahead(side, j) / whole);
+                        self.fill(last + gap * self.sides.ahead(side, j) / whole);
                     }
                     self.repairs.missed += k - 1;
                 }
@@ -668,17 +722,33 @@ impl BeatStream {
         }
     }
 
+    /// A missed beat filled in at `t`: counted, and in the Allan
+    /// deviation's series (which needs every beat), but neither in the
+    /// regression nor in the intervals, which it would only tighten
+    /// (its time is the sides' expectation, not a measurement).
+    fn fill(&mut self, t: f64) {
+        let error = (t - self.origin) - self.count as f64 * self.typical;
+        self.push_allan(error);
+        self.count += 1;
+        self.last = t;
+        self.last_filled = true;
+    }
+
     fn accept(&mut self, t: f64) {
         let n = self.count as f64;
         let x = t - self.origin;
-        if self.count > 0 {
+        let after_fill = std::mem::take(&mut self.last_filled);
+        if self.count > 0 && !after_fill {
             let parity = (self.count - 1) % 2;
             let interval = t - self.last;
             self.parity[parity].push(interval);
-            if parity == 1 {
+            if parity == 1 && self.last_interval.is_finite() {
                 self.ends.push(0.5 * (self.last_interval - interval));
             }
             self.last_interval = interval;
+        } else if after_fill {
+            // (The interval before this one was not measured either.)
+            self.last_interval = f64::NAN;
         }
         let error = x - n * self.typical;
         let side = self.count % 2;
@@ -686,8 +756,10 @@ impl BeatStream {
         let k = self.side_count[side] as f64;
         let dn = n - self.mean_n[side];
         self.mean_n[side] += dn / k;
-        self.mean_t[side] += (error - self.mean_t[side]) / k;
+        let dt = error - self.mean_t[side];
+        self.mean_t[side] += dt / k;
         self.co_nt[side] += dn * (error - self.mean_t[side]);
+        self.co_tt[side] += dt * (error - self.mean_t[side]);
         self.co_nn[side] += dn * (n - self.mean_n[side]);
         self.push_allan(error);
         self.count += 1;
@@ -717,8 +789,17 @@ impl BeatStream {
             }
             self.start()?;
         }
-        let mean_beat =
-            self.typical + (self.co_nt[0] + self.co_nt[1]) / (self.co_nn[0] + self.co_nn[1]);
+        let (nt, nn) = (self.co_nt[0] + self.co_nt[1], self.co_nn[0] + self.co_nn[1]);
+        let mean_beat = self.typical + nt / nn;
+        // The slope's standard error from the scatter about the two lines
+        // (a common slope, an intercept a side: three parameters).
+        let residual = (self.co_tt[0] + self.co_tt[1] - nt * nt / nn).max(0.0);
+        let freedom = (self.side_count[0] + self.side_count[1]) as f64 - 3.0;
+        let slope_se = if freedom > 0.0 {
+            (residual / freedom / nn).sqrt()
+        } else {
+            f64::INFINITY
+        };
         if !(MIN_BEAT_S..=MAX_BEAT_S).contains(&mean_beat) {
             return Err(BeatError::NotABeat { mean_beat });
         }
@@ -745,7 +826,13 @@ impl BeatStream {
             beats_per_hour: 3600.0 / mean_beat,
             nominal_beat,
             rate_s_per_day: nominal_beat.map(|nominal| 86_400.0 * (nominal / mean_beat - 1.0)),
+            rate_se_s_per_day: 86_400.0 * slope_se / mean_beat,
             beat_error_ms: 1e3 * 0.5 * (tick.mean - tock.mean).abs(),
+            beat_error_se_ms: 1e3
+                * 0.5
+                * (tick.m2 / (tick.count - 1.0).max(1.0) / tick.count.max(1.0)
+                    + tock.m2 / (tock.count - 1.0).max(1.0) / tock.count.max(1.0))
+                .sqrt(),
             beat_error_start_ms: 1e3 * start.abs(),
             beat_error_end_ms: 1e3 * end.abs(),
             beat_error_change_sigma: change,

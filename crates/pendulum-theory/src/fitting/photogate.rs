@@ -354,7 +354,12 @@ mod tests {
             ..Default::default()
         })
         .unwrap();
-        assert_eq!(r.beats.warning_codes, ["edges_unpaired"]);
+        // (Both edges taken for beats also scatter each side's intervals.)
+        assert!(
+            r.beats.warning_codes.contains(&"edges_unpaired"),
+            "{:?}",
+            r.beats.warning_codes
+        );
     }
 
     #[test]

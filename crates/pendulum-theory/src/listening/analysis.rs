@@ -15,12 +15,13 @@
 //! unlocking to the drop into an amplitude ([`crate::lift`]).
 
 use super::detect::{
-    beat_period, clean, envelope_rate, Envelope, MedianSound, OnsetTracker, Refiner, Tick,
+    beat_period, clean, envelope_rate, Envelope, MedianSound, OnsetTracker, Refiner, Tick, Timing,
 };
+use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
 use super::{check_nominal_period, BEAT_RANGE_S};
 use crate::analysis::{require_finite, require_finite_sample, Refusal};
 use crate::error::format_significant;
-use crate::fitting::beat_log::{check_nominal, Beats, Nominal};
+use crate::fitting::beat_log::{check_nominal, BeatWarning, Beats, Nominal};
 use crate::fitting::beats::{BeatAnalysis, BeatStream};
 use crate::lift::amplitude_from_lift;
 use crate::period::period_for_beat_rate;
@@ -195,6 +196,11 @@ pub struct Listening {
     pub extra: usize,
     /// Tick envelope peak over the envelope's median, dB.
     pub snr_db: f64,
+    /// What each tick's time is: `unlocking` (two sounds a beat, every
+    /// beat timed on the first, the drop from it; a beat whose second
+    /// sound was not heard is left out) or `one_sound` (the one sound of
+    /// each beat that stands out): never a mixture.
+    pub timed_on: Timing,
     /// From each beat's unlocking to its drop, ms: ticks, tocks (null when
     /// no second sound stands out).
     pub drop_ms: [Option<f64>; 2],
@@ -304,11 +310,15 @@ pub fn listen<S: SampleSource>(
     // the same sample whatever the source's blocks).
     let span = (PERIOD_SPAN_S * rate) as usize;
     let mut env = Envelope::new(rate);
+    // The same in a wider band, for a beat's other side whose sound is
+    // mostly below the detector's band (the check of the half beat).
+    let mut wide = Envelope::with_filter(rate, BandPass::from(WIDE_HIGH_PASS_HZ, rate));
     let mut pushed = 0usize;
     source
         .read(Some(PERIOD_SPAN_S), &mut |block| {
             let keep = block.len().min(span - pushed);
             env.push(&block[..keep]);
+            wide.push(&block[..keep]);
             pushed += keep;
         })
         .map_err(ListenFailure::Source)?;
@@ -388,7 +398,8 @@ pub fn listen<S: SampleSource>(
     let mut beat = beat;
     // (Half a beat shorter than any a clock has is not followed.)
     if 0.5 * beat >= BEAT_RANGE_S.0 / (1.0 + NOMINAL_SLACK)
-        && sound_between_ticks(&env.values, env_rate, &coarse)
+        && (sound_between_ticks(&env.values, env_rate, &coarse)
+            || sound_between_ticks(&wide.values, env_rate, &coarse))
     {
         let per_hour = |b: f64| format_significant(3600.0 / b, 6);
         if let Some(n) = input.nominal {
@@ -505,7 +516,7 @@ pub fn listen<S: SampleSource>(
     let mut stream = BeatStream::filling_up_to(MAX_FILLED_BEATS).with_beat(numbered);
     for t in &ticks {
         stream
-            .push(t.time)
+            .push_numbered(t.beat, t.time)
             .map_err(|e| Refusal::data(e.to_string()))?;
     }
     let a = stream
@@ -527,20 +538,31 @@ pub fn listen<S: SampleSource>(
             .lift_angle
             .map(|_| amplitude.as_ref().map(|x| f(x).to_degrees()))
     };
+    let in_beat_percent = in_beat(&a);
+    let (mean_beat, doubled) = (a.mean_beat, a.repaired.doubled);
+    let mut beats = Beats::of(a);
+    if let Some(pair) = &sounds {
+        if !super::detect::one_sound(pair, rate) {
+            let w = BeatWarning::SoundsDiffer;
+            beats.warning_codes.push(w.code());
+            beats.warnings.push(w);
+        }
+    }
     let oscillator = input
         .oscillator
-        .unwrap_or_else(|| Oscillator::of_beat(a.mean_beat));
+        .unwrap_or_else(|| Oscillator::of_beat(mean_beat));
     Ok(Listening {
         sample_rate_hz: sample_rate,
         duration_s: duration,
-        in_beat_percent: in_beat(&a),
+        in_beat_percent,
         // The beats from the first tick kept to the last, less the ticks
         // kept: missed, whether no sound was there or it was dropped as
         // noise (counted once, though the analysis fills the same gaps).
         missed,
-        extra: a.repaired.doubled,
-        beats: Beats::of(a),
+        extra: doubled,
+        beats,
         snr_db,
+        timed_on: coarse.timing,
         drop_ms: drops.map(|d| d.map(|d| d * 1e3)),
         lift_angle_deg: input.lift_angle.map(f64::to_degrees),
         oscillator,
@@ -560,17 +582,18 @@ pub fn listen<S: SampleSource>(
 pub const HALF_BEAT_RISE: f64 = 0.25;
 
 /// Whether a sound stands between consecutive ticks: the envelope (the
-/// first pass's, at `rate` values a second) from 30% to 70% of the way
-/// from each onset to the next (`coarse`'s, consecutive beats only),
-/// averaged over the pairs on the fraction of the way, peaks more than
-/// [`HALF_BEAT_RISE`] of the ticks' rise over the floor and six robust
-/// standard deviations above the average's own median, and not within
-/// 3 ms of a beat's own second sound (the drop, 16 ms after the unlocking:
-/// a third of the way at 72,000 beats an hour). Aligned on the onsets,
-/// the other side of a clock out of beat stays at one fraction whatever
-/// the rate; noise and a room's reverberation average flat.
+/// first pass's, at `rate` values a second: the detector's band, or the
+/// wide band) from 30% to 70% of the way from each onset to the next
+/// (`coarse`'s, consecutive beats only), averaged over the pairs on the
+/// fraction of the way, peaks more than [`HALF_BEAT_RISE`] of the ticks'
+/// rise over the same average's median (the ticks' rise: the mean of the
+/// envelope's largest value within 10 ms of each onset) and six robust
+/// standard deviations above that median, and not within 3 ms of a beat's
+/// own second sound (the drop, 16 ms after the unlocking: a third of the
+/// way at 72,000 beats an hour). Aligned on the onsets, the other side of
+/// a clock out of beat stays at one fraction whatever the rate; noise and
+/// a room's reverberation average flat.
 fn sound_between_ticks(envelope: &[f32], rate: f64, coarse: &super::detect::Coarse) -> bool {
-    let rise = coarse.peak - coarse.floor;
     let pairs: Vec<(f64, f64)> = coarse
         .onsets
         .windows(2)
@@ -578,21 +601,32 @@ fn sound_between_ticks(envelope: &[f32], rate: f64, coarse: &super::detect::Coar
         .map(|w| (w[0].1, w[1].1))
         .filter(|&(_, b)| ((b * rate) as usize) < envelope.len())
         .collect();
-    if pairs.len() < 8 || rise.is_nan() || rise <= 0.0 {
+    if pairs.len() < 8 {
         return false;
     }
     let typical = pairs.iter().map(|(a, b)| b - a).sum::<f64>() / pairs.len() as f64;
     let bins = ((0.4 * typical * rate).round() as usize).clamp(8, 20_000);
     let mut profile = vec![0.0; bins];
+    let mut tick = 0.0;
+    let reach = (0.01 * rate).ceil() as usize;
     for &(a, b) in &pairs {
         for (j, p) in profile.iter_mut().enumerate() {
             let fraction = 0.3 + 0.4 * j as f64 / (bins - 1) as f64;
             let i = ((a + fraction * (b - a)) * rate).round() as usize;
             *p += f64::from(envelope[i.min(envelope.len() - 1)]);
         }
+        let i = ((a * rate).round().max(0.0) as usize).min(envelope.len() - 1);
+        tick += envelope[i..(i + reach).min(envelope.len())]
+            .iter()
+            .fold(0.0_f64, |m, &v| m.max(f64::from(v)));
     }
     profile.iter_mut().for_each(|p| *p /= pairs.len() as f64);
+    tick /= pairs.len() as f64;
     let centre = super::detect::median_of(&profile);
+    let rise = tick - centre;
+    if rise.is_nan() || rise <= 0.0 {
+        return false;
+    }
     let spread = 1.4826
         * super::detect::median_of(
             &profile

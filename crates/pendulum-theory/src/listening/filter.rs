@@ -58,6 +58,12 @@ impl Biquad {
     }
 }
 
+/// The detector's high-pass, Hz.
+pub const DETECTOR_HIGH_PASS_HZ: f64 = 500.0;
+/// The wide band's high-pass, Hz (above mains hum and its second harmonic,
+/// and room rumble), for the check of a sound between the ticks.
+pub const WIDE_HIGH_PASS_HZ: f64 = 150.0;
+
 /// The detector's band-pass: two high-pass and one low-pass sections.
 #[derive(Clone, Copy, Debug)]
 pub struct BandPass {
@@ -67,11 +73,17 @@ pub struct BandPass {
 impl BandPass {
     /// The band-pass for `rate` samples per second.
     pub fn new(rate: f64) -> Self {
+        Self::from(DETECTOR_HIGH_PASS_HZ, rate)
+    }
+
+    /// The same from `high_pass` Hz (a low tock whose sound is mostly
+    /// under the detector's 500 Hz is heard from 100 Hz).
+    pub fn from(high_pass: f64, rate: f64) -> Self {
         let low = 10_000.0_f64.min(0.45 * rate);
         Self {
             sections: [
-                Biquad::high_pass(500.0, rate),
-                Biquad::high_pass(500.0, rate),
+                Biquad::high_pass(high_pass, rate),
+                Biquad::high_pass(high_pass, rate),
                 Biquad::low_pass(low, rate),
             ],
         }

@@ -4,6 +4,7 @@ use super::super::fit_beats::rate_text;
 use super::ListenJson;
 use crate::output::{num, Summary};
 use pendulum_theory::listening::analysis::Oscillator;
+use pendulum_theory::listening::detect::Timing;
 
 /// The summary of `r`, a recording of `channels` channels.
 pub(super) fn render(r: &ListenJson, channels: usize) -> String {
@@ -46,8 +47,32 @@ pub(super) fn render(r: &ListenJson, channels: usize) -> String {
         ),
     )
     .row(
+        "Uncertainty",
+        match (
+            r.listening.beats.rate_se_s_per_day,
+            r.listening.beats.beat_error_se_ms,
+        ) {
+            (Some(rate), Some(be)) => format!(
+                "rate ±{} s/day, beat error ±{} ms (one standard error)",
+                num(rate, 2),
+                num(be, 2)
+            ),
+            _ => "too few beats to tell".to_string(),
+        },
+    )
+    .row(
         "Jitter",
         format!("{} ms", num(r.listening.beats.jitter_ms, 3)),
+    )
+    .row(
+        "Timed on",
+        match r.listening.timed_on {
+            Timing::Unlocking => {
+                "the unlocking, the first of each beat's two sounds (the drop timed from it)"
+            }
+            Timing::OneSound => "each beat's one sound (no second sound stands apart from it)",
+        }
+        .to_string(),
     )
     .row(
         "Drop",
@@ -102,5 +127,9 @@ pub(super) fn render(r: &ListenJson, channels: usize) -> String {
     if let Some(f) = &r.plot_file {
         s.row("Plot", f.clone());
     }
-    s.render()
+    let mut out = s.render();
+    for w in &r.listening.beats.warnings {
+        out.push_str(&format!("WARNING: {w}\n"));
+    }
+    out
 }

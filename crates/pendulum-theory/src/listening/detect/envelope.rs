@@ -33,9 +33,15 @@ pub struct Envelope {
 impl Envelope {
     /// An envelope for audio at `sample_rate`.
     pub fn new(sample_rate: f64) -> Self {
+        Self::with_filter(sample_rate, BandPass::new(sample_rate))
+    }
+
+    /// An envelope through `filter` (the wide band, for a sound the
+    /// detector's band leaves out).
+    pub fn with_filter(sample_rate: f64, filter: BandPass) -> Self {
         let per_value = (sample_rate / ENVELOPE_RATE).round().max(1.0) as usize;
         Self {
-            filter: BandPass::new(sample_rate),
+            filter,
             per_value,
             count: 0,
             block_sum: 0.0,

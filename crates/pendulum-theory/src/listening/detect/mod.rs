@@ -40,10 +40,10 @@ pub mod period;
 pub mod refine;
 
 pub use envelope::{envelope_rate, Envelope, ENVELOPE_RATE};
-pub use onsets::{second_sound, OnsetTracker};
+pub use onsets::{second_sound, OnsetTracker, Timing};
 pub use outliers::clean;
 pub use period::beat_period;
-pub use refine::{MedianSound, Refiner, Tick};
+pub use refine::{one_sound, MedianSound, Refiner, Tick};
 
 /// Coarse onsets, s, with the beat numbers they belong to.
 #[derive(Clone, Debug, PartialEq)]
@@ -59,6 +59,8 @@ pub struct Coarse {
     /// The time from the tick's onset to the beat's second sound (the
     /// drop), s, for ticks and for tocks: see [`onsets::second_sound`].
     pub drops: [Option<f64>; 2],
+    /// What each onset is: the unlocking, or the beat's one sound.
+    pub timing: Timing,
 }
 
 pub(crate) use crate::fitting::median;

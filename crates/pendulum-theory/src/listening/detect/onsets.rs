@@ -68,9 +68,76 @@ pub struct OnsetTracker {
     /// The envelope around each side's onsets, summed (for the drop).
     profiles: [Vec<f64>; 2],
     profile_counts: [usize; 2],
-    /// The last onset, waiting for the envelope after it: (side, onset s).
-    pending: Option<(usize, f64)>,
+    /// The last onset, waiting for the envelope after it: (side, onset s,
+    /// its index in `onsets`, its sound's peak).
+    pending: Option<(usize, f64, usize, f64)>,
     total: usize,
+    /// The envelope's noise: 1.4826 times the median deviation below the
+    /// floor of the last ten seconds' values under it.
+    spread: f64,
+    /// For each onset, the other sound of its beat, once the envelope
+    /// around it has come (see [`Neighbours`]).
+    neighbours: Vec<Option<Neighbours>>,
+}
+
+/// The sounds of a beat around the one followed: the earliest sound before
+/// it and the loudest after it (within [`PAIR_REACH`] of a beat, 0.25 s at
+/// most) that stand out of the noise and apart from it: (delay s, onset
+/// s, peak over the floor); and the followed sound's own peak over the
+/// floor.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Neighbours {
+    earlier: Option<(f64, f64, f64)>,
+    later: Option<(f64, f64, f64)>,
+    own: f64,
+}
+
+/// Beats showing both sounds at one spacing, at least this share of the
+/// beats whose surroundings were seen (and at least [`PAIR_COUNT`]), for
+/// a clock to be timed on its unlocking: noise puts a second sound at a
+/// random spacing, a clock's second sound at its own.
+const PAIR_SHARE: f64 = 0.2;
+/// Spacings of the two sounds within this (or [`PAIR_SPREAD`] of the
+/// spacing) are one spacing, s (the envelope's onsets are good to about
+/// half its 0.5 ms step).
+const PAIR_TOLERANCE: f64 = 0.0008;
+/// The same as a fraction of the spacing.
+const PAIR_SPREAD: f64 = 0.05;
+/// The fewest beats showing both sounds (half the beats seen in a clip
+/// shorter than twice this, but at least three).
+const PAIR_COUNT: usize = 8;
+
+/// How far either side of a followed sound the other sound of its beat is
+/// looked for, in beats (and at most [`PAIR_REACH_MAX`] s): the drop
+/// follows the unlocking by the time across the lift, a few ms in a watch
+/// and up to a few tenths of a second in a seconds pendulum.
+const PAIR_REACH: f64 = 0.3;
+/// The longest reach, s.
+const PAIR_REACH_MAX: f64 = 0.25;
+/// A neighbouring sound's rise over the floor, at least this fraction of
+/// the followed sound's (an unlocking 9 dB below its drop is 0.35).
+const PAIR_LEVEL: f64 = 0.25;
+/// A neighbouring sound's rise over the floor, at least this many of the
+/// envelope's noise standard deviations.
+const PAIR_NOISE: f64 = 6.0;
+/// The dip between two sounds, at least this fraction of the quieter's
+/// rise over the floor: two sounds, not one ringing on.
+const PAIR_DIP: f64 = 0.25;
+
+/// What each beat's time is: the unlocking (the first of two sounds) or
+/// the beat's one sound.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Timing {
+    /// Two sounds a beat stand out, the same time apart: every beat is
+    /// timed on the first (the unlocking), the drop measured from it;
+    /// a beat whose other sound was not heard is not timed (it could be
+    /// either).
+    Unlocking,
+    /// One sound a beat (or the second too rarely heard to tell which is
+    /// which): every beat is timed on the sound followed.
+    #[default]
+    OneSound,
 }
 
 /// A sound in the envelope: its onset (s) and peak.
@@ -105,6 +172,8 @@ impl OnsetTracker {
             profiles: Default::default(),
             profile_counts: [0; 2],
             pending: None,
+            spread: 0.0,
+            neighbours: Vec::new(),
         }
     }
 
@@ -127,7 +196,8 @@ impl OnsetTracker {
     pub fn finish(mut self) -> Coarse {
         self.advance(true);
         self.profile_pending();
-        let drops = [0, 1].map(|side| {
+        let (timing, paired) = self.settle_events();
+        let followed_drops = [0, 1].map(|side| {
             let n = self.profile_counts[side];
             (n >= 4)
                 .then(|| {
@@ -141,6 +211,10 @@ impl OnsetTracker {
                 })
                 .flatten()
         });
+        let drops = match timing {
+            Timing::Unlocking => paired,
+            Timing::OneSound => followed_drops,
+        };
         let mut floors = self.floors.clone();
         let floor = if floors.is_empty() {
             self.current_floor()
@@ -157,7 +231,191 @@ impl OnsetTracker {
                 floor
             },
             drops,
+            timing,
         }
+    }
+
+    /// One event a beat: when most beats show two sounds the same time
+    /// apart (the unlocking, then the drop), every beat is moved to the
+    /// first of its two (a beat followed at its drop goes back to its
+    /// unlocking) and a beat with one sound heard is left out (it could be
+    /// either, and a mixture of the two moves the rate and the beat
+    /// error); else every beat stays on the sound followed. Returns the
+    /// timing and, for two sounds, each side's median time from the
+    /// unlocking to the drop.
+    fn settle_events(&mut self) -> (Timing, [Option<f64>; 2]) {
+        let seen: Vec<&Neighbours> = self.neighbours.iter().flatten().collect();
+        let delays: Vec<f64> = seen
+            .iter()
+            .flat_map(|n| [n.earlier, n.later])
+            .flatten()
+            .map(|(d, _, _)| d)
+            .collect();
+        // (A clip of a few beats needs fewer.)
+        let fewest = PAIR_COUNT.min(seen.len() / 2).max(3);
+        if delays.len() < fewest {
+            return (Timing::OneSound, [None; 2]);
+        }
+        // The spacing most beats share: the densest cluster of spacings
+        // (a room's reflection after each sound makes another, a few ms
+        // away), by a window over the sorted spacings.
+        let width = |d: f64| (PAIR_SPREAD * d).max(PAIR_TOLERANCE);
+        let mut sorted = delays.clone();
+        sorted.sort_by(f64::total_cmp);
+        let (mut best, mut best_count, mut hi) = (0.0, 0, 0);
+        for (lo, &a) in sorted.iter().enumerate() {
+            while hi < sorted.len() && sorted[hi] <= a + 2.0 * width(a) {
+                hi += 1;
+            }
+            if hi - lo > best_count {
+                best_count = hi - lo;
+                best = 0.5 * (a + sorted[hi - 1]);
+            }
+        }
+        let mut cluster: Vec<f64> = sorted
+            .iter()
+            .copied()
+            .filter(|&b| (b - best).abs() <= width(best))
+            .collect();
+        let d = median(&mut cluster);
+        let tolerance = width(d);
+        let matches =
+            |x: Option<(f64, f64, f64)>| x.filter(|(delay, _, _)| (delay - d).abs() <= tolerance);
+        let pairs = seen
+            .iter()
+            .filter(|n| matches(n.earlier).is_some() || matches(n.later).is_some())
+            .count();
+        if pairs < fewest || (pairs as f64) < PAIR_SHARE * seen.len() as f64 {
+            return (Timing::OneSound, [None; 2]);
+        }
+        // Each side followed at its unlocking (its beats showing both
+        // sounds had the drop after the sound followed) in all but a few.
+        let mut followed = [[0usize; 2]; 2];
+        for (&(k, _), n) in self.onsets.iter().zip(&self.neighbours) {
+            if let Some(n) = n {
+                let side = (k % 2) as usize;
+                if matches(n.earlier).is_some() {
+                    followed[side][1] += 1;
+                } else if matches(n.later).is_some() {
+                    followed[side][0] += 1;
+                }
+            }
+        }
+        let steady = followed.map(|[at_unlock, at_drop]| {
+            at_unlock >= fewest && (at_drop as f64) <= 0.05 * (at_unlock + at_drop) as f64
+        });
+        let mut timed = Vec::with_capacity(self.onsets.len());
+        let mut side_delays: [Vec<f64>; 2] = Default::default();
+        for (&(k, t), n) in self.onsets.iter().zip(&self.neighbours) {
+            let side = (k % 2) as usize;
+            let Some(n) = n else {
+                timed.push((k, t));
+                continue;
+            };
+            if let Some((delay, onset, _)) = matches(n.earlier) {
+                timed.push((k, onset));
+                side_delays[side].push(delay);
+            } else if let Some((delay, _, _)) = matches(n.later) {
+                timed.push((k, t));
+                side_delays[side].push(delay);
+            } else if steady[side] {
+                // One sound heard, on a side the tracker followed at its
+                // unlocking beat after beat: the same sound as theirs (one
+                // that is the drop all the same lies a spacing off its
+                // side's line, and the clean-up drops it: super::clean).
+                timed.push((k, t));
+            }
+            // Else one sound heard on a side followed now at one sound, now
+            // at the other: which it is is not known (a recording's level
+            // wanders, so loudness cannot tell): not timed, counted as
+            // missed.
+        }
+        self.onsets = one_line_a_side(earlier_of_two(timed, d), 0.4 * d);
+        let drops = side_delays.map(|mut v| (v.len() >= 2).then(|| median(&mut v)));
+        (Timing::Unlocking, drops)
+    }
+
+    /// The other sound of the beat followed at `onset` (index `i` in the
+    /// envelope is its sound's peak `peak`): see [`Neighbours`]. `None`
+    /// when the envelope around it is not all buffered.
+    fn neighbours_of(&self, onset: f64, peak: f64) -> Option<Neighbours> {
+        let reach = (PAIR_REACH * self.beat).min(PAIR_REACH_MAX);
+        let first = ((onset - reach) * self.rate).floor();
+        let last = ((onset + reach) * self.rate).ceil() as usize;
+        if first < self.offset as f64 || last >= self.offset + self.values.len() {
+            return None;
+        }
+        let (first, at) = (first as usize, (onset * self.rate).round() as usize);
+        let floor = self.floor;
+        let rise = peak - floor;
+        if rise <= 0.0 {
+            return Some(Neighbours::default());
+        }
+        let level = floor + (PAIR_LEVEL * rise).max(PAIR_NOISE * self.spread);
+        let half = ((0.001 * self.rate) as usize).max(1);
+        // The followed sound's own peak: the first local maximum (over
+        // 1 ms either way) within 6 ms of its onset that reaches a third
+        // of the largest there (a louder drop merged into its run is
+        // another sound; a bump of noise on its rise is not its peak).
+        let own_end = (at + (0.006 * self.rate) as usize).min(last);
+        let largest = (at..=own_end).max_by(|&a, &b| self.at(a).total_cmp(&self.at(b)))?;
+        let least = floor + (self.at(largest) - floor) / 3.0;
+        let own_at = (at..=own_end)
+            .find(|&j| {
+                self.at(j) >= least
+                    && (j.saturating_sub(half)..=(j + half).min(last))
+                        .all(|i| self.at(i) <= self.at(j))
+            })
+            .unwrap_or(largest);
+        let is_peak = |j: usize| {
+            let v = self.at(j);
+            v >= level
+                && (j.saturating_sub(half).max(first)..=(j + half).min(last))
+                    .all(|i| self.at(i) <= v)
+        };
+        // A peak apart from the followed sound's: the dip between them
+        // at least PAIR_DIP of the quieter's rise.
+        let apart = |j: usize| {
+            let (a, b) = if j < own_at { (j, own_at) } else { (own_at, j) };
+            let dip = (a..=b).map(|i| self.at(i)).fold(f64::INFINITY, f64::min);
+            let quieter = self.at(j).min(self.at(own_at));
+            quieter - dip >= PAIR_DIP * (quieter - floor)
+        };
+        // Its onset: back from its peak to 30% of its rise over the dip.
+        let onset_of = |j: usize, stop: usize| -> f64 {
+            let low = (stop.min(j)..=j)
+                .map(|i| self.at(i))
+                .fold(f64::INFINITY, f64::min);
+            let own = low + SOUND_LEVEL * (self.at(j) - low);
+            let mut i = j;
+            while i > stop && self.at(i - 1) >= own {
+                i -= 1;
+            }
+            i as f64 / self.rate
+        };
+        let loudest = |range: std::ops::Range<usize>| {
+            range
+                .filter(|&j| is_peak(j) && apart(j))
+                .max_by(|&a, &b| self.at(a).total_cmp(&self.at(b)))
+        };
+        let gap = ((0.001 * self.rate) as usize).max(1);
+        // Before: the earliest (a drop followed with a reflection of the
+        // unlocking between them, or a reflection of the drop followed,
+        // has the unlocking first); after: the loudest (the drop).
+        let earliest = (first..at.saturating_sub(gap)).find(|&j| is_peak(j) && apart(j));
+        let earlier = earliest.map(|j| {
+            let o = onset_of(j, first);
+            (onset - o, o, self.at(j) - floor)
+        });
+        let later = loudest(own_at + 2 * gap..last).map(|j| {
+            let o = onset_of(j, own_at);
+            (o - onset, o, self.at(j) - floor)
+        });
+        Some(Neighbours {
+            earlier: earlier.filter(|(d, _, _)| *d > 0.0),
+            later: later.filter(|(d, _, _)| *d > 0.0),
+            own: self.at(own_at) - floor,
+        })
     }
 
     fn current_floor(&self) -> f64 {
@@ -168,6 +426,15 @@ impl OnsetTracker {
     fn refresh_floor(&mut self) {
         if self.floors.is_empty() || self.total >= self.floor_updated + self.rate as usize {
             self.floor = self.current_floor();
+            // (From the values below the median only: the ticks and the
+            // room's tail lie above it.)
+            let mut deviations: Vec<f64> = self
+                .floor_sample
+                .iter()
+                .map(|&v| self.floor - f64::from(v))
+                .filter(|&d| d >= 0.0)
+                .collect();
+            self.spread = 1.4826 * median(&mut deviations);
             self.floors.push(self.floor);
             self.floor_updated = self.total;
         }
@@ -313,7 +580,7 @@ impl OnsetTracker {
     /// Adds the envelope around the pending onset to its side's profile,
     /// once the envelope after it has come (or drops it at the end).
     fn profile_pending(&mut self) {
-        let Some((side, onset)) = self.pending else {
+        let Some((side, onset, index, peak)) = self.pending else {
             return;
         };
         let first = ((onset - PROFILE_BEFORE) * self.rate).round();
@@ -326,6 +593,7 @@ impl OnsetTracker {
         if first + length > self.offset + self.values.len() {
             return;
         }
+        self.neighbours[index] = self.neighbours_of(onset, peak);
         let profile = &mut self.profiles[side];
         profile.resize(length, 0.0);
         for (j, p) in profile.iter_mut().enumerate() {
@@ -411,9 +679,11 @@ impl OnsetTracker {
             self.decide(predicted, half, buffered, half < 0.3 * self.beat);
             // Let go of what no later beat needs (nor the drop profile).
             self.profile_pending();
-            let mut keep = ((predicted - 0.05).max(0.0) * self.rate) as usize;
-            if let Some((_, t)) = self.pending {
-                keep = keep.min(((t - PROFILE_BEFORE).max(0.0) * self.rate) as usize);
+            let reach = (PAIR_REACH * self.beat).min(PAIR_REACH_MAX) + 0.001;
+            let mut keep = ((predicted - 0.05 - reach).max(0.0) * self.rate) as usize;
+            if let Some((_, t, _, _)) = self.pending {
+                let before = PROFILE_BEFORE.max(reach);
+                keep = keep.min(((t - before).max(0.0) * self.rate) as usize);
             }
             if keep > self.offset + 8192 {
                 let drop = (keep - self.offset).min(self.values.len());
@@ -442,8 +712,9 @@ impl OnsetTracker {
             Some(s) => {
                 self.run_of_misses = 0;
                 self.profile_pending();
-                self.pending = Some((side, s.onset));
+                self.pending = Some((side, s.onset, self.onsets.len(), s.peak));
                 self.onsets.push((self.k, s.onset));
+                self.neighbours.push(None);
                 let peaks = &mut self.peaks[side];
                 peaks.push_back(s.peak);
                 if peaks.len() > TYPICAL_PEAKS {
@@ -462,6 +733,87 @@ impl OnsetTracker {
         self.k += 1;
     }
 }
+
+/// The beat of a side that is `spacing` s later on the line than two or
+/// more of its side's [`LINE_REACH`] beats either way is timed on the
+/// second of its two sounds where they were timed on the first: dropped.
+/// Of two sounds a spacing apart the unlocking is the earlier, so a side
+/// followed now on one, now on the other (a stretch where the unlocking
+/// was not heard apart) keeps its unlockings, whichever is the more.
+fn earlier_of_two(onsets: Vec<(u64, f64)>, spacing: f64) -> Vec<(u64, f64)> {
+    keep_by_side(onsets, |r, around| {
+        around
+            .iter()
+            .filter(|&&a| ((r - a) - spacing).abs() <= 0.3 * spacing)
+            .count()
+            < 2
+    })
+}
+
+/// The onsets `keep` accepts, given each one's residual from the line at
+/// the beat of [`beat_of_pairs`] (its time less its number times the beat)
+/// and the residuals of its side's [`LINE_REACH`] beats either way (itself
+/// among them); all of them when the beat cannot be told.
+fn keep_by_side(
+    onsets: Vec<(u64, f64)>,
+    keep: impl Fn(f64, &mut [f64]) -> bool,
+) -> Vec<(u64, f64)> {
+    let Some(beat) = beat_of_pairs(&onsets) else {
+        return onsets;
+    };
+    let residual = |&(k, t): &(u64, f64)| t - k as f64 * beat;
+    let kept: Vec<bool> = (0..onsets.len())
+        .map(|i| {
+            let side = onsets[i].0 % 2;
+            let lo = i.saturating_sub(2 * LINE_REACH);
+            let hi = (i + 2 * LINE_REACH + 1).min(onsets.len());
+            let mut around: Vec<f64> = onsets[lo..hi]
+                .iter()
+                .filter(|o| o.0 % 2 == side)
+                .map(residual)
+                .collect();
+            keep(residual(&onsets[i]), &mut around)
+        })
+        .collect();
+    onsets
+        .into_iter()
+        .zip(kept)
+        .filter_map(|(o, k)| k.then_some(o))
+        .collect()
+}
+
+/// The beat of `onsets` (beat number, s): the median of half the time
+/// between beats of a side two apart; `None` for fewer than four such.
+fn beat_of_pairs(onsets: &[(u64, f64)]) -> Option<f64> {
+    let mut steps: Vec<f64> = onsets
+        .windows(3)
+        .flat_map(|w| {
+            [(w[0], w[1]), (w[0], w[2])]
+                .into_iter()
+                .filter(|(a, b)| b.0 == a.0 + 2)
+                .map(|(a, b)| 0.5 * (b.1 - a.1))
+        })
+        .collect();
+    (steps.len() >= 4).then(|| median(&mut steps))
+}
+
+/// Beats of each side within `off` s of the line their side's beats draw
+/// around them: each beat's time less its number times the beat (the
+/// median over the pairs of the same side two beats apart), against the
+/// median of the same over the [`LINE_REACH`] beats of its side either
+/// way. A beat timed on the other sound of its beat (a reflection in the
+/// room that made the drop look like an unlocking) lies a spacing off:
+/// dropped. A median of single beats keeps to the line with up to half of
+/// them off it (a median of midpoints of two beats would not).
+fn one_line_a_side(onsets: Vec<(u64, f64)>, off: f64) -> Vec<(u64, f64)> {
+    keep_by_side(onsets, |r, around| {
+        around.len() < 3 || (r - median(around)).abs() <= off
+    })
+}
+
+/// Beats of a side either way that the line of [`one_line_a_side`] is
+/// drawn through.
+const LINE_REACH: usize = 10;
 
 /// The time from the tick's onset to the second sound of the beat (the
 /// drop of the escapement onto its next tooth), s, on `profile`: the mean

@@ -30,14 +30,19 @@ pub fn clean(mut ticks: Vec<Tick>) -> (Vec<Tick>, usize, usize) {
     if ticks.len() < 8 {
         return (ticks, 0, 0);
     }
-    // The beat from all ticks: least squares of time on beat number.
-    let n = ticks.len() as f64;
-    let (mk, mt) = ticks.iter().fold((0.0, 0.0), |(a, b), t| {
-        (a + t.beat as f64 / n, b + t.time / n)
-    });
+    // The beat from all ticks: least squares of time on beat number, with
+    // an intercept for each side (a beat error shifts the tocks against
+    // the ticks; one line through both tilts in a short record, and the
+    // ticks carried over it would be moved a ringing period wrong).
+    let mut sums = [(0.0, 0.0, 0.0); 2];
+    for t in &ticks {
+        let s = &mut sums[(t.beat % 2) as usize];
+        *s = (s.0 + 1.0, s.1 + t.beat as f64, s.2 + t.time);
+    }
     let (sxy, sxx) = ticks.iter().fold((0.0, 0.0), |(a, b), t| {
-        let dk = t.beat as f64 - mk;
-        (a + dk * (t.time - mt), b + dk * dk)
+        let (n, sk, st) = sums[(t.beat % 2) as usize];
+        let dk = t.beat as f64 - sk / n;
+        (a + dk * (t.time - st / n), b + dk * dk)
     });
     if sxx <= 0.0 {
         return (ticks, 0, 0);

@@ -22,6 +22,9 @@ pub struct Tick {
     pub alternatives: [Option<(f64, f64)>; 8],
 }
 
+/// The tick's and the tock's median sounds are one sound (timed from one
+/// onset) when their normalised correlation reaches this.
+const SAME_SOUND: f64 = 0.8;
 /// Ticks kept to build each side's median sound.
 const TEMPLATE_TICKS: usize = 128;
 /// Before and after the coarse onset in each window, s.
@@ -194,7 +197,19 @@ impl Refiner {
     /// `sample_rate`.
     pub fn new(sample_rate: f64, coarse: &Coarse) -> Self {
         let pre = (PRE * sample_rate).round() as usize;
-        let post = (POST * sample_rate).round() as usize;
+        // Timed on the unlocking, the window ends before the drop (so that
+        // the louder drop, whose delay follows the swing, does not pull
+        // the match), but takes at least 1 ms of the unlocking.
+        let post = match coarse.timing {
+            super::Timing::Unlocking => coarse
+                .drops
+                .iter()
+                .flatten()
+                .fold(POST, |p, &d| p.min(0.8 * d))
+                .max(1e-3),
+            super::Timing::OneSound => POST,
+        };
+        let post = (post * sample_rate).round() as usize;
         let search = (SEARCH * sample_rate).round().max(2.0) as usize;
         Self {
             rate: sample_rate,
@@ -365,7 +380,11 @@ impl Refiner {
                     tick.samples[i] + other
                 })
                 .collect();
-            if let Some(onset) = sound_onset(&sum) {
+            // (Only for one sound: a tick and a tock that sound different,
+            // as a clock's two pallets often do, are each timed on their own
+            // start, else the beat error takes their difference in shape.)
+            let alike = likeness(&tick.samples, &tock.samples, whole) >= SAME_SOUND;
+            if let (true, Some(onset)) = (alike, sound_onset(&sum)) {
                 tick.onset = onset;
                 tock.onset = onset + shift;
             }
@@ -478,6 +497,35 @@ pub struct MedianSound {
     pub samples: Vec<f32>,
     /// Where the tick's onset falls in them, samples.
     pub onset: f64,
+}
+
+/// The normalised correlation of two sounds, `b` read `lag` samples on.
+fn likeness(a: &[f32], b: &[f32], lag: isize) -> f64 {
+    let norm = |v: &[f32]| v.iter().map(|&x| f64::from(x).powi(2)).sum::<f64>().sqrt();
+    let product: f64 = (0..a.len())
+        .filter_map(|i| {
+            let j = usize::try_from(i as isize + lag).ok()?;
+            b.get(j).map(|&y| f64::from(a[i]) * f64::from(y))
+        })
+        .sum();
+    let (na, nb) = (norm(a), norm(b));
+    if na > 0.0 && nb > 0.0 {
+        product / (na * nb)
+    } else {
+        0.0
+    }
+}
+
+/// Whether the median tick and tock are one sound (their normalised
+/// correlation at their best alignment, within 2 ms, reaches
+/// [`SAME_SOUND`]): if not, each is timed from its own onset, and where
+/// an onset is taken on two different sounds can differ by a few tenths
+/// of a ms, which the beat error takes in.
+pub fn one_sound(sounds: &[MedianSound; 2], sample_rate: f64) -> bool {
+    let reach = (SEARCH * sample_rate).round().max(2.0) as usize;
+    relative_lag(&sounds[0].samples, &sounds[1].samples, reach).is_some_and(|lag| {
+        likeness(&sounds[0].samples, &sounds[1].samples, lag.round() as isize) >= SAME_SOUND
+    })
 }
 
 /// The lag (samples, from 0 to `2 search`, to a fraction by a parabola) at

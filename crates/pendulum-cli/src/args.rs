@@ -163,6 +163,11 @@ pub struct ListenArgs {
     /// The sound card's clock error, ppm (positive: its clock runs fast).
     #[arg(long, value_name = "P", allow_hyphen_values = true)]
     pub sample_rate_error_ppm: Option<Number>,
+    /// Measure the sound card's clock error on a recording, made through
+    /// the same card, of a quartz watch or a GPS 1 PPS click (one tick a
+    /// second), and apply it.
+    #[arg(long, value_name = "FILE", conflicts_with = "sample_rate_error_ppm")]
+    pub reference: Option<InputPath>,
     /// Write every tick to this CSV file (time_s,side,amplitude).
     #[arg(long, value_name = "FILE.csv")]
     pub ticks: Option<OutputPath>,
@@ -180,6 +185,13 @@ pub struct ListenArgs {
     /// sounds (SVG or PNG by the extension; - for SVG on standard output).
     #[arg(long, value_name = "FILE.svg|FILE.png")]
     pub plot: Option<OutputPath>,
+    /// Follow the clock over time: rate, beat error, amplitude and signal
+    /// to noise in windows of this length (e.g. 5min), with their mean.
+    #[arg(long, value_name = "DURATION", allow_hyphen_values = true)]
+    pub every: Option<Time>,
+    /// Write the windows of --every to this CSV file.
+    #[arg(long, value_name = "OUT.csv", requires = "every")]
+    pub windows: Option<OutputPath>,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -210,6 +222,8 @@ pub struct SynthTicksArgs {
     pub bph: Option<Number>,
     #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("The clock's rate, s/day (positive: gaining)", TickRecording::DEFAULT.rate_s_per_day))]
     pub rate: Option<Number>,
+    #[arg(long, value_name = "C", allow_hyphen_values = true, help = with_default("How fast the rate changes, s/day an hour (the rate at time t is --rate + C t / 1 h)", TickRecording::DEFAULT.rate_change_s_per_day_per_hour))]
+    pub rate_change: Option<Number>,
     #[arg(long, value_name = "E", allow_hyphen_values = true, help = with_default("Beat error, ms (half the difference of the tick and tock intervals)", TickRecording::DEFAULT.beat_error_ms))]
     pub beat_error: Option<Number>,
     #[arg(long, value_name = "D", allow_hyphen_values = true, help = with_default("Length of the recording, s", TickRecording::DEFAULT.duration))]

@@ -699,7 +699,7 @@ fn clock<'py>(
 /// Listening to a recording in memory (the CLI's `listen`) as JSON, and
 /// the ticks kept (time_s, side, amplitude).
 #[pyfunction]
-#[pyo3(signature = (samples, sample_rate, bph, period, sample_rate_error_ppm, lift_angle, oscillator=None))]
+#[pyo3(signature = (samples, sample_rate, bph, period, sample_rate_error_ppm, lift_angle, oscillator=None, every=None))]
 #[allow(clippy::type_complexity, clippy::too_many_arguments)]
 fn listen<'py>(
     py: Python<'py>,
@@ -710,6 +710,7 @@ fn listen<'py>(
     sample_rate_error_ppm: Option<f64>,
     lift_angle: Option<f64>,
     oscillator: Option<&str>,
+    every: Option<f64>,
 ) -> PyResult<(String, [Array1<'py>; 3])> {
     use pendulum_theory::fitting::beat_log::Nominal;
     use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput, Oscillator};
@@ -728,6 +729,7 @@ fn listen<'py>(
             .map(Oscillator::parse)
             .transpose()
             .map_err(|r| PyValueError::new_err(r.to_string()))?,
+        every,
     };
     let result = py.detach(|| listen_to_samples(samples, sample_rate, &input));
     let ticks = result.as_ref().map(|r| r.ticks.clone()).unwrap_or_default();

@@ -800,6 +800,9 @@ LISTEN = {
     "lift_zero": ([], {"lift_angle": 0.0}),
     "lift_half_turn": ([], {"lift_angle": 3.5}),
     "nominal_double": ([], {"bph": 7200.0}),
+    "every_20_s": (["--rate", "5"], {"bph": 3600.0, "every": 20.0}),
+    "every_too_short": ([], {"bph": 3600.0, "every": 3.0}),
+    "every_negative": ([], {"every": -1.0}),
     "nominal_half": (["--bph", "18000", "--duration", "20s"], {"bph": 9000.0}),
     "nominal_five_times": (["--bph", "18000", "--duration", "20s"], {"period": 2.0}),
     "nominal_a_fifth": ([], {"bph": 18000.0}),
@@ -812,7 +815,7 @@ LISTEN = {
                            {"bph": 3600.0}),
 }
 LISTEN_UNITS = {"bph": "", "period": "s", "sample_rate_error_ppm": "", "lift_angle": "rad",
-                "oscillator": ""}
+                "oscillator": "", "every": "s"}
 FLAG.update({"samples": "FILE"})
 
 

@@ -98,6 +98,7 @@ fn spec(bph: f64, sample_rate: u32, snr_db: f64, seed: u64) -> TickRecording {
         duration: 600.0,
         beats_per_hour: bph,
         rate_s_per_day: 12.0,
+        rate_change_s_per_day_per_hour: 0.0,
         beat_error_ms: 1.5,
         snr_db,
         reverb_s: 0.3,

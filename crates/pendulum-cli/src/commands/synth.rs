@@ -19,6 +19,7 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
         duration: args.duration.map_or(d.duration, |t| t.0),
         beats_per_hour: number(args.bph, d.beats_per_hour),
         rate_s_per_day: number(args.rate, d.rate_s_per_day),
+        rate_change_s_per_day_per_hour: number(args.rate_change, d.rate_change_s_per_day_per_hour),
         beat_error_ms: number(args.beat_error, d.beat_error_ms),
         snr_db: number(args.snr_db, d.snr_db),
         reverb_s: args.reverb.map_or(d.reverb_s, |t| t.0),

@@ -635,3 +635,129 @@ fn a_second_generator_two_sounds_an_echo_and_a_clip() {
     assert!(v["beats"].as_u64().unwrap() >= 9, "{v}");
     assert_eq!(v["missed"], 0, "{v}");
 }
+
+/// `--every`: an hour whose rate grows linearly by 20 s/day (`synth ticks
+/// --rate-change 20`, a clock warming up) is followed window by window,
+/// each window's rate within 0.2 s/day of the true rate at its middle
+/// (the mean of a linear rate over the window); the windows' CSV holds
+/// the same figures; a window of fewer than eight beats is refused, and
+/// `--windows` without `--every` is a usage error.
+#[test]
+fn every_follows_a_rate_that_changes() {
+    let dir = tempfile::tempdir().unwrap();
+    let wav = dir.path().join("drift.wav");
+    pendulum()
+        .args(["synth", "ticks", wav.to_str().unwrap(), "--bph", "3600"])
+        .args(["--rate", "-4", "--rate-change", "20", "--duration", "1h"])
+        .args(["--sample-rate", "8000", "--snr-db", "25", "--seed", "7"])
+        .assert()
+        .success();
+    let csv = dir.path().join("windows.csv");
+    let v = json(&[
+        "listen",
+        wav.to_str().unwrap(),
+        "--bph",
+        "3600",
+        "--every",
+        "5min",
+        "--windows",
+        csv.to_str().unwrap(),
+    ]);
+    let windows = v["windows"].as_array().unwrap();
+    assert_eq!(windows.len(), 12, "{v}");
+    for w in windows {
+        let middle = 0.5 * (w["start_s"].as_f64().unwrap() + w["end_s"].as_f64().unwrap());
+        let truth = -4.0 + 20.0 * middle / 3600.0;
+        let rate = w["rate_s_per_day"].as_f64().unwrap();
+        assert!(
+            (rate - truth).abs() < 0.2,
+            "window at {middle} s: {rate} for {truth}"
+        );
+    }
+    // The mean of the windows is the mean rate, and its standard error
+    // (from their scatter) takes in the change the regression's does not.
+    let totals = &v["window_totals"];
+    assert!((f(totals, "rate_mean_s_per_day") - 6.0).abs() < 0.2, "{v}");
+    assert!(f(totals, "rate_mean_se_s_per_day") > 1.0, "{v}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert!(lines
+        .next()
+        .unwrap()
+        .starts_with("start_s,end_s,beats,rate_s_per_day"));
+    assert_eq!(lines.count(), 12);
+    let m = refuses(
+        &[
+            "listen",
+            wav.to_str().unwrap(),
+            "--bph",
+            "3600",
+            "--every",
+            "5s",
+        ],
+        "--every",
+    );
+    assert!(m.contains("at least 8 beats"), "{m}");
+    pendulum()
+        .args(["listen", wav.to_str().unwrap(), "--windows", "w.csv"])
+        .assert()
+        .code(2);
+}
+
+/// `--reference`: a quartz watch recorded through a sound card whose
+/// clock runs 50 ppm fast ticks 1.00005 s apart in the card's samples
+/// (`synth ticks --rate -4.32`); the card's error measured on it and
+/// applied gives a clock recorded through the same card its true 10 s/day
+/// (5.68 s/day read without it). A reference that does not tick once a
+/// second is refused, naming the flag.
+#[test]
+fn a_reference_measures_the_sound_card() {
+    let dir = tempfile::tempdir().unwrap();
+    let (reference, clock) = (dir.path().join("quartz.wav"), dir.path().join("clock.wav"));
+    let card = 50e-6;
+    let synth = |path: &std::path::Path, rate: f64, seed: &str, duration: &str| {
+        pendulum()
+            .args(["synth", "ticks", path.to_str().unwrap(), "--bph", "3600"])
+            .args(["--rate", &format!("{rate}"), "--duration", duration])
+            .args(["--sample-rate", "8000", "--seed", seed])
+            .assert()
+            .success();
+    };
+    synth(
+        &reference,
+        86_400.0 * (1.0 / (1.0 + card) - 1.0),
+        "3",
+        "2min",
+    );
+    synth(
+        &clock,
+        86_400.0 * ((1.0 + 10.0 / 86_400.0) / (1.0 + card) - 1.0),
+        "4",
+        "5min",
+    );
+    let c = clock.to_str().unwrap();
+    let v = json(&[
+        "listen",
+        c,
+        "--bph",
+        "3600",
+        "--reference",
+        reference.to_str().unwrap(),
+    ]);
+    let measured = f(&v["reference"], "sample_rate_error_ppm");
+    assert!((measured - 50.0).abs() < 0.5, "{v}");
+    assert_eq!(f(&v, "sample_rate_error_ppm"), measured, "{v}");
+    assert!((f(&v, "rate_s_per_day") - 10.0).abs() < 0.05, "{v}");
+    let v = json(&["listen", c, "--bph", "3600"]);
+    assert!((f(&v, "rate_s_per_day") - 5.68).abs() < 0.05, "{v}");
+    let watch = dir.path().join("watch.wav");
+    pendulum()
+        .args(["synth", "ticks", watch.to_str().unwrap(), "--bph", "21600"])
+        .args(["--duration", "20s", "--sample-rate", "8000"])
+        .assert()
+        .success();
+    refuses(
+        &["listen", c, "--reference", watch.to_str().unwrap()],
+        "--reference",
+    );
+}

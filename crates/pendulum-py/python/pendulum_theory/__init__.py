@@ -434,20 +434,22 @@ def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedul
 
 
 def listen(samples, sample_rate, *, bph=None, period=None, sample_rate_error_ppm=None,
-           lift_angle=None, oscillator=None):
+           lift_angle=None, oscillator=None, every=None):
     """Listens to a clock in a recording (the CLI's ``listen``, the same
     library call): ``samples`` one channel (float, full scale ±1, as a
     sound file decodes to), ``sample_rate`` in Hz; ``bph`` or ``period``
     (s) the beat it should keep, ``lift_angle`` (rad) for the amplitude,
     ``oscillator`` ``"pendulum"`` or ``"balance"`` (default: a balance
-    above 10,800 beats an hour).
+    above 10,800 beats an hour), ``every`` (s) the length of the windows
+    the recording is followed in over time (the command's ``--every``:
+    ``windows`` and ``window_totals`` in the result).
     Returns the command's ``--json`` object as a dict (without its
     ``file`` and ``channel``) and the ticks kept as a dict of arrays
     (time_s, side, amplitude)."""
     result, (time, side, amplitude) = _native.listen(
         _np.ascontiguousarray(samples, dtype=_np.float32), float(sample_rate), _number(bph),
         _number(period), _number(sample_rate_error_ppm), _number(lift_angle),
-        _text(oscillator))
+        _text(oscillator), _number(every))
     return _json.loads(result), {"time_s": time, "side": side, "amplitude": amplitude}
 
 

@@ -124,6 +124,7 @@ def listen(
     sample_rate_error_ppm: Any = ...,
     lift_angle: Any = ...,
     oscillator: Optional[str] = ...,
+    every: Any = ...,
 ) -> Dict[str, Any]: ...
 def period_table(
     length: Any,

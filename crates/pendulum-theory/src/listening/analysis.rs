@@ -18,6 +18,7 @@ use super::detect::{
     beat_period, clean, envelope_rate, Envelope, MedianSound, OnsetTracker, Refiner, Tick, Timing,
 };
 use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
+use super::windows::{windows, Window, WindowInput, WindowTotals, MIN_WINDOW_BEATS};
 use super::{check_nominal_period, BEAT_RANGE_S};
 use crate::analysis::{require_finite, require_finite_sample, Refusal};
 use crate::error::format_significant;
@@ -159,6 +160,10 @@ pub struct ListenInput {
     pub lift_angle: Option<f64>,
     /// What swings (else chosen by the beat: [`Oscillator::of_beat`]).
     pub oscillator: Option<Oscillator>,
+    /// Cut the recording into windows of this many seconds, each analysed
+    /// on its own ([`super::windows`]); at least [`MIN_WINDOW_BEATS`]
+    /// beats long.
+    pub every: Option<f64>,
 }
 
 /// Why listening failed: the input, or the source.
@@ -181,6 +186,8 @@ impl<E> From<Refusal> for ListenFailure<E> {
 pub struct Listening {
     /// Samples per second.
     pub sample_rate_hz: u32,
+    /// The sound card's clock error applied to the tick times, ppm.
+    pub sample_rate_error_ppm: f64,
     /// The recording's length, s.
     pub duration_s: f64,
     /// What a timegrapher shows of the tick times (its `repaired` the
@@ -221,6 +228,12 @@ pub struct Listening {
     /// exact figure, a pendulum's approximation).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub amplitude_first_order_deg: Option<Option<f64>>,
+    /// The recording in windows (with `every`), oldest first.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub windows: Vec<Window>,
+    /// The windows' rates summed up.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub window_totals: Option<WindowTotals>,
     /// The ticks kept, their times rescaled by the sound card's error.
     #[serde(skip)]
     pub ticks: Vec<Tick>,
@@ -291,6 +304,16 @@ pub fn listen<S: SampleSource>(
             ),
         )
         .into());
+    }
+    if let Some(every) = input.every {
+        let every = require_finite("every", every)?;
+        if every <= 0.0 {
+            return Err(Refusal::field(
+                "every",
+                format!("must be positive, got {} s", format_significant(every, 6)),
+            )
+            .into());
+        }
     }
     if let Some(lift) = input.lift_angle {
         if !(lift > 0.0 && lift < std::f64::consts::PI) {
@@ -551,8 +574,38 @@ pub fn listen<S: SampleSource>(
     let oscillator = input
         .oscillator
         .unwrap_or_else(|| Oscillator::of_beat(mean_beat));
+    let (windows, window_totals) = match input.every {
+        Some(every) => {
+            if every < MIN_WINDOW_BEATS * mean_beat {
+                return Err(Refusal::field(
+                    "every",
+                    format!(
+                        "a window must hold at least {MIN_WINDOW_BEATS} beats ({} s at this \
+                         clock's beat of {} s), got {} s",
+                        format_significant(MIN_WINDOW_BEATS * mean_beat, 3),
+                        format_significant(mean_beat, 4),
+                        format_significant(every, 6)
+                    ),
+                )
+                .into());
+            }
+            let (w, totals) = windows(&WindowInput {
+                ticks: &ticks,
+                coarse: &coarse,
+                every,
+                duration: duration * scale,
+                nominal_beat: beats.nominal_beat_s,
+                lift_angle: input.lift_angle,
+                oscillator,
+                scale,
+            });
+            (w, Some(totals))
+        }
+        None => (Vec::new(), None),
+    };
     Ok(Listening {
         sample_rate_hz: sample_rate,
+        sample_rate_error_ppm: ppm,
         duration_s: duration,
         in_beat_percent,
         // The beats from the first tick kept to the last, less the ticks
@@ -572,6 +625,8 @@ pub fn listen<S: SampleSource>(
             Oscillator::Balance => lifted(&|x| x.first_order),
         },
         amplitude_first_order_deg: lifted(&|x| x.first_order),
+        windows,
+        window_totals,
         ticks,
         sounds,
     })
@@ -673,4 +728,64 @@ fn too_few(found: usize, duration: f64, beat: f64, snr_db: f64) -> Refusal {
         "{found} of about {expected} beats stand out of the noise{snr}; record nearer the clock, \
          or in a quieter room"
     ))
+}
+
+/// A sound card's clock error measured on a reference that ticks once a
+/// second (a quartz watch, or a GPS receiver's 1 PPS made audible).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Calibration {
+    /// The card's clock error, ppm (positive: it runs fast, so that a
+    /// second of the reference spans more than `sample_rate` samples):
+    /// what `sample_rate_error_ppm` takes.
+    pub sample_rate_error_ppm: f64,
+    /// Its standard error, ppm, from the reference ticks' scatter (the
+    /// reference's own error is not in it: a quartz watch keeps a second
+    /// to a few ppm, ±0.5 s/day; a GPS 1 PPS to far better).
+    pub sample_rate_error_se_ppm: Option<f64>,
+    /// Ticks of the reference heard.
+    pub beats: usize,
+    /// The reference's length, s.
+    pub duration_s: f64,
+}
+
+/// The reference's beat, s: one tick a second.
+pub const REFERENCE_BEAT_S: f64 = 1.0;
+
+/// Measures a sound card's clock error on `source`, a recording through
+/// it of a reference ticking once a second ([`REFERENCE_BEAT_S`]): the
+/// reference's ticks are heard as a clock's are ([`listen`], at 3,600
+/// beats an hour), and its mean beat in the card's samples, against one
+/// second, is the card's error. Refused when the reference does not tick
+/// once a second.
+pub fn sound_card_error<S: SampleSource>(
+    source: &mut S,
+) -> Result<Calibration, ListenFailure<S::Error>> {
+    let heard = listen(
+        source,
+        &ListenInput {
+            nominal: Some(Nominal::BeatsPerHour(3600.0 / REFERENCE_BEAT_S)),
+            ..ListenInput::default()
+        },
+    )?;
+    let beat = heard.beats.mean_beat_s;
+    let ppm = (beat / REFERENCE_BEAT_S - 1.0) * 1e6;
+    if ppm.abs() > MAX_SAMPLE_RATE_ERROR_PPM {
+        return Err(Refusal::field(
+            "reference",
+            format!(
+                "ticks {} s apart, not once a second: the reference must be a quartz watch or a \
+                 1 PPS click",
+                format_significant(beat, 6)
+            ),
+        )
+        .into());
+    }
+    Ok(Calibration {
+        sample_rate_error_ppm: ppm,
+        // The rate's standard error, s/day, is the beat's relative one
+        // times 86,400.
+        sample_rate_error_se_ppm: heard.beats.rate_se_s_per_day.map(|se| se / 86_400.0 * 1e6),
+        beats: heard.beats.beats,
+        duration_s: heard.duration_s,
+    })
 }

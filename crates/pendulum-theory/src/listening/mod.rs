@@ -6,6 +6,7 @@
 //! * [`detect`]: the envelope, the beat period from its autocorrelation,
 //!   and each tick's onset to a fraction of a sample (coarse onsets on the
 //!   envelope, then cross-correlation with the median tick and tock).
+//! * [`windows`]: the recording over time, in windows of a given length.
 //! * [`synth`]: ticks as a few decaying resonances, the drop sound after
 //!   them, room echoes, mains hum, noise and missing ticks, with the true
 //!   tick times.
@@ -74,3 +75,4 @@ pub mod analysis;
 pub mod detect;
 pub mod filter;
 pub mod synth;
+pub mod windows;

@@ -23,8 +23,13 @@ pub struct TickRecording {
     pub duration: f64,
     /// Nominal beats per hour.
     pub beats_per_hour: f64,
-    /// The clock's rate against the nominal, s/day (positive: gaining).
+    /// The clock's rate against the nominal at the start, s/day
+    /// (positive: gaining).
     pub rate_s_per_day: f64,
+    /// How fast the rate changes, s/day an hour (a clock warming up, or
+    /// its mainspring running down): the rate at time t is
+    /// `rate_s_per_day + rate_change t / 3600`.
+    pub rate_change_s_per_day_per_hour: f64,
     /// Half the difference of the tick and tock intervals, ms.
     pub beat_error_ms: f64,
     /// Peak of a tick over the noise RMS, dB.
@@ -49,6 +54,7 @@ impl TickRecording {
         duration: 60.0,
         beats_per_hour: 3600.0,
         rate_s_per_day: 0.0,
+        rate_change_s_per_day_per_hour: 0.0,
         beat_error_ms: 0.0,
         snr_db: 30.0,
         reverb_s: 0.3,
@@ -103,6 +109,14 @@ impl TickRecording {
         let rate = crate::analysis::require_finite("rate", self.rate_s_per_day)?;
         if rate.abs() > 3600.0 {
             return Err(Refusal::field("rate", "must be within ±3600 s/day"));
+        }
+        let change =
+            crate::analysis::require_finite("rate_change", self.rate_change_s_per_day_per_hour)?;
+        if (rate + change * self.duration / 3600.0).abs() > 3600.0 {
+            return Err(Refusal::field(
+                "rate_change",
+                "must keep the rate within ±3600 s/day to the end of the recording",
+            ));
         }
         let beat_error = crate::analysis::require_finite("beat_error", self.beat_error_ms)?;
         if beat_error.abs() > 0.2 * 1800.0 / bph * 1e3 {
@@ -248,7 +262,15 @@ impl Synthesizer {
         } else {
             Vec::new()
         };
-        let beat = 1800.0 / (spec.beats_per_hour / 2.0) / (1.0 + spec.rate_s_per_day / 86_400.0);
+        let nominal = 3600.0 / spec.beats_per_hour;
+        let beat = nominal / (1.0 + spec.rate_s_per_day / 86_400.0);
+        // The time of beat k from the first: the beats counted, k, are the
+        // integral of (1 + rate(t) / 86,400) / nominal over t, a quadratic
+        // in t with a linearly changing rate, solved in the form that does
+        // not cancel when the change is small.
+        let quadratic = spec.rate_change_s_per_day_per_hour / (2.0 * 3600.0 * 86_400.0 * nominal);
+        let elapsed =
+            |k: f64| 2.0 * k / (1.0 / beat + (1.0 / (beat * beat) + 4.0 * quadratic * k).sqrt());
         // The first tick a little after the start, as a recording begins.
         let start = random.between(0.05, 0.05 + beat);
         let (mut ticks, mut missing, mut events) = (Vec::new(), Vec::new(), Vec::new());
@@ -259,7 +281,7 @@ impl Synthesizer {
             } else {
                 0.0
             };
-            let t = start + k as f64 * beat + shift;
+            let t = start + elapsed(k as f64) + shift;
             if t + drop_delay + drop.length() >= spec.duration {
                 break;
             }
@@ -381,6 +403,7 @@ mod tests {
             duration: 3.0,
             beats_per_hour: 18_000.0,
             rate_s_per_day: 0.0,
+            rate_change_s_per_day_per_hour: 0.0,
             beat_error_ms: 1.0,
             snr_db: 20.0,
             reverb_s: 0.3,
@@ -409,6 +432,7 @@ mod tests {
             duration: 20.0,
             beats_per_hour: 3600.0,
             rate_s_per_day: 86.4,
+            rate_change_s_per_day_per_hour: 0.0,
             beat_error_ms: 2.0,
             snr_db: 30.0,
             reverb_s: 0.0,

@@ -5,6 +5,7 @@ use crate::output::num;
 use crate::plot::{render, thin, Figure, Panel, Series, Target};
 use pendulum_theory::listening::analysis::Listening;
 use pendulum_theory::listening::detect::MedianSound;
+use pendulum_theory::listening::windows::Window;
 
 /// Points of the paper strip kept, at most.
 const STRIP_LIMIT: usize = 8192;
@@ -61,6 +62,39 @@ pub(super) fn draw(target: &Target, r: &Listening) -> Result<String, CliError> {
                 Series::line("tock", wave(&sounds[1])),
             ],
         ));
+    }
+    // With --every: the long strip chart, each window's rate, beat error
+    // and amplitude at its middle.
+    if !r.windows.is_empty() {
+        let over_time = |f: &dyn Fn(&Window) -> Option<f64>| -> Vec<(f64, f64)> {
+            r.windows
+                .iter()
+                .filter_map(|w| f(w).map(|v| (0.5 * (w.start_s + w.end_s), v)))
+                .collect()
+        };
+        let every = r.window_totals.map_or(0.0, |t| t.every_s);
+        let title = |what: &str| format!("{what} in windows of {} s", num(every, 6));
+        panels.push(Panel::new(
+            title("Rate"),
+            "time (s)",
+            "rate (s/day)",
+            vec![Series::dots("rate", over_time(&|w| w.rate_s_per_day))],
+        ));
+        panels.push(Panel::new(
+            title("Beat error"),
+            "time (s)",
+            "beat error (ms)",
+            vec![Series::dots("beat error", over_time(&|w| w.beat_error_ms))],
+        ));
+        let amplitude = over_time(&|w| w.amplitude_deg);
+        if !amplitude.is_empty() {
+            panels.push(Panel::new(
+                title("Amplitude"),
+                "time (s)",
+                "amplitude (°)",
+                vec![Series::dots("amplitude", amplitude)],
+            ));
+        }
     }
     render(target, &Figure { panels })
 }

@@ -14,7 +14,7 @@ use crate::file::CsvFile;
 use crate::output;
 use crate::plot::Target;
 use pendulum_theory::listening::analysis::{
-    listen, ListenFailure, ListenInput, Listening, Oscillator,
+    listen, sound_card_error, Calibration, ListenFailure, ListenInput, Listening, Oscillator,
 };
 use serde::Serialize;
 
@@ -23,19 +23,57 @@ use serde::Serialize;
 struct ListenJson<'a> {
     file: String,
     channel: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    reference: Option<ReferenceJson>,
     #[serde(flatten)]
     listening: &'a Listening,
     #[serde(skip_serializing_if = "Option::is_none")]
     ticks_file: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
+    windows_file: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     plot_file: Option<String>,
+}
+
+/// The reference's measure of the sound card, with its file.
+#[derive(Serialize)]
+struct ReferenceJson {
+    file: String,
+    channel: usize,
+    #[serde(flatten)]
+    calibration: Calibration,
+}
+
+/// The sound card's error measured on `path` (`--reference`).
+fn reference(path: &std::path::Path) -> Result<ReferenceJson, CliError> {
+    let file = path.display().to_string();
+    let channel = louder_channel(path)?;
+    let mut source = FileSource {
+        path,
+        channel,
+        info: info(path)?,
+    };
+    let calibration = sound_card_error(&mut source).map_err(|f| match f {
+        ListenFailure::Source(e) => e,
+        ListenFailure::Refused(r) => CliError::flag("--reference", format!("{file}: {}", r.reason)),
+    })?;
+    Ok(ReferenceJson {
+        file,
+        channel: channel + 1,
+        calibration,
+    })
 }
 
 pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     let file = args.file.display().to_string();
+    let reference = args.reference.as_deref().map(reference).transpose()?;
+    let ppm = match &reference {
+        Some(r) => Some(r.calibration.sample_rate_error_ppm),
+        None => args.sample_rate_error_ppm.map(|p| p.0),
+    };
     let input = ListenInput {
         nominal: common::nominal(args.period, args.bph),
-        sample_rate_error_ppm: args.sample_rate_error_ppm.map(|p| p.0),
+        sample_rate_error_ppm: ppm,
         lift_angle: args.lift_angle.map(|a| a.0),
         oscillator: args
             .oscillator
@@ -43,6 +81,7 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
             .map(Oscillator::parse)
             .transpose()
             .map_err(|r| CliError::flag("--oscillator", r.reason))?,
+        every: args.every.map(|t| t.0),
     };
     let plot = args
         .plot
@@ -83,11 +122,37 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         }
         None => None,
     };
+    let windows_file = match &args.windows {
+        Some(path) => {
+            let mut out = CsvFile::create(
+                path,
+                "--windows",
+                "start_s,end_s,beats,rate_s_per_day,rate_se_s_per_day,beat_error_ms,drop_ms,\
+                 amplitude_deg,snr_db",
+            )?;
+            for w in &result.windows {
+                out.number(Some(w.start_s))
+                    .number(Some(w.end_s))
+                    .integer(w.beats as u64)
+                    .number(w.rate_s_per_day)
+                    .number(w.rate_se_s_per_day)
+                    .number(w.beat_error_ms)
+                    .number(w.drop_ms)
+                    .number(w.amplitude_deg)
+                    .number(w.snr_db)
+                    .end_row()?;
+            }
+            Some(out.commit()?)
+        }
+        None => None,
+    };
     let json = ListenJson {
         file,
         channel: channel + 1,
+        reference,
         listening: &result,
         ticks_file,
+        windows_file,
         plot_file,
     };
     if args.json {

@@ -2,9 +2,10 @@
 
 use super::super::fit_beats::rate_text;
 use super::ListenJson;
-use crate::output::{num, Summary};
+use crate::output::{num, table, Summary};
 use pendulum_theory::listening::analysis::Oscillator;
 use pendulum_theory::listening::detect::Timing;
+use pendulum_theory::listening::windows::WindowTotals;
 
 /// The summary of `r`, a recording of `channels` channels.
 pub(super) fn render(r: &ListenJson, channels: usize) -> String {
@@ -121,15 +122,88 @@ pub(super) fn render(r: &ListenJson, channels: usize) -> String {
         "Signal to noise",
         format!("{} dB", num(r.listening.snr_db, 3)),
     );
+    if let Some(reference) = &r.reference {
+        let c = &reference.calibration;
+        s.row(
+            "Sound card",
+            format!(
+                "{} ppm{} from {} ({} ticks of a second), applied",
+                num(c.sample_rate_error_ppm, 4),
+                c.sample_rate_error_se_ppm
+                    .map_or(String::new(), |se| format!(" ± {}", num(se, 2))),
+                reference.file,
+                c.beats
+            ),
+        );
+    } else if r.listening.sample_rate_error_ppm != 0.0 {
+        s.row(
+            "Sound card",
+            format!(
+                "{} ppm, as given",
+                num(r.listening.sample_rate_error_ppm, 6)
+            ),
+        );
+    }
     if let Some(f) = &r.ticks_file {
         s.row("Ticks file", f.clone());
     }
     if let Some(f) = &r.plot_file {
         s.row("Plot", f.clone());
     }
+    if let Some(f) = &r.windows_file {
+        s.row("Windows file", f.clone());
+    }
     let mut out = s.render();
     for w in &r.listening.beats.warnings {
         out.push_str(&format!("WARNING: {w}\n"));
+    }
+    if let Some(totals) = &r.listening.window_totals {
+        out.push_str(&windows(r, totals));
+    }
+    out
+}
+
+/// The windows of `--every` as a table, and their rates' mean.
+fn windows(r: &ListenJson, totals: &WindowTotals) -> String {
+    let cell = |x: Option<f64>, digits: usize| x.map_or("-".to_string(), |v| num(v, digits));
+    let rows: Vec<Vec<String>> = r
+        .listening
+        .windows
+        .iter()
+        .map(|w| {
+            vec![
+                num(w.start_s, 6),
+                w.beats.to_string(),
+                cell(w.rate_s_per_day, 4),
+                cell(w.rate_se_s_per_day, 2),
+                cell(w.beat_error_ms, 3),
+                cell(w.amplitude_deg, 4),
+                cell(w.snr_db, 3),
+            ]
+        })
+        .collect();
+    let mut out = format!("\nEvery {} s\n", num(totals.every_s, 6));
+    out.push_str(&table(
+        &[
+            "start s",
+            "beats",
+            "rate s/day",
+            "± s/day",
+            "beat error ms",
+            "amplitude °",
+            "SNR dB",
+        ],
+        &rows,
+    ));
+    match (totals.rate_mean_s_per_day, totals.rate_mean_se_s_per_day) {
+        (Some(m), Some(se)) => out.push_str(&format!(
+            "Mean of {} windows' rates: {} ± {} s/day (the standard error from their scatter)\n",
+            totals.windows_with_rate,
+            num(m, 4),
+            num(se, 2)
+        )),
+        (Some(m), None) => out.push_str(&format!("One window's rate: {} s/day\n", num(m, 4))),
+        _ => out.push_str("No window holds enough ticks for a rate\n"),
     }
     out
 }

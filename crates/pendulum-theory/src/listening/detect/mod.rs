@@ -61,6 +61,12 @@ pub struct Coarse {
     pub drops: [Option<f64>; 2],
     /// What each onset is: the unlocking, or the beat's one sound.
     pub timing: Timing,
+    /// Each beat's envelope peak and the noise floor then: (beat number,
+    /// peak, floor), for the signal to noise over time.
+    pub levels: Vec<(u64, f64, f64)>,
+    /// Each beat's time from the unlocking to the drop (timed on the
+    /// unlocking, both sounds heard): (beat number, s).
+    pub spacings: Vec<(u64, f64)>,
 }
 
 pub(crate) use crate::fitting::median;

@@ -78,6 +78,11 @@ pub struct OnsetTracker {
     /// For each onset, the other sound of its beat, once the envelope
     /// around it has come (see [`Neighbours`]).
     neighbours: Vec<Option<Neighbours>>,
+    /// Each beat's envelope peak and the floor then: (beat, peak, floor).
+    levels: Vec<(u64, f64, f64)>,
+    /// Each beat's time from the unlocking to the drop, where both were
+    /// heard at the clock's spacing: (beat, s).
+    spacings: Vec<(u64, f64)>,
 }
 
 /// The sounds of a beat around the one followed: the earliest sound before
@@ -174,6 +179,8 @@ impl OnsetTracker {
             pending: None,
             spread: 0.0,
             neighbours: Vec::new(),
+            levels: Vec::new(),
+            spacings: Vec::new(),
         }
     }
 
@@ -232,6 +239,8 @@ impl OnsetTracker {
             },
             drops,
             timing,
+            levels: self.levels,
+            spacings: self.spacings,
         }
     }
 
@@ -315,9 +324,11 @@ impl OnsetTracker {
             if let Some((delay, onset, _)) = matches(n.earlier) {
                 timed.push((k, onset));
                 side_delays[side].push(delay);
+                self.spacings.push((k, delay));
             } else if let Some((delay, _, _)) = matches(n.later) {
                 timed.push((k, t));
                 side_delays[side].push(delay);
+                self.spacings.push((k, delay));
             } else if steady[side] {
                 // One sound heard, on a side the tracker followed at its
                 // unlocking beat after beat: the same sound as theirs (one
@@ -715,6 +726,7 @@ impl OnsetTracker {
                 self.pending = Some((side, s.onset, self.onsets.len(), s.peak));
                 self.onsets.push((self.k, s.onset));
                 self.neighbours.push(None);
+                self.levels.push((self.k, s.peak, self.floor));
                 let peaks = &mut self.peaks[side];
                 peaks.push_back(s.peak);
                 if peaks.len() > TYPICAL_PEAKS {

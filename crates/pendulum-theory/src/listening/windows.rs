@@ -1,0 +1,169 @@
+//! A recording over time: its ticks cut into windows of a given length,
+//! each analysed as a timegrapher analyses a short recording (rate, beat
+//! error, the drop and the amplitude, the signal to noise), so that a
+//! clock's rate can be followed as it warms, winds down or meets the
+//! weather; and the windows' rates summed up with their standard error.
+
+use super::analysis::Oscillator;
+use super::detect::{median_of, Coarse, Tick};
+use crate::fitting::beats::BeatStream;
+use crate::lift::amplitude_from_lift;
+use serde::Serialize;
+
+/// The fewest beats a window is cut to.
+pub const MIN_WINDOW_BEATS: f64 = 8.0;
+
+/// One window of a recording.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Window {
+    /// Its start, s from the recording's start.
+    pub start_s: f64,
+    /// Its end, s.
+    pub end_s: f64,
+    /// Ticks kept in it.
+    pub beats: usize,
+    /// Its rate against the recording's nominal beat, s/day (null when
+    /// fewer than four ticks, or no nominal beat).
+    pub rate_s_per_day: Option<f64>,
+    /// The rate's standard error, s/day.
+    pub rate_se_s_per_day: Option<f64>,
+    /// Its beat error, ms.
+    pub beat_error_ms: Option<f64>,
+    /// The median time from the unlocking to the drop, ms (null when the
+    /// ticks were not timed on two sounds).
+    pub drop_ms: Option<f64>,
+    /// The amplitude from the lift angle, degrees (null without a lift
+    /// angle or a drop).
+    pub amplitude_deg: Option<f64>,
+    /// The median tick's envelope peak over the floor, dB.
+    pub snr_db: Option<f64>,
+}
+
+/// The windows' rates summed up.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct WindowTotals {
+    /// The windows' length, s.
+    pub every_s: f64,
+    /// Windows with a rate.
+    pub windows_with_rate: usize,
+    /// The mean of their rates, s/day.
+    pub rate_mean_s_per_day: Option<f64>,
+    /// Its standard error from the rates' scatter (the standard deviation
+    /// over the square root of their number): it takes in a rate that
+    /// wanders, which the whole recording's regression does not.
+    pub rate_mean_se_s_per_day: Option<f64>,
+}
+
+/// What the windows need of the whole analysis.
+pub struct WindowInput<'a> {
+    /// The ticks kept, rescaled.
+    pub ticks: &'a [Tick],
+    /// The tracker's onsets (levels and spacings by beat number).
+    pub coarse: &'a Coarse,
+    /// The windows' length, s.
+    pub every: f64,
+    /// The recording's length, s.
+    pub duration: f64,
+    /// The beat the rates are against, s.
+    pub nominal_beat: Option<f64>,
+    /// The lift angle, rad.
+    pub lift_angle: Option<f64>,
+    /// What swings.
+    pub oscillator: Oscillator,
+    /// The sound card's time scale (1 / (1 + ppm 10⁻⁶)).
+    pub scale: f64,
+}
+
+/// Cuts the recording into windows of `every` s from its start (the last
+/// one shorter) and analyses each: the rate and beat error of its ticks
+/// (their beat numbers, as the whole recording's), the median drop and
+/// from it the amplitude, and the median tick's signal to noise.
+pub fn windows(input: &WindowInput) -> (Vec<Window>, WindowTotals) {
+    let count = (input.duration / input.every).ceil().max(1.0) as usize;
+    let mut out = Vec::with_capacity(count);
+    let mut rest = input.ticks;
+    for w in 0..count {
+        let (start, end) = (
+            w as f64 * input.every,
+            ((w + 1) as f64 * input.every).min(input.duration),
+        );
+        let n = rest.iter().take_while(|t| t.time < end).count();
+        let (here, later) = rest.split_at(n);
+        rest = later;
+        out.push(window(input, here, start, end));
+    }
+    let rates: Vec<f64> = out.iter().filter_map(|w| w.rate_s_per_day).collect();
+    let n = rates.len() as f64;
+    let mean = (n > 0.0).then(|| rates.iter().sum::<f64>() / n);
+    let se = mean
+        .filter(|_| n >= 2.0)
+        .map(|m| (rates.iter().map(|r| (r - m).powi(2)).sum::<f64>() / (n - 1.0) / n).sqrt());
+    let totals = WindowTotals {
+        every_s: input.every,
+        windows_with_rate: rates.len(),
+        rate_mean_s_per_day: mean,
+        rate_mean_se_s_per_day: se,
+    };
+    (out, totals)
+}
+
+fn window(input: &WindowInput, ticks: &[Tick], start: f64, end: f64) -> Window {
+    let mut stream = BeatStream::filling_up_to(super::analysis::MAX_FILLED_BEATS);
+    if let (Some(a), Some(b)) = (ticks.first(), ticks.last()) {
+        if b.beat > a.beat {
+            stream = stream.with_beat((b.time - a.time) / (b.beat - a.beat) as f64);
+        }
+    }
+    let analysis = ticks
+        .iter()
+        .try_for_each(|t| stream.push_numbered(t.beat, t.time))
+        .ok()
+        .and_then(|()| stream.finish(input.nominal_beat).ok())
+        .filter(|_| ticks.len() >= super::analysis::MIN_TICKS);
+    let beats = ticks
+        .first()
+        .zip(ticks.last())
+        .map(|(a, b)| a.beat..=b.beat);
+    let within = |k: u64| beats.as_ref().is_some_and(|r| r.contains(&k));
+    let spacings: Vec<f64> = input
+        .coarse
+        .spacings
+        .iter()
+        .filter(|(k, _)| within(*k))
+        .map(|(_, d)| d * input.scale)
+        .collect();
+    let drop = (!spacings.is_empty()).then(|| median_of(&spacings));
+    let (peaks, floors): (Vec<f64>, Vec<f64>) = input
+        .coarse
+        .levels
+        .iter()
+        .filter(|(k, _, _)| within(*k))
+        .map(|&(_, p, f)| (p, f))
+        .unzip();
+    let snr = (!peaks.is_empty())
+        .then(|| 20.0 * (median_of(&peaks) / median_of(&floors).max(f64::MIN_POSITIVE)).log10())
+        .filter(|s| s.is_finite());
+    let amplitude = match (input.lift_angle, drop, &analysis) {
+        (Some(lift), Some(dt), Some(a)) => amplitude_from_lift(lift, dt, 2.0 * a.mean_beat)
+            .ok()
+            .map(|x| match input.oscillator {
+                Oscillator::Pendulum => x.amplitude.to_degrees(),
+                Oscillator::Balance => x.first_order.to_degrees(),
+            }),
+        _ => None,
+    };
+    Window {
+        start_s: start,
+        end_s: end,
+        beats: ticks.len(),
+        rate_s_per_day: analysis.as_ref().and_then(|a| a.rate_s_per_day),
+        rate_se_s_per_day: analysis
+            .as_ref()
+            .map(|a| a.rate_se_s_per_day)
+            .filter(|s| s.is_finite()),
+        beat_error_ms: analysis.as_ref().map(|a| a.beat_error_ms),
+        drop_ms: drop.map(|d| d * 1e3),
+        amplitude_deg: amplitude.filter(|a| a.is_finite()),
+        snr_db: snr,
+    }
+}

@@ -708,6 +708,9 @@ fn in_beat(a: &BeatAnalysis) -> [f64; 2] {
     [50.0 + half, 50.0 - half]
 }
 
+/// A signal to noise at which a recording is not too noisy to follow, dB.
+pub const LOUD_DB: f64 = 25.0;
+
 /// Fewer than [`MIN_TICKS`] ticks: too short a recording, or too noisy.
 fn too_few(found: usize, duration: f64, beat: f64, snr_db: f64) -> Refusal {
     let expected = (duration / beat).round();
@@ -716,6 +719,17 @@ fn too_few(found: usize, duration: f64, beat: f64, snr_db: f64) -> Refusal {
             "{} s of sound holds fewer than four beats of {} s; record at least a minute",
             format_significant(duration, 3),
             format_significant(beat, 4)
+        ));
+    }
+    // Loud sounds that do not repeat at the beat found: the beat is not
+    // the clock's (a short clip, a ringing taken for a rhythm), not noise.
+    if snr_db.is_finite() && snr_db >= LOUD_DB {
+        return Refusal::data(format!(
+            "{found} of about {expected} beats of {} s stand out, though the sounds are loud \
+             (signal to noise {} dB): the beat found is not the clock's; give the beat rate \
+             (bph), or record longer (a minute at least)",
+            format_significant(beat, 4),
+            format_significant(snr_db, 2)
         ));
     }
     // Silence has no signal to noise ratio to speak of.

@@ -17,6 +17,12 @@ const PROFILE_BEFORE: f64 = 0.005;
 const SETTLE: f64 = 0.01;
 /// Onsets over which the local beat is fitted.
 const LOCAL_BEATS: usize = 32;
+/// Beats of a side missed in a row (the other side's found) after which
+/// its typical peak sinks.
+const RELEARN_AFTER: usize = 8;
+/// The fraction of its rise over the floor a side's typical peak keeps at
+/// each further miss.
+const RELEARN: f64 = 0.8;
 /// Tick peaks over which the typical peak is the median.
 const TYPICAL_PEAKS: usize = 32;
 
@@ -53,6 +59,7 @@ pub struct OnsetTracker {
     floor: f64,
     floor_updated: usize,
     locked: Option<f64>,
+
     onsets: Vec<(u64, f64)>,
     /// The last tick peaks of each side.
     peaks: [std::collections::VecDeque<f64>; 2],
@@ -61,6 +68,8 @@ pub struct OnsetTracker {
     typical: [f64; 2],
     missed: usize,
     run_of_misses: usize,
+    /// Beats of each side missed in a row.
+    side_misses: [usize; 2],
     k: u64,
     done: bool,
     /// Floors seen at each update, for the reported floor.
@@ -165,11 +174,13 @@ impl OnsetTracker {
             floor: 0.0,
             floor_updated: 0,
             locked: None,
+
             onsets: Vec::new(),
             peaks: Default::default(),
             typical: [0.0; 2],
             missed: 0,
             run_of_misses: 0,
+            side_misses: [0; 2],
             k: 0,
             done: false,
             floors: Vec::new(),
@@ -722,6 +733,7 @@ impl OnsetTracker {
         match best {
             Some(s) => {
                 self.run_of_misses = 0;
+                self.side_misses[side] = 0;
                 self.profile_pending();
                 self.pending = Some((side, s.onset, self.onsets.len(), s.peak));
                 self.onsets.push((self.k, s.onset));
@@ -739,6 +751,16 @@ impl OnsetTracker {
                 if !self.onsets.is_empty() {
                     self.missed += 1;
                     self.run_of_misses += 1;
+                }
+                // A side missed beat after beat while the other is found
+                // may have been given its typical peak by a loud noise
+                // (the phone handled at the start): let it sink towards the
+                // floor, and forget the peaks that set it, so its ticks can
+                // be found again.
+                self.side_misses[side] += 1;
+                if self.side_misses[side] >= RELEARN_AFTER && self.side_misses[1 - side] == 0 {
+                    self.typical[side] = self.floor + RELEARN * (self.typical[side] - self.floor);
+                    self.peaks[side].clear();
                 }
             }
         }

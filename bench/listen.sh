@@ -22,3 +22,16 @@ print("  beats %d, missed %d, rate %.5f s/day (truth 4), beat error %.4f ms (tru
       % (v["beats"], v["missed"], v["rate_s_per_day"], v["beat_error_ms"]))
 PY
 done
+# A watch: an hour at 28,800 beats an hour (eight times the beats), in
+# windows of five minutes.
+wav="$dir/watch-1h.wav"
+"$bin" synth ticks "$wav" --duration 1h --sample-rate 48000 --bph 28800 \
+  --rate -3 --beat-error 0.4 --snr-db 25 --seed 5 >/dev/null
+/usr/bin/time -f "listen watch 1 h --every 5min: %e s wall, %U s user, %M kB peak" \
+  "$bin" listen "$wav" --every 5min --json >"$dir/out.json"
+python3 - "$dir/out.json" <<'PY'
+import json, sys
+v = json.load(open(sys.argv[1]))
+print("  beats %d, missed %d, rate %.4f s/day (truth -3), beat error %.4f ms (truth 0.4), %d windows"
+      % (v["beats"], v["missed"], v["rate_s_per_day"], v["beat_error_ms"], len(v["windows"])))
+PY

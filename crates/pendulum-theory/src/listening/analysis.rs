@@ -447,7 +447,7 @@ pub fn listen<S: SampleSource>(
         (coarse, samples) = track(source, beat)?;
     }
     let duration = samples as f64 / rate;
-    let snr_db = 20.0 * (coarse.peak / coarse.floor.max(f64::MIN_POSITIVE)).log10();
+    let snr_db = snr(coarse.peak, coarse.floor);
     // Pass 3: each tick refined on the samples.
     let mut refiner = Refiner::new(rate, &coarse);
     source
@@ -708,6 +708,17 @@ fn in_beat(a: &BeatAnalysis) -> [f64; 2] {
     [50.0 + half, 50.0 - half]
 }
 
+/// The largest signal to noise said, dB: a floor of digital silence (a
+/// recording quantised to zero between its ticks) has none to speak of,
+/// and 16-bit sound spans 96 dB.
+pub const MAX_SNR_DB: f64 = 120.0;
+
+/// A peak over a floor, dB, at most [`MAX_SNR_DB`] (and -inf for no
+/// peak: silence).
+pub fn snr(peak: f64, floor: f64) -> f64 {
+    (20.0 * (peak / floor.max(f64::MIN_POSITIVE)).log10()).min(MAX_SNR_DB)
+}
+
 /// A signal to noise at which a recording is not too noisy to follow, dB.
 pub const LOUD_DB: f64 = 25.0;
 
@@ -802,4 +813,18 @@ pub fn sound_card_error<S: SampleSource>(
         beats: heard.beats.beats,
         duration_s: heard.duration_s,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A floor of digital silence (quantised to zero between the ticks)
+    /// gives the largest figure said, not 6,000 dB; silence gives none.
+    #[test]
+    fn signal_to_noise_is_bounded() {
+        assert_eq!(snr(0.3, 0.0), MAX_SNR_DB);
+        assert!((snr(1.0, 0.1) - 20.0).abs() < 1e-12);
+        assert_eq!(snr(0.0, 0.0), f64::NEG_INFINITY);
+    }
 }

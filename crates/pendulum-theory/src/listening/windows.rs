@@ -141,7 +141,7 @@ fn window(input: &WindowInput, ticks: &[Tick], start: f64, end: f64) -> Window {
         .map(|&(_, p, f)| (p, f))
         .unzip();
     let snr = (!peaks.is_empty())
-        .then(|| 20.0 * (median_of(&peaks) / median_of(&floors).max(f64::MIN_POSITIVE)).log10())
+        .then(|| super::analysis::snr(median_of(&peaks), median_of(&floors)))
         .filter(|s| s.is_finite());
     let amplitude = match (input.lift_angle, drop, &analysis) {
         (Some(lift), Some(dt), Some(a)) => amplitude_from_lift(lift, dt, 2.0 * a.mean_beat)

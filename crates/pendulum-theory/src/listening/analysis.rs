@@ -561,6 +561,19 @@ pub fn listen<S: SampleSource>(
             .lift_angle
             .map(|_| amplitude.as_ref().map(|x| f(x).to_degrees()))
     };
+    // A beat error of a fifth of the beat or more is no running clock's
+    // (its escapement would not unlock on that side): the ticks were
+    // numbered on a beat not the clock's (a gap misread, a loop).
+    if a.beat_error_ms * 1e-3 >= OUT_OF_BEAT * a.mean_beat {
+        return Err(Refusal::data(format!(
+            "the ticks give a beat error of {} ms, {}% of the beat of {} s, which no running \
+             clock has: the beat was not followed; give the beat rate (bph), or record longer",
+            format_significant(a.beat_error_ms, 3),
+            format_significant(100.0 * a.beat_error_ms * 1e-3 / a.mean_beat, 2),
+            format_significant(a.mean_beat, 4)
+        ))
+        .into());
+    }
     let in_beat_percent = in_beat(&a);
     let (mean_beat, doubled) = (a.mean_beat, a.repaired.doubled);
     let mut beats = Beats::of(a);
@@ -718,6 +731,10 @@ pub const MAX_SNR_DB: f64 = 120.0;
 pub fn snr(peak: f64, floor: f64) -> f64 {
     (20.0 * (peak / floor.max(f64::MIN_POSITIVE)).log10()).min(MAX_SNR_DB)
 }
+
+/// A beat error of this fraction of the beat or more is refused: no
+/// running clock's (the tick and tock intervals 70/30).
+pub const OUT_OF_BEAT: f64 = 0.2;
 
 /// A signal to noise at which a recording is not too noisy to follow, dB.
 pub const LOUD_DB: f64 = 25.0;

@@ -138,6 +138,15 @@ impl Oscillator {
         }
     }
 
+    /// The amplitude of this oscillator from the lift's two readings, rad:
+    /// a pendulum's exact one, a balance's first-order (harmonic) one.
+    pub fn amplitude(self, lifted: &crate::lift::LiftAmplitude) -> f64 {
+        match self {
+            Oscillator::Pendulum => lifted.amplitude,
+            Oscillator::Balance => lifted.first_order,
+        }
+    }
+
     /// `pendulum` or `balance`.
     pub fn name(self) -> &'static str {
         match self {
@@ -529,21 +538,7 @@ pub fn listen<S: SampleSource>(
     for t in &mut ticks {
         t.time *= scale;
     }
-    // The beat the ticks' own numbers give (the tracker followed the clock
-    // beat by beat, so a gap's beats are counted, not guessed from the
-    // intervals: with many ticks lost the median interval is not a beat).
-    let numbered = match (ticks.first(), ticks.last()) {
-        (Some(a), Some(b)) if b.beat > a.beat => (b.time - a.time) / (b.beat - a.beat) as f64,
-        _ => beat,
-    };
-    let mut stream = BeatStream::filling_up_to(MAX_FILLED_BEATS).with_beat(numbered);
-    for t in &ticks {
-        stream
-            .push_numbered(t.beat, t.time)
-            .map_err(|e| Refusal::data(e.to_string()))?;
-    }
-    let a = stream
-        .finish(nominal.map(|p| 0.5 * p))
+    let a = analyse_ticks(&ticks, beat, nominal.map(|p| 0.5 * p))
         .map_err(|e| Refusal::data(e.to_string()))?;
     // The drop: the mean of the two sides' (a clock's pallets may differ).
     let drops = coarse.drops.map(|d| d.map(|d| d * scale));
@@ -633,10 +628,7 @@ pub fn listen<S: SampleSource>(
         lift_angle_deg: input.lift_angle.map(f64::to_degrees),
         oscillator,
         oscillator_from_beat: input.oscillator.is_none(),
-        amplitude_deg: match oscillator {
-            Oscillator::Pendulum => lifted(&|x| x.amplitude),
-            Oscillator::Balance => lifted(&|x| x.first_order),
-        },
+        amplitude_deg: lifted(&|x| oscillator.amplitude(x)),
         amplitude_first_order_deg: lifted(&|x| x.first_order),
         windows,
         window_totals,
@@ -713,6 +705,27 @@ fn sound_between_ticks(envelope: &[f32], rate: f64, coarse: &super::detect::Coar
         .any(|d| (after - d).abs() < 0.003);
     let peak = top - centre;
     !drop && peak >= HALF_BEAT_RISE * rise && peak >= 6.0 * spread
+}
+
+/// The beat analysis of ticks numbered by the tracker: its stream given
+/// the beat the ticks' own numbers give (the tracker followed the clock
+/// beat by beat, so a gap's beats are counted, not guessed from the
+/// intervals: with many ticks lost the median interval is not a beat), or
+/// `fallback` for fewer than two beats; against `nominal` (s).
+pub(crate) fn analyse_ticks(
+    ticks: &[Tick],
+    fallback: f64,
+    nominal: Option<f64>,
+) -> Result<BeatAnalysis, crate::fitting::beats::BeatError> {
+    let numbered = match (ticks.first(), ticks.last()) {
+        (Some(a), Some(b)) if b.beat > a.beat => (b.time - a.time) / (b.beat - a.beat) as f64,
+        _ => fallback,
+    };
+    let mut stream = BeatStream::filling_up_to(MAX_FILLED_BEATS).with_beat(numbered);
+    for t in ticks {
+        stream.push_numbered(t.beat, t.time)?;
+    }
+    stream.finish(nominal)
 }
 
 /// The split of the tick and tock intervals, %.

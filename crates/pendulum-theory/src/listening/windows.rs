@@ -6,7 +6,6 @@
 
 use super::analysis::Oscillator;
 use super::detect::{median_of, Coarse, Tick};
-use crate::fitting::beats::BeatStream;
 use crate::lift::amplitude_from_lift;
 use serde::Serialize;
 
@@ -108,17 +107,9 @@ pub fn windows(input: &WindowInput) -> (Vec<Window>, WindowTotals) {
 }
 
 fn window(input: &WindowInput, ticks: &[Tick], start: f64, end: f64) -> Window {
-    let mut stream = BeatStream::filling_up_to(super::analysis::MAX_FILLED_BEATS);
-    if let (Some(a), Some(b)) = (ticks.first(), ticks.last()) {
-        if b.beat > a.beat {
-            stream = stream.with_beat((b.time - a.time) / (b.beat - a.beat) as f64);
-        }
-    }
-    let analysis = ticks
-        .iter()
-        .try_for_each(|t| stream.push_numbered(t.beat, t.time))
+    // (A window's beat is its ticks'; with one tick, any: it is refused.)
+    let analysis = super::analysis::analyse_ticks(ticks, input.every, input.nominal_beat)
         .ok()
-        .and_then(|()| stream.finish(input.nominal_beat).ok())
         .filter(|_| ticks.len() >= super::analysis::MIN_TICKS);
     let beats = ticks
         .first()
@@ -146,10 +137,7 @@ fn window(input: &WindowInput, ticks: &[Tick], start: f64, end: f64) -> Window {
     let amplitude = match (input.lift_angle, drop, &analysis) {
         (Some(lift), Some(dt), Some(a)) => amplitude_from_lift(lift, dt, 2.0 * a.mean_beat)
             .ok()
-            .map(|x| match input.oscillator {
-                Oscillator::Pendulum => x.amplitude.to_degrees(),
-                Oscillator::Balance => x.first_order.to_degrees(),
-            }),
+            .map(|x| input.oscillator.amplitude(&x).to_degrees()),
         _ => None,
     };
     Window {

@@ -679,6 +679,36 @@ fn every_follows_a_rate_that_changes() {
     let totals = &v["window_totals"];
     assert!((f(totals, "rate_mean_s_per_day") - 6.0).abs() < 0.2, "{v}");
     assert!(f(totals, "rate_mean_se_s_per_day") > 1.0, "{v}");
+    // The windows scatter far beyond their own standard errors: said.
+    assert!(f(totals, "rate_scatter_over_se") > 3.0, "{v}");
+    let codes = v["warning_codes"].as_array().unwrap();
+    assert!(codes.iter().any(|c| c == "rate_wanders"), "{v}");
+    // A steady clock's windows scatter as their errors allow: not said.
+    let steady = dir.path().join("steady.wav");
+    pendulum()
+        .args(["synth", "ticks", steady.to_str().unwrap(), "--bph", "3600"])
+        .args([
+            "--rate",
+            "3",
+            "--duration",
+            "10min",
+            "--sample-rate",
+            "8000",
+        ])
+        .args(["--snr-db", "25", "--seed", "8"])
+        .assert()
+        .success();
+    let s = json(&[
+        "listen",
+        steady.to_str().unwrap(),
+        "--bph",
+        "3600",
+        "--every",
+        "1min",
+    ]);
+    assert!(f(&s["window_totals"], "rate_scatter_over_se") < 3.0, "{s}");
+    let codes = s["warning_codes"].as_array().unwrap();
+    assert!(!codes.iter().any(|c| c == "rate_wanders"), "{s}");
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
     assert!(lines

@@ -78,6 +78,13 @@ pub enum BeatWarning {
         /// The standard error, s/day.
         se: f64,
     },
+    /// The rates of a recording's windows scatter far more than their
+    /// standard errors allow: the rate changed over the recording (a clock
+    /// warming, its drive running down), and the mean describes no part.
+    RateWanders {
+        /// Their scatter over what their standard errors allow.
+        ratio: f64,
+    },
     /// A recording's tick and tock sound different: each is timed from its
     /// own onset, and the beat error takes in where each onset falls on
     /// its sound (a few tenths of a ms).
@@ -106,6 +113,7 @@ impl BeatWarning {
             BeatWarning::EdgesUnpaired { .. } => "edges_unpaired",
             BeatWarning::RateUncertain { .. } => "rate_uncertain",
             BeatWarning::SoundsDiffer => "sounds_differ",
+            BeatWarning::RateWanders { .. } => "rate_wanders",
             BeatWarning::BeatErrorUncertain { .. } => "beat_error_uncertain",
         }
     }
@@ -141,6 +149,13 @@ impl std::fmt::Display for BeatWarning {
                  much scatter in their times; record longer, nearer the clock, or in a quieter \
                  room",
                 format_significant(*se, 2)
+            ),
+            BeatWarning::RateWanders { ratio } => write!(
+                f,
+                "the windows' rates scatter {} times what their standard errors allow: the rate \
+                 changed over the recording (see the windows), and the whole recording's rate is \
+                 only its mean",
+                format_significant(*ratio, 2)
             ),
             BeatWarning::SoundsDiffer => write!(
                 f,

@@ -607,6 +607,11 @@ pub fn listen<S: SampleSource>(
                 oscillator,
                 scale,
             });
+            if let Some(ratio) = totals.rate_scatter_over_se.filter(|&r| r > RATE_WANDERS) {
+                let w = BeatWarning::RateWanders { ratio };
+                beats.warning_codes.push(w.code());
+                beats.warnings.push(w);
+            }
             (w, Some(totals))
         }
         None => (Vec::new(), None),
@@ -748,6 +753,10 @@ pub fn snr(peak: f64, floor: f64) -> f64 {
 /// A beat error of this fraction of the beat or more is refused: no
 /// running clock's (the tick and tock intervals 70/30).
 pub const OUT_OF_BEAT: f64 = 0.2;
+
+/// The windows' rates scattered this many times what their standard
+/// errors allow say the rate wanders (`rate_wanders`).
+pub const RATE_WANDERS: f64 = 3.0;
 
 /// A signal to noise at which a recording is not too noisy to follow, dB.
 pub const LOUD_DB: f64 = 25.0;

@@ -51,6 +51,11 @@ pub struct WindowTotals {
     /// over the square root of their number): it takes in a rate that
     /// wanders, which the whole recording's regression does not.
     pub rate_mean_se_s_per_day: Option<f64>,
+    /// The windows' rates' scatter about their mean over what their own
+    /// standard errors allow (the root of chi-square over its degrees of
+    /// freedom): about 1 for a steady clock, far above for a rate that
+    /// wanders (null for fewer than three windows).
+    pub rate_scatter_over_se: Option<f64>,
 }
 
 /// What the windows need of the whole analysis.
@@ -97,11 +102,20 @@ pub fn windows(input: &WindowInput) -> (Vec<Window>, WindowTotals) {
     let se = mean
         .filter(|_| n >= 2.0)
         .map(|m| (rates.iter().map(|r| (r - m).powi(2)).sum::<f64>() / (n - 1.0) / n).sqrt());
+    let weighed: Vec<(f64, f64)> = out
+        .iter()
+        .filter_map(|w| Some((w.rate_s_per_day?, w.rate_se_s_per_day.filter(|&s| s > 0.0)?)))
+        .collect();
+    let scatter = mean.filter(|_| weighed.len() >= 3).map(|m| {
+        let chi2: f64 = weighed.iter().map(|(r, s)| ((r - m) / s).powi(2)).sum();
+        (chi2 / (weighed.len() - 1) as f64).sqrt()
+    });
     let totals = WindowTotals {
         every_s: input.every,
         windows_with_rate: rates.len(),
         rate_mean_s_per_day: mean,
         rate_mean_se_s_per_day: se,
+        rate_scatter_over_se: scatter,
     };
     (out, totals)
 }

@@ -35,3 +35,21 @@ v = json.load(open(sys.argv[1]))
 print("  beats %d, missed %d, rate %.4f s/day (truth -3), beat error %.4f ms (truth 0.4), %d windows"
       % (v["beats"], v["missed"], v["rate_s_per_day"], v["beat_error_ms"], len(v["windows"])))
 PY
+# The same hour of a clock piped to `listen -` (live: bounded memory),
+# beside the file.
+wav="$dir/clock-live.wav"
+"$bin" synth ticks "$wav" --duration 1h --sample-rate 48000 \
+  --bph 3600 --rate 4 --beat-error 0.8 --snr-db 20 --seed 3 >/dev/null
+/usr/bin/time -f "listen 1 h file --every 10min: %e s wall, %U s user, %M kB peak" \
+  "$bin" listen "$wav" --every 10min --json >"$dir/file.json"
+/usr/bin/time -f "listen - (1 h piped) --every 10min: %e s wall, %U s user, %M kB peak" \
+  sh -c "cat '$wav' | '$bin' listen - --every 10min --json >'$dir/live.json'"
+python3 - "$dir/file.json" "$dir/live.json" <<'PY'
+import json, sys
+f = json.load(open(sys.argv[1]))
+lines = open(sys.argv[2]).read().splitlines()
+v = json.loads(lines[-1])
+print("  file: beats %d, rate %.6f s/day, beat error %.5f ms" % (f["beats"], f["rate_s_per_day"], f["beat_error_ms"]))
+print("  pipe: beats %d, rate %.6f s/day, beat error %.5f ms, %d windows printed as they completed"
+      % (v["beats"], v["rate_s_per_day"], v["beat_error_ms"], len(lines) - 1))
+PY

@@ -143,9 +143,20 @@ The folder is written whole or not at all; the simulated run-down is at most 10^
 /// `pendulum listen`.
 #[derive(Debug, Args)]
 pub struct ListenArgs {
-    /// The recording (WAV, FLAC, Ogg, MP3, M4A).
+    /// The recording (WAV, FLAC, Ogg, MP3, M4A), or - to listen live to
+    /// standard input (a WAV stream, or raw samples with --raw).
     #[arg(value_name = "FILE")]
     pub file: InputPath,
+    /// Standard input is raw samples in this layout: s16le, s24le, s32le
+    /// or f32le (with --sample-rate, and --channels if not one).
+    #[arg(long, value_name = "FORMAT", requires = "sample_rate")]
+    pub raw: Option<String>,
+    /// The raw samples' rate, Hz.
+    #[arg(long, value_name = "HZ", allow_hyphen_values = true, requires = "raw")]
+    pub sample_rate: Option<u32>,
+    /// The raw samples' channels, interleaved [default: 1].
+    #[arg(long, value_name = "N", allow_hyphen_values = true, requires = "raw")]
+    pub channels: Option<usize>,
     /// The nominal beat rate, beats per hour [default: found from the recording].
     #[arg(
         long,
@@ -157,7 +168,8 @@ pub struct ListenArgs {
     /// The nominal period (two beats).
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub period: Option<Time>,
-    /// The channel to listen to, from 1 [default: the louder].
+    /// The channel to listen to, from 1 [default: the louder; the first
+    /// on standard input].
     #[arg(long, allow_hyphen_values = true, value_name = "N")]
     pub channel: Option<usize>,
     /// The sound card's clock error, ppm (positive: its clock runs fast).

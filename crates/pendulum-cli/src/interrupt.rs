@@ -13,12 +13,19 @@ use std::sync::atomic::{AtomicBool, Ordering};
 pub const EXIT_INTERRUPTED: u8 = 130;
 
 static REQUESTED: AtomicBool = AtomicBool::new(false);
+/// Whether the running command ends itself on the first Ctrl-C, with its
+/// results (live listening).
+static HANDLED: AtomicBool = AtomicBool::new(false);
 
 /// Installs the handler (once, at start).
 pub fn install() {
     // Installing fails only if a handler exists already, which is harmless.
     let _ = ctrlc::set_handler(|| {
-        if !REQUESTED.swap(true, Ordering::SeqCst) {
+        let first = !REQUESTED.swap(true, Ordering::SeqCst);
+        if first && HANDLED.load(Ordering::SeqCst) {
+            return;
+        }
+        if first {
             // The command's own checks end it well within this; one with
             // none (a long fit) is ended here.
             std::thread::sleep(std::time::Duration::from_secs(2));
@@ -26,6 +33,17 @@ pub fn install() {
         crate::file::abandon_all();
         std::process::exit(i32::from(EXIT_INTERRUPTED));
     });
+}
+
+/// Says that the running command stops on Ctrl-C by itself and prints
+/// its results (a second Ctrl-C still ends it at once).
+pub fn stop_is_handled() {
+    HANDLED.store(true, Ordering::SeqCst);
+}
+
+/// Whether the running command said it stops on Ctrl-C by itself.
+pub fn handled() -> bool {
+    HANDLED.load(Ordering::Relaxed)
 }
 
 /// Whether Ctrl-C was pressed.

@@ -16,6 +16,7 @@ mod interrupt;
 mod output;
 mod paths;
 mod plot;
+mod stream;
 mod tracker;
 mod units;
 mod work;
@@ -44,7 +45,7 @@ fn main() -> ExitCode {
     let result = commands::run(&cli.command, &declared).and_then(|out| {
         // A command that does not stop on Ctrl-C by itself is stopped here:
         // nothing of it is printed.
-        if interrupt::requested() && out.status == 0 {
+        if interrupt::requested() && out.status == 0 && !interrupt::handled() {
             return Err(interrupt::error());
         }
         output::check_finite_text(&out.stdout)?;

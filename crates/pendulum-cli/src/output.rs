@@ -116,15 +116,31 @@ impl Summary {
 
 /// One JSON document, pretty-printed, with a final newline.
 pub fn json<T: Serialize + ?Sized>(value: &T) -> Result<String, CliError> {
+    check_json(value)?;
+    let mut text = serde_json::to_string_pretty(value)
+        .map_err(|e| CliError::other(format!("could not encode JSON: {e}")))?;
+    text.push('\n');
+    Ok(text)
+}
+
+/// Refuses a value holding a number that is not finite (JSON has none).
+fn check_json<T: Serialize + ?Sized>(value: &T) -> Result<(), CliError> {
     let tree = serde_value::to_value(value)
         .map_err(|e| CliError::other(format!("could not encode JSON: {e}")))?;
-    if let Some(key) = non_finite(&tree, "") {
-        return Err(CliError::other(format!(
+    match non_finite(&tree, "") {
+        Some(key) => Err(CliError::other(format!(
             "the result {key} is not a finite number for these inputs (an overflow); \
              please report it with the command line"
-        )));
+        ))),
+        None => Ok(()),
     }
-    let mut text = serde_json::to_string_pretty(value)
+}
+
+/// One JSON object on one line (JSON Lines, for output that comes a
+/// record at a time), its numbers checked finite as [`json`]'s.
+pub fn json_line<T: Serialize + ?Sized>(value: &T) -> Result<String, CliError> {
+    check_json(value)?;
+    let mut text = serde_json::to_string(value)
         .map_err(|e| CliError::other(format!("could not encode JSON: {e}")))?;
     text.push('\n');
     Ok(text)

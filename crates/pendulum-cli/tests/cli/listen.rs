@@ -440,6 +440,41 @@ fn noise_missing_ticks_and_a_watch_out_of_beat() {
         assert!((f(&v, "beat_error_ms") - 5.0).abs() < 0.05, "{v}");
         assert!(f(&v, "rate_s_per_day").abs() < 0.1, "{v}");
     }
+    // Far out of beat at 8 kHz: the beat found on one of the two peaks a
+    // beat error splits (17,309 bph for 18,000), the typical tick taken at
+    // the ticks' phase only (the tocks, 8 ms off, read as noise: every
+    // other beat refused), a half beat searched onto a split peak (36,000
+    // bph read as 34,450, three ticks kept): read now, beat and beat error.
+    for (bph, error, rate) in [
+        ("18000", "8", "-7"),
+        ("36000", "5", "3"),
+        ("1800", "8", "2"),
+    ] {
+        let out = dir.path().join(format!("split{bph}.wav"));
+        pendulum()
+            .args(["synth", "ticks", out.to_str().unwrap(), "--bph", bph])
+            .args(["--beat-error", error, "--rate", rate, "--duration", "2min"])
+            .args(["--sample-rate", "8000", "--snr-db", "25"])
+            .assert()
+            .success();
+        for nominal in [&["--bph", bph][..], &[]] {
+            let mut args = vec!["listen", out.to_str().unwrap()];
+            args.extend_from_slice(nominal);
+            let v = json(&args);
+            let (b, e, r): (f64, f64, f64) = (
+                bph.parse().unwrap(),
+                error.parse().unwrap(),
+                rate.parse().unwrap(),
+            );
+            assert!(
+                (f(&v, "beats_per_hour") / b - 1.0 - r / 86_400.0).abs() < 1e-4,
+                "{v}"
+            );
+            assert!((f(&v, "beat_error_ms") - e).abs() < 0.05, "{bph}: {v}");
+            assert!((f(&v, "rate_s_per_day") - r).abs() < 0.1, "{bph}: {v}");
+            assert_eq!(v["missed"], 0, "{bph}: {v}");
+        }
+    }
     // Watches far out of beat, whose tick-to-tock lag the autocorrelation
     // splits: found at twice the beat (every other tick followed, 10,800,
     // 18,000 and 36,000 bph, beat error 0) until the sound between the
@@ -789,5 +824,51 @@ fn a_reference_measures_the_sound_card() {
     refuses(
         &["listen", c, "--reference", watch.to_str().unwrap()],
         "--reference",
+    );
+}
+
+/// A recording that is a loop (two seconds of a clock played over and
+/// over, as a looped sound effect is) keeps time to a fraction of a
+/// nanosecond, which no clock does: read, and warned `repeats_exactly`.
+/// The clock itself, its jitter a few µs from the noise, is not warned.
+#[test]
+fn a_loop_is_warned() {
+    let dir = tempfile::tempdir().unwrap();
+    let wav = dir.path().join("clock.wav");
+    pendulum()
+        .args(["synth", "ticks", wav.to_str().unwrap(), "--bph", "14400"])
+        .args([
+            "--duration",
+            "20s",
+            "--sample-rate",
+            "8000",
+            "--snr-db",
+            "30",
+        ])
+        .assert()
+        .success();
+    let clock = json(&["listen", wav.to_str().unwrap()]);
+    assert!(
+        !clock["warning_codes"]
+            .to_string()
+            .contains("repeats_exactly"),
+        "{clock}"
+    );
+    // Two seconds (eight beats) of its samples, from a second in, over
+    // and over: a 44-byte header, 16-bit mono.
+    let bytes = std::fs::read(&wav).unwrap();
+    let (header, data) = bytes.split_at(44);
+    let piece = &data[16_000..48_000];
+    let looped: Vec<u8> = piece.repeat(10);
+    let mut out = header.to_vec();
+    out[4..8].copy_from_slice(&(36 + looped.len() as u32).to_le_bytes());
+    out[40..44].copy_from_slice(&(looped.len() as u32).to_le_bytes());
+    out.extend_from_slice(&looped);
+    let loop_wav = dir.path().join("loop.wav");
+    std::fs::write(&loop_wav, out).unwrap();
+    let v = json(&["listen", loop_wav.to_str().unwrap()]);
+    assert!(
+        v["warning_codes"].to_string().contains("repeats_exactly"),
+        "{v}"
     );
 }

@@ -15,6 +15,7 @@ mod gyroscope;
 mod hardening;
 mod layouts;
 mod listen;
+mod listen_live;
 mod period;
 mod plot;
 mod simulate;

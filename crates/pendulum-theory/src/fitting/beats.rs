@@ -844,7 +844,7 @@ impl BeatStream {
 }
 
 /// The nearest standard beat (s) within 2% of `beat`, if any.
-fn nearest_standard(beat: f64) -> Option<f64> {
+pub(crate) fn nearest_standard(beat: f64) -> Option<f64> {
     standard_rate_near(3600.0 / beat).map(|r| 3600.0 / r.beats_per_hour)
 }
 

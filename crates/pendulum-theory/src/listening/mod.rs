@@ -7,6 +7,7 @@
 //!   and each tick's onset to a fraction of a sample (coarse onsets on the
 //!   envelope, then cross-correlation with the median tick and tock).
 //! * [`windows`]: the recording over time, in windows of a given length.
+//! * [`live`]: listening as the sound comes, with bounded memory.
 //! * [`synth`]: ticks as a few decaying resonances, the drop sound after
 //!   them, room echoes, mains hum, noise and missing ticks, with the true
 //!   tick times.
@@ -74,5 +75,6 @@ pub fn check_nominal_period(period: f64, as_beat_rate: bool) -> Result<(), Input
 pub mod analysis;
 pub mod detect;
 pub mod filter;
+pub mod live;
 pub mod synth;
 pub mod windows;

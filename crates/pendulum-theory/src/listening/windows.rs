@@ -5,7 +5,7 @@
 //! weather; and the windows' rates summed up with their standard error.
 
 use super::analysis::Oscillator;
-use super::detect::{median_of, Coarse, Tick};
+use super::detect::{median_of, Tick};
 use crate::lift::amplitude_from_lift;
 use serde::Serialize;
 
@@ -62,8 +62,10 @@ pub struct WindowTotals {
 pub struct WindowInput<'a> {
     /// The ticks kept, rescaled.
     pub ticks: &'a [Tick],
-    /// The tracker's onsets (levels and spacings by beat number).
-    pub coarse: &'a Coarse,
+    /// Each beat's envelope peak and the floor then (beat, peak, floor).
+    pub levels: &'a [(u64, f64, f64)],
+    /// Each beat's time from the unlocking to the drop (beat, s).
+    pub spacings: &'a [(u64, f64)],
     /// The windows' length, s.
     pub every: f64,
     /// The recording's length, s.
@@ -120,6 +122,29 @@ pub fn windows(input: &WindowInput) -> (Vec<Window>, WindowTotals) {
     (out, totals)
 }
 
+/// Window `index` (from `index` to `index + 1` times `every`, s), given
+/// ticks that reach at least [`CLEAN_REACH`] beats beyond it either way
+/// (or the recording's ends), not yet cleaned nor rescaled: cleaned
+/// ([`super::detect::clean`]) as the whole recording's ticks are (each
+/// tick is checked against the ticks of its side within 20 beats), so
+/// that a window analysed while the recording goes on is the one
+/// analysed at its end.
+pub(crate) fn window_of(input: &WindowInput, ticks: Vec<Tick>, index: usize) -> Window {
+    let (start, end) = (
+        index as f64 * input.every,
+        ((index + 1) as f64 * input.every).min(input.duration),
+    );
+    let (mut ticks, _, _) = super::detect::clean(ticks);
+    for t in &mut ticks {
+        t.time *= input.scale;
+    }
+    ticks.retain(|t| t.time >= start && t.time < end);
+    window(input, &ticks, start, end)
+}
+
+/// Beats either way of a window whose ticks its clean-up sees.
+pub const CLEAN_REACH: u64 = 24;
+
 fn window(input: &WindowInput, ticks: &[Tick], start: f64, end: f64) -> Window {
     // (A window's beat is its ticks'; with one tick, any: it is refused.)
     let analysis = super::analysis::analyse_ticks(ticks, input.every, input.nominal_beat)
@@ -131,7 +156,6 @@ fn window(input: &WindowInput, ticks: &[Tick], start: f64, end: f64) -> Window {
         .map(|(a, b)| a.beat..=b.beat);
     let within = |k: u64| beats.as_ref().is_some_and(|r| r.contains(&k));
     let spacings: Vec<f64> = input
-        .coarse
         .spacings
         .iter()
         .filter(|(k, _)| within(*k))
@@ -139,7 +163,6 @@ fn window(input: &WindowInput, ticks: &[Tick], start: f64, end: f64) -> Window {
         .collect();
     let drop = (!spacings.is_empty()).then(|| median_of(&spacings));
     let (peaks, floors): (Vec<f64>, Vec<f64>) = input
-        .coarse
         .levels
         .iter()
         .filter(|(k, _, _)| within(*k))

@@ -4,6 +4,7 @@
 //! decoded file; this reads the arguments, writes the ticks and renders.
 
 mod figure;
+mod live;
 mod text;
 
 use super::common;
@@ -65,7 +66,6 @@ fn reference(path: &std::path::Path) -> Result<ReferenceJson, CliError> {
 }
 
 pub fn run(args: &ListenArgs) -> Result<String, CliError> {
-    let file = args.file.display().to_string();
     let reference = args.reference.as_deref().map(reference).transpose()?;
     let ppm = match &reference {
         Some(r) => Some(r.calibration.sample_rate_error_ppm),
@@ -88,6 +88,17 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
+    if crate::file::is_stdout(&args.file) {
+        let heard = live::listen(args, &input)?;
+        return render(args, reference, plot.as_ref(), heard);
+    }
+    if args.raw.is_some() {
+        return Err(CliError::flag(
+            "--raw",
+            "is for samples on standard input: give - as the file",
+        ));
+    }
+    let file = args.file.display().to_string();
     let channel = match args.channel {
         Some(0) => return Err(CliError::flag("--channel", "channels count from 1")),
         Some(c) => c - 1,
@@ -101,12 +112,48 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     };
     let result = listen(&mut source, &input).map_err(|f| match f {
         ListenFailure::Source(e) => e,
-        ListenFailure::Refused(r) => CliError::refused(&r, &[], &|_, reason| {
-            CliError::other(format!("{file}: {reason}"))
-        }),
+        ListenFailure::Refused(r) => refused(&file, &r),
     })?;
-    let plot_file = match &plot {
-        Some(target) => Some(figure::draw(target, &result)?),
+    let heard = Heard {
+        file,
+        channel,
+        channels: info.channels,
+        result,
+        printed: None,
+    };
+    render(args, reference, plot.as_ref(), heard)
+}
+
+/// A refusal of the recording `file`, as an error.
+fn refused(file: &str, r: &pendulum_theory::analysis::Refusal) -> CliError {
+    CliError::refused(r, &[], &|_, reason| {
+        CliError::other(format!("{file}: {reason}"))
+    })
+}
+
+/// What was listened to, and how.
+struct Heard {
+    /// The file's name (`-` for standard input).
+    file: String,
+    /// Its channel, from 0, of `channels`.
+    channel: usize,
+    channels: usize,
+    /// The library's result.
+    result: Listening,
+    /// Listening live: the windows' rows already printed.
+    printed: Option<usize>,
+}
+
+/// The files asked for written, and the result rendered.
+fn render(
+    args: &ListenArgs,
+    reference: Option<ReferenceJson>,
+    plot: Option<&Target>,
+    heard: Heard,
+) -> Result<String, CliError> {
+    let result = &heard.result;
+    let plot_file = match plot {
+        Some(target) => Some(figure::draw(target, result)?),
         None => None,
     };
     let ticks_file = match &args.ticks {
@@ -147,16 +194,18 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         None => None,
     };
     let json = ListenJson {
-        file,
-        channel: channel + 1,
+        file: heard.file,
+        channel: heard.channel + 1,
         reference,
-        listening: &result,
+        listening: result,
         ticks_file,
         windows_file,
         plot_file,
     };
-    if args.json {
-        return output::json(&json);
+    match (args.json, heard.printed) {
+        // (Live, the windows came a line each: the whole result is a line.)
+        (true, Some(_)) => output::json_line(&json),
+        (true, None) => output::json(&json),
+        (false, printed) => Ok(text::render(&json, heard.channels, printed)),
     }
-    Ok(text::render(&json, info.channels))
 }

@@ -5,10 +5,12 @@ use super::ListenJson;
 use crate::output::{num, table, Summary};
 use pendulum_theory::listening::analysis::Oscillator;
 use pendulum_theory::listening::detect::Timing;
-use pendulum_theory::listening::windows::WindowTotals;
+use pendulum_theory::listening::windows::{Window, WindowTotals};
 
-/// The summary of `r`, a recording of `channels` channels.
-pub(super) fn render(r: &ListenJson, channels: usize) -> String {
+/// The summary of `r`, a recording of `channels` channels; listening
+/// live, `printed` windows' rows were printed as they completed
+/// ([`live_row`]): the table goes on with the rest, before the summary.
+pub(super) fn render(r: &ListenJson, channels: usize, printed: Option<usize>) -> String {
     let mut s = Summary::default();
     s.row(
         "Recording",
@@ -153,57 +155,96 @@ pub(super) fn render(r: &ListenJson, channels: usize) -> String {
     if let Some(f) = &r.windows_file {
         s.row("Windows file", f.clone());
     }
-    let mut out = s.render();
+    let mut out = String::new();
+    if let (Some(totals), Some(printed)) = (&r.listening.window_totals, printed) {
+        if printed == 0 {
+            out.push_str(&live_heading(totals.every_s));
+        }
+        for w in r.listening.windows.iter().skip(printed) {
+            out.push_str(&live_row(w));
+        }
+        out.push_str(&mean_line(totals));
+        out.push('\n');
+    }
+    out.push_str(&s.render());
     for w in &r.listening.beats.warnings {
         out.push_str(&format!("WARNING: {w}\n"));
     }
-    if let Some(totals) = &r.listening.window_totals {
+    if let (Some(totals), None) = (&r.listening.window_totals, printed) {
         out.push_str(&windows(r, totals));
     }
     out
 }
 
-/// The windows of `--every` as a table, and their rates' mean.
-fn windows(r: &ListenJson, totals: &WindowTotals) -> String {
+/// The columns of the windows' table.
+const WINDOW_COLUMNS: [&str; 7] = [
+    "start s",
+    "beats",
+    "rate s/day",
+    "± s/day",
+    "beat error ms",
+    "amplitude °",
+    "SNR dB",
+];
+
+/// A window's cells in the table.
+fn window_cells(w: &Window) -> Vec<String> {
     let cell = |x: Option<f64>, digits: usize| x.map_or("-".to_string(), |v| num(v, digits));
-    let rows: Vec<Vec<String>> = r
-        .listening
-        .windows
+    vec![
+        num(w.start_s, 6),
+        w.beats.to_string(),
+        cell(w.rate_s_per_day, 4),
+        cell(w.rate_se_s_per_day, 2),
+        cell(w.beat_error_ms, 3),
+        cell(w.amplitude_deg, 4),
+        cell(w.snr_db, 3),
+    ]
+}
+
+/// Cells right-aligned in fixed columns (the table printed row by row,
+/// as the windows complete, cannot size its columns on them all).
+fn fixed(cells: &[String]) -> String {
+    let padded: Vec<String> = cells
         .iter()
-        .map(|w| {
-            vec![
-                num(w.start_s, 6),
-                w.beats.to_string(),
-                cell(w.rate_s_per_day, 4),
-                cell(w.rate_se_s_per_day, 2),
-                cell(w.beat_error_ms, 3),
-                cell(w.amplitude_deg, 4),
-                cell(w.snr_db, 3),
-            ]
+        .zip(WINDOW_COLUMNS)
+        .map(|(c, h)| {
+            let w = h.chars().count().max(8);
+            format!("{}{c}", " ".repeat(w.saturating_sub(c.chars().count())))
         })
         .collect();
-    let mut out = format!("\nEvery {} s\n", num(totals.every_s, 6));
-    out.push_str(&table(
-        &[
-            "start s",
-            "beats",
-            "rate s/day",
-            "± s/day",
-            "beat error ms",
-            "amplitude °",
-            "SNR dB",
-        ],
-        &rows,
-    ));
+    padded.join("  ").trim_end().to_string() + "\n"
+}
+
+/// The heading of the windows printed live.
+pub(super) fn live_heading(every_s: f64) -> String {
+    let header: Vec<String> = WINDOW_COLUMNS.iter().map(|h| h.to_string()).collect();
+    format!("Every {} s\n{}", num(every_s, 6), fixed(&header))
+}
+
+/// A window's row, printed as it completes.
+pub(super) fn live_row(w: &Window) -> String {
+    fixed(&window_cells(w))
+}
+
+/// The windows' rates' mean.
+fn mean_line(totals: &WindowTotals) -> String {
     match (totals.rate_mean_s_per_day, totals.rate_mean_se_s_per_day) {
-        (Some(m), Some(se)) => out.push_str(&format!(
+        (Some(m), Some(se)) => format!(
             "Mean of {} windows' rates: {} ± {} s/day (the standard error from their scatter)\n",
             totals.windows_with_rate,
             num(m, 4),
             num(se, 2)
-        )),
-        (Some(m), None) => out.push_str(&format!("One window's rate: {} s/day\n", num(m, 4))),
-        _ => out.push_str("No window holds enough ticks for a rate\n"),
+        ),
+        (Some(m), None) => format!("One window's rate: {} s/day\n", num(m, 4)),
+        _ => "No window holds enough ticks for a rate\n".to_string(),
     }
+}
+
+/// The windows of `--every` as a table, and their rates' mean.
+fn windows(r: &ListenJson, totals: &WindowTotals) -> String {
+    let rows: Vec<Vec<String>> = r.listening.windows.iter().map(window_cells).collect();
+    let mut out = format!("\nEvery {} s\n", num(totals.every_s, 6));
+    out.push_str(&table(&WINDOW_COLUMNS, &rows));
+    out.push_str(&mean_line(totals));
     out
 }

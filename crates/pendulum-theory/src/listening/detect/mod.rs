@@ -40,7 +40,7 @@ pub mod period;
 pub mod refine;
 
 pub use envelope::{envelope_rate, Envelope, ENVELOPE_RATE};
-pub use onsets::{second_sound, OnsetTracker, Timing};
+pub use onsets::{second_sound, EventRule, OnsetTracker, Timing};
 pub use outliers::clean;
 pub use period::beat_period;
 pub use refine::{one_sound, MedianSound, Refiner, Tick};
@@ -67,6 +67,9 @@ pub struct Coarse {
     /// Each beat's time from the unlocking to the drop (timed on the
     /// unlocking, both sounds heard): (beat number, s).
     pub spacings: Vec<(u64, f64)>,
+    /// The rule each beat was settled on one event by (`None`: one sound
+    /// a beat), for a live tracker to follow ([`OnsetTracker::following`]).
+    pub rule: Option<EventRule>,
 }
 
 pub(crate) use crate::fitting::median;

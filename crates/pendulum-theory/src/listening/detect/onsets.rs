@@ -92,7 +92,56 @@ pub struct OnsetTracker {
     /// Each beat's time from the unlocking to the drop, where both were
     /// heard at the clock's spacing: (beat, s).
     spacings: Vec<(u64, f64)>,
+    /// Listening live: the rule of one event a beat, decided beforehand
+    /// (on the first seconds), applied beat by beat ([`Self::following`]);
+    /// `None` when it is decided on all the beats at the end.
+    fixed: Option<Option<EventRule>>,
+    /// Live: onsets put through the rule so far.
+    applied: usize,
+    /// Live: the onsets the rule kept, not yet through the line filters
+    /// but for their first `emitted`.
+    timed: Vec<(u64, f64)>,
+    emitted: usize,
+    /// Live: the onsets settled, and how many of them were handed out.
+    settled: Vec<(u64, f64)>,
+    handed: usize,
+    /// Each side's times from the unlocking to the drop, s.
+    side_delays: [Vec<f64>; 2],
 }
+
+/// The rule of one event a beat (see [`OnsetTracker::finish`]): the two
+/// sounds' spacing most beats share, and whether each side was followed
+/// at its unlocking in all but a few beats.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EventRule {
+    /// From the unlocking to the drop, s, on each side (a clock's two
+    /// pallets may drop a little differently).
+    pub spacing: [f64; 2],
+    /// Spacings within this of `spacing` are it, s.
+    pub tolerance: [f64; 2],
+    /// Each side followed at its unlocking beat after beat.
+    pub steady: [bool; 2],
+}
+
+impl EventRule {
+    /// A neighbouring sound at the rule's spacing for `side`.
+    fn matches(&self, side: usize, x: Option<(f64, f64, f64)>) -> Option<(f64, f64, f64)> {
+        x.filter(|(delay, _, _)| (delay - self.spacing[side]).abs() <= self.tolerance[side])
+    }
+
+    /// The two sides' spacing, s.
+    pub fn mean_spacing(&self) -> f64 {
+        0.5 * (self.spacing[0] + self.spacing[1])
+    }
+}
+
+/// Live: onsets settled a batch at a time, once this many more have come
+/// ([`LIVE_CONTEXT`] on either side of a batch for the line filters, whose
+/// lines reach [`LINE_REACH`] beats of a side either way, one after the
+/// other).
+const LIVE_BATCH: usize = 16;
+/// Live: onsets either side of a batch the line filters see.
+const LIVE_CONTEXT: usize = 4 * LINE_REACH + 4;
 
 /// The sounds of a beat around the one followed: the earliest sound before
 /// it and the loudest after it (within [`PAIR_REACH`] of a beat, 0.25 s at
@@ -192,6 +241,145 @@ impl OnsetTracker {
             neighbours: Vec::new(),
             levels: Vec::new(),
             spacings: Vec::new(),
+            fixed: None,
+            applied: 0,
+            timed: Vec::new(),
+            emitted: 0,
+            settled: Vec::new(),
+            handed: 0,
+            side_delays: Default::default(),
+        }
+    }
+
+    /// A tracker for listening live: as [`Self::new`], but each beat is
+    /// settled on one event by `rule` (decided on the first seconds of the
+    /// recording: [`Coarse::rule`]; `None`: one sound a beat) as soon as
+    /// the envelope around it has come, and handed out by
+    /// [`Self::take_onsets`], so that the ticks can be refined while the
+    /// recording goes on.
+    pub fn following(rate: f64, beat: f64, rule: Option<EventRule>) -> Self {
+        Self {
+            fixed: Some(rule),
+            ..Self::new(rate, beat)
+        }
+    }
+
+    /// Live ([`Self::following`]): the onsets settled since the last call,
+    /// in order of beat.
+    pub fn take_onsets(&mut self) -> Vec<(u64, f64)> {
+        self.settle_ready(false);
+        let new = self.settled[self.handed..].to_vec();
+        self.handed = self.settled.len();
+        new
+    }
+
+    /// Live: how many onsets were handed out.
+    pub fn handed(&self) -> usize {
+        self.handed
+    }
+
+    /// The earliest time a beat not yet handed out can have, s: the last
+    /// handed out (beats come in order).
+    pub fn horizon(&self) -> f64 {
+        self.settled[..self.handed].last().map_or(0.0, |o| o.1)
+    }
+
+    /// The tick levels so far: (beat, peak, floor).
+    pub fn levels(&self) -> &[(u64, f64, f64)] {
+        &self.levels
+    }
+
+    /// The spacings from unlocking to drop so far: (beat, s).
+    pub fn spacings(&self) -> &[(u64, f64)] {
+        &self.spacings
+    }
+
+    /// Live: puts the onsets whose surroundings have come through the
+    /// fixed rule, and the rule's onsets through the line filters a batch
+    /// at a time (all that is left at the `end`).
+    fn settle_ready(&mut self, end: bool) {
+        let Some(rule) = self.fixed else {
+            return;
+        };
+        let ready = match (end, self.pending) {
+            (false, Some((_, _, index, _))) => index,
+            _ => self.onsets.len(),
+        };
+        while self.applied < ready {
+            let (k, t) = self.onsets[self.applied];
+            let n = self.neighbours[self.applied];
+            let kept = match &rule {
+                Some(r) => self.settle_one(r, k, t, n),
+                None => Some((k, t)),
+            };
+            self.timed.extend(kept);
+            self.applied += 1;
+        }
+        let Some(rule) = rule else {
+            self.settled.append(&mut self.timed);
+            return;
+        };
+        let n = self.timed.len();
+        if !end && n < self.emitted + LIVE_BATCH + LIVE_CONTEXT {
+            return;
+        }
+        let upto = if end { n } else { n - LIVE_CONTEXT };
+        if upto <= self.emitted {
+            return;
+        }
+        let from = self.timed[self.emitted].0;
+        let to = self.timed.get(upto).map(|o| o.0);
+        let lo = self.emitted.saturating_sub(LIVE_CONTEXT);
+        let kept = one_line_a_side(
+            earlier_of_two(self.timed[lo..].to_vec(), rule.mean_spacing()),
+            0.4 * rule.mean_spacing(),
+        );
+        self.settled.extend(
+            kept.into_iter()
+                .filter(|&(k, _)| k >= from && to.is_none_or(|e| k < e)),
+        );
+        self.emitted = upto;
+        // (What no later batch sees is let go.)
+        if lo > 4096 {
+            self.timed.drain(..lo);
+            self.emitted -= lo;
+        }
+    }
+
+    /// Beat `k`, followed at `t` with the neighbours `n`, under `rule`: at
+    /// its unlocking (moved there from its drop), or `None` when it cannot
+    /// be told which of its two sounds was heard.
+    fn settle_one(
+        &mut self,
+        rule: &EventRule,
+        k: u64,
+        t: f64,
+        n: Option<Neighbours>,
+    ) -> Option<(u64, f64)> {
+        let side = (k % 2) as usize;
+        let Some(n) = n else {
+            return Some((k, t));
+        };
+        if let Some((delay, onset, _)) = rule.matches(side, n.earlier) {
+            self.side_delays[side].push(delay);
+            self.spacings.push((k, delay));
+            Some((k, onset))
+        } else if let Some((delay, _, _)) = rule.matches(side, n.later) {
+            self.side_delays[side].push(delay);
+            self.spacings.push((k, delay));
+            Some((k, t))
+        } else if rule.steady[side] {
+            // One sound heard, on a side the tracker followed at its
+            // unlocking beat after beat: the same sound as theirs (one
+            // that is the drop all the same lies a spacing off its side's
+            // line, and the clean-up drops it: super::clean).
+            Some((k, t))
+        } else {
+            // One sound heard on a side followed now at one sound, now at
+            // the other: which it is is not known (a recording's level
+            // wanders, so loudness cannot tell): not timed, counted as
+            // missed.
+            None
         }
     }
 
@@ -214,7 +402,18 @@ impl OnsetTracker {
     pub fn finish(mut self) -> Coarse {
         self.advance(true);
         self.profile_pending();
-        let (timing, paired) = self.settle_events();
+        let (rule, paired) = match self.fixed {
+            Some(rule) => {
+                self.settle_ready(true);
+                self.onsets = std::mem::take(&mut self.settled);
+                (rule, self.side_drops())
+            }
+            None => self.settle_events(),
+        };
+        let timing = match rule {
+            Some(_) => Timing::Unlocking,
+            None => Timing::OneSound,
+        };
         let followed_drops = [0, 1].map(|side| {
             let n = self.profile_counts[side];
             (n >= 4)
@@ -252,7 +451,13 @@ impl OnsetTracker {
             timing,
             levels: self.levels,
             spacings: self.spacings,
+            rule,
         }
+    }
+
+    /// Each side's median time from the unlocking to the drop.
+    fn side_drops(&mut self) -> [Option<f64>; 2] {
+        std::mem::take(&mut self.side_delays).map(|mut v| (v.len() >= 2).then(|| median(&mut v)))
     }
 
     /// One event a beat: when most beats show two sounds the same time
@@ -261,9 +466,28 @@ impl OnsetTracker {
     /// unlocking) and a beat with one sound heard is left out (it could be
     /// either, and a mixture of the two moves the rate and the beat
     /// error); else every beat stays on the sound followed. Returns the
-    /// timing and, for two sounds, each side's median time from the
-    /// unlocking to the drop.
-    fn settle_events(&mut self) -> (Timing, [Option<f64>; 2]) {
+    /// rule (`None`: one sound) and, for two sounds, each side's median
+    /// time from the unlocking to the drop.
+    fn settle_events(&mut self) -> (Option<EventRule>, [Option<f64>; 2]) {
+        let Some(rule) = self.event_rule() else {
+            return (None, [None; 2]);
+        };
+        let mut timed = Vec::with_capacity(self.onsets.len());
+        let onsets = std::mem::take(&mut self.onsets);
+        let neighbours = std::mem::take(&mut self.neighbours);
+        for (&(k, t), &n) in onsets.iter().zip(&neighbours) {
+            timed.extend(self.settle_one(&rule, k, t, n));
+        }
+        self.neighbours = neighbours;
+        let d = rule.mean_spacing();
+        self.onsets = one_line_a_side(earlier_of_two(timed, d), 0.4 * d);
+        (Some(rule), self.side_drops())
+    }
+
+    /// The rule of one event a beat from the beats followed so far, `None`
+    /// when the beats do not show two sounds at one spacing (see
+    /// [`Self::settle_events`]).
+    fn event_rule(&self) -> Option<EventRule> {
         let seen: Vec<&Neighbours> = self.neighbours.iter().flatten().collect();
         let delays: Vec<f64> = seen
             .iter()
@@ -274,39 +498,38 @@ impl OnsetTracker {
         // (A clip of a few beats needs fewer.)
         let fewest = PAIR_COUNT.min(seen.len() / 2).max(3);
         if delays.len() < fewest {
-            return (Timing::OneSound, [None; 2]);
+            return None;
         }
         // The spacing most beats share: the densest cluster of spacings
         // (a room's reflection after each sound makes another, a few ms
-        // away), by a window over the sorted spacings.
-        let width = |d: f64| (PAIR_SPREAD * d).max(PAIR_TOLERANCE);
-        let mut sorted = delays.clone();
-        sorted.sort_by(f64::total_cmp);
-        let (mut best, mut best_count, mut hi) = (0.0, 0, 0);
-        for (lo, &a) in sorted.iter().enumerate() {
-            while hi < sorted.len() && sorted[hi] <= a + 2.0 * width(a) {
-                hi += 1;
-            }
-            if hi - lo > best_count {
-                best_count = hi - lo;
-                best = 0.5 * (a + sorted[hi - 1]);
-            }
-        }
-        let mut cluster: Vec<f64> = sorted
+        // away). Spacings within its width, or within 2.5 standard
+        // deviations of the spacings near it (within 15%: the onsets of a
+        // slow sound on the envelope scatter by half a ms and more, and a
+        // clock's two pallets drop a little differently), are it.
+        let d = densest(&delays)?;
+        let near: Vec<f64> = delays
             .iter()
             .copied()
-            .filter(|&b| (b - best).abs() <= width(best))
+            .filter(|x| (x / d - 1.0).abs() <= NEAR_SPACING)
             .collect();
-        let d = median(&mut cluster);
-        let tolerance = width(d);
-        let matches =
-            |x: Option<(f64, f64, f64)>| x.filter(|(delay, _, _)| (delay - d).abs() <= tolerance);
-        let pairs = seen
+        let mad = median(&mut near.iter().map(|x| (x - d).abs()).collect::<Vec<_>>());
+        let tolerance = spacing_width(d).max(2.5 * 1.4826 * mad);
+        let mut rule = EventRule {
+            spacing: [d; 2],
+            tolerance: [tolerance; 2],
+            steady: [false; 2],
+        };
+        let pairs = self
+            .onsets
             .iter()
-            .filter(|n| matches(n.earlier).is_some() || matches(n.later).is_some())
+            .zip(&self.neighbours)
+            .filter_map(|((k, _), n)| Some(((k % 2) as usize, n.as_ref()?)))
+            .filter(|(side, n)| {
+                rule.matches(*side, n.earlier).is_some() || rule.matches(*side, n.later).is_some()
+            })
             .count();
         if pairs < fewest || (pairs as f64) < PAIR_SHARE * seen.len() as f64 {
-            return (Timing::OneSound, [None; 2]);
+            return None;
         }
         // Each side followed at its unlocking (its beats showing both
         // sounds had the drop after the sound followed) in all but a few.
@@ -314,47 +537,17 @@ impl OnsetTracker {
         for (&(k, _), n) in self.onsets.iter().zip(&self.neighbours) {
             if let Some(n) = n {
                 let side = (k % 2) as usize;
-                if matches(n.earlier).is_some() {
+                if rule.matches(side, n.earlier).is_some() {
                     followed[side][1] += 1;
-                } else if matches(n.later).is_some() {
+                } else if rule.matches(side, n.later).is_some() {
                     followed[side][0] += 1;
                 }
             }
         }
-        let steady = followed.map(|[at_unlock, at_drop]| {
+        rule.steady = followed.map(|[at_unlock, at_drop]| {
             at_unlock >= fewest && (at_drop as f64) <= 0.05 * (at_unlock + at_drop) as f64
         });
-        let mut timed = Vec::with_capacity(self.onsets.len());
-        let mut side_delays: [Vec<f64>; 2] = Default::default();
-        for (&(k, t), n) in self.onsets.iter().zip(&self.neighbours) {
-            let side = (k % 2) as usize;
-            let Some(n) = n else {
-                timed.push((k, t));
-                continue;
-            };
-            if let Some((delay, onset, _)) = matches(n.earlier) {
-                timed.push((k, onset));
-                side_delays[side].push(delay);
-                self.spacings.push((k, delay));
-            } else if let Some((delay, _, _)) = matches(n.later) {
-                timed.push((k, t));
-                side_delays[side].push(delay);
-                self.spacings.push((k, delay));
-            } else if steady[side] {
-                // One sound heard, on a side the tracker followed at its
-                // unlocking beat after beat: the same sound as theirs (one
-                // that is the drop all the same lies a spacing off its
-                // side's line, and the clean-up drops it: super::clean).
-                timed.push((k, t));
-            }
-            // Else one sound heard on a side followed now at one sound, now
-            // at the other: which it is is not known (a recording's level
-            // wanders, so loudness cannot tell): not timed, counted as
-            // missed.
-        }
-        self.onsets = one_line_a_side(earlier_of_two(timed, d), 0.4 * d);
-        let drops = side_delays.map(|mut v| (v.len() >= 2).then(|| median(&mut v)));
-        (Timing::Unlocking, drops)
+        Some(rule)
     }
 
     /// The other sound of the beat followed at `onset` (index `i` in the
@@ -529,7 +722,8 @@ impl OnsetTracker {
     /// tick does not decide): its loudest sound, or the earliest sound
     /// before it (within 25 ms, and a third of a beat) that reaches half
     /// its rise: the unlocking before a louder drop. Also sets the typical
-    /// tick peak (the median of the beats' maxima at that phase).
+    /// tick peak (the median of the beats' maxima near that onset, each
+    /// side at its own phase).
     fn lock(&mut self, buffered: f64) -> Option<f64> {
         let width = (self.beat * self.rate).round() as usize;
         let cycles = ((buffered - SETTLE) / self.beat).floor().min(16.0) as usize;
@@ -558,33 +752,67 @@ impl OnsetTracker {
         if max <= floor {
             return None;
         }
-        // Back from the loudest, cyclically, for an earlier sound.
-        let back = ((0.025_f64).min(self.beat / 3.0) * self.rate) as usize;
-        let half = floor + 0.5 * (max - floor);
-        let cyclic = |j: isize| profile[j.rem_euclid(width as isize) as usize];
-        let loudest = loudest as isize;
-        let mut onset = loudest;
-        for j in (loudest - back as isize)..=loudest {
-            if cyclic(j) >= half && cyclic(j - 1) < half {
-                onset = j;
-                break;
+        // The onset of the profile `profile` whose loudest is `loudest`
+        // (its peak `max`): back from the loudest, cyclically, for an
+        // earlier sound reaching half its rise, then to 30% of the rise.
+        let back = ((0.025_f64).min(self.beat / 3.0) * self.rate) as isize;
+        let onset_of = |profile: &[f64], loudest: isize, max: f64| -> isize {
+            let half = floor + 0.5 * (max - floor);
+            let cyclic = |j: isize| profile[j.rem_euclid(width as isize) as usize];
+            let mut onset = loudest;
+            for j in (loudest - back)..=loudest {
+                if cyclic(j) >= half && cyclic(j - 1) < half {
+                    onset = j;
+                    break;
+                }
             }
-        }
-        // The onset proper: back to 30% of the rise.
-        let level = floor + SOUND_LEVEL * (max - floor);
-        while onset > loudest - back as isize - 5 && cyclic(onset - 1) >= level {
-            onset -= 1;
-        }
+            let level = floor + SOUND_LEVEL * (max - floor);
+            while onset > loudest - back - 5 && cyclic(onset - 1) >= level {
+                onset -= 1;
+            }
+            onset
+        };
+        let loudest = loudest as isize;
+        let onset = onset_of(&profile, loudest, max);
         let phase = onset.rem_euclid(width as isize) as usize;
-        // The typical tick: the median of each beat's maximum near it.
-        let near = (0.003 * self.rate) as usize;
+        // Each side's onset on its own beats' profile, its loudest near the
+        // loudest of both: a clock out of beat has its tocks off its
+        // ticks' phase (by up to a fifth of the beat), and the profile of
+        // both shows two humps, each half as high as the sounds.
+        let reach = (0.2 * width as f64) as isize;
+        let sides = [0usize, 1].map(|parity| {
+            if cycles < 2 {
+                return phase as isize;
+            }
+            let side: Vec<f64> = (0..width)
+                .map(|j| {
+                    let cells: Vec<f64> = (parity..cycles)
+                        .step_by(2)
+                        .map(|c| at(c, j))
+                        .filter(|&i| i < last)
+                        .map(|i| self.at(i))
+                        .collect();
+                    cells.iter().sum::<f64>() / cells.len().max(1) as f64
+                })
+                .collect();
+            let cyclic = |j: isize| side[j.rem_euclid(width as isize) as usize];
+            let Some(top) = (loudest - reach..=loudest + reach)
+                .max_by(|&a, &b| cyclic(a).total_cmp(&cyclic(b)))
+            else {
+                return phase as isize;
+            };
+            let own = onset_of(&side, top, cyclic(top));
+            // (On the beat of the onset of both, whichever way it wrapped.)
+            phase as isize + (own - onset)
+        });
+        // The typical tick: the median of each beat's maximum within 3 ms
+        // of its side's onset (not the louder drop's peak after it).
+        let near = (0.003 * self.rate) as isize;
         let mut maxima: Vec<f64> = (0..cycles)
             .filter_map(|c| {
-                let centre = at(c, phase);
-                let (a, b) = (
-                    centre.saturating_sub(near).max(self.offset),
-                    (centre + near).min(last),
-                );
+                let from = at(c, 0) as isize + sides[c % 2];
+                let a = (from - near).max(self.offset as isize) as usize;
+                let b = ((from + near).max(0) as usize).min(last);
                 (a..b).map(|i| self.at(i)).max_by(f64::total_cmp)
             })
             .collect();
@@ -766,6 +994,39 @@ impl OnsetTracker {
         }
         self.k += 1;
     }
+}
+
+/// The spacings whose scatter sets the rule's tolerance: within this
+/// fraction of the spacing.
+const NEAR_SPACING: f64 = 0.15;
+
+/// Spacings within this of `d` (s) are `d`.
+fn spacing_width(d: f64) -> f64 {
+    (PAIR_SPREAD * d).max(PAIR_TOLERANCE)
+}
+
+/// The middle of the densest cluster of `delays` (s): a window of twice
+/// [`spacing_width`] slid over them sorted, then the median of those
+/// within a width of its centre; `None` for none.
+fn densest(delays: &[f64]) -> Option<f64> {
+    let mut sorted = delays.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let (mut best, mut best_count, mut hi) = (None, 0, 0);
+    for (lo, &a) in sorted.iter().enumerate() {
+        while hi < sorted.len() && sorted[hi] <= a + 2.0 * spacing_width(a) {
+            hi += 1;
+        }
+        if hi - lo > best_count {
+            best_count = hi - lo;
+            best = Some(0.5 * (a + sorted[hi - 1]));
+        }
+    }
+    let best = best?;
+    let mut cluster: Vec<f64> = sorted
+        .into_iter()
+        .filter(|&b| (b - best).abs() <= spacing_width(best))
+        .collect();
+    Some(median(&mut cluster))
 }
 
 /// The beat of a side that is `spacing` s later on the line than two or

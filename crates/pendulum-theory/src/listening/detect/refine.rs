@@ -54,6 +54,9 @@ pub struct Refiner {
     pre: usize,
     length: usize,
     search: usize,
+    /// Live: onsets still to come, none before this, s (see
+    /// [`Refiner::push_onsets`]); `None` when all were given at the start.
+    horizon: Option<f64>,
 }
 
 /// A window waiting for the templates.
@@ -196,13 +199,60 @@ impl Refiner {
     /// A refiner of `coarse` onsets (from [`super::OnsetTracker`]) in audio at
     /// `sample_rate`.
     pub fn new(sample_rate: f64, coarse: &Coarse) -> Self {
+        Self::with_onsets(
+            sample_rate,
+            coarse.timing,
+            coarse.drops,
+            coarse.onsets.clone(),
+        )
+    }
+
+    /// A refiner for listening live: the onsets come as the tracker settles
+    /// them ([`Refiner::push_onsets`]), timed on `timing` with the drops
+    /// `drops` (s) that the first seconds showed.
+    pub fn following(sample_rate: f64, timing: super::Timing, drops: [Option<f64>; 2]) -> Self {
+        Self {
+            horizon: Some(0.0),
+            ..Self::with_onsets(sample_rate, timing, drops, Vec::new())
+        }
+    }
+
+    /// Live: more onsets (beat number, s), later than all before; `horizon`
+    /// (s): no onset still to come is earlier (the samples from it on are
+    /// kept).
+    pub fn push_onsets(&mut self, onsets: &[(u64, f64)], horizon: f64) {
+        self.coarse.extend_from_slice(onsets);
+        self.horizon = Some(horizon);
+    }
+
+    /// The ticks refined so far (none until each side's median sound is
+    /// built, from its first 128 ticks).
+    pub fn ticks(&self) -> &[Tick] {
+        &self.ticks
+    }
+
+    /// Live: the time, s, up to which the onsets given are refined (their
+    /// windows cut, each side's median sound built: [`Refiner::ticks`]
+    /// holds all of theirs that stood out); 0 before.
+    pub fn refined_until(&self) -> f64 {
+        if self.templates.is_none() {
+            return 0.0;
+        }
+        self.next.checked_sub(1).map_or(0.0, |i| self.coarse[i].1)
+    }
+
+    fn with_onsets(
+        sample_rate: f64,
+        timing: super::Timing,
+        drops: [Option<f64>; 2],
+        onsets: Vec<(u64, f64)>,
+    ) -> Self {
         let pre = (PRE * sample_rate).round() as usize;
         // Timed on the unlocking, the window ends before the drop (so that
         // the louder drop, whose delay follows the swing, does not pull
         // the match), but takes at least 1 ms of the unlocking.
-        let post = match coarse.timing {
-            super::Timing::Unlocking => coarse
-                .drops
+        let post = match timing {
+            super::Timing::Unlocking => drops
                 .iter()
                 .flatten()
                 .fold(POST, |p, &d| p.min(0.8 * d))
@@ -214,7 +264,7 @@ impl Refiner {
         Self {
             rate: sample_rate,
             filter: BandPass::new(sample_rate),
-            coarse: coarse.onsets.clone(),
+            coarse: onsets,
             next: 0,
             position: 0,
             buffer: Vec::new(),
@@ -226,6 +276,7 @@ impl Refiner {
             pre,
             length: pre + post,
             search,
+            horizon: None,
         }
     }
 
@@ -260,14 +311,19 @@ impl Refiner {
             });
         }
         // Keep only what a later window can need.
+        // (Live, the next onset is not known yet: none comes before the
+        // horizon.)
         let keep_from = self
             .coarse
             .get(self.next)
-            .map(|&(_, t)| {
+            .map(|&(_, t)| t)
+            .or(self.horizon)
+            .map(|t| {
                 let quiet = 2 * (self.length + 2 * self.search) + (QUIET_GAP * self.rate) as usize;
                 ((t * self.rate) as i64 - (self.pre + 2 * self.search + quiet) as i64).max(0) as u64
             })
-            .unwrap_or(self.position);
+            .unwrap_or(self.position)
+            .min(self.position);
         if keep_from > self.buffer_start + 4096 {
             let drop = ((keep_from - self.buffer_start) as usize).min(self.buffer.len());
             self.buffer.drain(..drop);

@@ -1,0 +1,108 @@
+//! `pendulum listen -`: listening live to standard input. The samples go
+//! to the library's live listener ([`LiveListener`]) as they come; each
+//! window of `--every` is printed as it completes (a table row, or a JSON
+//! line `{"window": …}` with `--json`); the end of the input or Ctrl-C
+//! ends the listening, and the whole result is printed as for a file.
+
+use super::text::{live_heading, live_row};
+use super::Heard;
+use crate::args::ListenArgs;
+use crate::error::CliError;
+use crate::interrupt;
+use crate::output;
+use crate::stream::{open, Block, Encoding, Given, Layout};
+use pendulum_theory::listening::analysis::ListenInput;
+use pendulum_theory::listening::live::LiveListener;
+use pendulum_theory::listening::windows::Window;
+use serde::Serialize;
+use std::io::Write;
+use std::sync::mpsc::RecvTimeoutError;
+use std::time::Duration;
+
+/// A window printed as a JSON line.
+#[derive(Serialize)]
+struct WindowLine<'a> {
+    window: &'a Window,
+}
+
+/// Listens to standard input until its end or Ctrl-C.
+pub(super) fn listen(args: &ListenArgs, input: &ListenInput) -> Result<Heard, CliError> {
+    let given = match (&args.raw, args.sample_rate) {
+        (Some(raw), Some(sample_rate)) => {
+            if sample_rate == 0 {
+                return Err(CliError::flag(
+                    "--sample-rate",
+                    "must be positive, got 0 Hz",
+                ));
+            }
+            let channels = args.channels.unwrap_or(1);
+            if channels == 0 {
+                return Err(CliError::flag("--channels", "must be at least 1, got 0"));
+            }
+            Given::Raw(Layout {
+                sample_rate,
+                channels,
+                encoding: Encoding::parse(raw)?,
+            })
+        }
+        _ => Given::Wav,
+    };
+    let channel = match args.channel {
+        Some(0) => return Err(CliError::flag("--channel", "channels count from 1")),
+        Some(c) => c - 1,
+        None => 0,
+    };
+    let (layout, blocks) = open(std::io::stdin(), given, channel)?;
+    let refused = |r: pendulum_theory::analysis::Refusal| super::refused("-", &r);
+    let mut listener = LiveListener::new(layout.sample_rate, input).map_err(refused)?;
+    // (The windows go where the command's text goes: to standard error
+    // when an output file is standard output.)
+    let data_on_stdout = [&args.plot, &args.ticks, &args.windows]
+        .iter()
+        .any(|p| p.as_deref().is_some_and(crate::file::is_stdout));
+    let mut printed = 0usize;
+    let mut print = |windows: Vec<Window>| -> Result<(), CliError> {
+        let mut text = String::new();
+        for w in &windows {
+            if args.json {
+                text.push_str(&output::json_line(&WindowLine { window: w })?);
+            } else {
+                if printed == 0 {
+                    text.push_str(&live_heading(w.end_s - w.start_s));
+                }
+                text.push_str(&live_row(w));
+            }
+            printed += 1;
+        }
+        if !text.is_empty() {
+            // (A reader gone away is not this command's failure.)
+            let _ = if data_on_stdout {
+                std::io::stderr().write_all(text.as_bytes())
+            } else {
+                let mut out = std::io::stdout().lock();
+                out.write_all(text.as_bytes()).and_then(|()| out.flush())
+            };
+        }
+        Ok(())
+    };
+    interrupt::stop_is_handled();
+    loop {
+        match blocks.recv_timeout(Duration::from_millis(200)) {
+            Ok(Block::Samples(samples)) => print(listener.push(&samples).map_err(refused)?)?,
+            Ok(Block::Failed(reason)) => return Err(CliError::other(reason)),
+            Err(RecvTimeoutError::Timeout) => {}
+            Err(RecvTimeoutError::Disconnected) => break,
+        }
+        if interrupt::requested() {
+            break;
+        }
+    }
+    let result = listener.finish().map_err(refused)?;
+    Ok(Heard {
+        file: "-".to_string(),
+        channel,
+        channels: layout.channels,
+        result,
+        printed: input.every.map(|_| printed),
+    })
+}

@@ -1,0 +1,259 @@
+//! Listening live: the samples come as a sound card or a pipe gives them,
+//! once, and are let go; the windows of the recording
+//! ([`super::windows`]) come out as they complete, and the whole
+//! recording's analysis at the end, as [`super::analysis::listen`] gives
+//! it for a file.
+//!
+//! How: the first [`LEARN_S`] s are kept and analysed as a file's first
+//! minutes are (the beat, and its half; whether each beat has two sounds
+//! and at what spacing: [`super::detect::EventRule`]). From then on the
+//! passes a file gets one after the other run side by side on each block:
+//! the envelope, the tracker (each beat settled on one event by the rule
+//! the first seconds gave, and handed on a few dozen beats later, when the
+//! line filters have seen the beats after it), and the refiner (holding
+//! the band-passed samples from the last onset handed on). The memory is
+//! those samples (a few dozen beats), the first seconds while they are
+//! learnt, and a few hundred bytes per tick; not the recording.
+//!
+//! What differs from a file: a file's beat and event rule come from its
+//! first five minutes and all its beats, a live recording's from its first
+//! [`LEARN_S`] s; on a steady recording the ticks are the same (see the
+//! command line's pipe test, which compares the two whole).
+
+use super::analysis::{
+    check, check_every, conclude, first_beat, half_beat, listen, Checked, Heard, ListenInput,
+    Listening, Oscillator, SliceSource, ENVELOPE_BLOCK,
+};
+use super::detect::{envelope_rate, Envelope, OnsetTracker, Refiner};
+use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
+use super::windows::{window_of, Window, WindowInput, CLEAN_REACH};
+use crate::analysis::Refusal;
+use crate::fitting::beats::nearest_standard;
+
+/// Seconds of sound learnt before the ticks are followed.
+pub const LEARN_S: f64 = 30.0;
+
+/// A recording listened to as it comes: [`LiveListener::push`] its
+/// samples, then [`LiveListener::finish`].
+pub struct LiveListener {
+    input: ListenInput,
+    checked: Checked,
+    sample_rate: u32,
+    /// Samples pushed.
+    samples: u64,
+    stage: Stage,
+}
+
+enum Stage {
+    /// The first seconds, kept.
+    Learning(Vec<f32>),
+    Following(Box<Following>),
+}
+
+struct Following {
+    env: Envelope,
+    tracker: OnsetTracker,
+    refiner: Refiner,
+    beat: f64,
+    /// The beat the windows' rates are against, s.
+    nominal_beat: Option<f64>,
+    oscillator: Oscillator,
+    /// The next window to complete.
+    next_window: usize,
+}
+
+impl LiveListener {
+    /// A listener to samples at `sample_rate` Hz, for `input` (checked as
+    /// [`listen`] checks it).
+    pub fn new(sample_rate: u32, input: &ListenInput) -> Result<Self, Refusal> {
+        if sample_rate == 0 {
+            return Err(Refusal::field("sample_rate", "must be positive, got 0"));
+        }
+        Ok(Self {
+            input: *input,
+            checked: check(input)?,
+            sample_rate,
+            samples: 0,
+            stage: Stage::Learning(Vec::new()),
+        })
+    }
+
+    /// The recording's length so far, s.
+    pub fn duration(&self) -> f64 {
+        self.samples as f64 / f64::from(self.sample_rate)
+    }
+
+    /// Takes the next samples (finite: a sample that is not is refused);
+    /// returns the windows (with [`ListenInput::every`]) they complete,
+    /// oldest first. A recording whose first seconds show no clock is
+    /// refused here, as [`listen`] refuses it.
+    pub fn push(&mut self, block: &[f32]) -> Result<Vec<Window>, Refusal> {
+        if let Some(i) = block.iter().position(|x| !x.is_finite()) {
+            return Err(Refusal::field(
+                "samples",
+                format!(
+                    "must be finite, got {} at sample {}",
+                    block[i],
+                    self.samples + i as u64
+                ),
+            ));
+        }
+        self.samples += block.len() as u64;
+        let rate = f64::from(self.sample_rate);
+        match &mut self.stage {
+            Stage::Learning(kept) => {
+                kept.extend_from_slice(block);
+                if (kept.len() as f64) < LEARN_S * rate {
+                    return Ok(Vec::new());
+                }
+                let kept = std::mem::take(kept);
+                let mut following = self.learn(&kept)?;
+                following.push(&kept, rate);
+                self.stage = Stage::Following(Box::new(following));
+            }
+            Stage::Following(f) => f.push(block, rate),
+        }
+        Ok(self.completed(false))
+    }
+
+    /// The first seconds learnt: the beat, its half, the rule of one event
+    /// a beat (as [`listen`] finds them on a file's first minutes).
+    fn learn(&self, samples: &[f32]) -> Result<Following, Refusal> {
+        let rate = f64::from(self.sample_rate);
+        let mut env = Envelope::new(rate);
+        let mut wide = Envelope::with_filter(rate, BandPass::from(WIDE_HIGH_PASS_HZ, rate));
+        env.push(samples);
+        wide.push(samples);
+        let env_rate = envelope_rate(&env, rate);
+        let track = |beat: f64| {
+            let mut tracker = OnsetTracker::new(env_rate, beat);
+            for block in env.values.chunks(ENVELOPE_BLOCK) {
+                tracker.push(block);
+            }
+            tracker.finish()
+        };
+        let mut beat = first_beat(&env.values, env_rate, &self.input, &self.checked)?;
+        let mut coarse = track(beat);
+        if let Some(half) = half_beat(
+            &env.values,
+            &wide.values,
+            env_rate,
+            &coarse,
+            beat,
+            &self.input,
+        )? {
+            beat = half;
+            coarse = track(beat);
+        }
+        if let Some(every) = self.input.every {
+            check_every(every, beat)?;
+        }
+        Ok(Following {
+            env: Envelope::new(rate),
+            tracker: OnsetTracker::following(env_rate, beat, coarse.rule),
+            refiner: Refiner::following(rate, coarse.timing, coarse.drops),
+            beat,
+            nominal_beat: self
+                .checked
+                .nominal
+                .map(|p| 0.5 * p)
+                .or_else(|| nearest_standard(beat)),
+            oscillator: self
+                .input
+                .oscillator
+                .unwrap_or_else(|| Oscillator::of_beat(beat)),
+            next_window: 0,
+        })
+    }
+
+    /// The windows whose ticks, and the ticks the clean-up needs around
+    /// them, are all refined (all that are left at the `end`).
+    fn completed(&mut self, end: bool) -> Vec<Window> {
+        let (Some(every), Stage::Following(f)) = (self.input.every, &mut self.stage) else {
+            return Vec::new();
+        };
+        let scale = 1.0 / (1.0 + self.checked.ppm * 1e-6);
+        let duration = self.samples as f64 / f64::from(self.sample_rate) * scale;
+        let reach = (CLEAN_REACH as f64 + 1.0) * f.beat;
+        let mut out = Vec::new();
+        loop {
+            let start = f.next_window as f64 * every;
+            let last = (f.next_window as f64 + 1.0) * every;
+            let whole = last / scale + reach <= f.refiner.refined_until();
+            if !(whole || end && start < duration) {
+                break;
+            }
+            let ticks = f.refiner.ticks();
+            let from = ticks.partition_point(|t| t.time < start / scale - reach);
+            let to = ticks.partition_point(|t| t.time < last / scale + reach);
+            let input = WindowInput {
+                ticks: &[],
+                levels: f.tracker.levels(),
+                spacings: f.tracker.spacings(),
+                every,
+                duration: if whole { last } else { duration },
+                nominal_beat: f.nominal_beat,
+                lift_angle: self.input.lift_angle,
+                oscillator: f.oscillator,
+                scale,
+            };
+            out.push(window_of(&input, ticks[from..to].to_vec(), f.next_window));
+            f.next_window += 1;
+        }
+        out
+    }
+
+    /// Ends the recording: the whole of it analysed, as [`listen`] would a
+    /// file of it (a recording shorter than [`LEARN_S`] is one).
+    pub fn finish(self) -> Result<Listening, Refusal> {
+        let rate = f64::from(self.sample_rate);
+        let f = match self.stage {
+            Stage::Learning(kept) => {
+                let mut source = SliceSource {
+                    samples: &kept,
+                    rate: self.sample_rate,
+                };
+                return listen(&mut source, &self.input).map_err(|f| match f {
+                    super::analysis::ListenFailure::Refused(r) => r,
+                    super::analysis::ListenFailure::Source(never) => match never {},
+                });
+            }
+            Stage::Following(f) => *f,
+        };
+        let Following {
+            tracker,
+            mut refiner,
+            beat,
+            ..
+        } = f;
+        let given = tracker.handed();
+        let coarse = tracker.finish();
+        refiner.push_onsets(&coarse.onsets[given..], 0.0);
+        refiner.push(&[]);
+        let (ticks, _, sounds) = refiner.finish_with_sounds();
+        conclude(
+            Heard {
+                coarse,
+                ticks,
+                sounds,
+                duration: self.samples as f64 / rate,
+                beat,
+                sample_rate: self.sample_rate,
+            },
+            &self.checked,
+            &self.input,
+        )
+    }
+}
+
+impl Following {
+    /// A block through the envelope, the tracker and the refiner.
+    fn push(&mut self, block: &[f32], _rate: f64) {
+        self.env.push(block);
+        self.tracker.push(&self.env.values);
+        self.env.values.clear();
+        let onsets = self.tracker.take_onsets();
+        self.refiner.push_onsets(&onsets, self.tracker.horizon());
+        self.refiner.push(block);
+    }
+}

@@ -180,7 +180,8 @@ pub struct ListenArgs {
     /// second), and apply it.
     #[arg(long, value_name = "FILE", conflicts_with = "sample_rate_error_ppm")]
     pub reference: Option<InputPath>,
-    /// Write every tick to this CSV file (time_s,side,amplitude).
+    /// Write every tick to this CSV file (time_s,side,sound_level: the
+    /// sound's peak, full scale 1; `amplitude` repeats it, its old name).
     #[arg(long, value_name = "FILE.csv")]
     pub ticks: Option<OutputPath>,
     /// The escapement's lift angle (degrees unless a unit is given): the

@@ -59,6 +59,13 @@ fn ten_minutes_at_3600_bph_are_heard_back() {
     let found = read_times(&ticks);
     let truth = read_times(&truth);
     assert_eq!(found.len(), truth.len());
+    // The sound's level is named as such (`amplitude`, the same figure,
+    // kept for one release, is no pendulum's amplitude).
+    let header = std::fs::read_to_string(&ticks).unwrap();
+    assert!(
+        header.starts_with("time_s,side,sound_level,amplitude\n"),
+        "{header}"
+    );
     let rms = (found
         .iter()
         .zip(&truth)

@@ -158,10 +158,14 @@ fn render(
     };
     let ticks_file = match &args.ticks {
         Some(path) => {
-            let mut out = CsvFile::create(path, "--ticks", "time_s,side,amplitude")?;
+            // (`sound_level`: the band-passed sound's peak, full scale 1;
+            // `amplitude`, the same, its old name, kept for one release:
+            // it is not the pendulum's amplitude.)
+            let mut out = CsvFile::create(path, "--ticks", "time_s,side,sound_level,amplitude")?;
             for t in &result.ticks {
                 out.number(Some(t.time))
                     .integer(u64::from(t.side))
+                    .number(Some(t.amplitude))
                     .number(Some(t.amplitude))
                     .end_row()?;
             }

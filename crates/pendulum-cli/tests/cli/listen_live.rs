@@ -3,7 +3,7 @@
 //! the same recording read as a file; raw samples; Ctrl-C; what is
 //! refused.
 
-use super::util::{f, json, pendulum};
+use super::util::{f, json, pendulum, refuses_given};
 use serde_json::Value;
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
@@ -244,22 +244,9 @@ fn ctrl_c_ends_with_the_totals() {
 #[test]
 fn bad_streams_are_refused() {
     let refuse = |args: &[&str], input: &[u8], says: &str| {
-        let out = pendulum()
-            .arg("listen")
-            .args(args)
-            .write_stdin(input.to_vec())
-            .assert()
-            .code(2)
-            .stdout("")
-            .get_output()
-            .stderr
-            .clone();
-        let err = String::from_utf8(out).unwrap();
-        assert!(
-            err.starts_with("error: ") && err.contains(says),
-            "{args:?}: {err}"
-        );
-        assert_eq!(err.lines().count(), 1, "{err}");
+        let mut all = vec!["listen"];
+        all.extend_from_slice(args);
+        refuses_given(&all, input, says);
     };
     refuse(&["-"], b"hello, this is not sound", "not a WAV stream");
     refuse(&["-"], b"", "not a WAV stream");

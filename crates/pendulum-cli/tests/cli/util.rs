@@ -23,8 +23,14 @@ pub fn json(args: &[&str]) -> Value {
 /// Runs with `args` and expects the one-line error contract: status 2,
 /// nothing on standard output, one line on standard error naming `flag`.
 pub fn refuses(args: &[&str], flag: &str) -> String {
+    refuses_given(args, b"", flag)
+}
+
+/// [`refuses`], with `stdin` on standard input.
+pub fn refuses_given(args: &[&str], stdin: &[u8], flag: &str) -> String {
     let out = pendulum()
         .args(args)
+        .write_stdin(stdin.to_vec())
         .assert()
         .code(2)
         .stdout("")

@@ -108,10 +108,10 @@ impl LiveListener {
                 }
                 let kept = std::mem::take(kept);
                 let mut following = self.learn(&kept)?;
-                following.push(&kept, rate);
+                following.push(&kept);
                 self.stage = Stage::Following(Box::new(following));
             }
-            Stage::Following(f) => f.push(block, rate),
+            Stage::Following(f) => f.push(block),
         }
         Ok(self.completed(false))
     }
@@ -248,7 +248,7 @@ impl LiveListener {
 
 impl Following {
     /// A block through the envelope, the tracker and the refiner.
-    fn push(&mut self, block: &[f32], _rate: f64) {
+    fn push(&mut self, block: &[f32]) {
         self.env.push(block);
         self.tracker.push(&self.env.values);
         self.env.values.clear();

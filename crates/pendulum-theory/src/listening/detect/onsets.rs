@@ -114,24 +114,18 @@ pub struct OnsetTracker {
 /// at its unlocking in all but a few beats.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EventRule {
-    /// From the unlocking to the drop, s, on each side (a clock's two
-    /// pallets may drop a little differently).
-    pub spacing: [f64; 2],
+    /// From the unlocking to the drop, s.
+    pub spacing: f64,
     /// Spacings within this of `spacing` are it, s.
-    pub tolerance: [f64; 2],
+    pub tolerance: f64,
     /// Each side followed at its unlocking beat after beat.
     pub steady: [bool; 2],
 }
 
 impl EventRule {
-    /// A neighbouring sound at the rule's spacing for `side`.
-    fn matches(&self, side: usize, x: Option<(f64, f64, f64)>) -> Option<(f64, f64, f64)> {
-        x.filter(|(delay, _, _)| (delay - self.spacing[side]).abs() <= self.tolerance[side])
-    }
-
-    /// The two sides' spacing, s.
-    pub fn mean_spacing(&self) -> f64 {
-        0.5 * (self.spacing[0] + self.spacing[1])
+    /// A neighbouring sound at the rule's spacing.
+    fn matches(&self, x: Option<(f64, f64, f64)>) -> Option<(f64, f64, f64)> {
+        x.filter(|(delay, _, _)| (delay - self.spacing).abs() <= self.tolerance)
     }
 }
 
@@ -331,8 +325,8 @@ impl OnsetTracker {
         let to = self.timed.get(upto).map(|o| o.0);
         let lo = self.emitted.saturating_sub(LIVE_CONTEXT);
         let kept = one_line_a_side(
-            earlier_of_two(self.timed[lo..].to_vec(), rule.mean_spacing()),
-            0.4 * rule.mean_spacing(),
+            earlier_of_two(self.timed[lo..].to_vec(), rule.spacing),
+            0.4 * rule.spacing,
         );
         self.settled.extend(
             kept.into_iter()
@@ -360,11 +354,11 @@ impl OnsetTracker {
         let Some(n) = n else {
             return Some((k, t));
         };
-        if let Some((delay, onset, _)) = rule.matches(side, n.earlier) {
+        if let Some((delay, onset, _)) = rule.matches(n.earlier) {
             self.side_delays[side].push(delay);
             self.spacings.push((k, delay));
             Some((k, onset))
-        } else if let Some((delay, _, _)) = rule.matches(side, n.later) {
+        } else if let Some((delay, _, _)) = rule.matches(n.later) {
             self.side_delays[side].push(delay);
             self.spacings.push((k, delay));
             Some((k, t))
@@ -479,7 +473,7 @@ impl OnsetTracker {
             timed.extend(self.settle_one(&rule, k, t, n));
         }
         self.neighbours = neighbours;
-        let d = rule.mean_spacing();
+        let d = rule.spacing;
         self.onsets = one_line_a_side(earlier_of_two(timed, d), 0.4 * d);
         (Some(rule), self.side_drops())
     }
@@ -515,18 +509,13 @@ impl OnsetTracker {
         let mad = median(&mut near.iter().map(|x| (x - d).abs()).collect::<Vec<_>>());
         let tolerance = spacing_width(d).max(2.5 * 1.4826 * mad);
         let mut rule = EventRule {
-            spacing: [d; 2],
-            tolerance: [tolerance; 2],
+            spacing: d,
+            tolerance,
             steady: [false; 2],
         };
-        let pairs = self
-            .onsets
+        let pairs = seen
             .iter()
-            .zip(&self.neighbours)
-            .filter_map(|((k, _), n)| Some(((k % 2) as usize, n.as_ref()?)))
-            .filter(|(side, n)| {
-                rule.matches(*side, n.earlier).is_some() || rule.matches(*side, n.later).is_some()
-            })
+            .filter(|n| rule.matches(n.earlier).is_some() || rule.matches(n.later).is_some())
             .count();
         if pairs < fewest || (pairs as f64) < PAIR_SHARE * seen.len() as f64 {
             return None;
@@ -537,9 +526,9 @@ impl OnsetTracker {
         for (&(k, _), n) in self.onsets.iter().zip(&self.neighbours) {
             if let Some(n) = n {
                 let side = (k % 2) as usize;
-                if rule.matches(side, n.earlier).is_some() {
+                if rule.matches(n.earlier).is_some() {
                     followed[side][1] += 1;
-                } else if rule.matches(side, n.later).is_some() {
+                } else if rule.matches(n.later).is_some() {
                     followed[side][0] += 1;
                 }
             }

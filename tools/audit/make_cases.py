@@ -484,7 +484,9 @@ def slug(s):
 # ---- family 1: numbers -------------------------------------------------------
 
 UNIT = {"len": "m", "time": "s", "angle": "deg", "mass": "kg", "accel": "m/s2", "drive": "J",
-        "rate": "s/day", "lat": "deg", "height": "m", "torque": "Nm"}
+        "rate": "s/day", "lat": "deg", "height": "m", "torque": "Nm", "bph": "bph", "ms": "ms",
+        "db": "dB", "hz": "Hz", "ppm": "ppm", "fraction": "%", "pressure": "hPa", "temp": "°C",
+        "pct": "%", "tpi": "tpi"}
 UNITLESS = ("num", "int")
 
 BAD_NUMBERS = ["0", "-1", "nan", "inf", "-inf", "1e308", "1e-308", "1e-320", "HUGEUNIT", "TINYUNIT",
@@ -555,7 +557,7 @@ NUMERIC = [
         ("--steps", "int", "int_ge2", ["--amplitude", "1deg..10deg"]),
         ("--series-terms", "int", "int_pos"), *G]),
     ("length", ["length", "--bph", "3600", "--amplitude", "3deg"], [
-        ("--bph", "num", "pos"), ("--period", "time", "pos", [], ["--bph"]), ("--amplitude", "angle", "amp"), *G]),
+        ("--bph", "bph", "pos"), ("--period", "time", "pos", [], ["--bph"]), ("--amplitude", "angle", "amp"), *G]),
     ("amplitude", ["amplitude", "--period", "2.0001s", "--length", "0.99362m"], [
         ("--period", "time", "pos"), ("--length", "len", "pos"), ("--period-uncertainty", "time", "nonneg"), *G]),
     ("gravity", ["gravity", "--latitude", "51.75"], [("--latitude", "lat", "lat"), ("--height", "height", "height")]),
@@ -575,28 +577,28 @@ NUMERIC = [
         ("--amplitude", "angle", "amp"), ("--q", "num", "pos"), ("--duration", "time", "nonneg")]),
     ("fit-decay", ["fit", "decay", "rundown.csv", "--length", "0.99362m"], [
         ("--length", "len", "pos"), ("--mass", "mass", "pos"), ("--period", "time", "pos"),
-        ("--frame-rate", "num", "pos"), *G]),
+        ("--frame-rate", "hz", "pos"), *G]),
     ("fit-decay-track", ["fit", "decay", "tracker.txt"], [
-        ("--period", "time", "pos"), ("--frame-rate", "num", "pos"), ("--length", "len", "pos")]),
+        ("--period", "time", "pos"), ("--frame-rate", "hz", "pos"), ("--length", "len", "pos")]),
     ("fit-trajectory", ["fit", "trajectory", "video.csv", "--length", "0.5m"], [
-        ("--length", "len", "pos"), ("--frame-rate", "num", "pos")]),
-    ("fit-beats", ["fit", "beats", "beats.csv"], [("--bph", "num", "pos"), ("--period", "time", "pos")]),
+        ("--length", "len", "pos"), ("--frame-rate", "hz", "pos")]),
+    ("fit-beats", ["fit", "beats", "beats.csv"], [("--bph", "bph", "pos"), ("--period", "time", "pos")]),
     ("listen", ["listen", "tick.wav"], [
-        ("--bph", "num", "pos"), ("--period", "time", "pos"), ("--channel", "int", "int_pos"),
-        ("--sample-rate-error-ppm", "num", "any"), ("--lift-angle", "angle", "pos")]),
+        ("--bph", "bph", "pos"), ("--period", "time", "pos"), ("--channel", "int", "int_pos"),
+        ("--sample-rate-error-ppm", "ppm", "any"), ("--lift-angle", "angle", "pos")]),
     ("synth", ["synth", "ticks", "out.wav", "--duration", "3s", "--sample-rate", "8000"], [
-        ("--bph", "num", "pos"), ("--rate", "rate", "any"), ("--beat-error", "num", "any"),
-        ("--duration", "time", "pos"), ("--snr-db", "num", "any"), ("--sample-rate", "num", "pos"),
-        ("--reverb", "time", "nonneg"), ("--hum-db", "num", "any"), ("--missing", "num", "frac"),
+        ("--bph", "bph", "pos"), ("--rate", "rate", "any"), ("--beat-error", "ms", "any"),
+        ("--duration", "time", "pos"), ("--snr-db", "db", "any"), ("--sample-rate", "hz", "pos"),
+        ("--reverb", "time", "nonneg"), ("--hum-db", "db", "any"), ("--missing", "fraction", "frac"),
         ("--seed", "int", "int_nonneg")]),
     ("train-wheels", ["train", "--wheels", "64,60,30", "--pinions", "8,8"], [
         ("--arbor-turns-per-hour", "num", "pos")]),
     ("train-bph", ["train", "--bph", "3600", "--escape-teeth", "30"], [
-        ("--bph", "num", "pos"), ("--escape-teeth", "int", "int_pos"), ("--tolerance", "num", "pos")]),
+        ("--bph", "bph", "pos"), ("--escape-teeth", "int", "int_pos"), ("--tolerance", "num", "pos")]),
     ("train-design", ["train", "--wheels", "64,60,30", "--pinions", "8,8", "--design", "invar-lens.toml"], [*G]),
     ("regulate", ["regulate", "--length", "0.994m", "--rate", "12", "--nut-pitch", "0.7mm"], [
         ("--rate", "rate", "any"), ("--length", "len", "pos"), ("--nut-pitch", "len", "pos"),
-        ("--nut-tpi", "num", "pos", [], ["--nut-pitch"]), ("--nut-divisions", "int", "int_pos"),
+        ("--nut-tpi", "tpi", "pos", [], ["--nut-pitch"]), ("--nut-divisions", "int", "int_pos"),
         ("--tray", "len", "pos")]),
     ("regulate-design", ["regulate", "--design", "seconds-steel-brass.toml", "--rate", "12"], [
         ("--rate", "rate", "any"), ("--nut-pitch", "len", "pos"), ("--tray", "len", "pos")]),
@@ -605,8 +607,8 @@ NUMERIC = [
     ("compensate-zinc", ["compensate", "--design", "seconds-steel-brass.toml", "--compensator", "zinc"], [
         ("--tube-diameter", "len", "pos"), ("--tube-bore", "len", "pos")]),
     ("design", ["design", "seconds-steel-brass.toml"], [
-        ("--pressure", "num", "pos"), ("--temperature", "num", "temp"), ("--regulated-at", "num", "temp"),
-        ("--humidity", "num", "pct"), *G]),
+        ("--pressure", "pressure", "pos"), ("--temperature", "temp", "temp"), ("--regulated-at", "temp", "temp"),
+        ("--humidity", "pct", "pct"), *G]),
     ("clock", ["clock", "--length", "0.994m", "--drive", "20uJ"], [
         ("--length", "len", "pos"), ("--mass", "mass", "pos"), ("--q", "num", "pos"),
         ("--lift-angle", "angle", "pos"), ("--drive", "drive", "pos"), ("--friction", "num", "nonneg"),

@@ -105,10 +105,29 @@ def semicolon(path):
             f.write(f"{t:.0f};{a:.4f}".replace(".", ",") + "\n")
 
 
+def spring(path):
+    """A year of a clock's drive for `pendulum clock --drive-file`: an
+    eight-day mainspring wound every Sunday (the drive falling from 1.0 to
+    0.8 of its mean over the week, a fusee-less spring's run), a room 15 °C
+    in winter and 23 °C in summer, and a barometer wandering about
+    1013 hPa (a random walk pulled back, fixed seed). One row a day; its
+    own random generator, so the other files do not change."""
+    walk = random.Random(20261124)
+    pressure = 1013.0
+    with open(path, "w") as f:
+        f.write("time_s,drive_factor,temperature_c,pressure_hpa\n")
+        for day in range(366):
+            drive = 1.0 - 0.2 * (day % 7) / 7.0
+            temperature = 19.0 - 4.0 * math.cos(2.0 * math.pi * (day - 15) / 365.25)
+            pressure += -0.2 * (pressure - 1013.0) + 6.0 * walk.gauss(0, 1)
+            f.write(f"{86400 * day},{drive:.4f},{temperature:.2f},{pressure:.1f}\n")
+
+
 rundown("examples/rundown.csv")
 video("examples/video.csv")
 beats("examples/beats.csv")
 tracker("examples/tracker.txt")
 semicolon("examples/rundown-semicolon.csv")
+spring("examples/spring.csv")
 print("wrote examples/rundown.csv, examples/video.csv, examples/beats.csv, "
-      "examples/tracker.txt, examples/rundown-semicolon.csv")
+      "examples/tracker.txt, examples/rundown-semicolon.csv, examples/spring.csv")

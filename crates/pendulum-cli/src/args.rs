@@ -5,7 +5,11 @@
 //! amplitudes, a pivot, a drag law) arrive as text.
 
 use crate::paths::{InputPath, OutputPath};
-use crate::units::{Acceleration, Angle, Drive, Length, Mass, Number, RatePerDay, Time};
+use crate::units::{
+    Acceleration, Angle, BeatsPerHour, Celsius, Decibels, Drive, Fraction, Hectopascals, Hertz,
+    Length, Mass, Milliseconds, Number, Percent, Ppm, RateChange, RatePerDay, SampleRate,
+    ThreadsPerInch, Time,
+};
 use clap::{Args, Parser, Subcommand};
 use pendulum_theory::clock::analysis as clock;
 use pendulum_theory::compound::datasheet as sheet;
@@ -19,14 +23,22 @@ use pendulum_theory::train::analysis as train_analysis;
 /// Start with `pendulum report`: a complete analysis of a seconds pendulum.
 ///
 /// Quantities take units: lengths 994mm, 99.4cm, 0.994m, 39.1in; angles 3deg,
-/// 3°, 0.05rad, 30arcmin; times 2s, 1.5ms, 3h, 1day. A bare number is SI,
-/// except angles, which are degrees.
+/// 3°, 0.05rad, 30arcmin; times 2s, 1.5ms, 3h, 1day; rates +12s/day, 20ppm;
+/// pressures 1000hPa, 29.9inHg; temperatures 25°C, 77F, 298K; humidity 60%;
+/// beat rates 3600bph; frequencies 30fps, 48kHz; levels 20dB. A bare number
+/// is the unit the flag's help names (SI unless it says otherwise; angles
+/// in degrees).
 #[derive(Debug, Parser)]
 #[command(name = "pendulum", version)]
 pub struct Cli {
     /// What to compute.
     #[command(subcommand)]
     pub command: Command,
+    /// Print the results alone: no progress bar or spinner, and no summary
+    /// on standard error when the data go to standard output (its
+    /// warnings and errors still print).
+    #[arg(long, short, global = true)]
+    pub quiet: bool,
 }
 
 /// The subcommands.
@@ -86,7 +98,7 @@ Ctrl-C stops a run with its files complete (exit status 130).")]
     Fit(FitArgs),
     /// Listen to a clock: rate, beat error and jitter from a sound recording.
     #[command(after_help = "Examples:
-  pendulum synth ticks clock.wav --bph 3600 --rate 12 --beat-error 1.5 --duration 10min
+  pendulum synth ticks clock.wav --bph 3600 --rate 12s/day --beat-error 1.5ms --duration 10min
   pendulum listen clock.wav
   pendulum listen phone.m4a --bph 3600 --ticks ticks.csv --json
 
@@ -94,6 +106,9 @@ Formats: WAV, FLAC, Ogg Vorbis, MP3, AAC in M4A (symphonia). The louder channel 
 unless --channel says otherwise.")]
     Listen(ListenArgs),
     /// Synthetic data with known truth, to check a setup.
+    #[command(after_help = "Examples:
+  pendulum synth ticks test.wav --bph 3600 --rate 12 --beat-error 1.5 --duration 10min --snr-db 20 --truth truth.csv
+  pendulum listen test.wav")]
     Synth(SynthArgs),
     /// A going train: beats per hour and the pendulum it needs, or the
     /// wheel and pinion counts that give a beat rate.
@@ -112,13 +127,13 @@ unless --channel says otherwise.")]
     /// vanish: a tube or collar, a gridiron, or a jar of mercury.
     #[command(after_help = "Examples:
   pendulum compensate --design examples/seconds-steel-brass.toml --compensator zinc
-  pendulum compensate --design examples/invar-lens.toml --compensator collar
+  pendulum compensate --design examples/longcase-wood.toml --compensator collar
   pendulum compensate --design examples/seconds-steel-brass.toml --compensator mercury --write jar.toml")]
     Compensate(CompensateArgs),
     /// A design's datasheet: parts, mass, inertia, equivalent length,
     /// period, temperature and barometric coefficients.
     #[command(after_help = "Example:
-  pendulum design examples/seconds-steel-brass.toml --pressure 1000 --temperature 25 --humidity 60")]
+  pendulum design examples/seconds-steel-brass.toml --pressure 1000hPa --temperature 25°C --humidity 60%")]
     Design(DesignArgs),
     /// A clock: the pendulum kept going by an escapement. Its steady
     /// amplitude and rate (circular and escapement errors), the isochronism
@@ -127,7 +142,7 @@ unless --channel says otherwise.")]
     #[command(after_help = "Examples:
   pendulum clock --length 0.994m --q 10000 --escapement deadbeat --lift-angle 2 --drive 20uJ
   pendulum clock --design examples/seconds-steel-brass.toml --escapement recoil --drive 2e-4Nm --drive-range 0.5x..2x --steps 7 --plot iso.svg
-  pendulum clock --length 0.994m --escapement deadbeat --drive 20uJ --duration 8days --every 1h --drive-file spring.csv --swings run.csv")]
+  pendulum clock --design examples/seconds-steel-brass.toml --escapement deadbeat --drive 20uJ --duration 8days --every 1h --drive-file examples/spring.csv --swings run.csv")]
     Clock(ClockArgs),
     /// The one-command analysis of a pendulum, as an HTML page with figures
     /// (default: a seconds pendulum at 3° with Q = 10,000).
@@ -153,7 +168,7 @@ pub struct ListenArgs {
     pub raw: Option<String>,
     /// The raw samples' rate, Hz.
     #[arg(long, value_name = "HZ", allow_hyphen_values = true, requires = "raw")]
-    pub sample_rate: Option<u32>,
+    pub sample_rate: Option<SampleRate>,
     /// The raw samples' channels, interleaved [default: 1].
     #[arg(long, value_name = "N", allow_hyphen_values = true, requires = "raw")]
     pub channels: Option<usize>,
@@ -164,7 +179,7 @@ pub struct ListenArgs {
         allow_hyphen_values = true,
         conflicts_with = "period"
     )]
-    pub bph: Option<Number>,
+    pub bph: Option<BeatsPerHour>,
     /// The nominal period (two beats).
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub period: Option<Time>,
@@ -174,7 +189,7 @@ pub struct ListenArgs {
     pub channel: Option<usize>,
     /// The sound card's clock error, ppm (positive: its clock runs fast).
     #[arg(long, value_name = "P", allow_hyphen_values = true)]
-    pub sample_rate_error_ppm: Option<Number>,
+    pub sample_rate_error_ppm: Option<Ppm>,
     /// Measure the sound card's clock error on a recording, made through
     /// the same card, of a quartz watch or a GPS 1 PPS click (one tick a
     /// second), and apply it.
@@ -222,6 +237,9 @@ pub struct SynthArgs {
 #[derive(Debug, Subcommand)]
 pub enum SynthCommand {
     /// A recording of a ticking clock (16-bit mono WAV) with known tick times.
+    #[command(after_help = "Examples:
+  pendulum synth ticks clock.wav --bph 3600 --rate 12s/day --beat-error 1.5ms --duration 10min
+  pendulum synth ticks watch.wav --bph 18000 --rate -4s/day --snr-db 10dB --hum-db -20dB --truth truth.csv")]
     Ticks(SynthTicksArgs),
 }
 
@@ -232,25 +250,25 @@ pub struct SynthTicksArgs {
     #[arg(value_name = "OUT.wav")]
     pub output: OutputPath,
     #[arg(long, value_name = "B", allow_hyphen_values = true, help = with_default("Beats per hour", TickRecording::DEFAULT.beats_per_hour))]
-    pub bph: Option<Number>,
+    pub bph: Option<BeatsPerHour>,
     #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("The clock's rate, s/day (positive: gaining)", TickRecording::DEFAULT.rate_s_per_day))]
-    pub rate: Option<Number>,
+    pub rate: Option<RatePerDay>,
     #[arg(long, value_name = "C", allow_hyphen_values = true, help = with_default("How fast the rate changes, s/day an hour (the rate at time t is --rate + C t / 1 h)", TickRecording::DEFAULT.rate_change_s_per_day_per_hour))]
-    pub rate_change: Option<Number>,
+    pub rate_change: Option<RateChange>,
     #[arg(long, value_name = "E", allow_hyphen_values = true, help = with_default("Beat error, ms (half the difference of the tick and tock intervals)", TickRecording::DEFAULT.beat_error_ms))]
-    pub beat_error: Option<Number>,
+    pub beat_error: Option<Milliseconds>,
     #[arg(long, value_name = "D", allow_hyphen_values = true, help = with_default("Length of the recording, s", TickRecording::DEFAULT.duration))]
     pub duration: Option<Time>,
     #[arg(long, value_name = "S", allow_hyphen_values = true, help = with_default("A tick's peak over the noise, dB", TickRecording::DEFAULT.snr_db))]
-    pub snr_db: Option<Number>,
+    pub snr_db: Option<Decibels>,
     #[arg(long, allow_hyphen_values = true, value_name = "HZ", help = with_default("Samples per second", TickRecording::DEFAULT.sample_rate))]
-    pub sample_rate: Option<u32>,
+    pub sample_rate: Option<SampleRate>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Room reverberation time, s", TickRecording::DEFAULT.reverb_s))]
     pub reverb: Option<Time>,
     #[arg(long, value_name = "DB", allow_hyphen_values = true, help = with_default("Mains hum against a tick's peak, dB", TickRecording::DEFAULT.hum_db))]
-    pub hum_db: Option<Number>,
+    pub hum_db: Option<Decibels>,
     #[arg(long, value_name = "F", allow_hyphen_values = true, help = with_default("Fraction of ticks left out", TickRecording::DEFAULT.missing))]
-    pub missing: Option<Number>,
+    pub missing: Option<Fraction>,
     #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Seed of every random choice (the tick's sound too)", TickRecording::DEFAULT.seed))]
     pub seed: Option<u64>,
     /// Write the true tick times to this CSV file (time_s).
@@ -298,14 +316,27 @@ pub struct FitArgs {
 pub enum FitCommand {
     /// Amplitude against time or swing count: Q, and whether the damping is
     /// viscous, dry friction or air drag.
+    #[command(after_help = "Examples:
+  pendulum fit decay examples/rundown.csv --length 0.99362m --mass 5kg --plot decay.svg
+  pendulum fit decay examples/rundown-semicolon.csv --length 0.99362m
+  pendulum fit decay examples/tracker.txt --turning-points turns.csv --json")]
     Decay(FitDecayArgs),
     /// Angle against time (video tracking): amplitude, frequency, damping, offset, g.
+    #[command(after_help = "Examples:
+  pendulum fit trajectory examples/video.csv --length 0.5m --model nonlinear
+  pendulum fit trajectory examples/tracker.txt --pivot fit --plot track.svg")]
     Trajectory(FitTrajectoryArgs),
     /// One timestamp per beat: rate, beat error, jitter, Allan deviation.
+    #[command(after_help = "Examples:
+  pendulum fit beats examples/beats.csv --bph 3600
+  pendulum fit beats examples/beats.csv --period 2s --plot beats.svg --json")]
     Beats(FitBeatsArgs),
     /// A table of periods against amplitude (the exact law: T0, g, the
     /// circular error's coefficient) or against length (g and the offset
     /// of the lengths).
+    #[command(after_help = "Examples:
+  pendulum fit period crates/pendulum-cli/tests/data/period/silveira1986.csv --length 2.87m
+  pendulum fit period crates/pendulum-cli/tests/data/period/hidayat2023.csv --plot g.svg")]
     Period(FitPeriodArgs),
 }
 
@@ -329,7 +360,7 @@ pub struct MeasurementArgs {
         value_name = "FPS",
         allow_hyphen_values = true
     )]
-    pub frame_rate: Option<Number>,
+    pub frame_rate: Option<Hertz>,
     /// For x and y positions: the pivot, as X,Y in the file's units
     /// [default: 0,0], or `fit` for the centre of the circle the bob traces.
     #[arg(long, value_name = "X,Y|fit", allow_hyphen_values = true)]
@@ -487,7 +518,7 @@ pub struct FitBeatsArgs {
     /// For a photogate log whose times count a clock's ticks: the clock's
     /// rate, ticks a second.
     #[arg(long, value_name = "HZ", allow_hyphen_values = true)]
-    pub tick_rate: Option<Number>,
+    pub tick_rate: Option<Hertz>,
     /// For a log of several light gates (a `gate` column): the gate to
     /// read, by its label [default: the first logged].
     #[arg(long, value_name = "LABEL")]
@@ -503,7 +534,7 @@ pub struct FitBeatsArgs {
         allow_hyphen_values = true,
         conflicts_with = "period"
     )]
-    pub bph: Option<Number>,
+    pub bph: Option<BeatsPerHour>,
     /// The nominal period (two beats).
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub period: Option<Time>,
@@ -558,8 +589,23 @@ pub struct PeriodArgs {
     /// Amplitude (e.g. 3deg, 0.05rad), or a range 1deg..10deg for a table.
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: String,
-    #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Rows in the table when --amplitude is a range (at least 2)", period_table::DEFAULT_STEPS))]
+    /// Rows in the table when --amplitude is a range (at least 2), evenly
+    /// spaced [default: a round step of degrees giving at least 10 rows].
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_name = "N",
+        conflicts_with = "step"
+    )]
     pub steps: Option<u32>,
+    /// The spacing of the table's rows when --amplitude is a range (e.g.
+    /// 5deg): rows from the first amplitude while within the last.
+    #[arg(long, allow_hyphen_values = true, value_name = "A")]
+    pub step: Option<Angle>,
+    /// The CSV's columns, in order (e.g. amplitude_deg,period_s,circular_error_s_per_day)
+    /// [default: all].
+    #[arg(long, value_name = "NAMES", requires = "csv")]
+    pub columns: Option<String>,
     #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Terms of the power series of K in sin²(A0/2) (section 1-6) to compare with", period_table::DEFAULT_SERIES_TERMS))]
     pub series_terms: Option<u32>,
     /// Plot T/T0 (exact, series of 1 to 5 terms, small-angle) and the
@@ -586,7 +632,7 @@ pub struct LengthArgs {
     pub period: Option<Time>,
     /// The beat rate wanted, beats per hour (a beat is half a period).
     #[arg(long, value_name = "B", allow_hyphen_values = true)]
-    pub bph: Option<Number>,
+    pub bph: Option<BeatsPerHour>,
     /// The amplitude it will swing at [default: 0, the small-angle limit].
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub amplitude: Option<Angle>,
@@ -778,9 +824,6 @@ pub struct SimulateArgs {
     /// estimated to take more than a few seconds.
     #[arg(long)]
     pub force: bool,
-    /// No progress bar.
-    #[arg(long, short)]
-    pub quiet: bool,
     /// Plot the amplitude and the rate against time to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<OutputPath>,
@@ -827,7 +870,7 @@ pub struct TrainArgs {
         value_name = "B",
         conflicts_with = "wheels"
     )]
-    pub bph: Option<Number>,
+    pub bph: Option<BeatsPerHour>,
     #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("The escape wheel's teeth, for --bph", train_analysis::DEFAULT_ESCAPE_TEETH))]
     pub escape_teeth: Option<u32>,
     #[arg(long, allow_hyphen_values = true, value_name = "X", help = with_default("Relative tolerance on --bph", train_analysis::DEFAULT_TOLERANCE))]
@@ -857,7 +900,7 @@ pub struct RegulateArgs {
     pub nut_pitch: Option<Length>,
     /// The rating nut's threads per inch.
     #[arg(long, allow_hyphen_values = true, value_name = "N")]
-    pub nut_tpi: Option<Number>,
+    pub nut_tpi: Option<ThreadsPerInch>,
     /// Divisions engraved round the nut.
     #[arg(long, allow_hyphen_values = true, value_name = "N")]
     pub nut_divisions: Option<u32>,
@@ -994,13 +1037,13 @@ pub struct DesignArgs {
     #[arg(value_name = "FILE.toml")]
     pub file: InputPath,
     #[arg(long, allow_hyphen_values = true, value_name = "P", help = with_default("Air pressure, hPa", sheet::DEFAULT_PRESSURE_PA / 100.0))]
-    pub pressure: Option<Number>,
+    pub pressure: Option<Hectopascals>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("Temperature, °C", sheet::DEFAULT_TEMPERATURE_C))]
-    pub temperature: Option<Number>,
+    pub temperature: Option<Celsius>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("The temperature the clock was regulated at, °C", sheet::DEFAULT_TEMPERATURE_C))]
-    pub regulated_at: Option<Number>,
+    pub regulated_at: Option<Celsius>,
     #[arg(long, allow_hyphen_values = true, value_name = "H", help = with_default("Relative humidity, %", sheet::DEFAULT_HUMIDITY * 100.0))]
-    pub humidity: Option<Number>,
+    pub humidity: Option<Percent>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Print one JSON object.

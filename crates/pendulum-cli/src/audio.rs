@@ -59,15 +59,18 @@ pub fn decode(
             ),
         ));
     }
-    let extent = match seconds {
-        Some(s) => Extent::Frames((s * f64::from(header.sample_rate)).ceil() as u64),
-        None => Extent::Whole,
-    };
     // The encoder's priming samples of an MP4 (AAC) file, which symphonia
     // 0.5 reads from the edit list but does not trim.
     let mut skip = mp4_priming(path).map_or(0, |(time, scale)| {
         (time as f64 * f64::from(header.sample_rate) / f64::from(scale)).round() as u64
     });
+    // The first `seconds` of the recording itself: the priming is decoded
+    // and dropped on top of them (a first pass cut short by it would take
+    // a long recording for one that ends within the pass).
+    let extent = match seconds {
+        Some(s) => Extent::Frames((s * f64::from(header.sample_rate)).ceil() as u64 + skip),
+        None => Extent::Whole,
+    };
     let mut mono: Vec<f32> = Vec::new();
     decode_frames(path, extent, |frames, count| {
         mono.clear();

@@ -135,7 +135,11 @@ pub fn one_line_clap_error(error: &clap::Error) -> String {
             parts.push(line);
         }
     }
-    let joined = parts.join(" ");
+    let mut joined = parts.join(" ");
+    // Every --length that is required may be a design instead.
+    if error.kind() == clap::error::ErrorKind::MissingRequiredArgument {
+        joined = joined.replace("--length <L>", "--length <L> (or --design FILE.toml)");
+    }
     let text = joined.strip_prefix("error: ").unwrap_or(&joined);
     format!("{text} (see --help)")
 }

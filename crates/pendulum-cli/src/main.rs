@@ -40,6 +40,7 @@ fn main() -> ExitCode {
         Err(e) => return clap_exit(&e),
     };
     let declared = paths::declared(&definition, &matches);
+    work::set_quiet(cli.quiet);
     interrupt::install();
     install_panic_cleanup();
     let result = commands::run(&cli.command, &declared).and_then(|out| {
@@ -90,14 +91,27 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
 }
 
 fn fail(error: &CliError) -> ExitCode {
-    eprintln!("error: {error}");
+    // (Written, not `eprintln!`, which panics on a closed standard error.)
+    let _ = writeln!(std::io::stderr().lock(), "error: {error}");
     ExitCode::from(error.status())
 }
 
-/// Writes the output; a closed pipe (`pendulum … | head`) is not an error.
+/// Writes the output; a closed pipe (`pendulum … | head`, also with
+/// `2>&1`) is not an error: the reader has what it wanted, exit 0.
 fn print(out: &Output) -> ExitCode {
-    if !out.stderr.is_empty() {
-        eprint!("{}", out.stderr);
+    // With --quiet the summary beside data on standard output is left
+    // out, but never its warnings.
+    let stderr: String = if work::quiet() {
+        out.stderr
+            .lines()
+            .filter(|l| l.to_lowercase().contains("warning"))
+            .map(|l| format!("{l}\n"))
+            .collect()
+    } else {
+        out.stderr.clone()
+    };
+    if !stderr.is_empty() {
+        let _ = std::io::stderr().lock().write_all(stderr.as_bytes());
     }
     let mut stdout = std::io::stdout().lock();
     match stdout

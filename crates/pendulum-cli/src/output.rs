@@ -160,6 +160,48 @@ pub fn csv<T: Serialize>(rows: &[T]) -> Result<String, CliError> {
     String::from_utf8(bytes).map_err(|e| CliError::other(format!("could not encode CSV: {e}")))
 }
 
+/// The columns `names` (comma-separated, in the order given) of a CSV
+/// text `csv`, refused in `flag`'s name when one is not among its header's.
+pub fn csv_columns(csv: &str, names: &str, flag: &str) -> Result<String, CliError> {
+    let encode = |e: csv::Error| CliError::other(format!("could not encode CSV: {e}"));
+    let mut reader = csv::Reader::from_reader(csv.as_bytes());
+    let header: Vec<String> = reader
+        .headers()
+        .map_err(encode)?
+        .iter()
+        .map(String::from)
+        .collect();
+    let mut picked = Vec::new();
+    for name in names.split(',').map(str::trim) {
+        match header.iter().position(|h| h == name) {
+            Some(i) => picked.push(i),
+            None => {
+                return Err(CliError::flag(
+                    flag,
+                    format!(
+                        "'{name}' is not a column; the columns are {}",
+                        header.join(", ")
+                    ),
+                ))
+            }
+        }
+    }
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    writer
+        .write_record(picked.iter().map(|&i| header[i].as_str()))
+        .map_err(encode)?;
+    for record in reader.records() {
+        let record = record.map_err(encode)?;
+        writer
+            .write_record(picked.iter().map(|&i| record.get(i).unwrap_or("")))
+            .map_err(encode)?;
+    }
+    let bytes = writer
+        .into_inner()
+        .map_err(|e| CliError::other(format!("could not encode CSV: {e}")))?;
+    String::from_utf8(bytes).map_err(|e| CliError::other(format!("could not encode CSV: {e}")))
+}
+
 /// A right-aligned table with a header, for people.
 pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
     let mut widths: Vec<usize> = header.iter().map(|h| h.chars().count()).collect();

@@ -24,167 +24,134 @@ pub enum Dimension {
     Torque,
     /// Joules.
     Energy,
+    /// Pascals.
+    Pressure,
+    /// Degrees Celsius (an affine scale: kelvin and °F carry an offset).
+    Temperature,
+    /// A pure ratio: a rate (s/day, ppm), a humidity (%), a fraction.
+    Ratio,
+    /// Hertz.
+    Frequency,
+    /// Beats per hour (a clock's beat rate).
+    BeatRate,
+    /// Decibels.
+    Level,
 }
 
-/// A unit's spellings and its size in SI.
+/// A unit's spellings and its size in SI: a value `v` in it is
+/// `v × si + offset` in the dimension's base unit (the offset is only
+/// temperature's: kelvin and °F against °C).
 struct Unit {
     names: &'static [&'static str],
     si: f64,
+    offset: f64,
+}
+
+/// A unit with no offset.
+const fn unit(names: &'static [&'static str], si: f64) -> Unit {
+    Unit {
+        names,
+        si,
+        offset: 0.0,
+    }
 }
 
 const LENGTH: &[Unit] = &[
-    Unit {
-        names: &["m"],
-        si: 1.0,
-    },
-    Unit {
-        names: &["cm"],
-        si: 0.01,
-    },
-    Unit {
-        names: &["mm"],
-        si: 0.001,
-    },
-    Unit {
-        names: &["um", "µm"],
-        si: 1e-6,
-    },
-    Unit {
-        names: &["km"],
-        si: 1000.0,
-    },
-    Unit {
-        names: &["in", "inch", "\""],
-        si: 0.0254,
-    },
-    Unit {
-        names: &["ft", "foot", "feet"],
-        si: 0.3048,
-    },
+    unit(&["m"], 1.0),
+    unit(&["cm"], 0.01),
+    unit(&["mm"], 0.001),
+    unit(&["um", "µm"], 1e-6),
+    unit(&["km"], 1000.0),
+    unit(&["in", "inch", "\""], 0.0254),
+    unit(&["ft", "foot", "feet"], 0.3048),
 ];
 
 const ANGLE: &[Unit] = &[
-    Unit {
-        names: &["deg", "°", "degree", "degrees"],
-        si: std::f64::consts::PI / 180.0,
-    },
-    Unit {
-        names: &["rad"],
-        si: 1.0,
-    },
-    Unit {
-        names: &["mrad"],
-        si: 0.001,
-    },
-    Unit {
-        names: &["arcmin", "′"],
-        si: std::f64::consts::PI / 10_800.0,
-    },
-    Unit {
-        names: &["arcsec", "″"],
-        si: std::f64::consts::PI / 648_000.0,
-    },
+    unit(
+        &["deg", "°", "degree", "degrees"],
+        std::f64::consts::PI / 180.0,
+    ),
+    unit(&["rad"], 1.0),
+    unit(&["mrad"], 0.001),
+    unit(&["arcmin", "′"], std::f64::consts::PI / 10_800.0),
+    unit(&["arcsec", "″"], std::f64::consts::PI / 648_000.0),
 ];
 
 const TIME: &[Unit] = &[
-    Unit {
-        names: &["s", "sec"],
-        si: 1.0,
-    },
-    Unit {
-        names: &["ms"],
-        si: 0.001,
-    },
-    Unit {
-        names: &["us", "µs"],
-        si: 1e-6,
-    },
-    Unit {
-        names: &["ns"],
-        si: 1e-9,
-    },
-    Unit {
-        names: &["min"],
-        si: 60.0,
-    },
-    Unit {
-        names: &["h", "hour", "hours"],
-        si: 3600.0,
-    },
-    Unit {
-        names: &["day", "days", "d"],
-        si: 86_400.0,
-    },
-    Unit {
-        names: &["week", "weeks"],
-        si: 604_800.0,
-    },
-    Unit {
-        // The Julian year, 365.25 days.
-        names: &["year", "years", "yr"],
-        si: 31_557_600.0,
-    },
+    unit(&["s", "sec"], 1.0),
+    unit(&["ms"], 0.001),
+    unit(&["us", "µs"], 1e-6),
+    unit(&["ns"], 1e-9),
+    unit(&["min"], 60.0),
+    unit(&["h", "hour", "hours"], 3600.0),
+    unit(&["day", "days", "d"], 86_400.0),
+    unit(&["week", "weeks"], 604_800.0),
+    // The Julian year, 365.25 days.
+    unit(&["year", "years", "yr"], 31_557_600.0),
 ];
 
 const MASS: &[Unit] = &[
-    Unit {
-        names: &["kg"],
-        si: 1.0,
-    },
-    Unit {
-        names: &["g"],
-        si: 0.001,
-    },
-    Unit {
-        names: &["mg"],
-        si: 1e-6,
-    },
-    Unit {
-        names: &["lb"],
-        si: 0.453_592_37,
-    },
+    unit(&["kg"], 1.0),
+    unit(&["g"], 0.001),
+    unit(&["mg"], 1e-6),
+    unit(&["lb"], 0.453_592_37),
 ];
 
 const ACCELERATION: &[Unit] = &[
-    Unit {
-        names: &["m/s^2", "m/s2", "m/s²"],
-        si: 1.0,
-    },
-    Unit {
-        names: &["cm/s^2", "cm/s2", "gal", "Gal"],
-        si: 0.01,
-    },
+    unit(&["m/s^2", "m/s2", "m/s²"], 1.0),
+    unit(&["cm/s^2", "cm/s2", "gal", "Gal"], 0.01),
 ];
 
 const TORQUE: &[Unit] = &[
-    Unit {
-        names: &["N m", "Nm", "N·m", "N*m"],
-        si: 1.0,
-    },
-    Unit {
-        names: &["mN m", "mNm", "mN·m"],
-        si: 1e-3,
-    },
-    Unit {
-        names: &["uN m", "uNm", "µN m", "µNm", "µN·m"],
-        si: 1e-6,
-    },
+    unit(&["N m", "Nm", "N·m", "N*m"], 1.0),
+    unit(&["mN m", "mNm", "mN·m"], 1e-3),
+    unit(&["uN m", "uNm", "µN m", "µNm", "µN·m"], 1e-6),
 ];
 
 const ENERGY: &[Unit] = &[
+    unit(&["J"], 1.0),
+    unit(&["mJ"], 1e-3),
+    unit(&["uJ", "µJ"], 1e-6),
+];
+
+const PRESSURE: &[Unit] = &[
+    unit(&["Pa"], 1.0),
+    unit(&["hPa", "mbar"], 100.0),
+    unit(&["kPa"], 1000.0),
+    unit(&["bar"], 100_000.0),
+    unit(&["atm"], 101_325.0),
+    // The conventional inch and millimetre of mercury.
+    unit(&["inHg"], 3386.389),
+    unit(&["mmHg", "Torr"], 133.322_387_415),
+];
+
+const TEMPERATURE: &[Unit] = &[
+    unit(&["°C", "C", "degC", "celsius"], 1.0),
     Unit {
-        names: &["J"],
+        names: &["K", "kelvin"],
         si: 1.0,
+        offset: -273.15,
     },
     Unit {
-        names: &["mJ"],
-        si: 1e-3,
-    },
-    Unit {
-        names: &["uJ", "µJ"],
-        si: 1e-6,
+        names: &["°F", "F", "degF"],
+        si: 5.0 / 9.0,
+        offset: -160.0 / 9.0,
     },
 ];
+
+const RATIO: &[Unit] = &[
+    unit(&["%", "percent"], 0.01),
+    unit(&["ppm"], 1e-6),
+    unit(&["ppb"], 1e-9),
+    unit(&["s/day", "s/d", "sec/day"], 1.0 / 86_400.0),
+    unit(&["s/week"], 1.0 / 604_800.0),
+];
+
+const FREQUENCY: &[Unit] = &[unit(&["Hz", "/s", "fps"], 1.0), unit(&["kHz"], 1000.0)];
+
+const BEAT_RATE: &[Unit] = &[unit(&["bph", "A/h", "beats/h", "/h"], 1.0)];
+
+const LEVEL: &[Unit] = &[unit(&["dB"], 1.0)];
 
 impl Dimension {
     fn units(self) -> &'static [Unit] {
@@ -196,6 +163,12 @@ impl Dimension {
             Dimension::Acceleration => ACCELERATION,
             Dimension::Torque => TORQUE,
             Dimension::Energy => ENERGY,
+            Dimension::Pressure => PRESSURE,
+            Dimension::Temperature => TEMPERATURE,
+            Dimension::Ratio => RATIO,
+            Dimension::Frequency => FREQUENCY,
+            Dimension::BeatRate => BEAT_RATE,
+            Dimension::Level => LEVEL,
         }
     }
 
@@ -216,6 +189,12 @@ impl Dimension {
             Dimension::Acceleration => "an acceleration",
             Dimension::Torque => "a torque",
             Dimension::Energy => "an energy",
+            Dimension::Pressure => "a pressure",
+            Dimension::Temperature => "a temperature",
+            Dimension::Ratio => "a ratio",
+            Dimension::Frequency => "a frequency",
+            Dimension::BeatRate => "a beat rate",
+            Dimension::Level => "a level",
         }
     }
 
@@ -224,7 +203,7 @@ impl Dimension {
         names.join(", ")
     }
 
-    const ALL: [Dimension; 7] = [
+    const ALL: [Dimension; 13] = [
         Dimension::Length,
         Dimension::Angle,
         Dimension::Time,
@@ -232,6 +211,12 @@ impl Dimension {
         Dimension::Acceleration,
         Dimension::Torque,
         Dimension::Energy,
+        Dimension::Pressure,
+        Dimension::Temperature,
+        Dimension::Ratio,
+        Dimension::Frequency,
+        Dimension::BeatRate,
+        Dimension::Level,
     ];
 }
 
@@ -334,8 +319,10 @@ pub fn parse_quantity(text: &str, dimension: Dimension) -> Result<f64, UnitError
         .parse()
         .map_err(|_| UnitError::NotANumber(trimmed.to_string()))?;
     let unit = trimmed[split..].trim();
-    let factor = unit_factor(trimmed, unit, dimension)?;
-    let value = number * factor;
+    let value = match unit_of(trimmed, unit, dimension)? {
+        Some(u) => number * u.si + u.offset,
+        None => number * dimension.bare_factor(),
+    };
     if !value.is_finite() {
         return Err(UnitError::NotFinite(trimmed.to_string()));
     }
@@ -369,12 +356,17 @@ pub fn parse_range(text: &str, dimension: Dimension) -> Option<Result<(f64, f64)
     Some(parse_quantity(from, dimension).and_then(|a| Ok((a, parse_quantity(to, dimension)?))))
 }
 
-fn unit_factor(text: &str, unit: &str, dimension: Dimension) -> Result<f64, UnitError> {
+/// The unit `unit` names (`None`: no unit was written).
+fn unit_of(
+    text: &str,
+    unit: &str,
+    dimension: Dimension,
+) -> Result<Option<&'static Unit>, UnitError> {
     if unit.is_empty() {
-        return Ok(dimension.bare_factor());
+        return Ok(None);
     }
     if let Some(u) = lookup(dimension, unit) {
-        return Ok(u.si);
+        return Ok(Some(u));
     }
     match Dimension::ALL.iter().find(|d| lookup(**d, unit).is_some()) {
         Some(&found) => Err(UnitError::WrongDimension {
@@ -387,6 +379,40 @@ fn unit_factor(text: &str, unit: &str, dimension: Dimension) -> Result<f64, Unit
             unit: unit.to_string(),
             wanted: dimension,
         }),
+    }
+}
+
+/// Reads `text` as a quantity of `dimension` and gives it in the unit
+/// named `bare`, which is also what a bare number means (`""`: a pure
+/// number, for a ratio). A value written in `bare` itself, or bare, is the
+/// number as written, bit for bit; another unit is converted through the
+/// ratio of the two units' sizes.
+pub fn parse_in(text: &str, dimension: Dimension, bare: &str) -> Result<f64, UnitError> {
+    let trimmed = text.trim();
+    if trimmed.is_empty() {
+        return Err(UnitError::Empty);
+    }
+    non_finite_word(trimmed)?;
+    let split = number_prefix_len(trimmed);
+    if split == 0 {
+        return Err(UnitError::NotANumber(trimmed.to_string()));
+    }
+    let number: f64 = trimmed[..split]
+        .parse()
+        .map_err(|_| UnitError::NotANumber(trimmed.to_string()))?;
+    let (bare_si, bare_offset) = match lookup(dimension, bare) {
+        Some(u) => (u.si, u.offset),
+        None => (1.0, 0.0),
+    };
+    let value = match unit_of(trimmed, trimmed[split..].trim(), dimension)? {
+        None => number,
+        Some(u) if u.names.contains(&bare) => number,
+        Some(u) => (number * u.si + u.offset - bare_offset) / bare_si,
+    };
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(UnitError::NotFinite(trimmed.to_string()))
     }
 }
 
@@ -450,11 +476,28 @@ impl std::error::Error for ValueError {}
 /// value that clap parses with [`parse_quantity`] (or [`parse_number`]),
 /// so that a value clap refuses names its flag (see
 /// [`crate::error::one_line_clap_error`]).
+/// A value parsed from the command line, in the unit its type names.
+pub trait Quantity: Copy {
+    /// The value.
+    fn value(self) -> f64;
+}
+
+/// The value given, or `default` (the library's) when none was.
+pub fn or_default<Q: Quantity>(given: Option<Q>, default: f64) -> f64 {
+    given.map_or(default, Quantity::value)
+}
+
 macro_rules! quantity_type {
     ($(#[$doc:meta])* $name:ident, $parse:expr) => {
         $(#[$doc])*
         #[derive(Clone, Copy, Debug, PartialEq)]
         pub struct $name(pub f64);
+
+        impl Quantity for $name {
+            fn value(self) -> f64 {
+                self.0
+            }
+        }
 
         impl std::str::FromStr for $name {
             type Err = UnitError;
@@ -497,17 +540,100 @@ quantity_type!(
     parse_number
 );
 quantity_type!(
-    /// A clock's rate, s/day: `+12s/day`, `-30 s/d`, `4`.
+    /// A clock's rate, s/day (`+12s/day`, `-30 s/d`, `50ppm`; a bare
+    /// number is s/day).
     RatePerDay,
+    |t| parse_in(t, Dimension::Ratio, "s/day")
+);
+quantity_type!(
+    /// How fast a rate changes, s/day an hour (`2s/day/h`; a bare number
+    /// is s/day an hour).
+    RateChange,
     |t| {
         let t = t.trim();
-        let number = ["s/day", "s/d", "sec/day"]
+        let per_hour = ["/h", "/hour", " an hour", " per hour"]
             .iter()
             .find_map(|u| t.strip_suffix(u))
             .unwrap_or(t);
-        parse_number(number.trim())
+        parse_in(per_hour, Dimension::Ratio, "s/day")
     }
 );
+quantity_type!(
+    /// A small ratio in parts per million (`20ppm`, `1.7s/day`; a bare
+    /// number is ppm).
+    Ppm,
+    |t| parse_in(t, Dimension::Ratio, "ppm")
+);
+quantity_type!(
+    /// A percentage (`60%`; a bare number is percent).
+    Percent,
+    |t| parse_in(t, Dimension::Ratio, "%")
+);
+quantity_type!(
+    /// A fraction (`0.05`, `5%`).
+    Fraction,
+    |t| parse_in(t, Dimension::Ratio, "")
+);
+quantity_type!(
+    /// A short time in milliseconds (`1.5ms`, `800us`; a bare number is
+    /// milliseconds).
+    Milliseconds,
+    |t| parse_in(t, Dimension::Time, "ms")
+);
+quantity_type!(
+    /// A pressure in hectopascals (`1000hPa`, `29.9inHg`, `101.3kPa`; a
+    /// bare number is hPa, a barometer's unit).
+    Hectopascals,
+    |t| parse_in(t, Dimension::Pressure, "hPa")
+);
+quantity_type!(
+    /// A temperature in °C (`25°C`, `298K`, `77°F`; a bare number is °C).
+    Celsius,
+    |t| parse_in(t, Dimension::Temperature, "°C")
+);
+quantity_type!(
+    /// A frequency in hertz (`30fps`, `48kHz`; a bare number is Hz).
+    Hertz,
+    |t| parse_in(t, Dimension::Frequency, "Hz")
+);
+quantity_type!(
+    /// A beat rate in beats per hour (`3600bph`; a bare number is bph).
+    BeatsPerHour,
+    |t| parse_in(t, Dimension::BeatRate, "bph")
+);
+quantity_type!(
+    /// A level in decibels (`20dB`; a bare number is dB).
+    Decibels,
+    |t| parse_in(t, Dimension::Level, "dB")
+);
+quantity_type!(
+    /// A thread's count per inch (`36tpi`; a bare number is threads an
+    /// inch).
+    ThreadsPerInch,
+    |t| {
+        let t = t.trim();
+        parse_number(t.strip_suffix("tpi").unwrap_or(t).trim())
+    }
+);
+
+/// A sample rate, a whole number of hertz (`48000`, `48kHz`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SampleRate(pub u32);
+
+impl std::str::FromStr for SampleRate {
+    type Err = ValueError;
+    fn from_str(text: &str) -> Result<Self, ValueError> {
+        let hz =
+            parse_in(text, Dimension::Frequency, "Hz").map_err(|e| ValueError(e.to_string()))?;
+        if hz.fract() != 0.0 || !(0.0..=f64::from(u32::MAX)).contains(&hz) {
+            return Err(ValueError(format!(
+                "must be a whole number of samples a second (48000, 44.1kHz), got '{}'",
+                text.trim()
+            )));
+        }
+        Ok(SampleRate(hz as u32))
+    }
+}
 
 /// An escapement's drive: a torque (N m), or an energy per beat (J).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -601,6 +727,54 @@ mod tests {
         assert!(parse_quantity(".", Dimension::Length).is_err());
     }
 
+    /// The flags whose help names a unit other than SI: a bare number is
+    /// that unit, the same unit written is the number bit for bit, and
+    /// other units convert (figures from NIST SP 811, appendix B).
+    #[test]
+    fn values_in_a_named_unit() {
+        let hpa = |t| parse_in(t, Dimension::Pressure, "hPa").unwrap();
+        assert_eq!(hpa("1013.25"), 1013.25);
+        assert_eq!(hpa("1013.25hPa"), 1013.25);
+        assert_eq!(hpa("1013.25 mbar"), 1013.25);
+        assert!((hpa("29.92inHg") - 1013.21).abs() < 0.01);
+        assert!((hpa("1atm") - 1013.25).abs() < 1e-9);
+        let c = |t| parse_in(t, Dimension::Temperature, "°C").unwrap();
+        assert_eq!(c("25"), 25.0);
+        assert_eq!(c("25°C"), 25.0);
+        assert!((c("298.15K") - 25.0).abs() < 1e-12);
+        assert!((c("77°F") - 25.0).abs() < 1e-12);
+        assert!((c("-40F") + 40.0).abs() < 1e-12);
+        let pct = |t| parse_in(t, Dimension::Ratio, "%").unwrap();
+        assert_eq!(pct("60"), 60.0);
+        assert_eq!(pct("60%"), 60.0);
+        let per_day = |t| parse_in(t, Dimension::Ratio, "s/day").unwrap();
+        assert_eq!(per_day("+12s/day"), 12.0);
+        assert_eq!(per_day("-30 s/d"), -30.0);
+        assert!((per_day("1ppm") - 0.0864).abs() < 1e-15);
+        let ppm = |t| parse_in(t, Dimension::Ratio, "ppm").unwrap();
+        assert_eq!(ppm("20ppm"), 20.0);
+        assert!((ppm("8.64s/day") - 100.0).abs() < 1e-12);
+        assert!((parse_in("5%", Dimension::Ratio, "").unwrap() - 0.05).abs() < 1e-17);
+        let ms = |t| parse_in(t, Dimension::Time, "ms").unwrap();
+        assert_eq!(ms("1.5"), 1.5);
+        assert_eq!(ms("1.5ms"), 1.5);
+        assert!((ms("800us") - 0.8).abs() < 1e-15);
+        assert_eq!(
+            parse_in("3600bph", Dimension::BeatRate, "bph").unwrap(),
+            3600.0
+        );
+        assert_eq!("44.1kHz".parse::<SampleRate>().unwrap().0, 44_100);
+        assert!("44.1".parse::<SampleRate>().is_err());
+        assert_eq!("2s/day/h".parse::<RateChange>().unwrap().0, 2.0);
+        assert_eq!("36tpi".parse::<ThreadsPerInch>().unwrap().0, 36.0);
+        assert_eq!(
+            parse_in("20m", Dimension::Ratio, "ppm")
+                .unwrap_err()
+                .to_string(),
+            "'20m' is a length, but a ratio is wanted (%, ppm, ppb, s/day, s/week)"
+        );
+    }
+
     #[test]
     fn plain_numbers() {
         assert_eq!(parse_number("0.05"), Ok(0.05));
@@ -623,13 +797,13 @@ mod tests {
         assert!(parse_range("1deg..x", Dimension::Angle).unwrap().is_err());
     }
 
-    fn any_unit() -> impl Strategy<Value = (Dimension, &'static str, f64)> {
-        let all: Vec<(Dimension, &'static str, f64)> = Dimension::ALL
+    fn any_unit() -> impl Strategy<Value = (Dimension, &'static str, f64, f64)> {
+        let all: Vec<(Dimension, &'static str, f64, f64)> = Dimension::ALL
             .iter()
             .flat_map(|&d| {
                 d.units()
                     .iter()
-                    .flat_map(move |u| u.names.iter().map(move |&n| (d, n, u.si)))
+                    .flat_map(move |u| u.names.iter().map(move |&n| (d, n, u.si, u.offset)))
             })
             .collect();
         proptest::sample::select(all)
@@ -648,11 +822,11 @@ mod tests {
         /// A value written with a unit reads back as value × unit, with or
         /// without a space, in any of the unit's spellings.
         #[test]
-        fn round_trip((dimension, name, si) in any_unit(), value in -1e6_f64..1e6) {
+        fn round_trip((dimension, name, si, offset) in any_unit(), value in -1e6_f64..1e6) {
             let tight = parse_quantity(&format!("{value}{name}"), dimension).unwrap();
             let spaced = parse_quantity(&format!("{value} {name}"), dimension).unwrap();
             prop_assert_eq!(tight, spaced);
-            prop_assert_eq!(tight, value * si);
+            prop_assert_eq!(tight, value * si + offset);
         }
 
         /// Exponents: `1.5e-3m` equals `1.5mm`.
@@ -666,7 +840,7 @@ mod tests {
 
         /// A unit of the wrong kind is named as such.
         #[test]
-        fn wrong_dimension_is_named((dimension, name, _si) in any_unit(), value in 0.0_f64..100.0) {
+        fn wrong_dimension_is_named((dimension, name, _si, _offset) in any_unit(), value in 0.0_f64..100.0) {
             for wanted in Dimension::ALL {
                 if wanted == dimension || lookup(wanted, name).is_some() {
                     continue;

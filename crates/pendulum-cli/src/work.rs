@@ -85,6 +85,18 @@ pub fn human_bytes(b: f64) -> String {
     format!("{} bytes", num(b, 3))
 }
 
+static QUIET: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// `--quiet`: no bar or spinner for the rest of the run.
+pub fn set_quiet(quiet: bool) {
+    QUIET.store(quiet, std::sync::atomic::Ordering::Relaxed);
+}
+
+/// Whether `--quiet` was given.
+pub fn quiet() -> bool {
+    QUIET.load(std::sync::atomic::Ordering::Relaxed)
+}
+
 /// A spinner on standard error for a step that reports no progress (a
 /// fit), shown when it is estimated at more than a second (and, as every
 /// bar, only when standard error is a terminal); it goes when dropped.
@@ -94,7 +106,7 @@ impl Spinner {
     /// Starts the spinner saying `what` ("fitting 2e6 rows"), if the step
     /// is estimated at more than a second.
     pub fn start(what: String, seconds: f64) -> Self {
-        if seconds <= 1.0 {
+        if seconds <= 1.0 || quiet() {
             return Self(None);
         }
         let bar = ProgressBar::new_spinner();
@@ -120,26 +132,24 @@ pub struct Progress {
     total: f64,
     label: &'static str,
     started: Instant,
-    quiet: bool,
 }
 
 impl Progress {
     /// A bar over `total` units (s of simulated time, rows, samples),
-    /// labelled `label` ("simulated"); `quiet` shows none.
-    pub fn new(total: f64, label: &'static str, quiet: bool) -> Self {
+    /// labelled `label` ("simulated"); with `--quiet` none is shown.
+    pub fn new(total: f64, label: &'static str) -> Self {
         Self {
             bar: None,
             total,
             label,
             started: Instant::now(),
-            quiet,
         }
     }
 
     /// Work done so far, in the units of `total`; `shown` says it for
     /// people ("3600 s").
     pub fn update(&mut self, done: f64, shown: impl FnOnce() -> String) {
-        if self.quiet || self.total.is_nan() || self.total <= 0.0 {
+        if quiet() || self.total.is_nan() || self.total <= 0.0 {
             return;
         }
         if self.bar.is_none() && self.started.elapsed() > Duration::from_secs(1) {

@@ -750,7 +750,7 @@ fn listen<'py>(
 /// The period at one amplitude or over a range (the CLI's `period`) as
 /// JSON: one row, or a list of rows.
 #[pyfunction]
-#[pyo3(signature = (length, g, amplitude, amplitude_range, steps, series_terms))]
+#[pyo3(signature = (length, g, amplitude, amplitude_range, steps, series_terms, step))]
 fn period_table(
     length: f64,
     g: Option<f64>,
@@ -758,11 +758,17 @@ fn period_table(
     amplitude_range: Option<(f64, f64)>,
     steps: Option<i64>,
     series_terms: Option<i64>,
+    step: Option<f64>,
 ) -> PyResult<String> {
     use pendulum_theory::period::table::{table, Amplitudes, PeriodInput};
     let amplitudes = match (amplitude, amplitude_range) {
         (Some(a), None) => Amplitudes::One(a),
-        (None, Some((from, to))) => Amplitudes::Range { from, to, steps },
+        (None, Some((from, to))) => Amplitudes::Range {
+            from,
+            to,
+            steps,
+            step,
+        },
         _ => {
             return Err(PyValueError::new_err(
                 "amplitude: give one amplitude or amplitude_range=(from, to)",

@@ -177,7 +177,7 @@ pub fn swing(args: &SwingArgs) -> Result<Swing, CliError> {
 /// The beat a clock is meant to keep, from `--period` or `--bph`.
 pub fn nominal(
     period: Option<Time>,
-    bph: Option<Number>,
+    bph: Option<crate::units::BeatsPerHour>,
 ) -> Option<pendulum_theory::fitting::beat_log::Nominal> {
     use pendulum_theory::fitting::beat_log::Nominal;
     match (period, bph) {

@@ -8,7 +8,7 @@ use crate::error::CliError;
 use crate::file::AtomicFile;
 use crate::output::{self, num, Summary};
 use pendulum_theory::compound::compensate::{
-    compensate, CompensateInput, Compensation, DEFAULT_PART,
+    compensate, CompensateInput, Compensation, DEFAULT_PART, NUT_TRAVEL_M,
 };
 use serde::Serialize;
 
@@ -92,7 +92,7 @@ fn render(json: &CompensateJson, part: &str) -> Result<String, CliError> {
         s.row(
             "Compensator",
             format!(
-                "a {} of {name} {} mm long ({} mm outside, {} mm bore) under the {part}, the rod {} mm longer and the nut as much lower",
+                "a {} of {name} {} mm long ({} mm outside, {} mm bore) under the {part}, the rod {} mm longer and the nut as much lower, before regulating",
                 if l < 0.05 { "collar" } else { "tube" },
                 num(l * 1e3, 5),
                 num(result.tube_diameter_m.unwrap_or(0.0) * 1e3, 4),
@@ -127,22 +127,49 @@ fn render(json: &CompensateJson, part: &str) -> Result<String, CliError> {
             ),
         );
     }
-    if let (Some(after), Some(l)) = (
-        result.compensated_coefficient_s_per_day_per_c,
-        result.compensated_equivalent_length_m,
-    ) {
+    if let Some(after) = result.compensated_coefficient_s_per_day_per_c {
         s.row("Then", format!("{} s/day per °C", num(after, 3)));
-        let change = l - result.equivalent_length_m;
-        if change.abs() > 1e-6 {
-            s.row(
-                "Length",
-                format!(
-                    "equivalent length {} m (was {}): regulate it to its beat",
-                    num(l, 7),
-                    num(result.equivalent_length_m, 7)
-                ),
-            );
-        }
+    }
+    if let (Some(shift), Some(follow)) = (result.regulation_shift_m, result.rod_follows) {
+        let way = if shift >= 0.0 { "down" } else { "up" };
+        let what = result.regulation_part.as_deref().unwrap_or("nut");
+        let mm = num(shift.abs() * 1e3, 4);
+        let moved = if follow {
+            format!(
+                "the '{what}' {mm} mm {way} and the rod {mm} mm {} (beyond a rating nut's {} mm of travel)",
+                if shift >= 0.0 { "longer" } else { "shorter" },
+                num(NUT_TRAVEL_M * 1e3, 3)
+            )
+        } else {
+            match result.regulation_turns {
+                Some(turns) => {
+                    format!("the '{what}' {mm} mm {way} ({} turns)", num(turns.abs(), 3))
+                }
+                None => format!("the '{what}' {mm} mm {way}"),
+            }
+        };
+        let rate = result.compensated_rate_s_per_day.unwrap_or(0.0);
+        let kept = if rate.abs() < 1e-3 {
+            "within 0.001 s/day".to_string()
+        } else {
+            format!("{} s/day", num(rate, 3))
+        };
+        s.row(
+            "Regulated",
+            format!("{moved}: the period of the design as given, {kept}"),
+        );
+    } else if let Some(l) = result.compensated_equivalent_length_m {
+        s.row(
+            "Length",
+            format!(
+                "equivalent length {} m (was {})",
+                num(l, 7),
+                num(result.equivalent_length_m, 7)
+            ),
+        );
+    }
+    for w in &result.warnings {
+        s.row("Warning", w.to_string());
     }
     if let Some(w) = &json.written_to {
         s.row("Written", w.clone());

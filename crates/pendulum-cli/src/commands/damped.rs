@@ -212,7 +212,7 @@ fn write_trajectory(
         "--trajectory",
         "time_s,angle_rad,angular_velocity_rad_s",
     )?;
-    let mut progress = work::Progress::new(rows, "sampled", false);
+    let mut progress = work::Progress::new(rows, "sampled");
     let mut sampler = r.friction.sampler(r.amplitude_rad);
     for i in 0..samples {
         // Ctrl-C: the temporary file is removed, nothing is left.

@@ -58,7 +58,7 @@ pub(crate) fn rate_text(
 }
 
 /// `--tick-rate`: positive and finite.
-fn tick_rate(rate: Option<crate::units::Number>) -> Result<Option<f64>, CliError> {
+fn tick_rate(rate: Option<crate::units::Hertz>) -> Result<Option<f64>, CliError> {
     match rate {
         // From a 1 Hz counter to a 1 THz clock: beyond, the times in
         // seconds are not numbers a log could hold.

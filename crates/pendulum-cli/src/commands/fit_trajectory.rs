@@ -160,6 +160,14 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             .get(name)
             .map_or(String::new(), |se| format!(" ± {}", num(*se, 2)));
         out.push_str(&format!("  {name:<26} {}{error}{note}\n", num(*value, 8)));
+        if *name == "zeta" {
+            if let Some(q) = a.q_factor {
+                let error = a
+                    .q_factor_standard_error
+                    .map_or(String::new(), |se| format!(" ± {}", num(se, 2)));
+                out.push_str(&format!("  {:<26} {}{error}\n", "Q = 1/(2ζ)", num(q, 6)));
+            }
+        }
     }
     if let (Some(LengthSource::TrackRadius), Some(l)) = (a.length_source, a.length_m) {
         out.push_str(&format!(

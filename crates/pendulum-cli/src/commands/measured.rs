@@ -46,7 +46,7 @@ pub fn columns(text: Option<&str>) -> Option<Vec<String>> {
     text.map(|t| t.split(',').map(|c| c.trim().to_string()).collect())
 }
 
-fn frame_rate(fps: Option<crate::units::Number>) -> Result<Option<f64>, CliError> {
+fn frame_rate(fps: Option<crate::units::Hertz>) -> Result<Option<f64>, CliError> {
     fps.map(|f| {
         pendulum_theory::fitting::track::frame_rate(f.0)
             .map_err(|e| CliError::flag("--frame-rate", e.reason))

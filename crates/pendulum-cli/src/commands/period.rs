@@ -60,6 +60,7 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
                 from,
                 to,
                 steps: args.steps.map(i64::from),
+                step: args.step.map(|s| s.0),
             }
         }
         None => Amplitudes::One(
@@ -87,7 +88,11 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
     let is_table = matches!(amplitudes, Amplitudes::Range { .. });
     if args.format.csv {
         let rows: Vec<PeriodCsv> = rows.iter().map(csv_row).collect();
-        return output::csv(&rows);
+        let all = output::csv(&rows)?;
+        return match &args.columns {
+            Some(names) => output::csv_columns(&all, names, "--columns"),
+            None => Ok(all),
+        };
     }
     if args.format.json {
         let rows: Vec<PeriodJson> = rows

@@ -349,6 +349,9 @@ img {{ width: 100%; max-width: 960px; display: block; margin: 1em 0 2em; }}
 <p>Made by <code>pendulum report</code>: the exact period (section 1-6), the viscous
 damping of section 1-4, the energy an escapement must supply, and the full
 nonlinear damped motion run down until the amplitude halves.</p>
+<p class="note">The sections are those of <i lang="ja">機械式時計の理論</i> (The theory of
+mechanical clocks and watches), part 1, <i lang="ja">振り子の運動</i> (The motion of the
+pendulum): a web book at horology.sakura.ne.jp whose pages name no author.</p>
 <table>
 {table}</table>
 {sheet}<h2>The period and the circular error around the working amplitude</h2>

@@ -209,7 +209,7 @@ impl CliObserver {
         Ok(Self {
             swings,
             trajectory,
-            progress: Progress::new(options.duration, "simulated", args.quiet),
+            progress: Progress::new(options.duration, "simulated"),
             error: None,
             previous_turn: 0.0,
             pendulum: *pendulum,

@@ -6,25 +6,27 @@ use crate::audio::{pcm16, wav_header};
 use crate::error::CliError;
 use crate::file::{AtomicFile, CsvFile};
 use crate::output::num;
-use crate::units::Number;
+use crate::units::or_default;
 use crate::work;
 use pendulum_theory::listening::synth::{Synthesizer, TickRecording};
 
 pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
-    let number = |n: Option<Number>, default: f64| n.map_or(default, |n| n.0);
     // Each input not given is the library's.
     let d = TickRecording::DEFAULT;
     let spec = TickRecording {
-        sample_rate: args.sample_rate.unwrap_or(d.sample_rate),
+        sample_rate: args.sample_rate.map_or(d.sample_rate, |s| s.0),
         duration: args.duration.map_or(d.duration, |t| t.0),
-        beats_per_hour: number(args.bph, d.beats_per_hour),
-        rate_s_per_day: number(args.rate, d.rate_s_per_day),
-        rate_change_s_per_day_per_hour: number(args.rate_change, d.rate_change_s_per_day_per_hour),
-        beat_error_ms: number(args.beat_error, d.beat_error_ms),
-        snr_db: number(args.snr_db, d.snr_db),
+        beats_per_hour: or_default(args.bph, d.beats_per_hour),
+        rate_s_per_day: or_default(args.rate, d.rate_s_per_day),
+        rate_change_s_per_day_per_hour: or_default(
+            args.rate_change,
+            d.rate_change_s_per_day_per_hour,
+        ),
+        beat_error_ms: or_default(args.beat_error, d.beat_error_ms),
+        snr_db: or_default(args.snr_db, d.snr_db),
         reverb_s: args.reverb.map_or(d.reverb_s, |t| t.0),
-        hum_db: number(args.hum_db, d.hum_db),
-        missing: number(args.missing, d.missing),
+        hum_db: or_default(args.hum_db, d.hum_db),
+        missing: or_default(args.missing, d.missing),
         seed: args.seed.unwrap_or(d.seed),
     };
     spec.check().map_err(|e| common::refused(&e))?;
@@ -47,7 +49,7 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
     if let Some(path) = &args.truth {
         work::check_space("--truth", path, 24.0 * duration * bph / 3600.0)?;
     }
-    let mut progress = work::Progress::new(samples, "synthesised", false);
+    let mut progress = work::Progress::new(samples, "synthesised");
     let mut done = 0.0;
     let mut file = AtomicFile::create(&args.output, "OUT.wav")?;
     file.writer()

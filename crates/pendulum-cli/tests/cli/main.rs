@@ -6,6 +6,7 @@ mod clock;
 mod damped;
 mod design;
 mod disk_full;
+mod examples;
 mod extremes;
 mod figures;
 mod fit;

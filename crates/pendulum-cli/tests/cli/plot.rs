@@ -525,19 +525,6 @@ fn bad_plot_names_and_folders_are_refused_cleanly() {
     assert_eq!(std::fs::read_dir(d).unwrap().count(), 1);
 }
 
-/// Chromium, if installed.
-fn chromium() -> Option<PathBuf> {
-    ["chromium", "chromium-browser", "google-chrome"]
-        .iter()
-        .find_map(|name| {
-            std::env::var_os("PATH").and_then(|paths| {
-                std::env::split_paths(&paths)
-                    .map(|p| p.join(name))
-                    .find(|p| p.is_file())
-            })
-        })
-}
-
 #[test]
 fn the_report_opens_in_a_browser_with_every_picture() {
     let dir = tempfile::tempdir().unwrap();
@@ -553,14 +540,11 @@ fn the_report_opens_in_a_browser_with_every_picture() {
     }
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();
     assert!(html.contains("s/day") && html.contains("Q") && html.contains("kg m²/s"));
-    let Some(browser) = chromium() else {
-        assert!(
-            std::env::var("CI").as_deref() != Ok("true"),
-            "CI must run the browser test: install Debian's chromium (.ci/run does)"
-        );
-        eprintln!(
-            "SKIPPED the_report_opens_in_a_browser_with_every_picture: no chromium installed"
-        );
+    let Some(browser) = crate::util::system_program(
+        &["chromium", "chromium-browser", "google-chrome"],
+        "chromium",
+        "the report's browser test",
+    ) else {
         return;
     };
     let profile = tempfile::tempdir().unwrap();

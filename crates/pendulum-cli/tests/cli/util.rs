@@ -86,3 +86,30 @@ pub fn decode_png(bytes: Vec<u8>) -> (u32, u32, Vec<u8>) {
         .collect();
     (info.width, info.height, rgb)
 }
+
+/// A system program a test needs (Debian's `package`), found on the PATH
+/// under any of `names`. CI must have it (`.ci/run` installs it): there a
+/// missing one fails the test. Elsewhere the test is skipped with a line
+/// written straight to standard error, past the test harness's capture,
+/// so that `cargo test` never reports a skipped test as a silent `ok`.
+pub fn system_program(names: &[&str], package: &str, test: &str) -> Option<std::path::PathBuf> {
+    let found = names.iter().find_map(|name| {
+        std::env::var_os("PATH").and_then(|paths| {
+            std::env::split_paths(&paths)
+                .map(|p| p.join(name))
+                .find(|p| p.is_file())
+        })
+    });
+    if found.is_none() {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI must run {test}: install Debian's {package} (.ci/run does)"
+        );
+        use std::io::Write;
+        let _ = writeln!(
+            std::io::stderr().lock(),
+            "skipped: {test}: install {package} (sudo apt-get install {package})"
+        );
+    }
+    found
+}

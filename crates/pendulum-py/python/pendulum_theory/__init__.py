@@ -454,10 +454,11 @@ def listen(samples, sample_rate, *, bph=None, period=None, sample_rate_error_ppm
 
 
 def period_table(length, amplitude=None, *, amplitude_range=None, steps=None, g=None,
-                 series_terms=None):
+                 series_terms=None, step=None):
     """The command's ``period`` (the same library call): at one
-    ``amplitude`` (rad) a dict, over ``amplitude_range=(from, to)`` (rad,
-    ``steps`` rows spaced evenly in degrees) a list of dicts, with the
+    ``amplitude`` (rad) a dict, over ``amplitude_range=(from, to)`` (rad;
+    ``steps`` rows spaced evenly in degrees, or one every ``step`` rad, or
+    by default a round step of degrees) a list of dicts, with the
     command's ``--json`` keys (period_s, small_angle_period_s,
     period_ratio, beats_per_hour, circular_error, circular_error_s_per_day,
     the power series to ``series_terms`` terms, ...; not its ``g_source``).
@@ -466,7 +467,7 @@ def period_table(length, amplitude=None, *, amplitude_range=None, steps=None, g=
                                                  float(amplitude_range[1]))
     return _json.loads(_native.period_table(
         float(length), _number(g), _number(amplitude), span,
-        _count(steps), _count(series_terms)))
+        _count(steps), _count(series_terms), _number(step)))
 
 
 def length(period=None, *, bph=None, amplitude=None, g=None):

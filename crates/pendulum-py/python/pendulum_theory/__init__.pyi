@@ -134,6 +134,7 @@ def period_table(
     steps: Any = ...,
     g: Any = ...,
     series_terms: Any = ...,
+    step: Any = ...,
 ) -> Dict[str, Any]: ...
 def length(
     period: Any = ...,

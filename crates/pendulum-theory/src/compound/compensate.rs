@@ -7,7 +7,7 @@
 //! 1.5 mm walls) live here.
 
 use super::description::Design;
-use super::{CompoundPendulum, Material, Shape};
+use super::{CompoundPendulum, Material, Placement, Shape};
 use crate::analysis::Refusal;
 use crate::error::format_significant;
 use serde::Serialize;
@@ -92,9 +92,73 @@ pub struct Compensation {
     /// the bob changes it: regulate after).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub compensated_equivalent_length_m: Option<f64>,
+    /// The compensated design's rate against the design as given, s/day
+    /// (its period kept: within a few 1e-9 s/day unless a warning says it
+    /// could not be kept).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub compensated_rate_s_per_day: Option<f64>,
+    /// How far the support of the bob (its rating nut, or the bob itself)
+    /// was moved to keep the period, m (positive: down).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub regulation_shift_m: Option<f64>,
+    /// The part moved.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub regulation_part: Option<String>,
+    /// The move in turns of the rating nut (positive: down), when the
+    /// design states its thread and the nut alone moved.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub regulation_turns: Option<f64>,
+    /// Whether the move was beyond the nut's travel ([`NUT_TRAVEL_M`]) or
+    /// its rod, so that the rod was made as much shorter (or longer).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rod_follows: Option<bool>,
+    /// What the result's own checks found.
+    pub warnings: Vec<CompensationWarning>,
     /// The compensated design.
     #[serde(skip)]
     pub compensated: Option<CompoundPendulum>,
+}
+
+/// Something the result's own checks found.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CompensationWarning {
+    /// No move of the bob's support (nor of the rod with it) gives the
+    /// compensated design the original's period: the design is written as
+    /// sized, to be regulated by hand.
+    PeriodNotKept {
+        /// The part the compensator carries or replaces.
+        part: String,
+    },
+}
+
+impl CompensationWarning {
+    /// A stable code for programs.
+    pub fn code(&self) -> &'static str {
+        match self {
+            CompensationWarning::PeriodNotKept { .. } => "period_not_kept",
+        }
+    }
+}
+
+impl std::fmt::Display for CompensationWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CompensationWarning::PeriodNotKept { part } => write!(
+                f,
+                "the compensated design's period could not be kept by moving the '{part}' or its support (it has none placed on the rod): regulate it to its beat"
+            ),
+        }
+    }
+}
+
+impl Serialize for CompensationWarning {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(2))?;
+        m.serialize_entry("code", self.code())?;
+        m.serialize_entry("message", &self.to_string())?;
+        m.end()
+    }
 }
 
 /// The index of the part `name`.
@@ -140,16 +204,125 @@ fn table_material(field: &'static str, name: &str) -> Result<Material, Refusal> 
 }
 
 /// The coefficient of `read`'s design and, with a compensator, its size
-/// and the compensated design.
+/// and the compensated design, regulated back to the original's period:
+/// the bob's support (its rating nut) moved along the rod, or, beyond
+/// [`NUT_TRAVEL_M`], the rod made shorter or longer with it (see
+/// [`Compensation::regulation_shift_m`]).
 pub fn compensate(read: &Design, input: &CompensateInput) -> Result<Compensation, Refusal> {
     let design = &read.pendulum;
     let part = input.part.as_deref().unwrap_or(DEFAULT_PART);
     let before = design.temperature_coefficient();
+    let original = design.properties().equivalent_length;
     let mut result = Compensation {
         temperature_coefficient_s_per_day_per_c: before,
-        equivalent_length_m: design.properties().equivalent_length,
+        equivalent_length_m: original,
         ..Compensation::default()
     };
+    let Some(unregulated) = sized(design, input, part, before, &mut result)? else {
+        return Ok(result);
+    };
+    let support = support_of(design, part);
+    let regulated = support.and_then(|nut| {
+        // The nut alone while it stays on the rod and within its travel;
+        // else the rod follows it.
+        let solve = |follow| {
+            keep_period(original, |shift| {
+                let moved = design.moved(nut, shift, follow)?;
+                sized(&moved, input, part, before, &mut result.clone()).ok()?
+            })
+        };
+        match solve(false) {
+            Some(shift) if shift.abs() <= NUT_TRAVEL_M => Some((shift, false)),
+            _ => solve(true).map(|shift| (shift, true)),
+        }
+    });
+    let compensated = match regulated {
+        Some((shift, follow)) => {
+            let moved = design
+                .moved(support.unwrap_or(0), shift, follow)
+                .ok_or_else(|| Refusal::data("the regulated design could not be built"))?;
+            result.regulation_shift_m = Some(shift);
+            result.rod_follows = Some(follow);
+            result.regulation_part = support.map(|i| design.parts()[i].name.clone());
+            result.regulation_turns = read
+                .thread
+                .as_ref()
+                .filter(|t| Some(t.part) == support && !follow)
+                .map(|t| shift / t.pitch);
+            sized(&moved, input, part, before, &mut result)?
+        }
+        None => {
+            result.warnings.push(CompensationWarning::PeriodNotKept {
+                part: part.to_string(),
+            });
+            Some(unregulated)
+        }
+    };
+    if let Some(c) = &compensated {
+        let l = c.properties().equivalent_length;
+        result.compensated_coefficient_s_per_day_per_c = Some(c.temperature_coefficient());
+        result.compensated_equivalent_length_m = Some(l);
+        result.compensated_rate_s_per_day = Some(super::rate_of_length_ratio(l / original));
+    }
+    result.compensated = compensated;
+    Ok(result)
+}
+
+/// How far a rating nut is taken to travel either way on its thread, m:
+/// 20 mm, about ±850 s/day on a seconds pendulum. A compensated design
+/// whose period needs a longer move has its rod made shorter (or longer)
+/// instead.
+pub const NUT_TRAVEL_M: f64 = 0.02;
+
+/// The part that carries `part` and is placed by its centre (the rating
+/// nut a bob rests on, or the bob itself when it is placed on the rod).
+fn support_of(design: &CompoundPendulum, part: &str) -> Option<usize> {
+    let mut i = part_index(design, part).ok()?;
+    for _ in 0..design.parts().len() {
+        match design.parts()[i].placement {
+            Placement::Centre(_) => return Some(i),
+            Placement::RestsOn(j) => i = j,
+        }
+    }
+    None
+}
+
+/// The move, m (positive: down), of the support at which `build` gives a
+/// design of equivalent length `target`: the secant method from no move
+/// and the length's difference (the equivalent length moves about one for
+/// one with the bob), to 1e-13 of the length, or `None`.
+fn keep_period(target: f64, build: impl Fn(f64) -> Option<CompoundPendulum>) -> Option<f64> {
+    let miss = |shift: f64| build(shift).map(|c| c.properties().equivalent_length - target);
+    let (mut a, mut fa) = (0.0, miss(0.0)?);
+    let mut b = -fa;
+    let mut fb = miss(b)?;
+    for _ in 0..40 {
+        if fb.abs() <= 1e-13 * target {
+            return Some(b);
+        }
+        if fb == fa {
+            return None;
+        }
+        let next = b - fb * (b - a) / (fb - fa);
+        if !next.is_finite() || next.abs() > target {
+            return None;
+        }
+        (a, fa) = (b, fb);
+        b = next;
+        fb = miss(b)?;
+    }
+    None
+}
+
+/// `design`'s compensator sized, its sizes set in `result`; `None` when no
+/// compensator was asked for.
+fn sized(
+    design: &CompoundPendulum,
+    input: &CompensateInput,
+    part: &str,
+    before: f64,
+    result: &mut Compensation,
+) -> Result<Option<CompoundPendulum>, Refusal> {
     let kind = input.compensator.as_deref().map(str::to_ascii_lowercase);
     // A tube lifts the bob as it warms: it can only cancel a loss.
     let lifting = |what: &str| -> Option<Refusal> {
@@ -303,10 +476,5 @@ pub fn compensate(read: &Design, input: &CompensateInput) -> Result<Compensation
             Some(compensated)
         }
     };
-    if let Some(c) = &compensated {
-        result.compensated_coefficient_s_per_day_per_c = Some(c.temperature_coefficient());
-        result.compensated_equivalent_length_m = Some(c.properties().equivalent_length);
-    }
-    result.compensated = compensated;
-    Ok(result)
+    Ok(compensated)
 }

@@ -219,6 +219,45 @@ impl CompoundPendulum {
     }
 }
 
+impl CompoundPendulum {
+    /// The same pendulum with the part `index` (placed by its centre) and
+    /// what rests on it moved `shift` m down; with `rod_follows`, the rod
+    /// made as much longer (shorter for a move up), its end keeping its
+    /// place under the part. `None` when the moved design is not a valid
+    /// one, or (the rod staying) the part's centre leaves the rod.
+    pub fn moved(&self, index: usize, shift: f64, rod_follows: bool) -> Option<Self> {
+        let mut parts = self.parts.clone();
+        let Placement::Centre(c) = parts.get(index)?.placement else {
+            return None;
+        };
+        parts[index].placement = Placement::Centre(c + shift);
+        if let Some(rod) = self.rod().filter(|&r| r != index) {
+            if let Shape::Cylinder {
+                length,
+                diameter,
+                bore,
+            } = parts[rod].shape
+            {
+                if rod_follows {
+                    let length = length + shift;
+                    if length <= 0.0 {
+                        return None;
+                    }
+                    parts[rod].shape = Shape::Cylinder {
+                        length,
+                        diameter,
+                        bore,
+                    };
+                    parts[rod].placement = Placement::Centre(0.5 * length);
+                } else if !(0.0..=length).contains(&(c + shift)) {
+                    return None;
+                }
+            }
+        }
+        Self::new(parts).ok()
+    }
+}
+
 /// The size in `[low, high]` at which the design `build` makes has no
 /// first-order temperature coefficient, by bisection (80 halvings, to the
 /// last bit); `None` when the coefficient keeps its sign over the range.

@@ -389,6 +389,12 @@ pub struct Track {
     /// The factor every standard error was widened by for it,
     /// `√((1 + ρ)/(1 − ρ))` (1 for independent errors).
     pub standard_error_inflation: f64,
+    /// The viscous quality factor `Q = 1/(2ζ)`, when ζ is positive and
+    /// determined (`None` otherwise: an undamped or growing swing has
+    /// none).
+    pub q_factor: Option<f64>,
+    /// Its standard error, `σ_ζ / (2ζ²)` (first-order propagation).
+    pub q_factor_standard_error: Option<f64>,
     /// The length g is computed with, m.
     pub length_m: Option<f64>,
     /// Where it came from.
@@ -706,8 +712,18 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     if data.abs_diff(model) > 2 {
         warnings.push(TrackWarning::CrossingsDiffer { data, model });
     }
+    let zeta = parameters
+        .get("zeta")
+        .copied()
+        .filter(|&z| z > 0.0 && !undetermined.contains(&"zeta"));
+    let q_factor = zeta.map(|z| 0.5 / z);
+    let q_factor_standard_error = zeta
+        .and_then(|z| standard_errors.get("zeta").map(|se| se / (2.0 * z * z)))
+        .filter(|se| se.is_finite());
     Ok(Track {
         points: time.len(),
+        q_factor,
+        q_factor_standard_error,
         model: match fit.model {
             TrajectoryModel::Linear => "linear",
             TrajectoryModel::Nonlinear => "nonlinear",

@@ -28,7 +28,7 @@ struct WindowLine<'a> {
 /// Listens to standard input until its end or Ctrl-C.
 pub(super) fn listen(args: &ListenArgs, input: &ListenInput) -> Result<Heard, CliError> {
     let given = match (&args.raw, args.sample_rate) {
-        (Some(raw), Some(sample_rate)) => {
+        (Some(raw), Some(crate::units::SampleRate(sample_rate))) => {
             if sample_rate == 0 {
                 return Err(CliError::flag(
                     "--sample-rate",

@@ -361,3 +361,34 @@ fn second_generator(drop_delay: f64, drop_gain: f64) {
         );
     }
 }
+
+/// The median sounds shown (`MedianSound::shown`) run from before the
+/// unlocking to 5 ms past the drop the analysis reports, so a picture of
+/// them shows both sounds of a beat; the sounds matched (`samples`) stop
+/// before the drop, as the timing needs, and are the shown ones' start.
+#[test]
+fn the_median_sounds_shown_cover_the_drop() {
+    let rec = synthesize(&TickRecording {
+        duration: 240.0,
+        ..spec(3600.0, 44_100, 25.0, 5)
+    });
+    let mut source = SliceSource {
+        samples: &rec.samples,
+        rate: 44_100,
+    };
+    let r = listen(&mut source, &ListenInput::default()).expect("heard");
+    let sounds = r.sounds.expect("median sounds");
+    for (side, sound) in sounds.iter().enumerate() {
+        let drop = r.drop_ms[side].expect("a drop") * 1e-3;
+        let after_onset = (sound.shown.len() as f64 - sound.onset) / 44_100.0;
+        assert!(
+            after_onset >= drop + 4e-3,
+            "side {side}: {after_onset} s shown, drop {drop} s"
+        );
+        let matched = (sound.samples.len() as f64 - sound.onset) / 44_100.0;
+        assert!(matched < drop, "side {side}: matched to {matched} s");
+        // The same median from the same start: the sound matched is the
+        // shown one's beginning.
+        assert_eq!(&sound.shown[..sound.samples.len()], &sound.samples[..]);
+    }
+}

@@ -431,12 +431,12 @@ fn render_text(r: &ClockResult, swings_file: Option<&str>) -> String {
         .row(
             "At the end",
             format!(
-                "{}°, {} s/day, {} s {} of true time",
+                "{}°, {} s/day, {} s {} true time",
                 num(run.final_amplitude_rad.to_degrees(), 5),
                 num(run.final_rate_s_per_day, 4),
                 num(run.time_error_s.abs(), 5),
                 if run.time_error_s >= 0.0 {
-                    "ahead"
+                    "ahead of"
                 } else {
                     "behind"
                 }

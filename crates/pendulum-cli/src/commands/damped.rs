@@ -272,7 +272,7 @@ fn figure(r: &Damped, duration: f64) -> Figure {
     if friction == 0.0 {
         let (upper, lower) = envelope_points(damped, a0, duration);
         if !upper.is_empty() {
-            series.push(Series::line("envelope ±A₀ e^(−ζω₀t)/√(1−ζ²)", upper));
+            series.push(Series::line("envelope ±A₀ exp(−ζω₀t) / √(1 − ζ²)", upper));
             series.push(Series::line("", lower).colored(1));
         }
     } else if half.is_some() {
@@ -308,7 +308,7 @@ fn figure(r: &Damped, duration: f64) -> Figure {
                 num(damped.damping.zeta(), 4),
                 damped.regime().name()
             ),
-            "time (s)",
+            crate::plot::TIME_AXIS,
             "angle (°)",
             series,
         )],

@@ -214,7 +214,7 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
             panels: vec![
                 Panel::new(
                     "Beat intervals (ticks and tocks)",
-                    "time (s)",
+                    crate::plot::TIME_AXIS,
                     "interval (ms)",
                     vec![
                         Series::dots("interval", intervals),

@@ -365,16 +365,20 @@ fn figure(time: &[f64], amplitude: &[f64], fits: &[DecayFit], best: Option<Decay
             // pendulum: its curve ends there.
             .filter(|p: &(f64, f64)| p.1 >= 0.0)
             .collect();
-        let label = if Some(f.model) == best {
-            format!("{} (preferred)", f.model.name())
+        // The preferred law wide and first, the others thin over it (and
+        // dashed where they run along it): each stays visible.
+        if Some(f.model) == best {
+            curves.insert(
+                1,
+                Series::line(format!("{} (preferred)", f.model.name()), curve).strong(),
+            );
         } else {
-            f.model.name().to_string()
-        };
-        curves.push(Series::line(label, curve));
+            curves.push(Series::line(f.model.name(), curve).light());
+        }
     }
     let mut panels = vec![Panel::new(
         "Amplitude decay and the fitted laws",
-        "time (s)",
+        crate::plot::TIME_AXIS,
         "amplitude (°)",
         curves,
     )
@@ -387,7 +391,7 @@ fn figure(time: &[f64], amplitude: &[f64], fits: &[DecayFit], best: Option<Decay
             .collect();
         panels.push(Panel::new(
             format!("Residuals of the preferred law ({})", f.model.name()),
-            "time (s)",
+            crate::plot::TIME_AXIS,
             "measured − fitted (°)",
             vec![Series::dots("residual", residuals)],
         ));

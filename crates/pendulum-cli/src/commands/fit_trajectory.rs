@@ -232,7 +232,7 @@ fn figure(time: &[f64], theta: &[f64], residuals: &[f64], rate: bool) -> Figure 
         panels: vec![
             Panel::new(
                 title,
-                "time (s)",
+                crate::plot::TIME_AXIS,
                 unit,
                 vec![
                     Series::dots("measured", data),
@@ -241,7 +241,7 @@ fn figure(time: &[f64], theta: &[f64], residuals: &[f64], rate: bool) -> Figure 
             ),
             Panel::new(
                 "Residuals",
-                "time (s)",
+                crate::plot::TIME_AXIS,
                 residual_unit,
                 vec![Series::dots("residual", res)],
             ),

@@ -124,12 +124,12 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
         Row(
             "Period at that amplitude",
             format!("{} s", num(p.period_s, 12)),
-            "exact: 4 sqrt(l/g) K(sin²(A0/2))",
+            "exact: 4 √(l/g) K(sin²(A₀/2))",
         ),
         Row(
             "Small-angle period",
             format!("{} s", num(p.small_angle_period_s, 12)),
-            "2π sqrt(l/g)",
+            "2π √(l/g)",
         ),
         Row(
             "Beats per hour",
@@ -151,14 +151,14 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
             "Q",
             d.q_factor
                 .map_or("infinite (undamped)".to_string(), |q| num(q, 6)),
-            "1/(2ζ)",
+            "1 / (2ζ)",
         ),
     ];
     if let Some(delta) = d.log_decrement {
         rows.push(Row(
             "Logarithmic decrement",
             format!("{} per period", num(delta, 5)),
-            "2πζ/sqrt(1-ζ²)",
+            "2πζ / √(1 − ζ²)",
         ));
     }
     if let (Some(exact), Some(approx)) = (
@@ -172,7 +172,7 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
                 num(exact.to_degrees(), 5),
                 num(approx.to_degrees(), 5)
             ),
-            "A₀ (1 − e^(−δ)), and the first-order δ A₀ of section 1-4",
+            "A₀ (1 − exp(−δ)), and the first-order δ A₀ of section 1-4",
         ));
     }
     let decay_time = d.decay_time_s.unwrap_or(f64::INFINITY);
@@ -185,9 +185,9 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
             format!("{} s", num(decay_time, 6))
         },
         if d.zeta > 1.0 {
-            "the slow creep: (ζ + sqrt(ζ² - 1))/ω_n"
+            "the slow creep: (ζ + √(ζ² − 1)) / ωₙ"
         } else {
-            "1/(ζ ω_n)"
+            "1 / (ζ ωₙ)"
         },
     ));
     rows.push(Row(
@@ -213,7 +213,7 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
         },
         format!("{} kg", num(mass, 4)),
         if r.effective_mass {
-            "the design's M d / l: its swing's energy is M g d (1 - cos A0)"
+            "the design's M d / l: its swing's energy is M g d (1 − cos A₀)"
         } else {
             "for the energy budget"
         },
@@ -221,17 +221,17 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
     if let Some(b) = d.budget {
         rows.push(Row(
             "Energy in the swing",
-            format!("{} J", num(b.energy, 5)),
-            "m g l (1 - cos A0)",
+            prefixed(b.energy, "J", 5),
+            "m g l (1 − cos A₀)",
         ));
         rows.push(Row(
             "Energy lost per period",
-            format!("{} J", num(b.loss_per_period, 5)),
+            prefixed(b.loss_per_period, "J", 5),
             "what the escapement must restore",
         ));
         rows.push(Row(
             "Mean power",
-            format!("{} µW", num(1e6 * b.power, 5)),
+            prefixed(b.power, "W", 5),
             "energy lost per period / period",
         ));
         rows.push(Row(
@@ -249,7 +249,7 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
             run.turning_points
         ),
         if run.stopped_short {
-            "stopped short of half amplitude: at most 10^5 periods, or a second of computing"
+            "stopped short of half amplitude: at most 10⁵ periods, or a second of computing"
         } else {
             "nonlinear, symplectic integrator"
         },
@@ -290,14 +290,90 @@ fn decay_figure(damped: &DampedPendulum, a0: f64, span: f64) -> Figure {
                 }
                 _ => "Amplitude envelope, section 1-4 (undamped)".to_string(),
             },
-            "time (s)",
+            crate::plot::TIME_AXIS,
             "angle (°)",
             vec![
-                Series::line("envelope ±A₀ e^(−ζω₀t)/√(1−ζ²)", upper),
+                Series::line("envelope ±A₀ exp(−ζω₀t) / √(1 − ζ²)", upper),
                 Series::line("", lower).colored(0),
             ],
         )],
     }
+}
+
+/// `value` in `unit` with the SI prefix that puts it between 1 and 1000
+/// (`41.936 µJ`, not `4.1936e-5 J`), to `digits` significant digits.
+fn prefixed(value: f64, unit: &str, digits: usize) -> String {
+    const PREFIXES: [(f64, &str); 9] = [
+        (1e9, "G"),
+        (1e6, "M"),
+        (1e3, "k"),
+        (1.0, ""),
+        (1e-3, "m"),
+        (1e-6, "µ"),
+        (1e-9, "n"),
+        (1e-12, "p"),
+        (1e-15, "f"),
+    ];
+    let magnitude = value.abs();
+    let (scale, prefix) = PREFIXES
+        .iter()
+        .copied()
+        .find(|(scale, _)| magnitude >= *scale)
+        .unwrap_or((1.0, ""));
+    let scale = if magnitude == 0.0 { 1.0 } else { scale };
+    let prefix = if magnitude == 0.0 { "" } else { prefix };
+    format!("{} {prefix}{unit}", num(value / scale, digits))
+}
+
+/// HTML text with every number in exponent form (`5e-5`, `1.2e7`) written
+/// as a scientist would: `5 × 10<sup>−5</sup>`.
+fn powers_of_ten(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::new();
+    let mut i = 0;
+    while i < chars.len() {
+        // A mantissa: digits with at most one point, not inside a word.
+        let starts = chars[i].is_ascii_digit()
+            && (i == 0 || !(chars[i - 1].is_alphanumeric() || chars[i - 1] == '.'));
+        if starts {
+            let mut j = i;
+            while j < chars.len() && (chars[j].is_ascii_digit() || chars[j] == '.') {
+                j += 1;
+            }
+            let mut k = j;
+            if k < chars.len() && chars[k] == 'e' {
+                k += 1;
+                let negative = k < chars.len() && chars[k] == '-';
+                if k < chars.len() && (chars[k] == '-' || chars[k] == '+') {
+                    k += 1;
+                }
+                let digits_from = k;
+                while k < chars.len() && chars[k].is_ascii_digit() {
+                    k += 1;
+                }
+                let after_is_word = k < chars.len() && chars[k].is_alphanumeric();
+                if k > digits_from && !after_is_word {
+                    let mantissa: String = chars[i..j].iter().collect();
+                    let power: String = chars[digits_from..k].iter().collect();
+                    let power = power.trim_start_matches('0');
+                    let sign = if negative { "−" } else { "" };
+                    if mantissa == "1" {
+                        out.push_str(&format!("10<sup>{sign}{power}</sup>"));
+                    } else {
+                        out.push_str(&format!("{mantissa} × 10<sup>{sign}{power}</sup>"));
+                    }
+                    i = k;
+                    continue;
+                }
+            }
+            out.extend(&chars[i..j]);
+            i = j;
+            continue;
+        }
+        out.push(chars[i]);
+        i += 1;
+    }
+    out
 }
 
 /// The page: a table of figures with units, then the pictures.
@@ -312,7 +388,7 @@ fn html(rows: &[Row], datasheet: Option<(&[(String, String)], &str)>) -> String 
                 t.push_str(&format!(
                     "<tr><th>{}</th><td>{}</td></tr>\n",
                     escape(name),
-                    escape(value)
+                    powers_of_ten(&escape(value))
                 ));
             }
             t.push_str("</table>\n");
@@ -325,7 +401,7 @@ fn html(rows: &[Row], datasheet: Option<(&[(String, String)], &str)>) -> String 
         table.push_str(&format!(
             "<tr><th>{}</th><td>{}</td><td class=\"note\">{}</td></tr>\n",
             escape(name),
-            escape(value),
+            powers_of_ten(&escape(value)),
             escape(note)
         ));
     }
@@ -380,4 +456,24 @@ fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_as_a_report_prints_them() {
+        assert_eq!(prefixed(4.1936e-5, "J", 5), "41.936 µJ");
+        assert_eq!(prefixed(2.0968e-5, "W", 5), "20.968 µW");
+        assert_eq!(prefixed(0.0667696, "J", 6), "66.7696 mJ");
+        assert_eq!(prefixed(0.0, "J", 3), "0 J");
+        assert_eq!(powers_of_ten("5e-5"), "5 × 10<sup>−5</sup>");
+        assert_eq!(
+            powers_of_ten("1e6 s, 2.5e+3 J"),
+            "10<sup>6</sup> s, 2.5 × 10<sup>3</sup> J"
+        );
+        assert_eq!(powers_of_ten("0.99362 m"), "0.99362 m");
+        assert_eq!(powers_of_ten("A0e5 x1e3"), "A0e5 x1e3");
+    }
 }

@@ -257,7 +257,7 @@ impl CliObserver {
                 panels: vec![Panel::new(
                     "Phase portrait",
                     "angle θ (°)",
-                    "angular velocity θ' (°/s)",
+                    "angular velocity θ′ (°/s)",
                     series,
                 )],
             };
@@ -441,14 +441,14 @@ pub fn rundown_figure(turns: &[(f64, f64, f64)]) -> Figure {
         panels: vec![
             Panel::new(
                 "Amplitude as the swing decays",
-                "time (s)",
+                crate::plot::TIME_AXIS,
                 "amplitude (°)",
                 vec![Series::line("amplitude at each turning point", amplitude)],
             )
             .log_y_beyond(1.5),
             Panel::new(
                 "What each half swing loses against the small-angle beat",
-                "time (s)",
+                crate::plot::TIME_AXIS,
                 "loss (s/day)",
                 vec![Series::line("86400 s × (1 − (T₀/2) / half period)", loss)],
             )

@@ -196,29 +196,30 @@ pub fn offset_label(offset: f64, span: f64) -> String {
     }
 }
 
-/// A log axis's tick label (ticks are 1, 1.5, 2, 3, 5 or 7 times a power
-/// of ten, or round steps): three significant digits at most, trailing
-/// zeros dropped; in exponent form (`1e-4`, `2e5`) when `exponent`, so
-/// one axis never mixes `0.0001` with `1e-6`.
-pub fn log_tick_label(value: f64, exponent: bool) -> String {
-    if !value.is_finite() {
+/// A log axis's tick label, in one form on every log axis of every
+/// figure: a power of ten as `10ⁿ` (`10⁻⁴`, `10⁰`, `10³`), another tick
+/// as its mantissa times one (`2×10⁻⁴`, `1.5×10²`), three significant
+/// digits at most.
+pub fn log_tick_label(value: f64) -> String {
+    if !(value.is_finite() && value > 0.0) {
         return String::new();
     }
-    if exponent {
-        let t = format!("{value:.2e}");
-        let (mantissa, power) = t.split_once('e').unwrap_or((&t, "0"));
-        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
-        format!("{mantissa}e{power}")
+    let t = format!("{value:.2e}");
+    let (mantissa, power) = t.split_once('e').unwrap_or((&t, "0"));
+    let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+    let superscript = superscript(power);
+    if mantissa == "1" {
+        format!("10{superscript}")
     } else {
-        tick_label(value, value.abs())
+        format!("{mantissa}×10{superscript}")
     }
 }
 
 /// A tick label with the digits the axis needs and no more: rounded to a
 /// hundredth of the axis's `span` (ticks fall at about a tenth of it), then
 /// trailing zeros dropped (`1400`, `2.5`, never `1400.0`), and never `-0`.
-/// Values of a million and more, or spans below 1e-4, in exponent form
-/// (`1.5e-5`).
+/// Values of a million and more, or spans below 1e-4, as a mantissa times
+/// a power of ten (`1.5×10⁻⁵`); negative values with a minus sign (`−3`).
 pub fn tick_label(value: f64, span: f64) -> String {
     if !value.is_finite() {
         return String::new();
@@ -239,7 +240,15 @@ pub fn tick_label(value: f64, span: f64) -> String {
         } else {
             mantissa
         };
-        format!("{mantissa}e{exponent}")
+        let exponent = exponent.trim_start_matches('+');
+        let digits = exponent.trim_start_matches('-').trim_start_matches('0');
+        let power = superscript(if digits.is_empty() { "0" } else { digits });
+        let sign = if exponent.starts_with('-') { "⁻" } else { "" };
+        if mantissa == "1" || mantissa == "-1" {
+            format!("{}10{sign}{power}", mantissa.trim_end_matches('1'))
+        } else {
+            format!("{mantissa}×10{sign}{power}")
+        }
     } else {
         let decimals = if span > 0.0 {
             (-(span / 100.0).log10()).ceil().clamp(0.0, 12.0) as usize
@@ -260,8 +269,30 @@ pub fn tick_label(value: f64, span: f64) -> String {
     {
         "0".to_string()
     } else {
-        text
+        // The minus sign, not a hyphen, as in every legend and title.
+        text.replacen('-', "−", 1)
     }
+}
+
+/// The digits of `digits` as superscripts.
+fn superscript(digits: &str) -> String {
+    digits
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            '0' => '⁰',
+            '1' => '¹',
+            '2' => '²',
+            '3' => '³',
+            '4' => '⁴',
+            '5' => '⁵',
+            '6' => '⁶',
+            '7' => '⁷',
+            '8' => '⁸',
+            '9' => '⁹',
+            other => other,
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -276,9 +307,10 @@ mod tests {
         assert_eq!(tick_label(-0.0, 1.0), "0");
         assert_eq!(tick_label(-1e-17, 1.0), "0");
         assert_eq!(tick_label(0.99362, 0.001), "0.99362");
-        assert_eq!(tick_label(1.5e-5, 2e-5), "1.5e-5");
-        assert_eq!(tick_label(2.0e7, 1e7), "2e7");
-        assert_eq!(tick_label(-3.25, 1.0), "-3.25");
+        assert_eq!(tick_label(1.5e-5, 2e-5), "1.5×10⁻⁵");
+        assert_eq!(tick_label(2.0e7, 1e7), "2×10⁷");
+        assert_eq!(tick_label(1.0e7, 1e7), "10⁷");
+        assert_eq!(tick_label(-3.25, 1.0), "−3.25");
         assert_eq!(tick_label(f64::NAN, 1.0), "");
     }
 
@@ -306,7 +338,7 @@ mod tests {
         let offset = label_offset(108.067_584, 108.067_588_2).unwrap();
         assert!((offset - 108.067_59).abs() < 1e-9, "{offset}");
         let span = 4.2e-6;
-        assert_eq!(tick_label(108.067_586 - offset, span), "-4e-6");
+        assert_eq!(tick_label(108.067_586 - offset, span), "−4×10⁻⁶");
         assert_eq!(offset_label(offset, span), "108.06759");
         assert_eq!(offset_label(86_400.0, 0.5), "86400");
         // An ordinary axis needs none, nor one about zero.
@@ -317,12 +349,13 @@ mod tests {
 
     #[test]
     fn log_tick_labels_take_one_form() {
-        assert_eq!(log_tick_label(1e-4, true), "1e-4");
-        assert_eq!(log_tick_label(3.0 * 1e-5, true), "3e-5");
-        assert_eq!(log_tick_label(1.5e-3, true), "1.5e-3");
-        assert_eq!(log_tick_label(0.01, true), "1e-2");
-        assert_eq!(log_tick_label(20.0, false), "20");
-        assert_eq!(log_tick_label(0.5, false), "0.5");
+        assert_eq!(log_tick_label(1e-4), "10⁻⁴");
+        assert_eq!(log_tick_label(3.0 * 1e-5), "3×10⁻⁵");
+        assert_eq!(log_tick_label(1.5e-3), "1.5×10⁻³");
+        assert_eq!(log_tick_label(0.01), "10⁻²");
+        assert_eq!(log_tick_label(20.0), "2×10¹");
+        assert_eq!(log_tick_label(1.0), "10⁰");
+        assert_eq!(log_tick_label(1e12), "10¹²");
     }
 
     #[test]

@@ -8,7 +8,7 @@ use super::axis::{
 use super::clip::{self, Point};
 use super::legend::{self, Drawn, Place, Rect};
 use super::style::{Look, GRID, LEGEND_BORDER, MARK, PALETTE};
-use super::{Figure, Panel, Style};
+use super::{Figure, Panel, Style, Weight};
 use plotters::coord::ranged1d::ValueFormatter;
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
@@ -51,6 +51,11 @@ struct Prepared {
     color: RGBColor,
     /// Legend text with the count of points off-scale, if any.
     label: String,
+    /// A line's weight.
+    weight: Weight,
+    /// Drawn dashed (the n-th dash pattern, from 1): it lies on a line
+    /// drawn before it; 0 for a solid line.
+    dashed: usize,
 }
 
 /// One legend entry: its swatch and text.
@@ -58,6 +63,8 @@ struct Entry {
     style: Option<Style>,
     color: RGBColor,
     text: String,
+    weight: Weight,
+    dashed: usize,
 }
 
 /// The axis spans of `panel` (before any room is made for the legend).
@@ -122,6 +129,8 @@ fn prepare(panel: &Panel, x: Span, y: Span) -> Vec<Prepared> {
                 style: s.style,
                 color,
                 label,
+                weight: s.weight,
+                dashed: 0,
             }
         })
         .collect()
@@ -141,6 +150,49 @@ impl Map {
             self.plot.x0 + (p.0 - self.x.lo) / self.x.width() * (self.plot.x1 - self.plot.x0),
             self.plot.y1 - (p.1 - self.y.lo) / self.y.width() * self.plot.height(),
         )
+    }
+}
+
+/// Marks dashed each line that runs along a line drawn before it (most of
+/// its length within two pixels of it), so that both stay visible: the
+/// earlier line shows between the later one's dashes.
+fn dash_coincident(prepared: &mut [Prepared], map: Map, look: Look) {
+    let cell = f64::from(look.px(2));
+    let step = f64::from(look.px(2));
+    let mut drawn: std::collections::HashSet<(i64, i64)> = std::collections::HashSet::new();
+    let mut dashes = 0;
+    for p in prepared.iter_mut().filter(|p| p.style == Style::Line) {
+        let mut trace = Drawn::default();
+        for piece in &p.pieces {
+            for w in piece.windows(2) {
+                trace.trace(map.px(w[0]), map.px(w[1]), step);
+            }
+        }
+        let cells: Vec<(i64, i64)> = trace
+            .lines
+            .iter()
+            .map(|&(x, y)| ((x / cell).floor() as i64, (y / cell).floor() as i64))
+            .collect();
+        let near = |&(i, j): &(i64, i64)| {
+            (-1..=1).any(|di| (-1..=1).any(|dj| drawn.contains(&(i + di, j + dj))))
+        };
+        let on_earlier = cells.iter().filter(|c| near(c)).count();
+        if !cells.is_empty() && on_earlier as f64 >= 0.6 * cells.len() as f64 {
+            dashes += 1;
+            p.dashed = dashes;
+        }
+        drawn.extend(cells);
+    }
+}
+
+/// The n-th dash pattern (from 1), dash and gap in device pixels: long
+/// dashes, then dots, then short dashes, so that two dashed lines on one
+/// another still show apart.
+fn dash_pattern(n: usize, look: Look) -> (u32, u32) {
+    match n % 3 {
+        1 => (look.px(8), look.px(5)),
+        2 => (look.px(2), look.px(4)),
+        _ => (look.px(4), look.px(3)),
     }
 }
 
@@ -185,7 +237,7 @@ fn draw_panel<DB: DrawingBackend>(
     paint: bool,
 ) -> Result<i32, Failure> {
     let (x, y) = spans(panel);
-    let prepared = prepare(panel, x, y);
+    let mut prepared = prepare(panel, x, y);
     let m = look.margin() as i32;
     let inner = area.margin(m, m, m, m);
     let title_style: TextStyle = ("sans-serif", look.title_font()).into();
@@ -198,6 +250,24 @@ fn draw_panel<DB: DrawingBackend>(
 
     // The legend's entries and size.
     let font: TextStyle = ("sans-serif", look.label_font()).into();
+    // The plot rectangle as ChartBuilder will lay it out, in the titled
+    // area's own pixels.
+    let (w, h) = titled.dim_in_pixel();
+    let predicted = Rect {
+        x0: f64::from(look.y_label_area()),
+        y0: 0.0,
+        x1: f64::from(w) - f64::from(reserve),
+        y1: f64::from(h) - f64::from(look.x_label_area()),
+    };
+    dash_coincident(
+        &mut prepared,
+        Map {
+            plot: predicted,
+            x,
+            y,
+        },
+        look,
+    );
     let mut entries: Vec<Entry> = prepared
         .iter()
         .filter(|p| !p.label.is_empty())
@@ -205,6 +275,8 @@ fn draw_panel<DB: DrawingBackend>(
             style: Some(p.style),
             color: p.color,
             text: p.label.clone(),
+            weight: p.weight,
+            dashed: p.dashed,
         })
         .collect();
     entries.extend(
@@ -216,6 +288,8 @@ fn draw_panel<DB: DrawingBackend>(
                 style: None,
                 color: MARK,
                 text: m.label.clone(),
+                weight: Weight::Light,
+                dashed: 1,
             }),
     );
     let pad = f64::from(look.px(6));
@@ -233,15 +307,6 @@ fn draw_panel<DB: DrawingBackend>(
     let inset = f64::from(look.px(8));
     let gap = f64::from(look.px(3));
 
-    // The plot rectangle as ChartBuilder will lay it out, in the titled
-    // area's own pixels.
-    let (w, h) = titled.dim_in_pixel();
-    let predicted = Rect {
-        x0: f64::from(look.y_label_area()),
-        y0: 0.0,
-        x1: f64::from(w) - f64::from(reserve),
-        y1: f64::from(h) - f64::from(look.x_label_area()),
-    };
     let place = if entries.is_empty() {
         Place::Inside((1.0, 0.0))
     } else {
@@ -386,8 +451,6 @@ impl Contents<'_> {
         let (x_span, y_span) = (x_range.end - x_range.start, y_range.end - y_range.start);
         // On a log axis every label takes one form: exponents when the
         // axis reaches below 1e-3 or to 1e5, plain numbers otherwise.
-        let x_exp = x_range.start < 1e-3 || x_range.end >= 1e5;
-        let y_exp = y_range.start < 1e-3 || y_range.end >= 1e5;
         // A linear axis whose values differ only far down their digits is
         // labelled from an offset, named in its title.
         let offset = |scale: Scale, range: &std::ops::Range<f64>| match scale {
@@ -406,11 +469,11 @@ impl Contents<'_> {
         let y_title = title(&panel.y_label, y_offset, y_span);
         let x_tick = move |v: &f64| match panel.x_scale {
             Scale::Linear => tick_label(*v - x_offset.unwrap_or(0.0), x_span),
-            Scale::Log => log_tick_label(*v, x_exp),
+            Scale::Log => log_tick_label(*v),
         };
         let y_tick = move |v: &f64| match panel.y_scale {
             Scale::Linear => tick_label(*v - y_offset.unwrap_or(0.0), y_span),
-            Scale::Log => log_tick_label(*v, y_exp),
+            Scale::Log => log_tick_label(*v),
         };
         chart
             .configure_mesh()
@@ -440,27 +503,43 @@ impl Contents<'_> {
                     .map_err(fail)?;
             }
         }
-        // Data first, models drawn over them: a law must stay visible
-        // through a dense cloud of measurements.
-        for p in self.prepared.iter().filter(|p| p.style == Style::Dots) {
-            let r = look.marker_radius(p.pieces[0].len());
-            chart
-                .draw_series(
-                    p.pieces[0]
-                        .iter()
-                        .map(|q| Circle::new(value(q), r, p.color.filled())),
-                )
-                .map_err(fail)?;
-        }
+        // Models first, the data over them: measured points are never
+        // hidden by a law; a dense cloud is drawn half transparent so the
+        // law shows through it.
         for p in self.prepared.iter().filter(|p| p.style == Style::Line) {
+            let stroke = p.color.stroke_width(look.weighted_width(p.weight));
             for piece in &p.pieces {
-                chart
-                    .draw_series(LineSeries::new(
-                        piece.iter().map(value),
-                        p.color.stroke_width(look.line_width()),
-                    ))
-                    .map_err(fail)?;
+                if p.dashed > 0 {
+                    let (dash, gap) = dash_pattern(p.dashed, look);
+                    chart
+                        .draw_series(std::iter::once(DashedPathElement::new(
+                            piece.iter().map(value).collect::<Vec<_>>(),
+                            dash,
+                            gap,
+                            stroke,
+                        )))
+                        .map_err(fail)?;
+                } else {
+                    chart
+                        .draw_series(LineSeries::new(piece.iter().map(value), stroke))
+                        .map_err(fail)?;
+                }
             }
+        }
+        // Over a line, many points are drawn open, so the line shows
+        // through them.
+        let lines = self.prepared.iter().any(|p| p.style == Style::Line);
+        for p in self.prepared.iter().filter(|p| p.style == Style::Dots) {
+            let count = p.pieces[0].len();
+            let r = look.marker_radius(count);
+            let style = if lines && count > 50 {
+                p.color.stroke_width(look.px(1))
+            } else {
+                p.color.filled()
+            };
+            chart
+                .draw_series(p.pieces[0].iter().map(|q| Circle::new(value(q), r, style)))
+                .map_err(fail)?;
         }
         Ok(chart.plotting_area().get_pixel_range())
     }
@@ -495,10 +574,20 @@ fn draw_legend<DB: DrawingBackend>(
         let x = at.x0 + pad;
         let (l, r) = (corner(x, y), corner(x + swatch, y));
         match e.style {
+            Some(Style::Line) if e.dashed > 0 => area
+                .draw(&DashedPathElement::new(
+                    vec![l, r],
+                    dash_pattern(e.dashed, look).0,
+                    dash_pattern(e.dashed, look).1,
+                    e.color
+                        .stroke_width(look.weighted_width(e.weight) + look.px(1)),
+                ))
+                .map_err(fail)?,
             Some(Style::Line) => area
                 .draw(&PathElement::new(
                     vec![l, r],
-                    e.color.stroke_width(look.line_width() + look.px(1)),
+                    e.color
+                        .stroke_width(look.weighted_width(e.weight) + look.px(1)),
                 ))
                 .map_err(fail)?,
             Some(Style::Dots) => {

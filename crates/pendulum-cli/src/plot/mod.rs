@@ -97,6 +97,17 @@ pub enum Style {
     Dots,
 }
 
+/// How heavily a line is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Weight {
+    /// The usual width.
+    Normal,
+    /// Wider: the model a figure prefers.
+    Strong,
+    /// Thinner: the alternatives beside it.
+    Light,
+}
+
 /// One named series of points.
 #[derive(Clone, Debug)]
 pub struct Series {
@@ -108,6 +119,8 @@ pub struct Series {
     pub style: Style,
     /// A palette index to share another series' colour.
     pub color: Option<usize>,
+    /// A line's weight.
+    pub weight: Weight,
 }
 
 impl Series {
@@ -118,7 +131,20 @@ impl Series {
             points,
             style: Style::Line,
             color: None,
+            weight: Weight::Normal,
         }
+    }
+
+    /// The same drawn wider (the preferred model).
+    pub fn strong(mut self) -> Self {
+        self.weight = Weight::Strong;
+        self
+    }
+
+    /// The same drawn thinner (an alternative).
+    pub fn light(mut self) -> Self {
+        self.weight = Weight::Light;
+        self
     }
 
     /// The same drawn in palette colour `index` (an unlabelled companion
@@ -135,6 +161,7 @@ impl Series {
             points,
             style: Style::Dots,
             color: None,
+            weight: Weight::Normal,
         }
     }
 }
@@ -157,7 +184,8 @@ pub struct Panel {
     pub x_label: String,
     /// Vertical axis label, with its unit.
     pub y_label: String,
-    /// The series: data (markers) drawn first, models (lines) over them.
+    /// The series: models (lines) drawn first, data (markers) over them;
+    /// a line that lies on an earlier one is drawn dashed.
     pub series: Vec<Series>,
     /// The horizontal axis's scale.
     pub x_scale: Scale,
@@ -261,6 +289,9 @@ fn register_font() {
     });
 }
 
+/// SVG coordinate units per CSS pixel: coordinates to a tenth of a pixel.
+pub const SVG_DENSITY: u32 = 10;
+
 /// PNG pixels per CSS pixel: twice, so lines and letters are smooth (the
 /// bitmap backend draws without anti-aliasing).
 pub const PNG_DENSITY: u32 = 2;
@@ -279,16 +310,34 @@ pub fn render(target: &Target, figure: &Figure) -> Result<String, CliError> {
         }
     }
     let fail = |e: String| CliError::flag(target.flag, format!("could not draw the plot: {e}"));
+    let figure = &in_time_units(figure);
     let (w, h) = figure.size();
     let bytes = match target.format {
         Format::Svg => {
+            // Drawn at ten device units a CSS pixel (the backend's
+            // coordinates are whole numbers) and shown at the figure's
+            // size: every coordinate to a tenth of a pixel, so curves stay
+            // smooth when zoomed or printed.
             let mut text = String::new();
+            let (dw, dh) = (w * SVG_DENSITY, h * SVG_DENSITY);
             {
-                let root = SVGBackend::with_string(&mut text, (w, h)).into_drawing_area();
-                draw::figure(&root, figure, Look { density: 1 }).map_err(fail)?;
+                let root = SVGBackend::with_string(&mut text, (dw, dh)).into_drawing_area();
+                draw::figure(
+                    &root,
+                    figure,
+                    Look {
+                        density: SVG_DENSITY,
+                    },
+                )
+                .map_err(fail)?;
                 root.present().map_err(|e| fail(e.to_string()))?;
             }
-            text.into_bytes()
+            let drawn = format!(r#"<svg width="{dw}" height="{dh}" viewBox="0 0 {dw} {dh}""#);
+            let shown = format!(r#"<svg width="{w}" height="{h}" viewBox="0 0 {dw} {dh}""#);
+            if !text.starts_with(&drawn) {
+                return Err(fail("the SVG backend wrote an unexpected header".into()));
+            }
+            text.replacen(&drawn, &shown, 1).into_bytes()
         }
         Format::Png => {
             let (w, h) = (w * PNG_DENSITY, h * PNG_DENSITY);
@@ -319,6 +368,59 @@ pub fn render(target: &Target, figure: &Figure) -> Result<String, CliError> {
         .write_all(&bytes)
         .map_err(|e| file.write_error(e))?;
     file.commit()
+}
+
+/// The label of a time axis in seconds; such an axis is shown in the unit
+/// that suits its span.
+pub const TIME_AXIS: &str = "time (s)";
+
+/// The unit a linear time axis spanning `span` seconds is shown in: s up
+/// to 10 min, min up to 10 h, h up to 3 days, days beyond (a week is 7
+/// days, not 604800 s).
+pub fn time_unit(span: f64) -> (&'static str, f64) {
+    if span <= 600.0 {
+        ("s", 1.0)
+    } else if span <= 36_000.0 {
+        ("min", 60.0)
+    } else if span <= 259_200.0 {
+        ("h", 3600.0)
+    } else {
+        ("days", 86_400.0)
+    }
+}
+
+/// `figure` with each linear time axis in seconds ([`TIME_AXIS`]) put in
+/// the unit its span suits.
+fn in_time_units(figure: &Figure) -> Figure {
+    let mut figure = figure.clone();
+    for panel in &mut figure.panels {
+        if panel.x_label != TIME_AXIS || panel.x_scale != Scale::Linear {
+            continue;
+        }
+        let xs = panel
+            .series
+            .iter()
+            .flat_map(|s| s.points.iter().map(|p| p.0))
+            .chain(panel.marks.iter().map(|m| m.x))
+            .filter(|x| x.is_finite());
+        let (lo, hi) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(x), b.max(x))
+        });
+        let (unit, factor) = time_unit(hi - lo);
+        if factor == 1.0 {
+            continue;
+        }
+        panel.x_label = format!("time ({unit})");
+        for series in &mut panel.series {
+            for p in &mut series.points {
+                p.0 /= factor;
+            }
+        }
+        for m in &mut panel.marks {
+            m.x /= factor;
+        }
+    }
+    figure
 }
 
 /// At most `limit` points, evenly thinned, keeping the first and the last.

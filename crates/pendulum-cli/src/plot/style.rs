@@ -6,9 +6,9 @@
 use plotters::style::RGBColor;
 
 /// Colours for successive series: the colour-blind-safe palette of Okabe
-/// & Ito (2008, "Color universal design"), black left out (it is the
-/// axes' colour) and yellow last (faint on white).
-pub const PALETTE: [RGBColor; 7] = [
+/// & Ito (2008, "Color universal design"), yellow late (faint on white)
+/// and black last, as a dark grey.
+pub const PALETTE: [RGBColor; 8] = [
     RGBColor(0, 114, 178),
     RGBColor(213, 94, 0),
     RGBColor(0, 158, 115),
@@ -16,6 +16,9 @@ pub const PALETTE: [RGBColor; 7] = [
     RGBColor(86, 180, 233),
     RGBColor(230, 159, 0),
     RGBColor(240, 228, 66),
+    // Okabe & Ito's black, lightened to tell it from the axes: an eighth
+    // series (a fit of seven laws with its data) wraps no colour.
+    RGBColor(90, 90, 90),
 ];
 
 /// The colour of marks that are not data (a working point's line).
@@ -55,9 +58,13 @@ impl Look {
         self.px(16)
     }
 
-    /// A model's line width.
-    pub fn line_width(self) -> u32 {
-        self.px(2)
+    /// A line's width at a weight.
+    pub fn weighted_width(self, weight: super::Weight) -> u32 {
+        match weight {
+            super::Weight::Normal => self.px(2),
+            super::Weight::Strong => self.px(4),
+            super::Weight::Light => self.px(1),
+        }
     }
 
     /// A data marker's radius: smaller when there are many.

@@ -105,7 +105,7 @@ fn report_with_enormous_q_is_bounded_and_says_so() {
     assert!(out.contains("index.html"));
     let page = std::fs::read_to_string(dir.path().join("pendulum-report/index.html")).unwrap();
     assert!(
-        page.contains("10^5 periods"),
+        page.contains("10⁵ periods"),
         "the bound is stated on the page"
     );
     assert_finite_text(&page);

@@ -320,8 +320,11 @@ fn lift_angle_amplitude_and_the_paper_strip() {
     let relative = (f(&v, "amplitude_first_order_deg").to_radians() - exact) / exact;
     assert!(relative.abs() < exact * exact / 8.0, "{v}");
     let text = std::fs::read_to_string(&svg).unwrap();
+    // The timegrapher's convention (a gaining clock's strip rises, and
+    // the axis says so), and the tick and tock apart as their own trace.
     for label in [
-        "offset (ms)",
+        "ahead (ms), rising: gaining",
+        "tock late (ms): the beat error",
         "time (s)",
         "time from the onset (ms)",
         "ticks",

@@ -150,6 +150,41 @@ fn check_layout(path: &Path, d: &Drawing) {
     }
 }
 
+/// A tick label's value: a plain number, or a log axis's `10⁻⁴` or
+/// `2×10³`.
+fn label_value(text: &str) -> Option<f64> {
+    let text = text.trim().replace('−', "-");
+    let text = text.as_str();
+    if let Ok(v) = text.parse::<f64>() {
+        return Some(v);
+    }
+    let (mantissa, power) = match text.split_once("×10") {
+        Some((m, p)) => (m.parse::<f64>().ok()?, p),
+        None => match text.strip_prefix('-') {
+            Some(rest) => (-1.0, rest.strip_prefix("10")?),
+            None => (1.0, text.strip_prefix("10")?),
+        },
+    };
+    let digits: String = power
+        .chars()
+        .map(|c| match c {
+            '⁻' => Some('-'),
+            '⁰' => Some('0'),
+            '¹' => Some('1'),
+            '²' => Some('2'),
+            '³' => Some('3'),
+            '⁴' => Some('4'),
+            '⁵' => Some('5'),
+            '⁶' => Some('6'),
+            '⁷' => Some('7'),
+            '⁸' => Some('8'),
+            '⁹' => Some('9'),
+            _ => None,
+        })
+        .collect::<Option<String>>()?;
+    Some(mantissa * 10_f64.powi(digits.parse().ok()?))
+}
+
 /// Checks that `path` is a well-formed SVG or a PNG of the plot size that
 /// is not one flat colour.
 fn check_picture(path: &Path) {
@@ -186,7 +221,7 @@ fn check_picture(path: &Path) {
                 .filter(|n| n.has_tag_name("text"))
                 .filter_map(|n| n.text())
                 .map(str::trim)
-                .filter(|t| !t.is_empty() && t.parse::<f64>().is_ok())
+                .filter(|t| !t.is_empty() && label_value(t).is_some())
                 .collect();
             assert!(ticks.len() >= 4, "{}: {ticks:?}", path.display());
             check_layout(path, &drawing(&doc));
@@ -198,9 +233,20 @@ fn check_picture(path: &Path) {
                 );
                 // Short enough for the label area: an axis whose values
                 // differ far down their digits is labelled from an offset.
-                assert!(t.chars().count() <= 8, "{}: tick label {t}", path.display());
-                let negative_zero = t.starts_with('-')
-                    && t.trim_start_matches('-')
+                // (A superscript is half a digit wide.)
+                let width: f64 = t
+                    .chars()
+                    .map(|c| {
+                        if "⁰¹²³⁴⁵⁶⁷⁸⁹⁻".contains(c) {
+                            0.5
+                        } else {
+                            1.0
+                        }
+                    })
+                    .sum();
+                assert!(width <= 8.0, "{}: tick label {t}", path.display());
+                let negative_zero = (t.starts_with('-') || t.starts_with('−'))
+                    && t.trim_start_matches(['-', '−'])
                         .chars()
                         .all(|c| c == '0' || c == '.');
                 assert!(!negative_zero, "{}: tick label {t}", path.display());
@@ -416,7 +462,7 @@ fn every_plot_kind_in_both_formats() {
             .descendants()
             .filter(|n| n.has_tag_name("text"))
             .filter_map(|n| n.text())
-            .filter_map(|t| t.trim().parse::<f64>().ok())
+            .filter_map(label_value)
             .filter(|v| *v > 0.0)
             .collect();
         let has = |v: f64| labels.iter().any(|l| (l / v - 1.0).abs() < 1e-9);

@@ -24,9 +24,11 @@ pub(super) fn draw(target: &Target, r: &Listening) -> Result<String, CliError> {
             .iter()
             .filter(|t| t.side == side)
             .map(|t| {
+                // A timegrapher's sign: a beat that comes early is ahead,
+                // so the strip of a gaining clock rises.
                 let time = t.time;
                 let expected = first_time + (t.beat - first_beat) as f64 * beat;
-                (time, 1e3 * (time - expected))
+                (time, 1e3 * (expected - time))
             })
             .collect();
         thin(points, STRIP_LIMIT)
@@ -37,17 +39,37 @@ pub(super) fn draw(target: &Target, r: &Listening) -> Result<String, CliError> {
     };
     let strip = Panel::new(
         format!("Paper strip: each beat against {against}"),
-        "time (s)",
-        "offset (ms)",
+        crate::plot::TIME_AXIS,
+        "ahead (ms), rising: gaining",
         vec![
             Series::dots("ticks", strip(0)),
             Series::dots("tocks", strip(1)),
         ],
     );
+    // The two traces' separation, which the strip's scale hides when the
+    // rate is large: each tock against the mean of the ticks either side.
+    let by_beat: std::collections::HashMap<u64, f64> =
+        ticks.iter().map(|t| (t.beat, t.time)).collect();
+    let separation: Vec<(f64, f64)> = ticks
+        .iter()
+        .filter(|t| t.side == 1 && t.beat > 0)
+        .filter_map(|t| {
+            let (before, after) = (by_beat.get(&(t.beat - 1))?, by_beat.get(&(t.beat + 1))?);
+            Some((t.time, 1e3 * (t.time - 0.5 * (before + after))))
+        })
+        .collect();
     let mut panels = vec![strip];
+    if !separation.is_empty() {
+        panels.push(Panel::new(
+            "Tick and tock apart: each tock against the ticks either side",
+            crate::plot::TIME_AXIS,
+            "tock late (ms): the beat error",
+            vec![Series::dots("tocks", thin(separation, STRIP_LIMIT)).colored(1)],
+        ));
+    }
     if let Some(sounds) = &r.sounds {
         let wave = |s: &MedianSound| -> Vec<(f64, f64)> {
-            s.samples
+            s.shown
                 .iter()
                 .enumerate()
                 .map(|(i, &v)| (1e3 * (i as f64 - s.onset) / rate, f64::from(v)))
@@ -76,13 +98,13 @@ pub(super) fn draw(target: &Target, r: &Listening) -> Result<String, CliError> {
         let title = |what: &str| format!("{what} in windows of {} s", num(every, 6));
         panels.push(Panel::new(
             title("Rate"),
-            "time (s)",
+            crate::plot::TIME_AXIS,
             "rate (s/day)",
             vec![Series::dots("rate", over_time(&|w| w.rate_s_per_day))],
         ));
         panels.push(Panel::new(
             title("Beat error"),
-            "time (s)",
+            crate::plot::TIME_AXIS,
             "beat error (ms)",
             vec![Series::dots("beat error", over_time(&|w| w.beat_error_ms))],
         ));
@@ -90,7 +112,7 @@ pub(super) fn draw(target: &Target, r: &Listening) -> Result<String, CliError> {
         if !amplitude.is_empty() {
             panels.push(Panel::new(
                 title("Amplitude"),
-                "time (s)",
+                crate::plot::TIME_AXIS,
                 "amplitude (°)",
                 vec![Series::dots("amplitude", amplitude)],
             ));

@@ -32,6 +32,10 @@ const PRE: f64 = 1.5e-3;
 const POST: f64 = 4.5e-3;
 /// The correlation search, either way, s.
 const SEARCH: f64 = 2.0e-3;
+/// How far past the later drop the median sounds shown run, s.
+const SHOWN_AFTER_DROP: f64 = 5e-3;
+/// The longest median sound shown after the onset, s.
+const SHOWN_MAX: f64 = 0.05;
 
 /// The second pass: band-passed samples around each coarse onset, refined
 /// by cross-correlation (see the module notes).
@@ -53,6 +57,9 @@ pub struct Refiner {
     rejected: usize,
     pre: usize,
     length: usize,
+    /// The length of the median sounds shown (not matched): through the
+    /// drop, when there is one.
+    shown: usize,
     search: usize,
     /// Live: onsets still to come, none before this, s (see
     /// [`Refiner::push_onsets`]); `None` when all were given at the start.
@@ -75,6 +82,8 @@ const QUIET_GAP: f64 = 5e-3;
 #[derive(Clone, Debug)]
 struct Template {
     samples: Vec<f32>,
+    /// The median sound over [`Refiner::shown`] samples, for pictures.
+    shown: Vec<f32>,
     norm: f64,
     /// Where in the template the sound begins, samples.
     onset: f64,
@@ -259,6 +268,14 @@ impl Refiner {
                 .max(1e-3),
             super::Timing::OneSound => POST,
         };
+        // The sound shown runs on past the later drop (its ringing too),
+        // at most 50 ms.
+        let shown = drops
+            .iter()
+            .flatten()
+            .fold(POST, |p, &d| p.max(d + SHOWN_AFTER_DROP))
+            .min(SHOWN_MAX);
+        let shown = pre + (shown * sample_rate).round() as usize;
         let post = (post * sample_rate).round() as usize;
         let search = (SEARCH * sample_rate).round().max(2.0) as usize;
         Self {
@@ -275,6 +292,7 @@ impl Refiner {
             rejected: 0,
             pre,
             length: pre + post,
+            shown: shown.max(pre + post),
             search,
             horizon: None,
         }
@@ -286,17 +304,23 @@ impl Refiner {
             self.buffer.push(self.filter.process(f64::from(x)) as f32);
         }
         self.position += samples.len() as u64;
-        // Cut every window that is complete.
+        // Cut every window that is complete (while the templates are
+        // made, long enough for the sound shown).
         let span = (self.length + 2 * self.search) as u64;
         while self.next < self.coarse.len() {
             let (beat, onset) = self.coarse[self.next];
             let start = ((onset * self.rate).round() as i64 - (self.pre + self.search) as i64)
                 .max(0) as u64;
-            if start + span > self.position {
+            let cut = if self.templates.is_none() {
+                (self.shown + 2 * self.search) as u64
+            } else {
+                span
+            };
+            if start + cut > self.position {
                 break;
             }
             let from = (start.saturating_sub(self.buffer_start)) as usize;
-            let window = self.buffer[from..from + span as usize].to_vec();
+            let window = self.buffer[from..from + cut as usize].to_vec();
             let quiet = (self.templates.is_none()).then(|| {
                 let back = span + (QUIET_GAP * self.rate) as u64;
                 let q = start.checked_sub(back)?.checked_sub(self.buffer_start)? as usize;
@@ -333,7 +357,10 @@ impl Refiner {
 
     fn take(&mut self, w: Waiting) {
         match &self.templates {
-            Some(_) => self.refine(w.beat, w.start, &w.window),
+            Some(_) => {
+                let span = w.window.len().min(self.length + 2 * self.search);
+                self.refine(w.beat, w.start, &w.window[..span]);
+            }
             None => {
                 self.waiting.push(w);
                 let sides = [0, 1].map(|s| self.waiting.iter().filter(|w| w.beat % 2 == s).count());
@@ -348,14 +375,21 @@ impl Refiner {
     /// itself twice; then the waiting windows are refined.
     fn build(&mut self) {
         let mut templates = Vec::new();
+        let span = self.length + 2 * self.search;
         for side in 0..2_u64 {
-            let windows: Vec<&Vec<f32>> = self
+            let long: Vec<&Vec<f32>> = self
                 .waiting
                 .iter()
                 .filter(|w| w.beat % 2 == side)
                 .take(TEMPLATE_TICKS)
                 .map(|w| &w.window)
                 .collect();
+            // Matched on the windows' first part alone; the rest is shown.
+            let cut: Vec<Vec<f32>> = long
+                .iter()
+                .map(|w| w[..span.min(w.len())].to_vec())
+                .collect();
+            let windows: Vec<&Vec<f32>> = cut.iter().collect();
             // Start from the loudest window (its ringing is real even where
             // the noise is strong, while a median of windows misaligned by
             // more than a ringing period cancels), then align on the median
@@ -378,8 +412,9 @@ impl Refiner {
                         shifts[k] = lag.round().clamp(0.0, (2 * self.search) as f64) as usize;
                     }
                 }
-                template = self.median(&windows, &shifts);
+                template = self.median(&windows, &shifts, self.length);
             }
+            let shown = self.median(&long, &shifts, self.shown);
             let norm = template
                 .iter()
                 .map(|&v| f64::from(v) * f64::from(v))
@@ -410,6 +445,7 @@ impl Refiner {
                 null.is_none_or(|n| (typical - n.correlation.0) / n.correlation.1 >= HEARD_SCORE);
             templates.push(Template {
                 samples: template,
+                shown,
                 norm,
                 onset,
                 typical,
@@ -447,7 +483,8 @@ impl Refiner {
         }
         self.templates = Some([tick, tock]);
         for w in std::mem::take(&mut self.waiting) {
-            self.refine(w.beat, w.start, &w.window);
+            let span = w.window.len().min(span);
+            self.refine(w.beat, w.start, &w.window[..span]);
         }
     }
 
@@ -471,9 +508,10 @@ impl Refiner {
         Some((found, correlation))
     }
 
-    /// The per-sample median of the windows, each read from its shift.
-    fn median(&self, windows: &[&Vec<f32>], shifts: &[usize]) -> Vec<f32> {
-        (0..self.length)
+    /// The per-sample median of the windows' first `length` samples, each
+    /// read from its shift.
+    fn median(&self, windows: &[&Vec<f32>], shifts: &[usize], length: usize) -> Vec<f32> {
+        (0..length)
             .map(|i| {
                 let mut column: Vec<f64> = windows
                     .iter()
@@ -538,6 +576,7 @@ impl Refiner {
         let sounds = self.templates.as_ref().map(|t| {
             t.clone().map(|t| MedianSound {
                 samples: t.samples,
+                shown: t.shown,
                 onset: t.onset,
             })
         });
@@ -551,6 +590,10 @@ impl Refiner {
 pub struct MedianSound {
     /// The samples, at the recording's rate.
     pub samples: Vec<f32>,
+    /// The same median over a longer span from the same start, through
+    /// the drop when there is one (for a picture; the ticks are matched on
+    /// `samples`).
+    pub shown: Vec<f32>,
     /// Where the tick's onset falls in them, samples.
     pub onset: f64,
 }

@@ -190,16 +190,18 @@ fn figure(a: &PeriodTable, period: &[f64], amplitude: Option<&[f64]>) -> Figure 
         .iter()
         .map(|&i| (x[i], (period[i] - a.fitted_period[i]) * 1e3))
         .collect();
+    let law = match a.against {
+        Against::Length => "fitted: T² = 4π² (L + offset) / g",
+        Against::Amplitude => "fitted: the exact law, T₀ · 2K(sin²(A/2))/π",
+        Against::Repeats => "fitted: their mean",
+    };
     Figure {
         panels: vec![
             Panel::new(
                 "Measured periods and the fitted law",
                 label,
                 "period (s)",
-                vec![
-                    Series::line("fitted", fitted),
-                    Series::dots("measured", data),
-                ],
+                vec![Series::dots("measured", data), Series::line(law, fitted)],
             ),
             Panel::new(
                 "Residuals",

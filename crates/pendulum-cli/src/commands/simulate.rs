@@ -179,6 +179,10 @@ struct CliObserver {
     phase_stride: u64,
     /// The group of periods whose loop is being drawn.
     phase_period: Option<u64>,
+    /// The exact period at the release amplitude (the longest the swing
+    /// has, as it decays), set at the first sample: the loops are drawn
+    /// over 1.1 of it, so that they close at any amplitude.
+    loop_period: Option<f64>,
 }
 
 struct SwingsFile {
@@ -217,6 +221,7 @@ impl CliObserver {
             phase: args.phase_plot.as_ref().map(|_| Vec::new()),
             phase_stride: periods.div_ceil(PHASE_PERIODS).max(1),
             phase_period: None,
+            loop_period: None,
         })
     }
 
@@ -309,9 +314,17 @@ impl Observer for CliObserver {
     fn sample(&mut self, time: f64, state: &State) -> bool {
         if let Some(phase) = self.phase.as_mut() {
             // Every sample when all periods are kept (one spiral); else
-            // the kept periods' loops, each drawn over 1.1 periods so that
-            // it closes although the true period exceeds T0.
-            let u = time / self.pendulum.small_angle_period();
+            // the kept periods' loops, each drawn over 1.1 periods at the
+            // release amplitude so that it closes (at 120° the period is
+            // 1.37 T0: loops of 1.1 T0 would stay open).
+            let t0 = self.pendulum.small_angle_period();
+            let period = *self.loop_period.get_or_insert_with(|| {
+                pendulum_theory::pendulum::Amplitude::from_radians(state.angle.abs())
+                    .map_or(t0, |a| self.pendulum.period(a))
+                    .max(t0)
+            });
+            let period = if period.is_finite() { period } else { t0 };
+            let u = time / period;
             let stride = self.phase_stride as f64;
             let group = if self.phase_stride == 1 {
                 0

@@ -153,13 +153,15 @@ impl Map {
     }
 }
 
-/// Marks dashed each line that runs along a line drawn before it (most of
-/// its length within two pixels of it), so that both stay visible: the
-/// earlier line shows between the later one's dashes.
+/// Marks dashed each named line that runs along a line of another colour
+/// drawn before it (most of its length within two pixels of it), so that
+/// both stay visible: the earlier line shows between the later one's
+/// dashes. (Unnamed companions, as a portrait's many loops, stay solid.)
 fn dash_coincident(prepared: &mut [Prepared], map: Map, look: Look) {
     let cell = f64::from(look.px(2));
     let step = f64::from(look.px(2));
-    let mut drawn: std::collections::HashSet<(i64, i64)> = std::collections::HashSet::new();
+    let mut drawn: std::collections::HashMap<(i64, i64), RGBColor> =
+        std::collections::HashMap::new();
     let mut dashes = 0;
     for p in prepared.iter_mut().filter(|p| p.style == Style::Line) {
         let mut trace = Drawn::default();
@@ -173,15 +175,21 @@ fn dash_coincident(prepared: &mut [Prepared], map: Map, look: Look) {
             .iter()
             .map(|&(x, y)| ((x / cell).floor() as i64, (y / cell).floor() as i64))
             .collect();
+        let color = p.color;
         let near = |&(i, j): &(i64, i64)| {
-            (-1..=1).any(|di| (-1..=1).any(|dj| drawn.contains(&(i + di, j + dj))))
+            (-1..=1).any(|di| {
+                (-1..=1).any(|dj| drawn.get(&(i + di, j + dj)).is_some_and(|&c| c != color))
+            })
         };
         let on_earlier = cells.iter().filter(|c| near(c)).count();
-        if !cells.is_empty() && on_earlier as f64 >= 0.6 * cells.len() as f64 {
+        if !p.label.is_empty() && !cells.is_empty() && on_earlier as f64 >= 0.6 * cells.len() as f64
+        {
             dashes += 1;
             p.dashed = dashes;
         }
-        drawn.extend(cells);
+        for c in cells {
+            drawn.insert(c, color);
+        }
     }
 }
 

@@ -325,6 +325,26 @@ fn prefixed(value: f64, unit: &str, digits: usize) -> String {
     format!("{} {prefix}{unit}", num(value / scale, digits))
 }
 
+/// Text with the minus sign (U+2212) for the hyphen before a number
+/// (`−14.8`), where it is a sign, not a dash between words.
+fn minus_signs(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    chars
+        .iter()
+        .enumerate()
+        .map(|(i, &c)| {
+            let sign = c == '-'
+                && chars.get(i + 1).is_some_and(|n| n.is_ascii_digit())
+                && (i == 0 || !chars[i - 1].is_alphanumeric());
+            if sign {
+                '−'
+            } else {
+                c
+            }
+        })
+        .collect()
+}
+
 /// HTML text with every number in exponent form (`5e-5`, `1.2e7`) written
 /// as a scientist would: `5 × 10<sup>−5</sup>`.
 fn powers_of_ten(text: &str) -> String {
@@ -388,7 +408,7 @@ fn html(rows: &[Row], datasheet: Option<(&[(String, String)], &str)>) -> String 
                 t.push_str(&format!(
                     "<tr><th>{}</th><td>{}</td></tr>\n",
                     escape(name),
-                    powers_of_ten(&escape(value))
+                    powers_of_ten(&minus_signs(&escape(value)))
                 ));
             }
             t.push_str("</table>\n");
@@ -401,7 +421,7 @@ fn html(rows: &[Row], datasheet: Option<(&[(String, String)], &str)>) -> String 
         table.push_str(&format!(
             "<tr><th>{}</th><td>{}</td><td class=\"note\">{}</td></tr>\n",
             escape(name),
-            powers_of_ten(&escape(value)),
+            powers_of_ten(&minus_signs(&escape(value))),
             escape(note)
         ));
     }
@@ -475,5 +495,10 @@ mod tests {
         );
         assert_eq!(powers_of_ten("0.99362 m"), "0.99362 m");
         assert_eq!(powers_of_ten("A0e5 x1e3"), "A0e5 x1e3");
+        assert_eq!(
+            minus_signs("-14.787 → -3.6879 s/day"),
+            "−14.787 → −3.6879 s/day"
+        );
+        assert_eq!(minus_signs("section 1-4, e-5"), "section 1-4, e-5");
     }
 }

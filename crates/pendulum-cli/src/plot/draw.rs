@@ -65,6 +65,8 @@ struct Entry {
     text: String,
     weight: Weight,
     dashed: usize,
+    /// Markers drawn open (many of them over lines).
+    open: bool,
 }
 
 /// The axis spans of `panel` (before any room is made for the legend).
@@ -193,6 +195,13 @@ fn dash_coincident(prepared: &mut [Prepared], map: Map, look: Look) {
     }
 }
 
+/// Whether the markers of `p` are drawn open: many of them (over 50) in a
+/// panel with lines, so that the lines show through them.
+fn open_markers(prepared: &[Prepared], p: &Prepared) -> bool {
+    p.pieces.first().is_some_and(|points| points.len() > 50)
+        && prepared.iter().any(|q| q.style == Style::Line)
+}
+
 /// The n-th dash pattern (from 1), dash and gap in device pixels: long
 /// dashes, then dots, then short dashes, so that two dashed lines on one
 /// another still show apart.
@@ -285,6 +294,7 @@ fn draw_panel<DB: DrawingBackend>(
             text: p.label.clone(),
             weight: p.weight,
             dashed: p.dashed,
+            open: p.style == Style::Dots && open_markers(&prepared, p),
         })
         .collect();
     entries.extend(
@@ -298,6 +308,7 @@ fn draw_panel<DB: DrawingBackend>(
                 text: m.label.clone(),
                 weight: Weight::Light,
                 dashed: 1,
+                open: false,
             }),
     );
     let pad = f64::from(look.px(6));
@@ -534,13 +545,10 @@ impl Contents<'_> {
                 }
             }
         }
-        // Over a line, many points are drawn open, so the line shows
-        // through them.
-        let lines = self.prepared.iter().any(|p| p.style == Style::Line);
         for p in self.prepared.iter().filter(|p| p.style == Style::Dots) {
             let count = p.pieces[0].len();
             let r = look.marker_radius(count);
-            let style = if lines && count > 50 {
+            let style = if open_markers(self.prepared, p) {
                 p.color.stroke_width(look.px(1))
             } else {
                 p.color.filled()
@@ -609,8 +617,15 @@ fn draw_legend<DB: DrawingBackend>(
                         corner(c.0 + radius * t.cos(), c.1 + radius * t.sin())
                     })
                     .collect();
-                area.draw(&Polygon::new(ring, e.color.filled()))
-                    .map_err(fail)?;
+                if e.open {
+                    let mut closed = ring.clone();
+                    closed.push(ring[0]);
+                    area.draw(&PathElement::new(closed, e.color.stroke_width(look.px(1))))
+                        .map_err(fail)?;
+                } else {
+                    area.draw(&Polygon::new(ring, e.color.filled()))
+                        .map_err(fail)?;
+                }
             }
             None => area
                 .draw(&DashedPathElement::new(

@@ -801,8 +801,8 @@ const RUN_BY_CI: &[(&str, &str)] = &[
         "cargo test --workspace --release",
     ),
     (
-        "cargo install --path crates/pendulum-cli",
-        "cargo install --path crates/pendulum-cli",
+        "cargo install --locked --path crates/pendulum-cli",
+        "cargo install --locked --path crates/pendulum-cli",
     ),
     (
         "sudo apt-get install chromium ffmpeg",

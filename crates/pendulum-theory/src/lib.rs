@@ -22,6 +22,8 @@
 //!   sum them.
 //! * [`gravity`]: WGS 84 normal gravity with the free-air correction.
 //! * [`listening`]: the ticks of a sound recording, and a synthetic one.
+//! * [`stability`]: a clock's frequency stability as NIST SP 1065 computes
+//!   it: Allan, modified Allan, time and Hadamard deviations.
 //! * [`pendulum`]: the types that say what a number is: a [`Pendulum`]
 //!   (length and g) and an [`Amplitude`].
 //!
@@ -62,6 +64,7 @@ pub mod pendulum;
 pub mod period;
 pub mod report;
 pub mod simulation;
+pub mod stability;
 pub mod train;
 
 pub use error::{InputError, Problem, Quantity};

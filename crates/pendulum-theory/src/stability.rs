@@ -1,0 +1,125 @@
+//! Frequency stability of a clock, as the time-and-frequency field
+//! computes it: the Allan, modified Allan, time and Hadamard deviations of
+//! a series of time errors (phase data `x`, seconds, one every `τ₀`) at
+//! averaging times `τ = m τ₀`.
+//!
+//! Every statistic is the textbook estimator of W. J. Riley, *Handbook of
+//! Frequency Stability Analysis*, NIST Special Publication 1065 (2008),
+//! section 5.2, written on phase data; frequency data (fractional
+//! frequency `y`, or a clock's rate) are first summed into phase
+//! ([`phase_from_frequency`], SP 1065 section 5.1). Each is a sum of
+//! squares of second (Allan) or third (Hadamard) differences, computed in
+//! one pass in `f64`: on the NBS14 test data (Riley's 10-point set) every
+//! value agrees with the handbook's table to its printed digits (tests
+//! `stability.rs`). Confidence intervals and the noise type are not here
+//! yet (issue 26).
+
+/// The phase (time error, s) that fractional frequencies `y`, one every
+/// `tau0` s, accumulate: `x₀ = 0`, `x_{i+1} = x_i + y_i τ₀` (SP 1065 eq. 8);
+/// one point more than `y`.
+pub fn phase_from_frequency(y: &[f64], tau0: f64) -> Vec<f64> {
+    let mut x = Vec::with_capacity(y.len() + 1);
+    let mut sum = 0.0;
+    x.push(sum);
+    for &v in y {
+        sum += v * tau0;
+        x.push(sum);
+    }
+    x
+}
+
+/// `τ = m τ₀`, `None` when `m` is zero or `τ₀` is not positive and finite.
+fn tau(tau0: f64, m: usize) -> Option<f64> {
+    (m > 0 && tau0.is_finite() && tau0 > 0.0).then_some(m as f64 * tau0)
+}
+
+/// The (non-overlapping) Allan deviation at `τ = m τ₀` from phase `x`:
+/// the phase decimated to every `m`-th point,
+/// `σ²(τ) = Σ (x_{k+2} − 2x_{k+1} + x_k)² / (2 τ² (K − 2))` over its `K`
+/// points (SP 1065 eq. 7). `None` with fewer than three decimated points.
+pub fn adev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
+    let tau = tau(tau0, m)?;
+    let d: Vec<f64> = x.iter().step_by(m).copied().collect();
+    let terms = d.len().checked_sub(2).filter(|&n| n > 0)?;
+    let sum: f64 = d
+        .windows(3)
+        .map(|w| (w[2] - 2.0 * w[1] + w[0]).powi(2))
+        .sum();
+    Some((sum / (2.0 * tau * tau * terms as f64)).sqrt())
+}
+
+/// The overlapping Allan deviation at `τ = m τ₀` from phase `x`:
+/// `σ²(τ) = Σ_{i<N−2m} (x_{i+2m} − 2x_{i+m} + x_i)² / (2 τ² (N − 2m))`
+/// (SP 1065 eq. 11). `None` with fewer than `2m + 1` points.
+pub fn oadev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
+    let tau = tau(tau0, m)?;
+    let terms = x.len().checked_sub(2 * m).filter(|&n| n > 0)?;
+    let sum: f64 = (0..terms)
+        .map(|i| (x[i + 2 * m] - 2.0 * x[i + m] + x[i]).powi(2))
+        .sum();
+    Some((sum / (2.0 * tau * tau * terms as f64)).sqrt())
+}
+
+/// The modified Allan deviation at `τ = m τ₀` from phase `x`: the second
+/// differences summed over `m` consecutive starts before squaring,
+/// `Mod σ²(τ) = Σ_{j≤N−3m} (Σ_{i=j}^{j+m−1} (x_{i+2m} − 2x_{i+m} + x_i))² /
+/// (2 m² τ² (N − 3m + 1))` (SP 1065 eq. 14); the inner sums by a running
+/// window, so the whole is linear in `N`. `None` with fewer than `3m`
+/// points. Against allantools at 1,000 points of four noise types: within
+/// 1e-10 relative at every octave τ.
+pub fn mdev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
+    let tau = tau(tau0, m)?;
+    let outer = (x.len() + 1).checked_sub(3 * m).filter(|&n| n > 0)?;
+    let second = |i: usize| x[i + 2 * m] - 2.0 * x[i + m] + x[i];
+    let exact = |j: usize| -> f64 { (j..j + m).map(second).sum() };
+    let mut window = exact(0);
+    let mut sum = window * window;
+    // The running window is summed afresh every max(4096, m) starts, so
+    // its rounding cannot build up over a long record (at no more than
+    // twice the work).
+    let refresh = m.max(4096);
+    for j in 1..outer {
+        window = if j % refresh == 0 {
+            exact(j)
+        } else {
+            window + second(j + m - 1) - second(j - 1)
+        };
+        sum += window * window;
+    }
+    let mf = m as f64;
+    Some((sum / (2.0 * mf * mf * tau * tau * outer as f64)).sqrt())
+}
+
+/// The time deviation at `τ = m τ₀`: `σ_x(τ) = (τ/√3) Mod σ_y(τ)` (SP 1065
+/// eq. 15), in seconds.
+pub fn tdev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
+    let tau = tau(tau0, m)?;
+    Some(tau / 3f64.sqrt() * mdev(x, tau0, m)?)
+}
+
+/// The (non-overlapping) Hadamard deviation at `τ = m τ₀` from phase `x`:
+/// the phase decimated to every `m`-th point, `H σ²(τ) = Σ (x_{k+3} −
+/// 3x_{k+2} + 3x_{k+1} − x_k)² / (6 τ² (K − 3))` (SP 1065 eq. 17), blind to
+/// a linear frequency drift. `None` with fewer than four decimated points.
+pub fn hdev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
+    let tau = tau(tau0, m)?;
+    let d: Vec<f64> = x.iter().step_by(m).copied().collect();
+    let terms = d.len().checked_sub(3).filter(|&n| n > 0)?;
+    let sum: f64 = d
+        .windows(4)
+        .map(|w| (w[3] - 3.0 * w[2] + 3.0 * w[1] - w[0]).powi(2))
+        .sum();
+    Some((sum / (6.0 * tau * tau * terms as f64)).sqrt())
+}
+
+/// The overlapping Hadamard deviation at `τ = m τ₀` from phase `x`:
+/// `H σ²(τ) = Σ_{i<N−3m} (x_{i+3m} − 3x_{i+2m} + 3x_{i+m} − x_i)² / (6 τ²
+/// (N − 3m))` (SP 1065 eq. 18). `None` with fewer than `3m + 1` points.
+pub fn ohdev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
+    let tau = tau(tau0, m)?;
+    let terms = x.len().checked_sub(3 * m).filter(|&n| n > 0)?;
+    let sum: f64 = (0..terms)
+        .map(|i| (x[i + 3 * m] - 3.0 * x[i + 2 * m] + 3.0 * x[i + m] - x[i]).powi(2))
+        .sum();
+    Some((sum / (6.0 * tau * tau * terms as f64)).sqrt())
+}

@@ -1,0 +1,67 @@
+#!/usr/bin/env python3
+"""Reference stability statistics for crates/pendulum-theory/tests/stability.rs,
+computed by allantools (https://github.com/aewallin/allantools, the
+library the time-and-frequency community checks against Stable32).
+
+Writes crates/pendulum-theory/tests/data/stability/NAME.csv for four seeded
+noise types (1000 phase points each, tau0 = 1 s): the series itself
+(`phase_s` column) in one file and, in NAME_devs.csv, each statistic at
+octave averaging factors m = 1, 2, 4, ... as allantools computes it from
+the phase data.
+
+Run from the repository root: python3 tools/reference/stability.py
+(needs numpy and allantools: pip install numpy allantools; the committed
+files were made with allantools 2024.06 and numpy 2.4.6)."""
+import csv
+import os
+
+import allantools
+import numpy as np
+
+OUT = "crates/pendulum-theory/tests/data/stability"
+N = 1000
+
+
+def series():
+    """Seeded phase series of the four noise types a clock shows."""
+    rng = np.random.default_rng(20261124)
+    white_pm = rng.standard_normal(N) * 1e-9
+    white_fm = np.concatenate([[0.0], np.cumsum(rng.standard_normal(N - 1) * 1e-9)])
+    rw_fm = np.concatenate([[0.0], np.cumsum(np.cumsum(rng.standard_normal(N - 1) * 1e-11))])
+    # Flicker frequency: 1/f frequency noise by spectral shaping of white
+    # noise (Kasdin's method in the frequency domain), summed into phase.
+    white = rng.standard_normal(2 * N)
+    spectrum = np.fft.rfft(white)
+    f = np.fft.rfftfreq(2 * N)
+    f[0] = f[1]
+    flicker_y = np.fft.irfft(spectrum / np.sqrt(f), 2 * N)[: N - 1] * 1e-10
+    flicker_fm = np.concatenate([[0.0], np.cumsum(flicker_y)])
+    return {"white_pm": white_pm, "white_fm": white_fm, "flicker_fm": flicker_fm,
+            "random_walk_fm": rw_fm}
+
+
+STATISTICS = {"adev": allantools.adev, "oadev": allantools.oadev, "mdev": allantools.mdev,
+              "tdev": allantools.tdev, "hdev": allantools.hdev, "ohdev": allantools.ohdev}
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    for name, x in series().items():
+        with open(f"{OUT}/{name}.csv", "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["phase_s"])
+            for v in x:
+                w.writerow([repr(float(v))])
+        taus = [2 ** k for k in range(0, 9)]
+        with open(f"{OUT}/{name}_devs.csv", "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["statistic", "m", "value"])
+            for stat, fn in STATISTICS.items():
+                t, d, _, _ = fn(x, rate=1.0, data_type="phase", taus=taus)
+                for tau, dev in zip(t, d):
+                    w.writerow([stat, int(round(tau)), repr(float(dev))])
+    print("wrote", OUT)
+
+
+if __name__ == "__main__":
+    main()

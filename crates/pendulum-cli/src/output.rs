@@ -154,6 +154,11 @@ pub fn csv<T: Serialize>(rows: &[T]) -> Result<String, CliError> {
             .serialize(row)
             .map_err(|e| CliError::other(format!("could not encode CSV: {e}")))?;
     }
+    csv_text(writer)
+}
+
+/// The text a CSV writer holds.
+fn csv_text(writer: csv::Writer<Vec<u8>>) -> Result<String, CliError> {
     let bytes = writer
         .into_inner()
         .map_err(|e| CliError::other(format!("could not encode CSV: {e}")))?;
@@ -196,10 +201,7 @@ pub fn csv_columns(csv: &str, names: &str, flag: &str) -> Result<String, CliErro
             .write_record(picked.iter().map(|&i| record.get(i).unwrap_or("")))
             .map_err(encode)?;
     }
-    let bytes = writer
-        .into_inner()
-        .map_err(|e| CliError::other(format!("could not encode CSV: {e}")))?;
-    String::from_utf8(bytes).map_err(|e| CliError::other(format!("could not encode CSV: {e}")))
+    csv_text(writer)
 }
 
 /// A right-aligned table with a header, for people.

@@ -306,6 +306,21 @@ fn non_finite_word(text: &str) -> Result<(), UnitError> {
 
 /// Reads `text` as a quantity of `dimension`, in SI.
 pub fn parse_quantity(text: &str, dimension: Dimension) -> Result<f64, UnitError> {
+    let (trimmed, number, unit) = split_quantity(text, dimension)?;
+    let value = match unit {
+        Some(u) => number * u.si + u.offset,
+        None => number * dimension.bare_factor(),
+    };
+    finite(trimmed, value)
+}
+
+/// `text` trimmed, its number, and the unit written after it (`None`: a
+/// bare number), each refusal in our words: the reading every quantity
+/// shares.
+fn split_quantity(
+    text: &str,
+    dimension: Dimension,
+) -> Result<(&str, f64, Option<&'static Unit>), UnitError> {
     let trimmed = text.trim();
     if trimmed.is_empty() {
         return Err(UnitError::Empty);
@@ -318,15 +333,17 @@ pub fn parse_quantity(text: &str, dimension: Dimension) -> Result<f64, UnitError
     let number: f64 = trimmed[..split]
         .parse()
         .map_err(|_| UnitError::NotANumber(trimmed.to_string()))?;
-    let unit = trimmed[split..].trim();
-    let value = match unit_of(trimmed, unit, dimension)? {
-        Some(u) => number * u.si + u.offset,
-        None => number * dimension.bare_factor(),
-    };
-    if !value.is_finite() {
-        return Err(UnitError::NotFinite(trimmed.to_string()));
+    let unit = unit_of(trimmed, trimmed[split..].trim(), dimension)?;
+    Ok((trimmed, number, unit))
+}
+
+/// `value`, or the refusal of a value too large for a double.
+fn finite(text: &str, value: f64) -> Result<f64, UnitError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(UnitError::NotFinite(text.to_string()))
     }
-    Ok(value)
 }
 
 /// Reads a plain number (no unit), as for `ζ` or `Q`.
@@ -388,32 +405,17 @@ fn unit_of(
 /// number as written, bit for bit; another unit is converted through the
 /// ratio of the two units' sizes.
 pub fn parse_in(text: &str, dimension: Dimension, bare: &str) -> Result<f64, UnitError> {
-    let trimmed = text.trim();
-    if trimmed.is_empty() {
-        return Err(UnitError::Empty);
-    }
-    non_finite_word(trimmed)?;
-    let split = number_prefix_len(trimmed);
-    if split == 0 {
-        return Err(UnitError::NotANumber(trimmed.to_string()));
-    }
-    let number: f64 = trimmed[..split]
-        .parse()
-        .map_err(|_| UnitError::NotANumber(trimmed.to_string()))?;
+    let (trimmed, number, unit) = split_quantity(text, dimension)?;
     let (bare_si, bare_offset) = match lookup(dimension, bare) {
         Some(u) => (u.si, u.offset),
         None => (1.0, 0.0),
     };
-    let value = match unit_of(trimmed, trimmed[split..].trim(), dimension)? {
+    let value = match unit {
         None => number,
         Some(u) if u.names.contains(&bare) => number,
         Some(u) => (number * u.si + u.offset - bare_offset) / bare_si,
     };
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(UnitError::NotFinite(trimmed.to_string()))
-    }
+    finite(trimmed, value)
 }
 
 fn lookup(dimension: Dimension, unit: &str) -> Option<&'static Unit> {

@@ -33,31 +33,50 @@ fn tau(tau0: f64, m: usize) -> Option<f64> {
     (m > 0 && tau0.is_finite() && tau0 > 0.0).then_some(m as f64 * tau0)
 }
 
+/// The second difference of phase at spacing `m` (the Allan statistics').
+const SECOND: [f64; 3] = [1.0, -2.0, 1.0];
+/// The third difference (the Hadamard statistics').
+const THIRD: [f64; 4] = [-1.0, 3.0, -3.0, 1.0];
+
+/// `sqrt(Σ_i (Σ_k c_k x_{i+km})² / (scale τ² n))` over every start `i`
+/// with the whole difference inside `x` (`n` of them): the overlapping
+/// estimators of SP 1065 eqs. 11 and 18. `None` when no start fits.
+fn overlapping(x: &[f64], tau: f64, m: usize, c: &[f64], scale: f64) -> Option<f64> {
+    let reach = (c.len() - 1) * m;
+    let starts = x.len().checked_sub(reach).filter(|&n| n > 0)?;
+    let sum: f64 = (0..starts)
+        .map(|i| {
+            c.iter()
+                .enumerate()
+                .map(|(k, ck)| ck * x[i + k * m])
+                .sum::<f64>()
+                .powi(2)
+        })
+        .sum();
+    Some((sum / (scale * tau * tau * starts as f64)).sqrt())
+}
+
+/// Every `m`-th point of `x`: the series a non-overlapping estimator
+/// reads at `τ = m τ₀`.
+fn decimated(x: &[f64], m: usize) -> Vec<f64> {
+    x.iter().step_by(m.max(1)).copied().collect()
+}
+
 /// The (non-overlapping) Allan deviation at `τ = m τ₀` from phase `x`:
 /// the phase decimated to every `m`-th point,
 /// `σ²(τ) = Σ (x_{k+2} − 2x_{k+1} + x_k)² / (2 τ² (K − 2))` over its `K`
-/// points (SP 1065 eq. 7). `None` with fewer than three decimated points.
+/// points (SP 1065 eq. 7): the overlapping estimator of the decimated
+/// series at its own spacing. `None` with fewer than three decimated
+/// points.
 pub fn adev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
-    let tau = tau(tau0, m)?;
-    let d: Vec<f64> = x.iter().step_by(m).copied().collect();
-    let terms = d.len().checked_sub(2).filter(|&n| n > 0)?;
-    let sum: f64 = d
-        .windows(3)
-        .map(|w| (w[2] - 2.0 * w[1] + w[0]).powi(2))
-        .sum();
-    Some((sum / (2.0 * tau * tau * terms as f64)).sqrt())
+    overlapping(&decimated(x, m), tau(tau0, m)?, 1, &SECOND, 2.0)
 }
 
 /// The overlapping Allan deviation at `τ = m τ₀` from phase `x`:
 /// `σ²(τ) = Σ_{i<N−2m} (x_{i+2m} − 2x_{i+m} + x_i)² / (2 τ² (N − 2m))`
 /// (SP 1065 eq. 11). `None` with fewer than `2m + 1` points.
 pub fn oadev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
-    let tau = tau(tau0, m)?;
-    let terms = x.len().checked_sub(2 * m).filter(|&n| n > 0)?;
-    let sum: f64 = (0..terms)
-        .map(|i| (x[i + 2 * m] - 2.0 * x[i + m] + x[i]).powi(2))
-        .sum();
-    Some((sum / (2.0 * tau * tau * terms as f64)).sqrt())
+    overlapping(x, tau(tau0, m)?, m, &SECOND, 2.0)
 }
 
 /// The modified Allan deviation at `τ = m τ₀` from phase `x`: the second
@@ -98,28 +117,17 @@ pub fn tdev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
 }
 
 /// The (non-overlapping) Hadamard deviation at `τ = m τ₀` from phase `x`:
-/// the phase decimated to every `m`-th point, `H σ²(τ) = Σ (x_{k+3} −
-/// 3x_{k+2} + 3x_{k+1} − x_k)² / (6 τ² (K − 3))` (SP 1065 eq. 17), blind to
-/// a linear frequency drift. `None` with fewer than four decimated points.
+/// the phase decimated to every `m`-th point,
+/// `H σ²(τ) = Σ (x_{k+3} − 3x_{k+2} + 3x_{k+1} − x_k)² / (6 τ² (K − 3))`
+/// (SP 1065 eq. 17), blind to a linear frequency drift. `None` with fewer
+/// than four decimated points.
 pub fn hdev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
-    let tau = tau(tau0, m)?;
-    let d: Vec<f64> = x.iter().step_by(m).copied().collect();
-    let terms = d.len().checked_sub(3).filter(|&n| n > 0)?;
-    let sum: f64 = d
-        .windows(4)
-        .map(|w| (w[3] - 3.0 * w[2] + 3.0 * w[1] - w[0]).powi(2))
-        .sum();
-    Some((sum / (6.0 * tau * tau * terms as f64)).sqrt())
+    overlapping(&decimated(x, m), tau(tau0, m)?, 1, &THIRD, 6.0)
 }
 
 /// The overlapping Hadamard deviation at `τ = m τ₀` from phase `x`:
 /// `H σ²(τ) = Σ_{i<N−3m} (x_{i+3m} − 3x_{i+2m} + 3x_{i+m} − x_i)² / (6 τ²
 /// (N − 3m))` (SP 1065 eq. 18). `None` with fewer than `3m + 1` points.
 pub fn ohdev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
-    let tau = tau(tau0, m)?;
-    let terms = x.len().checked_sub(3 * m).filter(|&n| n > 0)?;
-    let sum: f64 = (0..terms)
-        .map(|i| (x[i + 3 * m] - 3.0 * x[i + 2 * m] + 3.0 * x[i + m] - x[i]).powi(2))
-        .sum();
-    Some((sum / (6.0 * tau * tau * terms as f64)).sqrt())
+    overlapping(x, tau(tau0, m)?, m, &THIRD, 6.0)
 }

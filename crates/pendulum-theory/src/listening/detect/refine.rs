@@ -377,24 +377,20 @@ impl Refiner {
         let mut templates = Vec::new();
         let span = self.length + 2 * self.search;
         for side in 0..2_u64 {
-            let long: Vec<&Vec<f32>> = self
+            let long: Vec<&[f32]> = self
                 .waiting
                 .iter()
                 .filter(|w| w.beat % 2 == side)
                 .take(TEMPLATE_TICKS)
-                .map(|w| &w.window)
+                .map(|w| w.window.as_slice())
                 .collect();
             // Matched on the windows' first part alone; the rest is shown.
-            let cut: Vec<Vec<f32>> = long
-                .iter()
-                .map(|w| w[..span.min(w.len())].to_vec())
-                .collect();
-            let windows: Vec<&Vec<f32>> = cut.iter().collect();
+            let windows: Vec<&[f32]> = long.iter().map(|w| &w[..span.min(w.len())]).collect();
             // Start from the loudest window (its ringing is real even where
             // the noise is strong, while a median of windows misaligned by
             // more than a ringing period cancels), then align on the median
             // three times.
-            let energy = |w: &Vec<f32>| -> f64 {
+            let energy = |w: &[f32]| -> f64 {
                 w[self.search..self.search + self.length]
                     .iter()
                     .map(|&v| f64::from(v) * f64::from(v))
@@ -406,15 +402,20 @@ impl Refiner {
                 .max_by(|a, b| energy(a).total_cmp(&energy(b)))
                 .map(|w| w[self.search..self.search + self.length].to_vec())
                 .unwrap_or_default();
-            for _ in 0..3 {
+            for pass in 0..3 {
                 for (k, w) in windows.iter().enumerate() {
                     if let Some((lag, _)) = best_lag(w, &template, self.search) {
                         shifts[k] = lag.round().clamp(0.0, (2 * self.search) as f64) as usize;
                     }
                 }
-                template = self.median(&windows, &shifts, self.length);
+                if pass < 2 {
+                    template = self.median(&windows, &shifts, self.length);
+                }
             }
+            // The last median over the long windows: the sound shown, whose
+            // first `length` samples are the template (the same columns).
             let shown = self.median(&long, &shifts, self.shown);
+            template = shown[..self.length.min(shown.len())].to_vec();
             let norm = template
                 .iter()
                 .map(|&v| f64::from(v) * f64::from(v))
@@ -510,7 +511,7 @@ impl Refiner {
 
     /// The per-sample median of the windows' first `length` samples, each
     /// read from its shift.
-    fn median(&self, windows: &[&Vec<f32>], shifts: &[usize], length: usize) -> Vec<f32> {
+    fn median(&self, windows: &[&[f32]], shifts: &[usize], length: usize) -> Vec<f32> {
         (0..length)
             .map(|i| {
                 let mut column: Vec<f64> = windows

@@ -315,6 +315,28 @@ def make_measurements():
     fixture("drive_weather_ok.csv", csv_text(["time_s", "drive_factor", "temperature_c", "pressure_hpa"],
                                              [(t, 1.0, 20.0 + 3 * math.sin(k), 1013.0 + 10 * math.cos(k)) for k, t in enumerate(days)]))
     fixture("drive_far_future.csv", csv_text(["time_s", "drive_factor"], [(1e300, 0.5), (1e301, 2.0)]))
+    # a clock's offsets for `stability`: a random walk of phase, a minute apart
+    walk = random.Random(26)
+    x, rows = 0.0, []
+    for k in range(200):
+        x += 1e-5 * walk.gauss(0, 1)
+        rows.append((60.0 * k, x))
+    fixture("clock_offsets.csv", csv_text(["time_s", "offset_s"], rows))
+    fixture("offsets_flat.csv", csv_text(["time_s", "offset_s"], [(60.0 * k, 0.0) for k in range(200)]))
+    fixture("offsets_bare.txt", "\n".join(f"{r[1]:.9f}" for r in rows) + "\n")
+    # a clock's log for `log`: three days every 10 minutes, dated, with weather
+    rows = []
+    x = 0.0
+    for k in range(432):
+        x += 600 * (0.5 + 0.2 * math.sin(k / 20.0)) / 86400 + 1e-5 * walk.gauss(0, 1)
+        stamp = "2026-01-%02dT%02d:%02d:00Z" % (1 + k // 144, (k % 144) // 6, 10 * (k % 6))
+        rows.append((stamp, f"{x:.6f}", f"{18 + math.sin(k / 20.0):.2f}", f"{1013 + 5 * math.cos(k / 50.0):.1f}"))
+    fixture("clock_log.csv", "time,offset_s,temperature_c,pressure_hpa\n" + "".join(",".join(r) + "\n" for r in rows))
+    fixture("clock_log_seconds.csv", "time_s,rate_s_per_day\n" + "".join(f"{600 * k},{0.5 + 0.01 * walk.gauss(0, 1):.4f}\n" for k in range(432)))
+    fixture("clock_log_short.csv", "time_s,offset_s\n" + "".join(f"{k},{1e-6 * k}\n" for k in range(5)))
+    fixture("half_periods.csv", "time_s,half_period_us,temperature_c\n" + "".join(
+        f"{k:.0f},{1e6 + 20 * walk.gauss(0, 1):.1f},{20 + k / 86400:.2f}\n" for k in range(0, 3 * 86400, 60)))
+    fixture("events_junk.csv", "time\nyesterday\n")
     # a track with x and y all zero (a circle through one point)
     fixture("track_xy_zero.csv", csv_text(["t", "x", "y"], [(k / 30.0, 0.0, 0.0) for k in range(100)]))
     fixture("track_xy_line.csv", csv_text(["t", "x", "y"], [(k / 30.0, 0.01 * k, -1.0) for k in range(100)]))
@@ -561,6 +583,14 @@ NUMERIC = [
     ("amplitude", ["amplitude", "--period", "2.0001s", "--length", "0.99362m"], [
         ("--period", "time", "pos"), ("--length", "len", "pos"), ("--period-uncertainty", "time", "nonneg"), *G]),
     ("gravity", ["gravity", "--latitude", "51.75"], [("--latitude", "lat", "lat"), ("--height", "height", "height")]),
+    ("tide", ["tide", "--latitude", "48", "--longitude", "8", "--from", "2026-01-01", "--to", "2026-01-02", "--every", "1h"], [
+        ("--latitude", "lat", "lat"), ("--height", "height", "height"), ("--every", "time", "pos")]),
+    ("stability", ["stability", "clock_offsets.csv"], [("--tau0", "time", "pos")]),
+    ("log", ["log", "clock_log.csv"], [("--bin", "time", "pos"), ("--beat", "time", "pos")]),
+    ("log-tides", ["log", "clock_log.csv", "--tides", "--latitude", "52", "--longitude", "0"], [
+        ("--latitude", "lat", "lat"), ("--height", "height", "height")]),
+    ("log-half", ["log", "half_periods.csv"], [("--bph", "bph", "pos"), ("--period", "time", "pos", [], ["--bph"])]),
+    ("stability-bare", ["stability", "offsets_bare.txt", "--kind", "phase", "--tau0", "60s"], [("--tau0", "time", "pos")]),
     ("damped", ["damped", "--length", "0.99362m", "--amplitude", "3deg", "--q", "300"], [
         ("--length", "len", "pos"), ("--amplitude", "angle", "amp"), *damping_flags(),
         ("--friction-angle", "angle", "nonneg"), ("--mass", "mass", "pos"), *G,
@@ -1243,6 +1273,31 @@ def family_misc():
     add("misc-period-no-length", ["period", "--amplitude", "3"], "refuse")
     add("misc-length-period-and-bph", ["length", "--period", "2s", "--bph", "3600"], "refuse")
     add("misc-length-nothing", ["length"], "refuse")
+    add("misc-log-tides-no-place", ["log", "clock_log.csv", "--tides"], "refuse")
+    add("misc-log-tides-no-dates", ["log", "clock_log_seconds.csv", "--tides", "--latitude", "52", "--longitude", "0"], "refuse")
+    add("misc-log-tides-start", ["log", "clock_log_seconds.csv", "--tides", "--latitude", "52", "--longitude", "0", "--start", "2026-01-01"], "ok")
+    add("misc-log-short", ["log", "clock_log_short.csv"], "refuse")
+    add("misc-log-events-junk", ["log", "clock_log.csv", "--events", "events_junk.csv"], "refuse")
+    add("misc-log-events-self", ["log", "clock_log.csv", "--events", "clock_log.csv"], "either")
+    add("misc-log-bin-huge", ["log", "clock_log.csv", "--bin", "1day"], "refuse")
+    add("misc-log-beats", ["log", "clock_log.csv", "--kind", "beats"], "either")
+    add("misc-log-wrong-kind", ["log", "clock_log.csv", "--kind", "half-periods"], "refuse")
+    add("misc-log-residuals-dash", ["log", "clock_log.csv", "--residuals", "-"], "ok")
+    add("misc-log-json", ["log", "clock_log.csv", "--json"], "ok")
+    add("misc-log-design", ["log", "clock_log.csv", "--design", "seconds-steel-brass.toml"], "either")
+    add("misc-stability-flat", ["stability", "offsets_flat.csv"], "either")
+    add("misc-stability-bare-no-kind", ["stability", "offsets_bare.txt"], "refuse")
+    add("misc-stability-bare-no-tau0", ["stability", "offsets_bare.txt", "--kind", "frequency"], "refuse")
+    add("misc-stability-wrong-kind", ["stability", "clock_offsets.csv", "--kind", "frequency"], "refuse")
+    add("misc-stability-all-taus", ["stability", "clock_offsets.csv", "--all-taus", "--json"], "ok")
+    add("misc-stability-junk", ["stability", "junk.csv"], "refuse")
+    add("misc-stability-empty", ["stability", "empty.csv"], "refuse")
+    add("misc-tide-backwards", ["tide", "--latitude", "0", "--longitude", "0", "--from", "2026-01-02", "--to", "2026-01-01", "--every", "1h"], "refuse")
+    add("misc-tide-bad-date", ["tide", "--latitude", "0", "--longitude", "0", "--from", "yesterday", "--to", "2026-01-01", "--every", "1h"], "refuse")
+    add("misc-tide-far-past", ["tide", "--latitude", "0", "--longitude", "0", "--from", "1066-10-14", "--to", "1066-10-15", "--every", "1h"], "refuse")
+    add("misc-tide-longitude-nan", ["tide", "--latitude", "0", "--longitude", "nan", "--from", "2026-01-01", "--to", "2026-01-02", "--every", "1h"], "refuse")
+    add("misc-tide-too-many", ["tide", "--latitude", "0", "--longitude", "0", "--from", "2026-01-01", "--to", "2027-01-01", "--every", "1ms"], "refuse")
+    add("misc-tide-json", ["tide", "--latitude", "-90", "--longitude", "720", "--from", "2026-01-01", "--to", "2026-01-01", "--every", "1h", "--json"], "ok")
     add("misc-gravity-height-min", ["gravity", "--latitude", "0", "--height", "-11km"], "ok")
     add("misc-gravity-height-below", ["gravity", "--latitude", "0", "--height", "-12km"], "refuse")
     add("misc-gravity-height-top", ["gravity", "--latitude", "90", "--height", "100km"], "ok")

@@ -4,6 +4,7 @@ made with fixed seeds so they never change. Run from the repository root:
 python3 tools/examples/make_example_data.py  (standard library only)."""
 import math
 import random
+import time
 
 rng = random.Random(20261122)
 
@@ -123,11 +124,90 @@ def spring(path):
             f.write(f"{86400 * day},{drive:.4f},{temperature:.2f},{pressure:.1f}\n")
 
 
+def offsets(path):
+    """Two weeks of a clock's offset from GPS for `pendulum stability`, one
+    reading a minute: a rate of +0.5 s/day, white frequency noise of
+    3e-7 a minute (each minute's rate drawn afresh), white phase noise of
+    5 µs (the timer's) and a two-hour gap on day 5. Its own seeded
+    generator, so the other files do not change."""
+    rng = random.Random(26)
+    x = 0.0
+    with open(path, "w") as f:
+        f.write("time_s,offset_s\n")
+        for i in range(14 * 1440):
+            t = 60.0 * i
+            if i > 0:
+                x += 60.0 * (0.5 / 86400.0 + 3e-7 * rng.gauss(0, 1))
+            if 5 * 1440 <= i < 5 * 1440 + 120:
+                continue
+            f.write(f"{t:.0f},{x + 5e-6 * rng.gauss(0, 1):.9f}\n")
+
+
+def frequency(path):
+    """A thousand hourly fractional frequencies, no header, for
+    `pendulum stability --kind frequency --tau0 1h`: white frequency
+    noise of 1e-7 about 5.8e-6 (0.5 s/day)."""
+    rng = random.Random(27)
+    with open(path, "w") as f:
+        for _ in range(1000):
+            f.write(f"{0.5 / 86400.0 + 1e-7 * rng.gauss(0, 1):.6e}\n")
+
+
+def clock_log(path, events_path):
+    """Sixty days of a regulator's log for `pendulum log`, one row every
+    10 minutes from 2026-01-01 UTC at Cambridge (52.2 N, 0.12 E): the
+    offset from GPS (white phase noise 100 µs), the room's temperature
+    (a daily and a weekly swing), pressure wandering like weather,
+    humidity. The rate is +0.5 s/day, drifting +0.01 s/day a day,
+    -0.3 s/day per °C of the temperature lagged by 3 h (the compensator
+    follows the air late), -0.012 s/day per hPa, -0.002 s/day per % RH,
+    the body tide in full (from `pendulum tide`, whose model is checked
+    against ETERNA on its own), a regulation of +0.3 s/day on day 20
+    (examples/clock-events.csv), and white frequency noise of 0.02 s/day
+    an hour. Needs the `pendulum` binary (target/release or PATH)."""
+    import os
+    import subprocess
+    rng = random.Random(28)
+    binary = "target/release/pendulum" if os.path.exists("target/release/pendulum") else "pendulum"
+    step = 600.0
+    rows = 60 * 144
+    tide = subprocess.run([binary, "tide", "--latitude", "52.2", "--longitude", "0.12", "--from",
+                           "2026-01-01T00:00Z", "--to", "2026-03-02T00:00Z", "--every", "10min",
+                           "--csv", "--force"], capture_output=True, text=True, check=True).stdout
+    tidal = [float(line.split(",")[2]) for line in tide.splitlines()[1:]]
+    x, lag, pressure = 0.0, 18.0, 1013.0
+    start = 1767225600  # 2026-01-01T00:00:00Z
+    with open(path, "w") as f:
+        f.write("time,offset_s,temperature_c,pressure_hpa,humidity_percent\n")
+        for i in range(rows):
+            t = i * step
+            day = t / 86400.0
+            temperature = 18.0 + 1.5 * math.sin(2 * math.pi * (day - 0.4)) + 1.0 * math.sin(2 * math.pi * day / 7.0)
+            before = lag
+            lag += (1.0 - math.exp(-step / (3 * 3600.0))) * (temperature - lag)
+            pressure += -0.002 * (pressure - 1013.0) + 0.4 * rng.gauss(0, 1)
+            humidity = 50.0 + 10.0 * math.sin(2 * math.pi * day / 11.0)
+            # The rate over the 10 minutes to this row: the lagged
+            # temperature at their middle.
+            rate = (0.5 + 0.01 * (day - 30.0) - 0.3 * (0.5 * (lag + before) - 18.0) - 0.012 * (pressure - 1013.0)
+                    - 0.002 * (humidity - 50.0) + tidal[i] + (0.3 if day >= 20.0 else 0.0))
+            rate += 0.02 * math.sqrt(3600.0 / step) * rng.gauss(0, 1)
+            if i > 0:
+                x += rate / 86400.0 * step
+            stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime(start + t))
+            f.write(f"{stamp},{x + 1e-4 * rng.gauss(0, 1):.6f},{temperature:.2f},{pressure:.1f},{humidity:.1f}\n")
+    with open(events_path, "w") as f:
+        f.write("time\n2026-01-21T00:00:00Z\n")
+
+
 rundown("examples/rundown.csv")
 video("examples/video.csv")
 beats("examples/beats.csv")
 tracker("examples/tracker.txt")
 semicolon("examples/rundown-semicolon.csv")
 spring("examples/spring.csv")
-print("wrote examples/rundown.csv, examples/video.csv, examples/beats.csv, "
+offsets("examples/offsets.csv")
+frequency("examples/frequency.txt")
+clock_log("examples/clock-log.csv", "examples/clock-events.csv")
+print("wrote examples/clock-log.csv, examples/clock-events.csv,  examples/offsets.csv, examples/frequency.txt,  examples/rundown.csv, examples/video.csv, examples/beats.csv, "
       "examples/tracker.txt, examples/rundown-semicolon.csv, examples/spring.csv")

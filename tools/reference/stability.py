@@ -7,7 +7,10 @@ Writes crates/pendulum-theory/tests/data/stability/NAME.csv for four seeded
 noise types (1000 phase points each, tau0 = 1 s): the series itself
 (`phase_s` column) in one file and, in NAME_devs.csv, each statistic at
 octave averaging factors m = 1, 2, 4, ... as allantools computes it from
-the phase data.
+the phase data; in NAME_ci.csv, for the overlapping Allan, modified Allan
+and overlapping Hadamard deviations, the noise type allantools identifies
+(lag-1 autocorrelation), Greenhall's equivalent degrees of freedom and
+the 1-sigma interval.
 
 Run from the repository root: python3 tools/reference/stability.py
 (needs numpy and allantools: pip install numpy allantools; the committed
@@ -60,7 +63,36 @@ def main():
                 t, d, _, _ = fn(x, rate=1.0, data_type="phase", taus=taus)
                 for tau, dev in zip(t, d):
                     w.writerow([stat, int(round(tau)), repr(float(dev))])
+        write_intervals(name, x, taus)
     print("wrote", OUT)
+
+
+INTERVALS = {"oadev": allantools.oadev, "mdev": allantools.mdev, "ohdev": allantools.ohdev}
+
+
+def write_intervals(name, x, taus):
+    """NAME_ci.csv: per statistic and octave m, the noise type allantools
+    identifies (lag-1 autocorrelation, Riley & Greenhall 2004), Greenhall's
+    equivalent degrees of freedom and the 1-sigma (68.27 %) interval, as
+    allantools.confidence_interval_noiseID computes them."""
+    with open(f"{OUT}/{name}_ci.csv", "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["statistic", "m", "alpha", "edf", "low", "high"])
+        for stat, fn in INTERVALS.items():
+            t, d, _, _ = fn(x, rate=1.0, data_type="phase", taus=taus)
+            for tau, dev in zip(t, d):
+                m = int(round(tau))
+                dmax = 3 if stat == "ohdev" else 2
+                if len(x[::m]) < 30:
+                    continue
+                alpha = allantools.ci.autocorr_noise_id(x, m, data_type="phase", dmax=dmax)[0]
+                d_ = 3 if stat == "ohdev" else 2
+                if alpha + 2 * d_ <= 1:
+                    continue
+                edf = allantools.ci.edf_greenhall(alpha=alpha, d=d_, m=m, N=len(x),
+                                                  overlapping=True, modified=(stat == "mdev"))
+                lo, hi = allantools.ci.confidence_interval(dev, edf)
+                w.writerow([stat, m, alpha, repr(float(edf)), repr(float(lo)), repr(float(hi))])
 
 
 if __name__ == "__main__":

@@ -153,6 +153,212 @@ unless --channel says otherwise.")]
 
 The folder is written whole or not at all; the simulated run-down is at most 10^5 periods.")]
     Report(ReportArgs),
+    /// The frequency stability of any series: Allan, modified Allan, time
+    /// and Hadamard deviations with confidence intervals and the noise at
+    /// each averaging time (NIST SP 1065).
+    #[command(after_help = "Examples:
+  pendulum stability examples/offsets.csv
+  pendulum stability examples/offsets.csv --json
+  pendulum stability examples/frequency.txt --kind frequency --tau0 1h
+
+A file with a header names its column: offset (phase, s; also ms, us, ns) or rate (s/day; a
+bare `frequency` is a fraction); a time column sets τ0 and marks gaps. A file without a header
+holds one column of values, or a time and a value: give --kind.")]
+    Stability(StabilityArgs),
+    /// A clock's log: its rate against the weather, the tides and the days
+    /// (coefficients with standard errors), and its stability before and
+    /// after the model.
+    #[command(after_help = "Examples:
+  pendulum log examples/clock-log.csv --events examples/clock-events.csv --latitude 52.2 --longitude 0.12 --tides
+  pendulum log examples/clock-log.csv --events examples/clock-events.csv --design examples/seconds-steel-brass.toml --json
+  pendulum log examples/clock-log.csv --events examples/clock-events.csv --residuals residuals.csv
+
+Columns by name: time (s or ISO 8601), offset (s; clock minus reference), rate (s/day), half_period
+(µs bare) or beat times alone; temperature (°C), pressure (hPa, mbar, inHg), humidity (%),
+amplitude (deg, mrad). Each term stays only if the Bayesian information criterion wants it.")]
+    Log(LogArgs),
+    /// The Earth's body tide: the change of gravity (Sun and Moon on an
+    /// elastic Earth) and the rate it gives a pendulum clock.
+    #[command(after_help = "Examples:
+  pendulum tide --latitude 52.2 --longitude 0.12 --from 2026-01-01 --to 2026-01-03 --every 1h
+  pendulum tide --latitude 48.33 --longitude 8.33 --height 589m --from 2026-01-01T00:00Z --to 2026-01-31T00:00Z --every 10min --csv
+
+Times are UTC. Rows: time, gravity_change_nm_s2 (positive: g larger), rate_s_per_day (the
+pendulum's: +Δg/2g, gaining while g is larger). No ocean loading, no polar motion.")]
+    Tide(TideArgs),
+}
+
+/// What a stability series holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum SeriesKind {
+    /// Time error: clock minus reference, s.
+    Phase,
+    /// Fractional frequency (a rate column in s/day is read as one).
+    Frequency,
+}
+
+/// `pendulum stability`.
+#[derive(Debug, Args)]
+pub struct StabilityArgs {
+    /// The series: offsets or rates, with or without a time column.
+    #[arg(value_name = "FILE")]
+    pub file: InputPath,
+    /// What the values are [default: from the column's name].
+    #[arg(long, value_enum)]
+    pub kind: Option<SeriesKind>,
+    /// The spacing of the samples [default: the median interval of the
+    /// time column; needed without one].
+    #[arg(long, value_name = "SECONDS", allow_hyphen_values = true)]
+    pub tau0: Option<Time>,
+    /// Every averaging time τ0, 2τ0, 3τ0, … instead of octaves.
+    #[arg(long)]
+    pub all_taus: bool,
+    /// Names of the columns of a file without a header, in order (e.g. time_s,offset_s).
+    #[arg(long, value_name = "NAMES")]
+    pub columns: Option<String>,
+    /// Run even when the work is long (every τ of a long series).
+    #[arg(long)]
+    pub force: bool,
+    /// Plot the deviations against τ with their intervals (.svg or .png).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<OutputPath>,
+    /// Print one JSON object.
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// Print the rows as CSV.
+    #[arg(long)]
+    pub csv: bool,
+}
+
+/// What a log's values are.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum LogKindArg {
+    /// Clock minus reference, s.
+    Offset,
+    /// The clock's rate, s/day.
+    Rate,
+    /// A photogate's half periods.
+    HalfPeriods,
+    /// Beat times alone (their differences are the half periods).
+    Beats,
+}
+
+/// `pendulum log`.
+#[derive(Debug, Args)]
+pub struct LogArgs {
+    /// The log: a time column and offsets, rates, half periods or beat
+    /// times, with any weather beside them.
+    #[arg(value_name = "FILE")]
+    pub file: InputPath,
+    /// What the values are [default: from the column's name].
+    #[arg(long, value_enum)]
+    pub kind: Option<LogKindArg>,
+    /// Names of the columns of a file without a header, in order (e.g.
+    /// time_s,offset_s,amplitude_mrad).
+    #[arg(long, value_name = "NAMES")]
+    pub columns: Option<String>,
+    /// The clock's latitude, degrees north (for --tides).
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    pub latitude: Option<Angle>,
+    /// The clock's longitude, degrees east.
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    pub longitude: Option<Angle>,
+    /// Its height above the ellipsoid [default: 0 m].
+    #[arg(long, value_name = "H", allow_hyphen_values = true)]
+    pub height: Option<Length>,
+    /// Fit the Earth's body tide as a term (needs --latitude, --longitude
+    /// and dated times).
+    #[arg(long, requires_all = ["latitude", "longitude"])]
+    pub tides: bool,
+    /// When the log's first time was (ISO 8601, UTC), for a log whose
+    /// times are seconds from its start.
+    #[arg(long, value_name = "DATETIME")]
+    pub start: Option<String>,
+    /// The clock's design: its predicted temperature, pressure and
+    /// humidity coefficients beside the measured ones.
+    #[arg(long, value_name = "FILE")]
+    pub design: Option<InputPath>,
+    /// A file of times (one a line, s or ISO 8601) at which the rate
+    /// stepped: a regulation, a weight added, a rewinding.
+    #[arg(long, value_name = "FILE")]
+    pub events: Option<InputPath>,
+    /// The bin the rate is fitted in [default: 1 h].
+    #[arg(long, value_name = "DURATION", allow_hyphen_values = true)]
+    pub bin: Option<Time>,
+    /// For offsets: the beat a reference comparison slips by [default:
+    /// found from the jumps].
+    #[arg(long, value_name = "DURATION", allow_hyphen_values = true)]
+    pub beat: Option<Time>,
+    /// For half periods: the nominal beat rate [default: the standard
+    /// rate within 2%].
+    #[arg(
+        long,
+        value_name = "B",
+        allow_hyphen_values = true,
+        conflicts_with = "period"
+    )]
+    pub bph: Option<BeatsPerHour>,
+    /// For half periods: the nominal period (two beats).
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub period: Option<Time>,
+    /// For a photogate's pulse widths (a `pulse_width` column): the bob's
+    /// flag's width, to turn each pulse into the swing's amplitude.
+    #[arg(
+        long,
+        value_name = "W",
+        allow_hyphen_values = true,
+        requires = "gate_radius"
+    )]
+    pub flag_width: Option<Length>,
+    /// The gate's distance from the pivot, with --flag-width.
+    #[arg(
+        long,
+        value_name = "R",
+        allow_hyphen_values = true,
+        requires = "flag_width"
+    )]
+    pub gate_radius: Option<Length>,
+    /// Write each bin's time, rate, model and residual to this CSV file.
+    #[arg(long, value_name = "FILE.csv")]
+    pub residuals: Option<OutputPath>,
+    /// Run even when the work is long.
+    #[arg(long)]
+    pub force: bool,
+    /// Print one JSON object.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `pendulum tide`.
+#[derive(Debug, Args)]
+pub struct TideArgs {
+    /// Latitude, degrees north.
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    pub latitude: Angle,
+    /// Longitude, degrees east.
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    pub longitude: Angle,
+    /// Height above the ellipsoid [default: 0 m].
+    #[arg(long, value_name = "H", allow_hyphen_values = true)]
+    pub height: Option<Length>,
+    /// The first time (ISO 8601, UTC unless an offset is given: 2026-01-01, 2026-01-01T06:00Z).
+    #[arg(long, value_name = "DATETIME")]
+    pub from: String,
+    /// The last time (included when the steps reach it).
+    #[arg(long, value_name = "DATETIME")]
+    pub to: String,
+    /// The step between rows.
+    #[arg(long, value_name = "DURATION", allow_hyphen_values = true)]
+    pub every: Time,
+    /// Run even when the table is long (more than 2·10⁵ rows).
+    #[arg(long)]
+    pub force: bool,
+    /// Print one JSON object ({"rows": [...]}).
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// Print the rows as CSV.
+    #[arg(long)]
+    pub csv: bool,
 }
 
 /// `pendulum listen`.

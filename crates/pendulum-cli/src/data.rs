@@ -74,6 +74,22 @@ pub enum Role {
     GyroY,
     /// About its z axis.
     GyroZ,
+    /// A clock's offset from its reference (phase, time error; read in s).
+    Offset,
+    /// A clock's rate or fractional frequency (read as a fraction: s/day
+    /// divided by 86,400).
+    Frequency,
+    /// A half period (one beat) timed by a photogate (read in s).
+    HalfPeriod,
+    /// A photogate's pulse: how long the bob's flag blocked it (read in s).
+    PulseWidth,
+    /// Relative humidity, %.
+    Humidity,
+}
+
+/// A role's name for messages ("offset", "half period").
+pub fn role_name(role: Role) -> &'static str {
+    role.name()
 }
 
 /// The angular-velocity roles, a gyroscope's axes after the axis-less one.
@@ -100,6 +116,11 @@ impl Role {
             Role::GyroX => "gyroscope x",
             Role::GyroY => "gyroscope y",
             Role::GyroZ => "gyroscope z",
+            Role::Offset => "offset",
+            Role::Frequency => "rate",
+            Role::HalfPeriod => "half period",
+            Role::PulseWidth => "pulse width",
+            Role::Humidity => "humidity",
         }
     }
 
@@ -151,6 +172,33 @@ impl Role {
             | "velocità angolare"
             | "gyro"
             | "gyroscope" => Role::AngularVelocity,
+            "offset"
+            | "phase"
+            | "time_error"
+            | "time error"
+            | "clock_offset"
+            | "clock offset"
+            | "clock-ref"
+            | "clock_minus_reference"
+            | "offset_from_reference"
+            | "delta"
+            | "clock_error" => Role::Offset,
+            "rate"
+            | "frequency"
+            | "fractional_frequency"
+            | "fractional frequency"
+            | "freq"
+            | "ffd"
+            | "clock_rate"
+            | "clock rate"
+            | "daily_rate"
+            | "daily rate" => Role::Frequency,
+            "half_period" | "half period" | "halfperiod" | "half_periods" | "beat"
+            | "beat_period" | "beat period" | "beats" | "half_swing_period" => Role::HalfPeriod,
+            "pulse_width" | "pulse width" | "pulsewidth" | "pulse" | "width" | "gate_time"
+            | "dwell" | "blocked" | "blocked_time" | "transit" | "transit_time" => Role::PulseWidth,
+            "humidity" | "rh" | "relative_humidity" | "relative humidity" | "hum" | "feuchte"
+            | "luftfeuchte" | "humidité" | "humedad" | "umidità" => Role::Humidity,
             // phyphox's raw gyroscope data, in the app's languages.
             _ if gyro_axis(base).is_some() => gyro_axis(base)?,
             _ => return None,
@@ -694,6 +742,15 @@ fn split_header(header: &str) -> (String, Option<String>) {
             text.truncate(i);
         }
     }
+    // A clock's rate in seconds a day, written out: `rate_s_per_day`,
+    // `rate s/day`.
+    for suffix in ["_s_per_day", " s per day", "_s/day", " s/day", "_s/d"] {
+        if let Some(base) = text.strip_suffix(suffix) {
+            if !base.trim().is_empty() {
+                return (base.trim().to_string(), Some("s/day".to_string()));
+            }
+        }
+    }
     // `Time (s)`, `t [s]`, `Gyroscope x (rad/s)`: the unit in brackets.
     for (open, close) in [('(', ')'), ('[', ']'), ('{', '}')] {
         if let (Some(i), true) = (text.find(open), text.ends_with(close)) {
@@ -726,6 +783,10 @@ enum Kind {
     Temperature,
     Pressure,
     Rate,
+    /// A clock's rate, as a fraction.
+    ClockRate,
+    /// A percentage.
+    Percent,
 }
 
 /// The index of a column the reader makes (times from a sample rate).
@@ -798,6 +859,7 @@ fn unit_of(unit: &str) -> Option<(Kind, f64)> {
         "s" | "sec" | "secs" | "second" | "seconds" => (Kind::Time, 1.0),
         "ms" => (Kind::Time, 1e-3),
         "us" | "µs" => (Kind::Time, 1e-6),
+        "ns" => (Kind::Time, 1e-9),
         "min" => (Kind::Time, 60.0),
         "h" => (Kind::Time, 3600.0),
         "rad/s" | "rad/sec" | "rad s^-1" | "rad*s^-1" | "rad s-1" | "rad·s⁻¹" | "rad s⁻¹"
@@ -805,6 +867,7 @@ fn unit_of(unit: &str) -> Option<(Kind, f64)> {
         "deg/s" | "°/s" | "deg/sec" | "dps" | "deg s^-1" | "deg_s" | "degs" => (Kind::Rate, DEG),
         "deg" | "degree" | "degrees" | "°" => (Kind::Angle, DEG),
         "rad" | "radian" | "radians" => (Kind::Angle, 1.0),
+        "mrad" | "milliradian" | "milliradians" => (Kind::Angle, 1e-3),
         "m" | "cm" | "mm" | "px" | "pixels" | "pixel" | "in" => (Kind::Length, 1.0),
         "c" | "°c" | "degc" | "celsius" => (Kind::Temperature, 1.0),
         "hpa" | "mbar" => (Kind::Pressure, 100.0),
@@ -813,6 +876,12 @@ fn unit_of(unit: &str) -> Option<(Kind, f64)> {
         // The conventional inch (25.4 mm) and millimetre of mercury.
         "inhg" => (Kind::Pressure, 3386.389),
         "mmhg" => (Kind::Pressure, 133.322_387_415),
+        "s/day" | "s/d" | "sec/day" | "s per day" | "s_per_day" | "spd" => {
+            (Kind::ClockRate, 1.0 / 86_400.0)
+        }
+        "ppm" => (Kind::ClockRate, 1e-6),
+        "ppb" => (Kind::ClockRate, 1e-9),
+        "%" | "percent" | "pct" | "%rh" | "rh" => (Kind::Percent, 1.0),
         _ => return None,
     })
 }
@@ -828,6 +897,9 @@ fn units_for(role: Role) -> &'static str {
         Role::Length => "m, cm, mm, in",
         Role::Ticks => "none: give the clock's rate with --tick-rate HZ",
         Role::AngularVelocity | Role::GyroX | Role::GyroY | Role::GyroZ => "rad/s, deg/s",
+        Role::Offset | Role::HalfPeriod | Role::PulseWidth => "s, ms, us, ns",
+        Role::Frequency => "s/day, ppm, ppb, or none (a fraction)",
+        Role::Humidity => "%",
         _ => "none",
     }
 }
@@ -884,6 +956,17 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
                 kind(Kind::Rate)
             }
             (Role::Temperature, Some(_)) => kind(Kind::Temperature),
+            // A bare offset is in s; a bare half period or pulse, as an
+            // Arduino timer prints it, in µs.
+            (Role::Offset, None) => Some(1.0),
+            (Role::HalfPeriod | Role::PulseWidth, None) => Some(1e-6),
+            (Role::Offset | Role::HalfPeriod | Role::PulseWidth, Some(_)) => kind(Kind::Time),
+            // A bare rate is a clock's, in s/day; a bare frequency a
+            // fraction.
+            (Role::Frequency, None) if base.contains("rate") => Some(1.0 / 86_400.0),
+            (Role::Frequency, None) => Some(1.0),
+            (Role::Frequency, Some(_)) => kind(Kind::ClockRate),
+            (Role::Humidity, _) => unit.as_deref().map_or(Some(1.0), |_| kind(Kind::Percent)),
             (Role::Pressure, Some(_)) => kind(Kind::Pressure),
         };
         found.push(Found {
@@ -1410,6 +1493,31 @@ pub fn need<'a>(groups: &'a [&'a [Role]]) -> impl Fn(&[Found]) -> Result<Vec<Rol
         }
         Ok(out)
     }
+}
+
+/// The number of cells of the first data line of a file with no header
+/// (its first line that is not blank or a `#` comment is all numbers),
+/// or `None` (a header, an unreadable file): for commands that read a
+/// bare column or two of a stability program's export.
+pub fn headerless_width(path: &Path) -> Option<usize> {
+    let handle = crate::file::open_input(path).ok()?;
+    let reader = BufReader::new(handle).take(MAX_LINE_BYTES * 4);
+    for line in reader.lines() {
+        let line = line.ok()?;
+        let t = line.trim().trim_start_matches('\u{feff}');
+        if t.is_empty() || t.starts_with('#') {
+            continue;
+        }
+        let cells: Vec<&str> = t
+            .split(|c: char| c == ',' || c == ';' || c == '\t' || c.is_whitespace())
+            .filter(|c| !c.is_empty())
+            .collect();
+        let numeric = cells
+            .iter()
+            .all(|c| cell_value(c, false).is_some_and(|v| v.is_some()));
+        return numeric.then_some(cells.len());
+    }
+    None
 }
 
 #[cfg(test)]

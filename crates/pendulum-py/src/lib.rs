@@ -398,6 +398,143 @@ fn answer<T: serde::Serialize>(result: Result<T, Refusal>) -> PyResult<String> {
     serde_json::to_string(&value).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
+/// The stability analysis (the CLI's `stability`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (data, tau0, kind, all_taus, force))]
+fn stability(
+    py: Python<'_>,
+    data: In<'_>,
+    tau0: f64,
+    kind: &str,
+    all_taus: bool,
+    force: bool,
+) -> PyResult<String> {
+    use pendulum_theory::stability::{stability, DataKind, StabilityInput, Taus};
+    let kind = match kind {
+        "phase" => DataKind::Phase,
+        "frequency" => DataKind::Frequency,
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "kind: must be 'phase' or 'frequency', got '{other}'"
+            )))
+        }
+    };
+    let input = StabilityInput {
+        data: values(&data, "data")?.to_vec(),
+        kind,
+        tau0_s: tau0,
+        taus: if all_taus { Taus::All } else { Taus::Octave },
+        force,
+    };
+    answer(py.detach(|| stability(&input)))
+}
+
+/// The body tide (the CLI's `tide`) at Unix times, as JSON rows.
+#[pyfunction]
+#[pyo3(signature = (latitude, longitude, time, height))]
+fn tide(
+    py: Python<'_>,
+    latitude: f64,
+    longitude: f64,
+    time: In<'_>,
+    height: f64,
+) -> PyResult<String> {
+    use pendulum_theory::tide::{at, Station};
+    let station = Station {
+        latitude_deg: latitude,
+        longitude_deg: longitude,
+        height_m: height,
+    };
+    let time = values(&time, "time")?;
+    answer(py.detach(|| at(station, time)))
+}
+
+/// The clock-log analysis (the CLI's `log`) as JSON.
+#[pyfunction]
+#[pyo3(signature = (time, values_, kind, temperature, pressure, humidity, amplitude, pulse_width, flag_width, gate_radius, epoch, latitude, longitude, height, tides, events, bin, beat, bph, period, force, stability))]
+#[allow(clippy::too_many_arguments)]
+fn clock_log(
+    py: Python<'_>,
+    time: In<'_>,
+    values_: In<'_>,
+    kind: &str,
+    temperature: Option<In<'_>>,
+    pressure: Option<In<'_>>,
+    humidity: Option<In<'_>>,
+    amplitude: Option<In<'_>>,
+    pulse_width: Option<In<'_>>,
+    flag_width: Option<f64>,
+    gate_radius: Option<f64>,
+    epoch: Option<f64>,
+    latitude: Option<f64>,
+    longitude: Option<f64>,
+    height: f64,
+    tides: bool,
+    events: Option<In<'_>>,
+    bin: Option<f64>,
+    beat: Option<f64>,
+    bph: Option<f64>,
+    period: Option<f64>,
+    force: bool,
+    stability: bool,
+) -> PyResult<String> {
+    use pendulum_theory::clock_log::{analyse, LogInput, LogKind};
+    use pendulum_theory::tide::Station;
+    let kind = match kind {
+        "offset" => LogKind::Offset,
+        "rate" => LogKind::Rate,
+        "half_periods" => LogKind::HalfPeriods,
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "kind: must be 'offset', 'rate' or 'half_periods', got '{other}'"
+            )))
+        }
+    };
+    let owned = |a: &Option<In<'_>>, name: &str| -> PyResult<Option<Vec<f64>>> {
+        a.as_ref()
+            .map(|a| values(a, name).map(<[f64]>::to_vec))
+            .transpose()
+    };
+    let station = match (latitude, longitude) {
+        (Some(lat), Some(lon)) => Some(Station {
+            latitude_deg: lat,
+            longitude_deg: lon,
+            height_m: height,
+        }),
+        _ => None,
+    };
+    let input = LogInput {
+        time_s: values(&time, "time")?.to_vec(),
+        epoch_unix_s: epoch,
+        kind: Some(kind),
+        values: values(&values_, "values")?.to_vec(),
+        temperature_c: owned(&temperature, "temperature")?,
+        pressure_hpa: owned(&pressure, "pressure")?,
+        humidity_percent: owned(&humidity, "humidity")?,
+        amplitude_deg: owned(&amplitude, "amplitude")?,
+        pulse_width_s: owned(&pulse_width, "pulse_width")?,
+        flag_width_m: flag_width,
+        gate_radius_m: gate_radius,
+        nominal: match (bph, period) {
+            (Some(_), Some(_)) => {
+                return Err(PyValueError::new_err("give bph or period, not both"))
+            }
+            (Some(b), None) => Some(pendulum_theory::period::Nominal::BeatsPerHour(b)),
+            (None, Some(p)) => Some(pendulum_theory::period::Nominal::Period(p)),
+            (None, None) => None,
+        },
+        beat_s: beat,
+        station,
+        tides,
+        events_s: owned(&events, "events")?.unwrap_or_default(),
+        bin_s: bin,
+        design: None,
+        force,
+        skip_stability: !stability,
+    };
+    answer(py.detach(|| analyse(&input)))
+}
+
 /// The run-down analysis (the CLI's `fit decay`) as JSON.
 #[pyfunction]
 #[pyo3(signature = (time, amplitude, model, period, length, g, mass, force))]
@@ -1075,5 +1212,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(regulate, m)?)?;
     m.add_function(wrap_pyfunction!(compensate, m)?)?;
     m.add_function(wrap_pyfunction!(report, m)?)?;
+    m.add_function(wrap_pyfunction!(stability, m)?)?;
+    m.add_function(wrap_pyfunction!(tide, m)?)?;
+    m.add_function(wrap_pyfunction!(clock_log, m)?)?;
     Ok(())
 }

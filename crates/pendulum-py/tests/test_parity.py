@@ -30,7 +30,7 @@ from test_simulate import binary
 #: Keys of the binary's JSON about the file it read, not the analysis.
 READER_KEYS = {"file", "format", "gate_label", "zero_offset_rad", "turning_points_file", "residuals_file",
                "pivot", "track_radius", "track_radius_standard_error", "swings_file", "trajectory_file", "elapsed_s",
-               "channel", "plot_file", "ticks_file"}
+               "channel", "plot_file", "ticks_file", "grid"}
 
 #: Flags whose name is not ``--`` and the keyword.
 FLAG = {"time": "FILE", "amplitude": "FILE", "angle": "FILE",
@@ -1460,3 +1460,132 @@ def test_report_defaults_are_a_seconds_pendulum_at_three_degrees():
     assert not run["stopped_short"]
     assert run["final_amplitude_rad"] == pytest.approx(math.radians(1.5), rel=1e-3)
     assert run["first_rate_s_per_day"] < run["last_rate_s_per_day"] < 0
+
+
+# --- stability, tide, log (issue 26) -----------------------------------------
+
+def _stability_cases():
+    rng = np.random.default_rng(26)
+    white_fm = np.concatenate([[0.0], np.cumsum(rng.normal(0, 1e-7, 999))])
+    white_pm = rng.normal(0, 1e-6, 500)
+    gap = white_fm.copy()
+    gap[100:110] = NAN
+    inf = white_fm.copy()
+    inf[3] = INF
+    return {
+        "white_fm_phase": (white_fm, {"tau0": 1.0}),
+        "white_pm_phase": (white_pm, {"tau0": 60.0}),
+        "frequency": (rng.normal(5.8e-6, 1e-7, 800), {"tau0": 3600.0, "kind": "frequency"}),
+        "all_taus": (white_fm[:200], {"tau0": 1.0, "all_taus": True}),
+        "gaps": (gap, {"tau0": 1.0}),
+        "short": (white_fm[:20], {"tau0": 1.0}),
+        "two_points": (white_fm[:2], {"tau0": 1.0}),
+        "infinite": (inf, {"tau0": 1.0}),
+        "tau0_zero": (white_fm, {"tau0": 0.0}),
+        "tau0_negative": (white_fm, {"tau0": -1.0}),
+        "tau0_huge": (white_fm, {"tau0": 1e300}),
+        "flat": (np.zeros(100), {"tau0": 1.0}),
+    }
+
+
+STABILITY = _stability_cases()
+
+
+@pytest.mark.parametrize("name", sorted(STABILITY))
+def test_stability(name, tmp_path):
+    data, kw = STABILITY[name]
+    path = tmp_path / "series.txt"
+    with open(path, "w") as f:
+        if name == "gaps":
+            # A gap in a file is a time with no row: the binary puts the
+            # rows on a grid of --tau0 and marks the holes, as Python's NaN.
+            for i, v in enumerate(data):
+                if not math.isnan(v):
+                    f.write(f"{i}.0 {cli_value(float(v))}\n")
+        else:
+            for v in data:
+                f.write(cli_value(float(v)) + "\n")
+    kind = kw.get("kind", "phase")
+    args = ["stability", str(path), "--kind", kind, "--tau0", cli_value(kw["tau0"], "s"), "--json"]
+    if kw.get("all_taus"):
+        args.append("--all-taus")
+    check(args, lambda: pt.stability(data, kw["tau0"], kind=kind, all_taus=kw.get("all_taus", False)),
+          reader_refuses=name in ("infinite", "two_points"))
+
+
+def test_tide_rows_equal_the_binary(tmp_path):
+    start, every = 1767225600.0, 3600.0
+    times = start + np.arange(25) * every
+    ours = pt.tide(48.3301, 8.3296, times, height=589.0)
+    out = subprocess.run([str(binary()), "tide", "--latitude", "48.3301", "--longitude", "8.3296",
+                          "--height", "589m", "--from", "2026-01-01T00:00Z", "--to", "2026-01-02T00:00Z",
+                          "--every", "1h", "--json"], capture_output=True, text=True, check=True)
+    rows = json.loads(out.stdout)["rows"]
+    assert len(rows) == 25
+    for k in ["gravity_change_nm_s2", "rate_s_per_day"]:
+        assert [r[k] for r in rows] == list(ours[k])
+    with pytest.raises(ValueError, match="latitude"):
+        pt.tide(95.0, 0.0, times)
+    with pytest.raises(ValueError, match="time"):
+        pt.tide(45.0, 0.0, [0.0, 1e12])
+
+
+def _log_cases():
+    rng = np.random.default_rng(27)
+    n = 3 * 144
+    t = np.arange(n) * 600.0
+    temperature = 18 + np.sin(t / 12000.0)
+    pressure_pa = 101300 + 500 * np.cos(t / 50000.0)
+    rate = 0.5 - 0.3 * (temperature - 18) - 0.01 * (pressure_pa / 100 - 1013) + rng.normal(0, 0.02, n)
+    offset = np.concatenate([[0.0], np.cumsum(rate[1:] * 600.0 / 86400.0)]) + rng.normal(0, 1e-5, n)
+    half = 1.0 / (1 + rng.normal(2e-6, 1e-6, n))
+    unsorted = t.copy()
+    unsorted[[4, 5]] = unsorted[[5, 4]]
+    return {
+        "offsets": (t, offset, {}),
+        "offsets_weather": (t, offset, {"temperature": temperature, "pressure_pa": pressure_pa}),
+        "rates": (t, rate, {"kind": "rate"}),
+        "rates_bin": (t, rate, {"kind": "rate", "bin": 7200.0}),
+        "half_periods": (t, half, {"kind": "half_periods"}),
+        "half_periods_bph": (t, half, {"kind": "half_periods", "bph": 3600.0}),
+        "half_periods_bph_negative": (t, half, {"kind": "half_periods", "bph": -1.0}),
+        "beat_negative": (t, offset, {"beat": -1.0}),
+        "bin_zero": (t, offset, {"bin": 0.0}),
+        "bin_huge": (t, offset, {"bin": 1e6}),
+        "short": (t[:5], offset[:5], {}),
+        "unsorted": (unsorted, offset, {}),
+    }
+
+
+LOG = _log_cases()
+
+
+@pytest.mark.parametrize("name", sorted(LOG))
+def test_clock_log(name, tmp_path):
+    t, values, kw = LOG[name]
+    kind = kw.get("kind", "offset")
+    column = {"offset": "offset_s", "rate": "frequency", "half_periods": "half_period_s"}[kind]
+    if kind == "rate":
+        # The file holds fractions, which the binary reads back to s/day.
+        fractions = values / 86400.0
+        header, columns = ["time_s", column], [t, fractions]
+        values = fractions * 86400.0
+    else:
+        header, columns = ["time_s", column], [t, values]
+    weather = {}
+    if "temperature" in kw:
+        header.append("temperature_c")
+        columns.append(kw["temperature"])
+        weather["temperature"] = kw["temperature"]
+    if "pressure_pa" in kw:
+        header.append("pressure_pa")
+        columns.append(kw["pressure_pa"])
+        weather["pressure"] = kw["pressure_pa"] * 0.01
+    path = tmp_path / "log.csv"
+    write_csv(path, header, columns)
+    args = ["log", str(path), "--json"]
+    for flag in ["bin", "beat", "bph"]:
+        if flag in kw:
+            args += [f"--{flag}", cli_value(kw[flag], "" if flag == "bph" else "s")]
+    extra = {k: kw[k] for k in ["bin", "beat", "bph"] if k in kw}
+    check(args, lambda: pt.clock_log(t, values, kind=kind, **weather, **extra))

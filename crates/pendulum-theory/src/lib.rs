@@ -47,6 +47,7 @@ pub mod air;
 pub mod analysis;
 pub mod averaging;
 pub mod clock;
+pub mod clock_log;
 pub mod compound;
 pub mod damped;
 pub mod damping;
@@ -65,6 +66,7 @@ pub mod period;
 pub mod report;
 pub mod simulation;
 pub mod stability;
+pub mod tide;
 pub mod train;
 
 pub use error::{InputError, Problem, Quantity};

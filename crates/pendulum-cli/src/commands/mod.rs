@@ -14,12 +14,15 @@ mod fit_trajectory;
 mod gravity;
 mod length;
 mod listen;
+mod log;
 mod measured;
 pub(crate) mod period;
 mod regulate;
 mod report;
 pub(crate) mod simulate;
+mod stability;
 mod synth;
+mod tide;
 mod train;
 
 use crate::args::{Command, FitCommand};
@@ -68,6 +71,9 @@ fn run_command(command: &Command) -> Result<Output, CliError> {
         Command::Compensate(args) => compensate::run(args),
         Command::Design(args) => design::run(args),
         Command::Clock(args) => clock::run(args),
+        Command::Stability(args) => stability::run(args),
+        Command::Log(args) => log::run(args),
+        Command::Tide(args) => tide::run(args),
         Command::Synth(args) => match &args.what {
             crate::args::SynthCommand::Ticks(a) => synth::run(a),
         },

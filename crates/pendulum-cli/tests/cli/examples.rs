@@ -537,6 +537,126 @@ fn examples() -> Vec<(&'static str, Check)> {
                 r.svg("track.svg");
             },
         ),
+        (
+            "pendulum log examples/clock-log.csv --events examples/clock-events.csv --latitude 52.2 --longitude 0.12 --tides",
+            |r| {
+                // The generator (tools/examples/make_example_data.py):
+                // -0.3 s/day per °C lagged 3 h, -0.012 per hPa, -0.002 per
+                // % RH, a drift of 0.01 s/day a day, a step of +0.3 s/day.
+                r.within("Temperature", -0.3, 3.0);
+                r.within("Pressure", -0.012, 3.0);
+                r.within("Humidity", -0.002, 3.0);
+                r.within("Drift", 0.01, 3.0);
+                r.within("Step 1", 0.3, 3.0);
+                r.says("following the air");
+                r.says("Stability after the model");
+            },
+        ),
+        (
+            "pendulum log examples/clock-log.csv --events examples/clock-events.csv --design examples/seconds-steel-brass.toml --json",
+            |r| {
+                let v = r.json();
+                let f = |k: &str| v["coefficients"][k].as_f64().unwrap();
+                let se = |k: &str| v["standard_errors"][k].as_f64().unwrap();
+                let t = "temperature_s_per_day_per_c";
+                assert!((f(t) + 0.3).abs() < 3.0 * se(t));
+                // The design's prediction, and the difference in standard
+                // errors that goes with it.
+                let d = &v["design"];
+                let predicted = d["temperature_s_per_day_per_c"].as_f64().unwrap();
+                let z = d["temperature_difference_se"].as_f64().unwrap();
+                assert!((z - (f(t) - predicted) / se(t)).abs() < 1e-9);
+                assert!(v["stability"].as_array().unwrap().len() > 5);
+                assert!(v["residual_stability"].as_array().unwrap().len() > 5);
+                assert!(v["drift_s_per_day_per_day"].as_f64().is_some());
+            },
+        ),
+        (
+            "pendulum log examples/clock-log.csv --events examples/clock-events.csv --residuals residuals.csv",
+            |r| {
+                let rows = r.rows("residuals.csv");
+                // One row an hour over 60 days; residual = rate - model.
+                assert!((rows.len() as f64 - 1440.0).abs() < 2.0, "{}", rows.len());
+                for row in &rows {
+                    assert!((row[1] - row[2] - row[3]).abs() < 1e-9);
+                }
+            },
+        ),
+        ("pendulum stability examples/offsets.csv", |r| {
+            // The generator: white frequency noise of 3e-7 a minute over
+            // 5 µs of white phase noise: ADEV(60 s) = √(s² + 3σx²/τ²).
+            let truth = (9e-14f64 + 3.0 * 25e-12 / 3600.0).sqrt();
+            let row = r.line("60 ");
+            let adev: f64 = row.split_whitespace().nth(1).unwrap().parse().unwrap();
+            assert!((adev / truth - 1.0).abs() < 0.05, "ADEV(60 s) {adev}, truth {truth}");
+            r.says("white frequency noise: averaging helps as 1/√τ");
+            r.says("120 of 20160 samples missing");
+        }),
+        ("pendulum stability examples/offsets.csv --json", |r| {
+            let v = r.json();
+            let rows = v["stability"].as_array().unwrap();
+            // White frequency noise s/√m at τ = 64 minutes, inside three
+            // half-widths of the 68% interval.
+            let row = rows.iter().find(|x| x["tau_s"].as_f64() == Some(3840.0)).unwrap();
+            let f = |k: &str| row[k].as_f64().unwrap();
+            let truth = 3e-7 / 8.0;
+            assert!((f("adev") - truth).abs() < 1.5 * (f("adev_high") - f("adev_low")));
+            assert_eq!(row["noise"], "white_frequency");
+            for key in ["mdev", "tdev", "hdev"] {
+                assert!(f(key) > 0.0, "{key}");
+            }
+        }),
+        ("pendulum stability examples/frequency.txt --kind frequency --tau0 1h", |r| {
+            // White frequency noise of 1e-7 an hour.
+            let row = r.line("3600 ");
+            let adev: f64 = row.split_whitespace().nth(1).unwrap().parse().unwrap();
+            assert!((adev / 1e-7 - 1.0).abs() < 0.1, "ADEV(1 h) {adev}");
+        }),
+        (
+            "pendulum tide --latitude 52.2 --longitude 0.12 --from 2026-01-01 --to 2026-01-03 --every 1h",
+            |r| {
+                // 49 rows, both ends; the tide within ±1700 nm/s² and the
+                // rate its Δg/2g of a day.
+                let rows: Vec<&str> = r.stdout.lines().filter(|l| l.contains("T")).collect();
+                assert_eq!(rows.len(), 49 + 1, "{}", r.stdout);
+                r.says("2026-01-03T00:00:00Z");
+                for l in rows.iter().filter(|l| l.starts_with("2026")) {
+                    let w: Vec<f64> = l.split_whitespace().skip(1).map(|x| x.parse().unwrap()).collect();
+                    assert!(w[0].abs() < 1700.0);
+                    assert!((w[1] - w[0] * 1e-9 / (2.0 * normal_gravity(52.2, 0.0)) * 86.4e6).abs() < 2e-3);
+                }
+            },
+        ),
+        (
+            "pendulum tide --latitude 48.33 --longitude 8.33 --height 589m --from 2026-01-01T00:00Z --to 2026-01-31T00:00Z --every 10min --csv",
+            |r| {
+                // Against ETERNA at BFO (48.3301 N, 8.3296 E): the hours the
+                // reference holds, within 8 nm/s² each.
+                let eterna = std::fs::read_to_string(
+                    r.dir.join("crates/pendulum-theory/tests/data/tides/bfo.csv"),
+                )
+                .unwrap();
+                let ours: std::collections::HashMap<&str, f64> = r
+                    .stdout
+                    .lines()
+                    .skip(1)
+                    .map(|l| {
+                        let c: Vec<&str> = l.split(',').collect();
+                        (c[0], c[1].parse().unwrap())
+                    })
+                    .collect();
+                assert_eq!(ours.len(), 30 * 144 + 1);
+                let mut compared = 0;
+                for line in eterna.lines().skip(2) {
+                    let (t, v) = line.split_once(',').unwrap();
+                    if let Some(o) = ours.get(t) {
+                        assert!((o - v.parse::<f64>().unwrap()).abs() < 8.0, "{t}");
+                        compared += 1;
+                    }
+                }
+                assert_eq!(compared, 30 * 24 + 1);
+            },
+        ),
         ("pendulum fit beats examples/beats.csv --bph 3600", |r| {
             // The generator: 4 s/day, tocks 1.5 ms late, two beats missed.
             assert!((r.number("Rate") - 4.0).abs() < 0.05);
@@ -869,6 +989,7 @@ fn every_example_in_the_readme_and_the_help_runs_and_says_what_it_claims() {
     copy("examples");
     copy("examples/python");
     copy("crates/pendulum-cli/tests/data/period");
+    copy("crates/pendulum-theory/tests/data/tides");
     let sh = |command: &str| {
         let path = format!(
             "{}:{}",

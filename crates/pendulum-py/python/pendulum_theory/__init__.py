@@ -57,6 +57,9 @@ __all__ = [
     "regulate",
     "compensate",
     "report",
+    "stability",
+    "tide",
+    "clock_log",
 ]
 
 #: Standard gravity, m/s²: the library's default, as the CLI's.
@@ -605,3 +608,51 @@ def compensate(parts, compensator=None, *, part=None, jar_material=None, jar_dia
     return _json.loads(_native.compensate(
         _parts(parts), _text(compensator), _text(part), _text(jar_material),
         _number(jar_diameter), _number(jar_wall), _number(tube_diameter), _number(tube_bore)))
+
+
+def stability(data, tau0, *, kind="phase", all_taus=False, force=False):
+    """The frequency stability of a series sampled every ``tau0`` s: phase
+    (time error, s) or fractional frequency (``kind="frequency"``); NaN
+    marks a gap. The CLI's ``stability``, the same library call: the
+    overlapping Allan, modified Allan, time and overlapping Hadamard
+    deviations at octave averaging times (every one with ``all_taus``),
+    each with its 68% interval (Greenhall's EDF) and the noise type
+    (lag-1 autocorrelation), after NIST SP 1065. Returns a dict (kind,
+    tau0_s, phase_points, rows, best, warnings)."""
+    return _json.loads(_native.stability(_array(data), float(tau0), str(kind), bool(all_taus),
+                                         bool(force)))
+
+
+def tide(latitude, longitude, time, *, height=0.0):
+    """The Earth's body tide at a place (degrees, m) at Unix times ``time``
+    (s, UTC): the CLI's ``tide``, the same library call. Returns a dict of
+    arrays: time_unix_s, gravity_change_nm_s2 (positive: g larger) and
+    rate_s_per_day (a pendulum's, +Δg/2g of a day)."""
+    rows = _json.loads(_native.tide(float(latitude), float(longitude), _array(time),
+                                    float(height)))
+    keys = ["time_unix_s", "gravity_change_nm_s2", "rate_s_per_day"]
+    return {k: _np.array([r[k] for r in rows], dtype=_np.float64) for k in keys}
+
+
+def clock_log(time, values, *, kind="offset", temperature=None, pressure=None, humidity=None,
+              amplitude=None, pulse_width=None, flag_width=None, gate_radius=None, epoch=None, latitude=None, longitude=None, height=0.0,
+              tides=False, events=None, bin=None, beat=None, bph=None, period=None,
+              force=False, stability=True):
+    """A clock's log, the CLI's ``log``, the same library call: ``time``
+    (s, increasing; ``epoch`` the Unix time of 0, for the tides),
+    ``values`` offsets (s, ``kind="offset"``), rates (s/day,
+    ``"rate"``) or half periods (s, ``"half_periods"``); weather beside
+    them (°C, hPa, %, degrees; NaN where not read); a photogate's
+    ``pulse_width`` (s) with ``flag_width`` and ``gate_radius`` (m) gives
+    the amplitude exactly. Returns the CLI's
+    JSON as a dict (rate_s_per_day, drift_s_per_day_per_day,
+    coefficients, standard_errors, terms, temperature_lag_s, stability,
+    residual_stability, warnings, …)."""
+    def optional(x):
+        return None if x is None else _array(x)
+    return _json.loads(_native.clock_log(
+        _array(time), _array(values), str(kind), optional(temperature), optional(pressure),
+        optional(humidity), optional(amplitude), optional(pulse_width), _number(flag_width),
+        _number(gate_radius), _number(epoch), _number(latitude),
+        _number(longitude), float(height), bool(tides), optional(events), _number(bin),
+        _number(beat), _number(bph), _number(period), bool(force), bool(stability)))

@@ -222,3 +222,35 @@ def report(
     mass: Any = ...,
     g: Any = ...,
 ) -> Dict[str, Any]: ...
+
+def stability(
+    data: npt.ArrayLike, tau0: float, *, kind: str = ..., all_taus: bool = ..., force: bool = ...
+) -> dict[str, Any]: ...
+def tide(
+    latitude: float, longitude: float, time: npt.ArrayLike, *, height: float = ...
+) -> dict[str, npt.NDArray[np.float64]]: ...
+def clock_log(
+    time: npt.ArrayLike,
+    values: npt.ArrayLike,
+    *,
+    kind: str = ...,
+    temperature: Optional[npt.ArrayLike] = ...,
+    pressure: Optional[npt.ArrayLike] = ...,
+    humidity: Optional[npt.ArrayLike] = ...,
+    amplitude: Optional[npt.ArrayLike] = ...,
+    pulse_width: Optional[npt.ArrayLike] = ...,
+    flag_width: Optional[float] = ...,
+    gate_radius: Optional[float] = ...,
+    epoch: Optional[float] = ...,
+    latitude: Optional[float] = ...,
+    longitude: Optional[float] = ...,
+    height: float = ...,
+    tides: bool = ...,
+    events: Optional[npt.ArrayLike] = ...,
+    bin: Optional[float] = ...,
+    beat: Optional[float] = ...,
+    bph: Optional[float] = ...,
+    period: Optional[float] = ...,
+    force: bool = ...,
+    stability: bool = ...,
+) -> dict[str, Any]: ...

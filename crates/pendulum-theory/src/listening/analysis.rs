@@ -286,7 +286,7 @@ pub fn listen_to_samples(
 }
 
 /// The nominal period, s, checked against the beats listening finds.
-fn nominal_period(nominal: Nominal) -> Result<f64, Refusal> {
+pub(crate) fn nominal_period(nominal: Nominal) -> Result<f64, Refusal> {
     let field = nominal.field();
     let period = match nominal {
         Nominal::Period(p) => require_finite(field, p)?,

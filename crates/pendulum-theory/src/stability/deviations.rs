@@ -1,27 +1,24 @@
-//! Frequency stability of a clock, as the time-and-frequency field
-//! computes it: the Allan, modified Allan, time and Hadamard deviations of
-//! a series of time errors (phase data `x`, seconds, one every `τ₀`) at
-//! averaging times `τ = m τ₀`.
-//!
-//! Every statistic is the textbook estimator of W. J. Riley, *Handbook of
-//! Frequency Stability Analysis*, NIST Special Publication 1065 (2008),
-//! section 5.2, written on phase data; frequency data (fractional
-//! frequency `y`, or a clock's rate) are first summed into phase
-//! ([`phase_from_frequency`], SP 1065 section 5.1). Each is a sum of
-//! squares of second (Allan) or third (Hadamard) differences, computed in
-//! one pass in `f64`: on the NBS14 test data (Riley's 10-point set) every
-//! value agrees with the handbook's table to its printed digits (tests
-//! `stability.rs`). Confidence intervals and the noise type are not here
-//! yet (issue 26).
+//! The deviations themselves: the textbook estimators of NIST SP 1065
+//! section 5.2 on phase data, each a sum of squared differences in one
+//! pass. A gap (a NaN phase) drops the terms that read it, as Stable32
+//! does, and each statistic is normalised by the terms it kept.
 
 /// The phase (time error, s) that fractional frequencies `y`, one every
 /// `tau0` s, accumulate: `x₀ = 0`, `x_{i+1} = x_i + y_i τ₀` (SP 1065 eq. 8);
-/// one point more than `y`.
+/// one point more than `y`. A gap in `y` (NaN) is filled with the mean of
+/// the finite values, as SP 1065 section 5.14 allows for frequency data:
+/// the phase stays continuous and the gap carries the mean rate.
 pub fn phase_from_frequency(y: &[f64], tau0: f64) -> Vec<f64> {
+    let (total, n) = y
+        .iter()
+        .filter(|v| v.is_finite())
+        .fold((0.0, 0usize), |(s, n), v| (s + v, n + 1));
+    let mean = if n > 0 { total / n as f64 } else { 0.0 };
     let mut x = Vec::with_capacity(y.len() + 1);
     let mut sum = 0.0;
     x.push(sum);
     for &v in y {
+        let v = if v.is_finite() { v } else { mean };
         sum += v * tau0;
         x.push(sum);
     }
@@ -29,7 +26,7 @@ pub fn phase_from_frequency(y: &[f64], tau0: f64) -> Vec<f64> {
 }
 
 /// `τ = m τ₀`, `None` when `m` is zero or `τ₀` is not positive and finite.
-fn tau(tau0: f64, m: usize) -> Option<f64> {
+pub(super) fn tau(tau0: f64, m: usize) -> Option<f64> {
     (m > 0 && tau0.is_finite() && tau0 > 0.0).then_some(m as f64 * tau0)
 }
 
@@ -39,21 +36,22 @@ const SECOND: [f64; 3] = [1.0, -2.0, 1.0];
 const THIRD: [f64; 4] = [-1.0, 3.0, -3.0, 1.0];
 
 /// `sqrt(Σ_i (Σ_k c_k x_{i+km})² / (scale τ² n))` over every start `i`
-/// with the whole difference inside `x` (`n` of them): the overlapping
-/// estimators of SP 1065 eqs. 11 and 18. `None` when no start fits.
+/// with the whole difference inside `x` and no gap (NaN) in it (`n` of
+/// them): the overlapping estimators of SP 1065 eqs. 11 and 18. `None`
+/// when no start fits.
 fn overlapping(x: &[f64], tau: f64, m: usize, c: &[f64], scale: f64) -> Option<f64> {
     let reach = (c.len() - 1) * m;
     let starts = x.len().checked_sub(reach).filter(|&n| n > 0)?;
-    let sum: f64 = (0..starts)
+    let (sum, kept) = (0..starts)
         .map(|i| {
             c.iter()
                 .enumerate()
                 .map(|(k, ck)| ck * x[i + k * m])
                 .sum::<f64>()
-                .powi(2)
         })
-        .sum();
-    Some((sum / (scale * tau * tau * starts as f64)).sqrt())
+        .filter(|d| d.is_finite())
+        .fold((0.0, 0usize), |(s, n), d| (s + d * d, n + 1));
+    (kept > 0).then(|| (sum / (scale * tau * tau * kept as f64)).sqrt())
 }
 
 /// Every `m`-th point of `x`: the series a non-overlapping estimator
@@ -90,23 +88,46 @@ pub fn mdev(x: &[f64], tau0: f64, m: usize) -> Option<f64> {
     let tau = tau(tau0, m)?;
     let outer = (x.len() + 1).checked_sub(3 * m).filter(|&n| n > 0)?;
     let second = |i: usize| x[i + 2 * m] - 2.0 * x[i + m] + x[i];
-    let exact = |j: usize| -> f64 { (j..j + m).map(second).sum() };
-    let mut window = exact(0);
-    let mut sum = window * window;
+    // The window holds the finite second differences' sum and counts the
+    // others (gaps): a window with a gap in it is not a term.
+    let exact = |j: usize| -> (f64, usize) {
+        (j..j + m).map(second).fold((0.0, 0), |(s, g), d| {
+            if d.is_finite() {
+                (s + d, g)
+            } else {
+                (s, g + 1)
+            }
+        })
+    };
+    let (mut window, mut gaps) = exact(0);
+    let (mut sum, mut kept) = (0.0, 0usize);
     // The running window is summed afresh every max(4096, m) starts, so
     // its rounding cannot build up over a long record (at no more than
     // twice the work).
     let refresh = m.max(4096);
-    for j in 1..outer {
-        window = if j % refresh == 0 {
-            exact(j)
-        } else {
-            window + second(j + m - 1) - second(j - 1)
-        };
-        sum += window * window;
+    for j in 0..outer {
+        if j > 0 {
+            if j % refresh == 0 {
+                (window, gaps) = exact(j);
+            } else {
+                for (d, sign) in [(second(j + m - 1), 1.0), (second(j - 1), -1.0)] {
+                    if d.is_finite() {
+                        window += sign * d;
+                    } else if sign > 0.0 {
+                        gaps += 1;
+                    } else {
+                        gaps -= 1;
+                    }
+                }
+            }
+        }
+        if gaps == 0 {
+            sum += window * window;
+            kept += 1;
+        }
     }
     let mf = m as f64;
-    Some((sum / (2.0 * mf * mf * tau * tau * outer as f64)).sqrt())
+    (kept > 0).then(|| (sum / (2.0 * mf * mf * tau * tau * kept as f64)).sqrt())
 }
 
 /// The time deviation at `τ = m τ₀`: `σ_x(τ) = (τ/√3) Mod σ_y(τ)` (SP 1065

@@ -1,0 +1,418 @@
+//! `pendulum log`: a clock's log, its rate model and its stability.
+
+use crate::args::{LogArgs, LogKindArg};
+use crate::data::{read_table, Found, ReadOptions, Role};
+use crate::error::CliError;
+use crate::file::CsvFile;
+use crate::output::{self, num, Summary};
+use pendulum_theory::analysis::Refusal;
+use pendulum_theory::clock_log::{analyse, LogInput, LogKind, LogResult, LogWarning};
+use pendulum_theory::period::Nominal;
+use pendulum_theory::stability::StabilityRow;
+use pendulum_theory::tide::Station;
+use serde::Serialize;
+
+/// What the command prints as JSON.
+#[derive(Serialize)]
+struct LogJson<'a> {
+    file: String,
+    format: crate::data::Format,
+    #[serde(flatten)]
+    analysis: &'a LogResult,
+}
+
+/// Unix times look like this (after 1973): a column of dates.
+const UNIX_AFTER: f64 = 1e8;
+
+pub fn run(args: &LogArgs) -> Result<String, CliError> {
+    let file = args.file.display().to_string();
+    let wanted = args.kind;
+    let chooser = |found: &[Found]| {
+        let has = |r: Role| found.iter().any(|f| f.role == r);
+        if !has(Role::Time) {
+            return Err("no time column (named time, t, timestamp, …)".to_string());
+        }
+        let value = match wanted {
+            Some(LogKindArg::Offset) => Some(Role::Offset),
+            Some(LogKindArg::Rate) => Some(Role::Frequency),
+            Some(LogKindArg::HalfPeriods) => Some(Role::HalfPeriod),
+            Some(LogKindArg::Beats) => None,
+            None => [Role::Offset, Role::Frequency, Role::HalfPeriod]
+                .into_iter()
+                .find(|&r| has(r)),
+        };
+        let mut roles = vec![Role::Time];
+        if let Some(v) = value {
+            if !has(v) {
+                return Err(format!("no {} column", crate::data::role_name(v)));
+            }
+            roles.push(v);
+        }
+        for r in [
+            Role::Temperature,
+            Role::Pressure,
+            Role::Humidity,
+            Role::Amplitude,
+            Role::PulseWidth,
+        ] {
+            if has(r) {
+                roles.push(r);
+            }
+        }
+        Ok(roles)
+    };
+    let options = ReadOptions {
+        columns: super::measured::columns(args.columns.as_deref()),
+        angle_unit: Some(crate::data::AngleUnit::Degrees),
+        ..ReadOptions::default()
+    };
+    let table = read_table(&args.file, &options, &chooser)?;
+    let origin = table.format.time_origin_s;
+    // The Unix time of the log's first row: its date, or --start plus
+    // the first row's seconds.
+    let epoch = match &args.start {
+        Some(text) => Some(super::tide::instant(text, "--start")? + origin.unwrap_or(0.0)),
+        None => origin.filter(|&o| o > UNIX_AFTER),
+    };
+    let times = table.column(Role::Time).unwrap_or(&[]).to_vec();
+    let (kind, time_s, values) = match table.roles.get(1) {
+        Some(Role::Offset) => (LogKind::Offset, times, table.values[1].clone()),
+        Some(Role::Frequency) => (
+            LogKind::Rate,
+            times,
+            table.values[1].iter().map(|f| f * 86_400.0).collect(),
+        ),
+        Some(Role::HalfPeriod) => (LogKind::HalfPeriods, times, table.values[1].clone()),
+        // Beat times alone: each half period ends at its beat.
+        _ => (
+            LogKind::HalfPeriods,
+            times[1..].to_vec(),
+            times.windows(2).map(|w| w[1] - w[0]).collect(),
+        ),
+    };
+    let skip = usize::from(values.len() < table.lines.len());
+    let env = |role: Role, scale: f64| {
+        table
+            .column(role)
+            .map(|c| c[skip..].iter().map(|v| v * scale).collect::<Vec<f64>>())
+    };
+    let events = match &args.events {
+        Some(path) => read_events(path, origin.unwrap_or(0.0), epoch)?,
+        None => Vec::new(),
+    };
+    let design = args
+        .design
+        .as_deref()
+        .map(crate::design::read_design)
+        .transpose()?;
+    let station = match (args.latitude, args.longitude) {
+        (Some(lat), Some(lon)) => Some(Station {
+            latitude_deg: lat.0.to_degrees(),
+            longitude_deg: lon.0.to_degrees(),
+            height_m: args.height.map_or(0.0, |h| h.0),
+        }),
+        _ => None,
+    };
+    let nominal = match (args.bph, args.period) {
+        (Some(b), _) => Some(Nominal::BeatsPerHour(b.0)),
+        (_, Some(p)) => Some(Nominal::Period(p.0)),
+        _ => None,
+    };
+    let input = LogInput {
+        epoch_unix_s: epoch,
+        kind: Some(kind),
+        temperature_c: env(Role::Temperature, 1.0),
+        pressure_hpa: env(Role::Pressure, 0.01),
+        humidity_percent: env(Role::Humidity, 1.0),
+        amplitude_deg: env(Role::Amplitude, 1f64.to_degrees()),
+        pulse_width_s: env(Role::PulseWidth, 1.0),
+        flag_width_m: args.flag_width.map(|w| w.0),
+        gate_radius_m: args.gate_radius.map(|r| r.0),
+        time_s,
+        values,
+        nominal,
+        beat_s: args.beat.map(|b| b.0),
+        station,
+        tides: args.tides,
+        events_s: events,
+        bin_s: args.bin.map(|b| b.0),
+        design,
+        force: args.force,
+        skip_stability: false,
+    };
+    let result = analyse(&input).map_err(|r| refused(&r, &file, &table.lines, skip))?;
+    let mut written = Vec::new();
+    if let Some(path) = &args.residuals {
+        let mut csv = CsvFile::create(
+            path,
+            "--residuals",
+            "time_s,rate_s_per_day,model_s_per_day,residual_s_per_day",
+        )?;
+        for row in &result.per_bin {
+            csv.number(Some(row[0] + origin.unwrap_or(0.0)))
+                .number(Some(row[1]))
+                .number(Some(row[2]))
+                .number(Some(row[3]));
+            csv.end_row()?;
+        }
+        written.push(csv.commit()?);
+    }
+    if args.json {
+        return output::json(&LogJson {
+            file,
+            format: table.format,
+            analysis: &result,
+        });
+    }
+    let mut out = text(&file, &result);
+    for w in written {
+        out.push_str(&format!("Wrote {w}\n"));
+    }
+    Ok(out)
+}
+
+/// The library's refusal in the tool's words: a flag, or a file line.
+fn refused(r: &Refusal, file: &str, lines: &[u64], skip: usize) -> CliError {
+    CliError::refused(
+        r,
+        &[
+            ("bin", "--bin"),
+            ("latitude", "--latitude"),
+            ("height", "--height"),
+            ("time", "--start"),
+            ("flag_width", "--flag-width"),
+            ("period", "--period"),
+            ("bph", "--bph"),
+            ("gate_radius", "--gate-radius"),
+        ],
+        &|at, reason| match at {
+            Some((_, i)) => CliError::other(format!(
+                "{file}: line {}: {reason}",
+                lines.get(i + skip).copied().unwrap_or(0)
+            )),
+            None => CliError::other(format!("{file}: {reason}")),
+        },
+    )
+}
+
+/// The event times of `path` as the log's times (s from its first row).
+fn read_events(
+    path: &std::path::Path,
+    origin: f64,
+    epoch: Option<f64>,
+) -> Result<Vec<f64>, CliError> {
+    let options = ReadOptions {
+        absolute_time: true,
+        columns: crate::data::headerless_width(path).map(|_| vec!["time".to_string()]),
+        ..ReadOptions::default()
+    };
+    let table = read_table(path, &options, &|found: &[Found]| {
+        if found.iter().any(|f| f.role == Role::Time) {
+            Ok(vec![Role::Time])
+        } else {
+            Err("no time column".to_string())
+        }
+    })?;
+    let shift = table.format.time_origin_s.unwrap_or(0.0);
+    Ok(table
+        .column(Role::Time)
+        .unwrap_or(&[])
+        .iter()
+        .map(|&t| {
+            let t = t + shift;
+            // Dates are placed by the log's epoch; plain seconds are on
+            // the log's own time column.
+            match epoch {
+                Some(e) if t > UNIX_AFTER => t - e,
+                _ => t - origin,
+            }
+        })
+        .collect())
+}
+
+/// "+0.123 ± 0.004".
+fn pm(v: Option<f64>, se: Option<f64>, digits: usize) -> Option<String> {
+    Some(format!("{} ± {}", num(v?, digits), num(se?, 2)))
+}
+
+/// The whole for people.
+fn text(file: &str, r: &LogResult) -> String {
+    let mut s = Summary::default();
+    s.row("File", file).row(
+        "Log",
+        format!(
+            "{} samples of {} over {} days, in {} bins of {} s",
+            r.samples,
+            match r.kind {
+                LogKind::Offset => "offsets",
+                LogKind::Rate => "rates",
+                LogKind::HalfPeriods => "half periods",
+            },
+            num(r.span_s / 86_400.0, 4),
+            r.bins,
+            num(r.bin_s, 4)
+        ),
+    );
+    s.row(
+        "Rate",
+        format!(
+            "{} s/day at the mean time and weather",
+            pm(
+                Some(r.rate_s_per_day),
+                Some(r.rate_standard_error_s_per_day),
+                5
+            )
+            .unwrap_or_default()
+        ),
+    );
+    if let Some(d) = pm(
+        r.drift_s_per_day_per_day,
+        r.drift_standard_error_s_per_day_per_day,
+        3,
+    ) {
+        s.row("Drift", format!("{d} s/day a day"));
+    }
+    let c = &r.coefficients;
+    let e = &r.standard_errors;
+    if let Some(t) = pm(
+        c.temperature_s_per_day_per_c,
+        e.temperature_s_per_day_per_c,
+        3,
+    ) {
+        let lag = r
+            .temperature_lag_s
+            .filter(|&l| l > 0.0)
+            .map_or(String::new(), |l| {
+                format!(", following the air {} h late", num(l / 3600.0, 2))
+            });
+        s.row("Temperature", format!("{t} s/day per °C{lag}"));
+    }
+    if let Some(p) = pm(
+        c.pressure_s_per_day_per_hpa,
+        e.pressure_s_per_day_per_hpa,
+        3,
+    ) {
+        s.row("Pressure", format!("{p} s/day per hPa"));
+    }
+    if let Some(h) = pm(
+        c.humidity_s_per_day_per_percent,
+        e.humidity_s_per_day_per_percent,
+        3,
+    ) {
+        s.row("Humidity", format!("{h} s/day per % RH"));
+    }
+    if let Some(a) = pm(
+        c.amplitude_s_per_day_per_deg,
+        e.amplitude_s_per_day_per_deg,
+        3,
+    ) {
+        s.row("Amplitude", format!("{a} s/day per degree of swing"));
+    }
+    if let Some(k) = pm(c.tide_admittance, e.tide_admittance, 3) {
+        s.row("Tide", format!("admittance {k} (1: the full body tide)"));
+    }
+    for (i, (v, se)) in c.steps_s_per_day.iter().zip(&e.steps_s_per_day).enumerate() {
+        s.row(
+            &format!("Step {}", i + 1),
+            format!("{} ± {} s/day", num(*v, 4), num(*se, 2)),
+        );
+    }
+    let dropped: Vec<&str> = r.terms.iter().filter(|t| !t.kept).map(|t| t.name).collect();
+    if !dropped.is_empty() {
+        s.row(
+            "Left out",
+            format!(
+                "{} (the information criterion prefers the model without)",
+                dropped.join(", ")
+            ),
+        );
+    }
+    s.row(
+        "Noise",
+        format!(
+            "{} s/day white a bin, a random walk of {} s/day a day; residuals {} s/day RMS",
+            num(r.white_noise_s_per_day, 3),
+            num(r.random_walk_s_per_day_per_day, 3),
+            num(r.residual_rms_s_per_day, 3)
+        ),
+    );
+    if let Some(d) = &r.design {
+        let versus = |p: f64, diff: Option<f64>| match diff {
+            Some(x) => format!(
+                "{} (measured {} standard errors away)",
+                num(p, 3),
+                num(x, 2)
+            ),
+            None => format!("{} (not measured)", num(p, 3)),
+        };
+        s.row(
+            "Design says",
+            format!(
+                "{} s/day per °C; {} s/day per hPa",
+                versus(d.temperature_s_per_day_per_c, d.temperature_difference_se),
+                versus(d.pressure_s_per_day_per_hpa, d.pressure_difference_se)
+            ),
+        );
+    }
+    let mut out = s.render();
+    for (title, rows) in [
+        ("Stability of the log", &r.stability),
+        ("Stability after the model", &r.residual_stability),
+    ] {
+        out.push_str(&format!("\n{title}:\n"));
+        out.push_str(&stability_table(rows));
+    }
+    for w in &r.warnings {
+        out.push_str(&format!("warning: {}\n", warning(w)));
+    }
+    out
+}
+
+/// A short table of stability rows.
+fn stability_table(rows: &[StabilityRow]) -> String {
+    let body: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            vec![
+                num(r.tau_s, 5),
+                r.adev.map_or("–".into(), |v| num(v, 3)),
+                match (r.adev_low, r.adev_high) {
+                    (Some(l), Some(h)) => format!("{} … {}", num(l, 2), num(h, 2)),
+                    _ => "–".into(),
+                },
+                r.adev_s_per_day.map_or("–".into(), |v| num(v, 3)),
+                r.noise.map_or("–".into(), |n| n.name().to_string()),
+            ]
+        })
+        .collect();
+    output::table(&["τ (s)", "ADEV", "68% interval", "s/day", "noise"], &body)
+}
+
+/// A warning in words.
+fn warning(w: &LogWarning) -> String {
+    match w {
+        LogWarning::WrapsUndone { count } => format!(
+            "{count} whole-beat jumps of the offset undone (the reference slipped a tick)"
+        ),
+        LogWarning::Implausible { term, reason } => format!("{term}: {reason}"),
+        LogWarning::TideAdmittance {
+            admittance,
+            from_one_se,
+        } => format!(
+            "the tide's admittance {} is {} standard errors from 1: something else shares the tide's periods (a daily temperature cycle?), or the times are not UTC",
+            num(*admittance, 3),
+            num(*from_one_se, 2)
+        ),
+        LogWarning::Short { what } => format!("the log is too short to tell the {what}"),
+        LogWarning::TimesRepeated {
+            dropped,
+            first_time_s,
+        } => format!(
+            "{dropped} samples whose time did not advance left out (the first at {} s): a logger's repeated stamp, or files joined with an overlap",
+            num(*first_time_s, 10)
+        ),
+        LogWarning::RateAgainstMean => {
+            "no standard beat within 2% of the half periods: the rate is against their mean; give --bph or --period".to_string()
+        }
+    }
+}

@@ -1,0 +1,305 @@
+//! `pendulum stability`: the deviations of any series, with intervals and
+//! the noise at each averaging time.
+
+use crate::args::{SeriesKind, StabilityArgs};
+use crate::data::{headerless_width, read_table, ReadOptions, Role};
+use crate::error::CliError;
+use crate::output::{self, num, Summary};
+use crate::plot::{render, Figure, Panel, Series, Target};
+use pendulum_theory::analysis::Refusal;
+use pendulum_theory::stability::{
+    grid, stability, DataKind, Gridded, Stability, StabilityInput, StabilityRow, StabilityWarning,
+    Taus,
+};
+use serde::Serialize;
+
+/// What the command prints as JSON.
+#[derive(Serialize)]
+struct StabilityJson<'a> {
+    file: String,
+    format: crate::data::Format,
+    /// The grid the samples were put on, when a time column was read.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    grid: Option<&'a Gridded>,
+    #[serde(flatten)]
+    analysis: &'a Stability,
+}
+
+/// The role of the values of `kind`.
+fn role(kind: SeriesKind) -> Role {
+    match kind {
+        SeriesKind::Phase => Role::Offset,
+        SeriesKind::Frequency => Role::Frequency,
+    }
+}
+
+pub fn run(args: &StabilityArgs) -> Result<String, CliError> {
+    let plot = args
+        .plot
+        .as_deref()
+        .map(|p| Target::new(p, "--plot"))
+        .transpose()?;
+    let file = args.file.display().to_string();
+    // A bare column or two (a stability program's export) is named here.
+    let columns = match (&args.columns, headerless_width(&args.file)) {
+        (Some(c), _) => Some(super::measured::columns(Some(c)).unwrap_or_default()),
+        (None, Some(width)) => {
+            let Some(kind) = args.kind else {
+                return Err(CliError::flag(
+                    "--kind",
+                    format!(
+                        "{file} has no header to say what its values are: give --kind phase or \
+                         --kind frequency"
+                    ),
+                ));
+            };
+            let value = match kind {
+                SeriesKind::Phase => "offset_s",
+                SeriesKind::Frequency => "frequency",
+            };
+            match width {
+                1 => Some(vec![value.to_string()]),
+                2 => Some(vec!["time_s".to_string(), value.to_string()]),
+                n => {
+                    return Err(CliError::other(format!(
+                        "{file}: {n} columns and no header: name them with --columns (e.g. \
+                         --columns time_s,offset_s)"
+                    )))
+                }
+            }
+        }
+        (None, None) => None,
+    };
+    let options = ReadOptions {
+        columns,
+        ..ReadOptions::default()
+    };
+    let wanted = args.kind;
+    let chooser = |found: &[crate::data::Found]| {
+        let has = |r: Role| found.iter().any(|f| f.role == r);
+        let value = match wanted {
+            Some(k) if has(role(k)) => role(k),
+            Some(k) => {
+                return Err(format!(
+                    "no {} column (named offset, phase, … for phase; rate, frequency, … for \
+                     frequency)",
+                    match k {
+                        SeriesKind::Phase => "offset",
+                        SeriesKind::Frequency => "rate",
+                    }
+                ))
+            }
+            None if has(Role::Offset) => Role::Offset,
+            None if has(Role::Frequency) => Role::Frequency,
+            None => {
+                return Err(
+                    "no offset (phase) or rate (frequency) column: name one, or give \
+                            --kind"
+                        .to_string(),
+                )
+            }
+        };
+        let mut roles = vec![value];
+        if has(Role::Time) {
+            roles.push(Role::Time);
+        }
+        Ok(roles)
+    };
+    let table = read_table(&args.file, &options, &chooser)?;
+    let kind = match table.roles[0] {
+        Role::Offset => DataKind::Phase,
+        _ => DataKind::Frequency,
+    };
+    let values = &table.values[0];
+    let refused = |r: &Refusal| {
+        CliError::refused(r, &[("tau0", "--tau0")], &|at, reason| match at {
+            Some((_, i)) => CliError::other(format!(
+                "{file}: line {}: {reason}",
+                table.lines.get(i).copied().unwrap_or(0)
+            )),
+            None => CliError::other(format!("{file}: {reason}")),
+        })
+    };
+    let tau0 = args.tau0.map(|t| t.0);
+    let gridded = match table.column(Role::Time) {
+        Some(times) => Some(grid(times, values, tau0).map_err(|r| refused(&r))?),
+        None => None,
+    };
+    let (data, tau0_s) = match &gridded {
+        Some(g) => (g.data.clone(), g.tau0_s),
+        None => (
+            values.clone(),
+            tau0.ok_or_else(|| {
+                CliError::flag(
+                    "--tau0",
+                    "the file has no time column: give the spacing of its samples",
+                )
+            })?,
+        ),
+    };
+    let result = stability(&StabilityInput {
+        data,
+        kind,
+        tau0_s,
+        taus: if args.all_taus {
+            Taus::All
+        } else {
+            Taus::Octave
+        },
+        force: args.force,
+    })
+    .map_err(|r| refused(&r))?;
+    if let Some(target) = &plot {
+        render(target, &figure(&result))?;
+    }
+    if args.json {
+        return output::json(&StabilityJson {
+            file,
+            format: table.format,
+            grid: gridded.as_ref(),
+            analysis: &result,
+        });
+    }
+    if args.csv {
+        return output::csv(&result.rows);
+    }
+    Ok(text(&file, &result, gridded.as_ref()))
+}
+
+/// A deviation and its interval: "1.23e-7 (1.1e-7 … 1.4e-7)".
+fn with_interval(v: Option<f64>, low: Option<f64>, high: Option<f64>) -> String {
+    match (v, low, high) {
+        (Some(v), Some(l), Some(h)) => format!("{} ({} … {})", num(v, 4), num(l, 2), num(h, 2)),
+        (Some(v), _, _) => num(v, 4),
+        _ => "–".to_string(),
+    }
+}
+
+/// The whole for people: the table, the noises in words, the best τ.
+pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> String {
+    let mut summary = Summary::default();
+    summary.row("File", file).row(
+        "Series",
+        format!(
+            "{} phase points, τ0 = {} s{}",
+            s.phase_points,
+            num(s.tau0_s, 6),
+            match s.kind {
+                DataKind::Phase => " (offsets)",
+                DataKind::Frequency => " (rates, summed into phase)",
+            }
+        ),
+    );
+    if let Some(g) = gridded.filter(|g| g.missing > 0 || g.merged > 0) {
+        summary.row(
+            "Gaps",
+            format!(
+                "{} of the grid's points have no sample{}",
+                g.missing,
+                if g.merged > 0 {
+                    format!("; {} samples shared a point and were averaged", g.merged)
+                } else {
+                    String::new()
+                }
+            ),
+        );
+    }
+    let mut out = summary.render();
+    out.push('\n');
+    let rows: Vec<Vec<String>> = s
+        .rows
+        .iter()
+        .map(|r| {
+            vec![
+                num(r.tau_s, 6),
+                with_interval(r.adev, r.adev_low, r.adev_high),
+                with_interval(r.mdev, r.mdev_low, r.mdev_high),
+                r.tdev.map_or("–".into(), |v| num(v, 4)),
+                with_interval(r.hdev, r.hdev_low, r.hdev_high),
+                r.adev_s_per_day.map_or("–".into(), |v| num(v, 3)),
+                match r.noise {
+                    Some(n) if r.noise_carried => format!("{} (from shorter τ)", n.name()),
+                    Some(n) => n.name().to_string(),
+                    None => "–".into(),
+                },
+            ]
+        })
+        .collect();
+    out.push_str(&output::table(
+        &[
+            "τ (s)",
+            "ADEV (68% interval)",
+            "MDEV (68% interval)",
+            "TDEV (s)",
+            "HDEV (68% interval)",
+            "ADEV (s/day)",
+            "noise",
+        ],
+        &rows,
+    ));
+    out.push('\n');
+    let mut seen = Vec::new();
+    for r in &s.rows {
+        if let Some(n) = r.noise.filter(|n| !seen.contains(n)) {
+            seen.push(n);
+            out.push_str(&format!(
+                "From τ = {} s: {}: {}.\n",
+                num(r.tau_s, 4),
+                n.name(),
+                n.meaning()
+            ));
+        }
+    }
+    if let Some(b) = &s.best {
+        out.push_str(&format!(
+            "Steadiest at τ = {} s: ADEV {} = {} s/day{}.\n",
+            num(b.tau_s, 4),
+            num(b.adev, 3),
+            num(b.adev_s_per_day, 3),
+            if b.at_longest_tau {
+                " (the longest τ the record allows: it may average down further)"
+            } else {
+                ""
+            }
+        ));
+    }
+    for w in &s.warnings {
+        out.push_str(&match w {
+            StabilityWarning::Gaps { missing, of } => format!(
+                "warning: {missing} of {of} samples missing (gaps): the terms that touch them are left out\n"
+            ),
+            StabilityWarning::NoNoiseType => "warning: too few points to tell the noise at any τ (30 needed): no intervals\n".to_string(),
+        });
+    }
+    out
+}
+
+/// The deviations against τ, log–log, with the Allan deviation's interval.
+fn figure(s: &Stability) -> Figure {
+    let pick = |f: &dyn Fn(&StabilityRow) -> Option<f64>| -> Vec<(f64, f64)> {
+        s.rows
+            .iter()
+            .filter_map(|r| Some((r.tau_s, f(r)?)))
+            .collect()
+    };
+    let panel = Panel::new(
+        "Frequency stability",
+        "averaging time τ (s)",
+        "deviation (fractional frequency)",
+        vec![
+            Series::line("ADEV 68% interval, low", pick(&|r| r.adev_low))
+                .colored(0)
+                .light(),
+            Series::line("ADEV 68% interval, high", pick(&|r| r.adev_high))
+                .colored(0)
+                .light(),
+            Series::line("MDEV", pick(&|r| r.mdev)).colored(1),
+            Series::line("HDEV", pick(&|r| r.hdev)).colored(2),
+            Series::dots("ADEV (overlapping)", pick(&|r| r.adev)).colored(0),
+        ],
+    )
+    .log_log();
+    Figure {
+        panels: vec![panel],
+    }
+}

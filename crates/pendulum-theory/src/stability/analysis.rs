@@ -1,0 +1,381 @@
+//! One call for a series' stability: every deviation at each averaging
+//! time, its confidence interval and the noise that dominates there, and
+//! a plain reading of the whole.
+
+use super::deviations::{mdev, oadev, ohdev, phase_from_frequency};
+use super::edf::{greenhall, Estimator, MDEV, OADEV, OHDEV};
+use super::noise::{identify_pooled, Noise};
+use crate::analysis::{judge_work, require_finite, Refusal};
+use crate::error::format_significant;
+use serde::Serialize;
+use statrs::distribution::{ChiSquared, ContinuousCDF};
+
+/// What the series holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DataKind {
+    /// Time error (clock minus reference), s.
+    Phase,
+    /// Fractional frequency (a rate in s/day divided by 86,400).
+    Frequency,
+}
+
+/// Which averaging times.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Taus {
+    /// `τ₀, 2τ₀, 4τ₀, …` (Stable32's octave spacing).
+    Octave,
+    /// Every multiple of `τ₀` (work grows as the square of the length).
+    All,
+}
+
+/// A series to analyse.
+#[derive(Clone, Debug)]
+pub struct StabilityInput {
+    /// The samples, one every `tau0_s`; NaN marks a gap.
+    pub data: Vec<f64>,
+    /// Phase or frequency.
+    pub kind: DataKind,
+    /// The spacing of the samples, s.
+    pub tau0_s: f64,
+    /// Which averaging times.
+    pub taus: Taus,
+    /// Run even when the work estimate is long.
+    pub force: bool,
+}
+
+/// One averaging time.
+#[derive(Clone, Debug, Serialize)]
+pub struct StabilityRow {
+    /// The averaging time `τ = m τ₀`, s.
+    pub tau_s: f64,
+    /// The averaging factor `m`.
+    pub averaging_factor: usize,
+    /// The overlapping Allan deviation (SP 1065 eq. 11).
+    pub adev: Option<f64>,
+    /// Its 68.3% (1σ) confidence interval, low end, from Greenhall's EDF
+    /// for the noise identified at this τ.
+    pub adev_low: Option<f64>,
+    /// Its interval's high end.
+    pub adev_high: Option<f64>,
+    /// The modified Allan deviation (SP 1065 eq. 14).
+    pub mdev: Option<f64>,
+    /// Its interval's low end.
+    pub mdev_low: Option<f64>,
+    /// Its interval's high end.
+    pub mdev_high: Option<f64>,
+    /// The time deviation `τ mdev / √3`, in seconds (the key the issue
+    /// names, `tdev`, without a unit suffix: a time deviation is always s).
+    pub tdev: Option<f64>,
+    /// The overlapping Hadamard deviation (SP 1065 eq. 18): blind to a
+    /// steady drift of the rate.
+    pub hdev: Option<f64>,
+    /// Its interval's low end.
+    pub hdev_low: Option<f64>,
+    /// Its interval's high end.
+    pub hdev_high: Option<f64>,
+    /// The overlapping Allan deviation as a rate, s/day (`adev × 86,400`).
+    pub adev_s_per_day: Option<f64>,
+    /// The noise that dominates at this τ (lag-1 autocorrelation), or, with
+    /// too few points to tell, the one at the τ below it.
+    pub noise: Option<Noise>,
+    /// Its exponent `α` of `S_y(f) ∝ f^α`.
+    pub noise_alpha: Option<i32>,
+    /// The noise was carried from a shorter τ (fewer than 30 points here).
+    pub noise_carried: bool,
+    /// The equivalent degrees of freedom behind the Allan interval.
+    pub adev_edf: Option<f64>,
+}
+
+/// The averaging time at which the clock is steadiest.
+#[derive(Clone, Debug, Serialize)]
+pub struct Best {
+    /// The averaging time of the lowest overlapping Allan deviation, s.
+    pub tau_s: f64,
+    /// The deviation there (fractional).
+    pub adev: f64,
+    /// The same as a rate, s/day.
+    pub adev_s_per_day: f64,
+    /// Whether the lowest is at the longest τ computed: the clock may
+    /// average down further than the record shows.
+    pub at_longest_tau: bool,
+}
+
+/// What an analysis noticed that a reader must know.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum StabilityWarning {
+    /// Gaps (NaN samples) in the series.
+    Gaps {
+        /// How many samples were missing.
+        missing: usize,
+        /// Out of how many.
+        of: usize,
+    },
+    /// The noise could not be identified at any τ: no intervals.
+    NoNoiseType,
+}
+
+/// The stability of a series.
+#[derive(Clone, Debug, Serialize)]
+pub struct Stability {
+    /// Phase or frequency, as given.
+    pub kind: DataKind,
+    /// The sample spacing, s.
+    pub tau0_s: f64,
+    /// The number of phase points analysed (frequency samples + 1).
+    pub phase_points: usize,
+    /// Each averaging time (the key `stability`, as in `log`'s output).
+    #[serde(rename = "stability")]
+    pub rows: Vec<StabilityRow>,
+    /// The steadiest averaging time, if any deviation was computed.
+    pub best: Option<Best>,
+    /// What to be careful of.
+    pub warnings: Vec<StabilityWarning>,
+}
+
+/// The `1σ` (68.27%) interval of a deviation `dev` with `edf` degrees of
+/// freedom: `dev √(ν/χ²_{ν,0.841})` to `dev √(ν/χ²_{ν,0.159})` (SP 1065
+/// eq. 45, the χ² quantiles from `statrs`).
+pub fn interval(dev: f64, edf: f64) -> Option<(f64, f64)> {
+    let chi = ChiSquared::new(edf).ok()?;
+    let tail = (1.0 - ONE_SIGMA) / 2.0;
+    let (lo, hi) = (chi.inverse_cdf(1.0 - tail), chi.inverse_cdf(tail));
+    let pair = (dev * (edf / lo).sqrt(), dev * (edf / hi).sqrt());
+    (pair.0.is_finite() && pair.1.is_finite()).then_some(pair)
+}
+
+/// `erf(1/√2)`, the probability within one standard deviation.
+const ONE_SIGMA: f64 = 0.682_689_492_137_085_9;
+
+/// The samples' spacing checked: from a microsecond (a photogate's
+/// timer) to a year (a clock checked once a year); the refusal names
+/// `tau0`.
+fn spacing(tau0: f64) -> Result<f64, Refusal> {
+    let tau0 = require_finite("tau0", tau0)?;
+    if tau0 <= 0.0 {
+        return Err(Refusal::field(
+            "tau0",
+            format!("must be positive, got {} s", format_significant(tau0, 6)),
+        ));
+    }
+    if !(1e-6..=3.2e7).contains(&tau0) {
+        return Err(Refusal::field(
+            "tau0",
+            format!(
+                "must be from 1 µs to a year (3.2e7 s), got {} s",
+                format_significant(tau0, 6)
+            ),
+        ));
+    }
+    Ok(tau0)
+}
+
+/// Seconds of computing per deviation term (four statistics and the
+/// noise identification), measured on this project's benchmark machine.
+const SECONDS_PER_TERM: f64 = 2e-9;
+
+/// Computes the stability of `input`.
+///
+/// Validation: `tau0_s` positive and finite; at least three finite
+/// samples; infinite samples refused (NaN is a gap). Work: octave τ is
+/// linear in the length; every τ is quadratic and judged by
+/// [`judge_work`].
+pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
+    let tau0 = spacing(input.tau0_s)?;
+    if let Some(i) = input.data.iter().position(|v| v.is_infinite()) {
+        return Err(Refusal::sample(
+            "data",
+            i,
+            "must be finite, got an infinite value",
+        ));
+    }
+    let missing = input.data.iter().filter(|v| v.is_nan()).count();
+    let finite = input.data.len() - missing;
+    if finite < 3 {
+        return Err(Refusal::data(format!(
+            "a stability needs at least 3 samples, got {finite}"
+        )));
+    }
+    let phase = match input.kind {
+        DataKind::Phase => input.data.clone(),
+        DataKind::Frequency => phase_from_frequency(&input.data, tau0),
+    };
+    let n = phase.len();
+    let factors: Vec<usize> = match input.taus {
+        Taus::Octave => std::iter::successors(Some(1usize), |m| m.checked_mul(2))
+            .take_while(|m| 4 * m < n)
+            .collect(),
+        Taus::All => (1..).take_while(|m| 4 * m < n).collect(),
+    };
+    let terms = factors.len() as f64 * n as f64;
+    judge_work(
+        "taus",
+        format_args!("{} averaging times of {n} points", factors.len()),
+        terms * SECONDS_PER_TERM * 6.0,
+        input.force,
+    )?;
+
+    let is_phase = input.kind == DataKind::Phase;
+    let mut previous: Option<Noise> = None;
+    let mut rows = Vec::with_capacity(factors.len());
+    for &m in &factors {
+        let identified = identify_pooled(&input.data, m, is_phase, 2);
+        let carried = identified.is_none() && previous.is_some();
+        let noise = identified.or(previous);
+        previous = noise;
+        let hadamard_noise = if identified.is_some() {
+            identify_pooled(&input.data, m, is_phase, 3)
+        } else {
+            noise
+        };
+        let ci = |dev: Option<f64>, est: Estimator, noise: Option<Noise>| {
+            let edf = greenhall(noise?.alpha(), est, m, n)?;
+            Some((edf, interval(dev?, edf)?))
+        };
+        let a = oadev(&phase, tau0, m);
+        let md = mdev(&phase, tau0, m);
+        let h = ohdev(&phase, tau0, m);
+        let a_ci = ci(a, OADEV, noise);
+        let md_ci = ci(md, MDEV, noise);
+        let h_ci = ci(h, OHDEV, hadamard_noise);
+        let tau = m as f64 * tau0;
+        rows.push(StabilityRow {
+            tau_s: tau,
+            averaging_factor: m,
+            adev: a,
+            adev_low: a_ci.map(|c| c.1 .0),
+            adev_high: a_ci.map(|c| c.1 .1),
+            mdev: md,
+            mdev_low: md_ci.map(|c| c.1 .0),
+            mdev_high: md_ci.map(|c| c.1 .1),
+            tdev: md.map(|v| v * tau / 3f64.sqrt()),
+            hdev: h,
+            hdev_low: h_ci.map(|c| c.1 .0),
+            hdev_high: h_ci.map(|c| c.1 .1),
+            adev_s_per_day: a.map(|v| v * 86_400.0),
+            noise,
+            noise_alpha: noise.map(Noise::alpha),
+            noise_carried: carried,
+            adev_edf: a_ci.map(|c| c.0),
+        });
+    }
+    // Rows past the last computable deviation say nothing.
+    rows.retain(|r| r.adev.is_some() || r.hdev.is_some());
+    let best = rows
+        .iter()
+        .filter_map(|r| Some((r.tau_s, r.adev?)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(tau_s, adev)| Best {
+            tau_s,
+            adev,
+            adev_s_per_day: adev * 86_400.0,
+            at_longest_tau: rows
+                .iter()
+                .rev()
+                .find(|r| r.adev.is_some())
+                .is_some_and(|r| r.tau_s == tau_s),
+        });
+    let mut warnings = Vec::new();
+    if missing > 0 {
+        warnings.push(StabilityWarning::Gaps {
+            missing,
+            of: input.data.len(),
+        });
+    }
+    if rows.iter().all(|r| r.noise.is_none()) {
+        warnings.push(StabilityWarning::NoNoiseType);
+    }
+    Ok(Stability {
+        kind: input.kind,
+        tau0_s: tau0,
+        phase_points: n,
+        rows,
+        best,
+        warnings,
+    })
+}
+
+/// A series at possibly irregular times, put on a regular grid.
+#[derive(Clone, Debug, Serialize)]
+pub struct Gridded {
+    /// One value every `tau0_s` from the first time; NaN where no sample
+    /// fell (a gap).
+    #[serde(skip)]
+    pub data: Vec<f64>,
+    /// The grid's spacing, s.
+    pub tau0_s: f64,
+    /// Grid points with no sample.
+    pub missing: usize,
+    /// Samples that shared a grid point with another (averaged).
+    pub merged: usize,
+}
+
+/// Puts `values` at `times` (s, increasing) on a grid of spacing `tau0`
+/// (default: the median interval), each sample at its nearest grid point
+/// (several at one point averaged), so that gaps become NaN: SP 1065
+/// section 5.14's gap markers. Refuses times that go back, a spacing
+/// that is not positive, and a grid more than 100 times the samples (the
+/// spacing is far shorter than the data's).
+pub fn grid(times: &[f64], values: &[f64], tau0: Option<f64>) -> Result<Gridded, Refusal> {
+    if times.len() != values.len() || times.len() < 3 {
+        return Err(Refusal::data(format!(
+            "a stability needs at least 3 samples, got {}",
+            times.len().min(values.len())
+        )));
+    }
+    if let Some(i) = (1..times.len())
+        .find(|&i| times[i].partial_cmp(&times[i - 1]) != Some(std::cmp::Ordering::Greater))
+    {
+        return Err(Refusal::sample(
+            "time",
+            i,
+            format!(
+                "{} s is not after the previous {} s; sort by time",
+                format_significant(times[i], 12),
+                format_significant(times[i - 1], 12)
+            ),
+        ));
+    }
+    let tau0 = match tau0 {
+        Some(t) => t,
+        None => {
+            let mut d: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
+            let half = d.len() / 2;
+            *d.select_nth_unstable_by(half, f64::total_cmp).1
+        }
+    };
+    let tau0 = spacing(tau0)?;
+    let span = (times[times.len() - 1] - times[0]) / tau0;
+    if span.is_nan() || span > 100.0 * times.len() as f64 {
+        return Err(Refusal::field(
+            "tau0",
+            format!(
+                "{} s makes a grid of {} points for {} samples; give the data's own spacing",
+                format_significant(tau0, 6),
+                crate::analysis::count(span),
+                times.len()
+            ),
+        ));
+    }
+    let n = span.round() as usize + 1;
+    let (mut sum, mut count) = (vec![0.0; n], vec![0u32; n]);
+    for (t, v) in times.iter().zip(values) {
+        let k = (((t - times[0]) / tau0).round() as usize).min(n - 1);
+        sum[k] += v;
+        count[k] += 1;
+    }
+    let merged = count.iter().map(|&c| c.saturating_sub(1) as usize).sum();
+    let missing = count.iter().filter(|&&c| c == 0).count();
+    let data = sum
+        .iter()
+        .zip(&count)
+        .map(|(s, &c)| if c == 0 { f64::NAN } else { s / c as f64 })
+        .collect();
+    Ok(Gridded {
+        data,
+        tau0_s: tau0,
+        missing,
+        merged,
+    })
+}

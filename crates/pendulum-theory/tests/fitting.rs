@@ -409,28 +409,47 @@ mod trajectory {
             &mut collect,
         )
         .unwrap();
-        let (mut covered, mut phases_in_range) = (0, 0);
-        for seed in 0..100_u64 {
-            let mut noise = Noise(40_000 + seed);
-            // Start 0 to 1.4 s (one period) after the release, on the 600/s grid.
-            let start = (noise.uniform() * 840.0) as usize;
-            let idx: Vec<usize> = (0..3600).map(|k| start + 10 * k).collect();
-            let t: Vec<f64> = idx.iter().map(|&i| (i - start) as f64 / 600.0).collect();
-            let theta: Vec<f64> = idx
-                .iter()
-                .map(|&i| collect.0[i] + NOISE * noise.gaussian())
+        // The seeds in two halves on two threads (each fit is independent).
+        let seeds: Vec<u64> = (0..100).collect();
+        let samples = &collect.0;
+        let (covered, phases_in_range) = std::thread::scope(|scope| {
+            let halves: Vec<_> = seeds
+                .chunks(50)
+                .map(|chunk| {
+                    scope.spawn(move || {
+                        let (mut covered, mut phases_in_range) = (0, 0);
+                        for &seed in chunk {
+                            let mut noise = Noise(40_000 + seed);
+                            // Start 0 to 1.4 s (one period) after the release, on the 600/s grid.
+                            let start = (noise.uniform() * 840.0) as usize;
+                            let idx: Vec<usize> = (0..3600).map(|k| start + 10 * k).collect();
+                            let t: Vec<f64> =
+                                idx.iter().map(|&i| (i - start) as f64 / 600.0).collect();
+                            let theta: Vec<f64> = idx
+                                .iter()
+                                .map(|&i| samples[i] + NOISE * noise.gaussian())
+                                .collect();
+                            let fit =
+                                fit_trajectory(TrajectoryModel::Nonlinear, &t, &theta).unwrap();
+                            let (g, se) = fit.gravity(0.5);
+                            if (g - 9.80665).abs() <= se {
+                                covered += 1;
+                            }
+                            let phase = fit.fit.parameters[3];
+                            let pi = std::f64::consts::PI;
+                            if (-0.5 * pi..2.0 * pi).contains(&phase) {
+                                phases_in_range += 1;
+                            }
+                        }
+                        (covered, phases_in_range)
+                    })
+                })
                 .collect();
-            let fit = fit_trajectory(TrajectoryModel::Nonlinear, &t, &theta).unwrap();
-            let (g, se) = fit.gravity(0.5);
-            if (g - 9.80665).abs() <= se {
-                covered += 1;
-            }
-            let phase = fit.fit.parameters[3];
-            let pi = std::f64::consts::PI;
-            if (-0.5 * pi..2.0 * pi).contains(&phase) {
-                phases_in_range += 1;
-            }
-        }
+            halves
+                .into_iter()
+                .map(|h| h.join().unwrap())
+                .fold((0, 0), |a, b| (a.0 + b.0, a.1 + b.1))
+        });
         eprintln!(
             "nonlinear g 1-sigma coverage {covered} of 100; phase in [-π/2, 2π) {phases_in_range}"
         );

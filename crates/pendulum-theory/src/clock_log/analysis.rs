@@ -275,20 +275,26 @@ fn mean(v: &[f64]) -> f64 {
 /// order.
 pub fn analyse(input: &LogInput) -> Result<LogResult, Refusal> {
     let t = &input.time_s;
-    let mut keep = Vec::new();
-    let mut last = f64::NEG_INFINITY;
-    let mut first = None;
+    let advances = |ti: f64, last: f64| ti > last || !ti.is_finite();
+    let (mut last, mut dropped) = (f64::NEG_INFINITY, 0);
+    for &ti in t {
+        if advances(ti, last) {
+            last = if ti.is_finite() { ti } else { last };
+        } else {
+            dropped += 1;
+        }
+    }
+    if dropped == 0 || dropped * 100 > t.len() {
+        return analyse_sorted(input);
+    }
+    let (mut keep, mut last, mut first) = (Vec::with_capacity(t.len()), f64::NEG_INFINITY, None);
     for (i, &ti) in t.iter().enumerate() {
-        if ti > last || !ti.is_finite() {
+        if advances(ti, last) {
             keep.push(i);
             last = if ti.is_finite() { ti } else { last };
         } else {
             first.get_or_insert(i);
         }
-    }
-    let dropped = t.len() - keep.len();
-    if dropped == 0 || dropped * 100 > t.len() {
-        return analyse_sorted(input);
     }
     let pick = |v: &Vec<f64>| -> Vec<f64> {
         if v.len() == t.len() {

@@ -337,6 +337,8 @@ def make_measurements():
     fixture("half_periods.csv", "time_s,half_period_us,temperature_c\n" + "".join(
         f"{k:.0f},{1e6 + 20 * walk.gauss(0, 1):.1f},{20 + k / 86400:.2f}\n" for k in range(0, 3 * 86400, 60)))
     fixture("events_junk.csv", "time\nyesterday\n")
+    fixture("clock_log_pa.csv", "time,offset_s,pressure_hpa\n" + "".join(
+        f"{r[0]},{r[1]},{float(r[3]) * 100:.0f}\n" for r in rows))
     # a track with x and y all zero (a circle through one point)
     fixture("track_xy_zero.csv", csv_text(["t", "x", "y"], [(k / 30.0, 0.0, 0.0) for k in range(100)]))
     fixture("track_xy_line.csv", csv_text(["t", "x", "y"], [(k / 30.0, 0.01 * k, -1.0) for k in range(100)]))
@@ -1276,6 +1278,7 @@ def family_misc():
     add("misc-log-tides-no-place", ["log", "clock_log.csv", "--tides"], "refuse")
     add("misc-log-tides-no-dates", ["log", "clock_log_seconds.csv", "--tides", "--latitude", "52", "--longitude", "0"], "refuse")
     add("misc-log-tides-start", ["log", "clock_log_seconds.csv", "--tides", "--latitude", "52", "--longitude", "0", "--start", "2026-01-01"], "ok")
+    add("misc-log-pressure-in-pa", ["log", "clock_log_pa.csv"], "refuse")
     add("misc-log-short", ["log", "clock_log_short.csv"], "refuse")
     add("misc-log-events-junk", ["log", "clock_log.csv", "--events", "events_junk.csv"], "refuse")
     add("misc-log-events-self", ["log", "clock_log.csv", "--events", "clock_log.csv"], "either")

@@ -1553,6 +1553,7 @@ def _log_cases():
         "bin_zero": (t, offset, {"bin": 0.0}),
         "bin_huge": (t, offset, {"bin": 1e6}),
         "short": (t[:5], offset[:5], {}),
+        "pressure_in_pa_as_hpa": (t, offset, {"pressure_pa": pressure_pa * 100}),
         "unsorted": (unsorted, offset, {}),
     }
 

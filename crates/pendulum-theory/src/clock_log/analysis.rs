@@ -257,6 +257,39 @@ fn column(name: &'static str, c: &Option<Vec<f64>>, n: usize) -> Result<Option<V
             "must be finite, got an infinite value",
         ));
     }
+    // What a clock's room can hold: a value outside is a column in other
+    // units (pressure in Pa or kPa, temperature in °F or K), refused
+    // before it makes a coefficient 100 times off.
+    let range = match name {
+        "temperature" => Some((-60.0, 70.0, "°C: is the column in °F or K?")),
+        "pressure" => Some((
+            300.0,
+            1100.0,
+            "hPa: is the column in Pa, kPa or inHg without its unit?",
+        )),
+        "humidity" => Some((0.0, 100.0, "%: is the column a fraction (0 to 1)?")),
+        "amplitude" => Some((
+            0.0,
+            90.0,
+            "degrees: is the column in mrad or mm without its unit?",
+        )),
+        _ => None,
+    };
+    if let Some((low, high, hint)) = range {
+        if let Some(i) = c
+            .iter()
+            .position(|v| v.is_finite() && !(low..=high).contains(v))
+        {
+            return Err(Refusal::sample(
+                name,
+                i,
+                format!(
+                    "{} is outside {low} to {high} {hint}",
+                    format_significant(c[i], 6)
+                ),
+            ));
+        }
+    }
     Ok(c.iter().any(|v| v.is_finite()).then(|| c.clone()))
 }
 

@@ -592,6 +592,7 @@ NUMERIC = [
     ("log-tides", ["log", "clock_log.csv", "--tides", "--latitude", "52", "--longitude", "0"], [
         ("--latitude", "lat", "lat"), ("--height", "height", "height")]),
     ("log-half", ["log", "half_periods.csv"], [("--bph", "bph", "pos"), ("--period", "time", "pos", [], ["--bph"])]),
+    ("log-train", ["log", "half_periods.csv", "--train", "64,60,30:8,8"], [("--arbor-turns-per-hour", "num", "pos")]),
     ("stability-bare", ["stability", "offsets_bare.txt", "--kind", "phase", "--tau0", "60s"], [("--tau0", "time", "pos")]),
     ("damped", ["damped", "--length", "0.99362m", "--amplitude", "3deg", "--q", "300"], [
         ("--length", "len", "pos"), ("--amplitude", "angle", "amp"), *damping_flags(),
@@ -1288,6 +1289,20 @@ def family_misc():
     add("misc-log-residuals-dash", ["log", "clock_log.csv", "--residuals", "-"], "ok")
     add("misc-log-json", ["log", "clock_log.csv", "--json"], "ok")
     add("misc-log-design", ["log", "clock_log.csv", "--design", "seconds-steel-brass.toml"], "either")
+    for name, train in [("letters", "a:b"), ("no-colon", "64,60,30"), ("zero", "64,0,30:8,8"),
+                        ("mismatch", "64,60,30:8"), ("negative", "-30:"), ("fraction", "30.5:"),
+                        ("huge", "99999999999:"), ("empty", ":")]:
+        add(f"misc-log-train-{name}", ["log", "clock_log.csv", "--train", train], "refuse")
+    add("misc-log-train-count-wheel", ["log", "half_periods.csv", "--train", "15:", "--arbor-turns-per-hour", "120"], "ok")
+    add("misc-log-train-offsets", ["log", "clock_log.csv", "--train", "64,60,30:8,8"], "ok")
+    add("misc-log-plot-dash", ["log", "clock_log.csv", "--plot", "-"], "refuse")
+    add("misc-log-plot-missing-dir", ["log", "clock_log.csv", "--plot", "nowhere/clock"], "refuse")
+    add("misc-log-plot", ["log", "clock_log.csv", "--plot", "clock.png"], "ok")
+    add("misc-log-plot-residuals-same", ["log", "clock_log.csv", "--plot", "c", "--residuals", "c-rate.svg"], "refuse")
+    add("misc-log-plot-over-input", ["log", "clock_log.csv", "--plot", "clock_log.csv"], "either")
+    add("misc-report-log", ["report", "--log", "clock_log.csv", "--output", "rep"], "ok")
+    add("misc-report-log-bad", ["report", "--log", "clock_log_short.csv", "--output", "rep"], "refuse")
+    add("misc-report-log-tides", ["report", "--log", "clock_log.csv", "--latitude", "52", "--longitude", "0", "--output", "rep"], "ok")
     add("misc-stability-flat", ["stability", "offsets_flat.csv"], "either")
     add("misc-stability-bare-no-kind", ["stability", "offsets_bare.txt"], "refuse")
     add("misc-stability-bare-no-tau0", ["stability", "offsets_bare.txt", "--kind", "frequency"], "refuse")

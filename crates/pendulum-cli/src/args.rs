@@ -282,7 +282,8 @@ pub struct LogArgs {
     /// stepped: a regulation, a weight added, a rewinding.
     #[arg(long, value_name = "FILE")]
     pub events: Option<InputPath>,
-    /// The bin the rate is fitted in [default: 1 h].
+    /// The bin the rate is fitted in [default: 1 h; a 24th of a log
+    /// shorter than a day].
     #[arg(long, value_name = "DURATION", allow_hyphen_values = true)]
     pub bin: Option<Time>,
     /// For offsets: the beat a reference comparison slips by [default:
@@ -318,6 +319,19 @@ pub struct LogArgs {
         requires = "flag_width"
     )]
     pub gate_radius: Option<Length>,
+    /// The going train as wheels:pinions, from the first arbor to the
+    /// escape wheel (e.g. 96,90,30:8,8, as `pendulum train` takes them):
+    /// each arbor's period is marked in the spectrum and the rate folded
+    /// over its turn.
+    #[arg(long, value_name = "W,…:P,…", value_parser = parse_train)]
+    pub train: Option<TrainSpec>,
+    #[arg(long, allow_hyphen_values = true, value_name = "N", requires = "train", help = with_default("Turns an hour of the train's first arbor", train_analysis::DEFAULT_ARBOR_TURNS_PER_HOUR))]
+    pub arbor_turns_per_hour: Option<Number>,
+    /// Write the figures as PREFIX-rate.svg, PREFIX-weather.svg,
+    /// PREFIX-stability.svg, PREFIX-spectrum.svg and, with --train,
+    /// PREFIX-folds.svg (PNG when PREFIX ends in .png).
+    #[arg(long, value_name = "PREFIX")]
+    pub plot: Option<crate::paths::OutputPrefix>,
     /// Write each bin's time, rate, model and residual to this CSV file.
     #[arg(long, value_name = "FILE.csv")]
     pub residuals: Option<OutputPath>,
@@ -327,6 +341,39 @@ pub struct LogArgs {
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
+}
+
+/// A train as `--train` gives it: wheels and pinions.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TrainSpec {
+    /// Teeth, first arbor to escape wheel.
+    pub wheels: Vec<u32>,
+    /// Leaves, one fewer.
+    pub pinions: Vec<u32>,
+}
+
+/// Reads `W,W,…:P,P,…` (the counts' sense, one pinion fewer than wheels
+/// and none zero, is the library's to judge, as for every caller).
+fn parse_train(text: &str) -> Result<TrainSpec, String> {
+    let counts = |part: &str| -> Result<Vec<u32>, String> {
+        if part.trim().is_empty() {
+            return Ok(Vec::new());
+        }
+        part.split(',')
+            .map(|c| {
+                c.trim()
+                    .parse::<u32>()
+                    .map_err(|_| format!("'{}' is not a count of teeth", c.trim()))
+            })
+            .collect()
+    };
+    let (wheels, pinions) = text
+        .split_once(':')
+        .ok_or("expected wheels:pinions, e.g. 96,90,30:8,8")?;
+    Ok(TrainSpec {
+        wheels: counts(wheels)?,
+        pinions: counts(pinions)?,
+    })
 }
 
 /// `pendulum tide`.
@@ -498,6 +545,18 @@ pub struct ReportArgs {
     pub damping: DampingArgs,
     #[arg(long, value_name = "M", allow_hyphen_values = true, help = with_default("Bob mass for the energy budget, kg (a design's: its effective mass)", pendulum_theory::clock::analysis::DEFAULT_MASS_KG))]
     pub mass: Option<Mass>,
+    /// A clock's log (as `pendulum log` reads it): its rate model,
+    /// stability, spectrum and figures as a section of the page.
+    #[arg(long, value_name = "FILE")]
+    pub log: Option<InputPath>,
+    /// The clock's longitude, degrees east: with --latitude, the log's
+    /// tidal term.
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true, requires_all = ["log", "latitude"])]
+    pub longitude: Option<Angle>,
+    /// The log's events (a regulation, a rewinding), as `pendulum log
+    /// --events` takes them.
+    #[arg(long, value_name = "FILE", requires = "log")]
+    pub events: Option<InputPath>,
     /// Folder to write index.html and its figures in.
     #[arg(long, value_name = "DIR", default_value = "pendulum-report")]
     pub output: std::path::PathBuf,

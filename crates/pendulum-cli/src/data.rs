@@ -129,7 +129,8 @@ impl Role {
         Some(match base {
             // English, and the words of the spreadsheets of much of Europe.
             "t" | "time" | "timestamp" | "times" | "zeit" | "temps" | "tiempo" | "tempo"
-            | "tijd" => Role::Time,
+            | "tijd" | "unix_time" | "time_unix" | "unixtime" | "unix" | "epoch" | "datetime"
+            | "date_time" | "time_utc" | "utc" => Role::Time,
             "swing" | "swings" | "half_swing" | "halfswing" => Role::Swing,
             "angle" | "theta" | "θ" | "phi" | "φ" | "angular_position" | "winkel" | "ángulo"
             | "angulo" | "angolo" | "hoek" => Role::Angle,

@@ -36,8 +36,15 @@ macro_rules! path_type {
     };
 }
 
+/// The start of several files' names the command writes (`log --plot
+/// PREFIX`: PREFIX-rate.svg, …): the command checks the files it names
+/// with the other outputs before any work.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct OutputPrefix(pub PathBuf);
+
 path_type!(InputPath);
 path_type!(OutputPath);
+path_type!(OutputPrefix);
 
 /// The files of the subcommand `matches` ran (the innermost: `fit decay`'s
 /// own): each as (the flag, or the positional argument's value name, and

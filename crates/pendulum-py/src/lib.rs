@@ -451,7 +451,7 @@ fn tide(
 
 /// The clock-log analysis (the CLI's `log`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, values_, kind, temperature, pressure, humidity, amplitude, pulse_width, flag_width, gate_radius, epoch, latitude, longitude, height, tides, events, bin, beat, bph, period, force, stability))]
+#[pyo3(signature = (time, values_, kind, temperature, pressure, humidity, amplitude, pulse_width, flag_width, gate_radius, epoch, latitude, longitude, height, tides, events, bin, beat, bph, period, force, stability, wheels, pinions, arbor_turns_per_hour))]
 #[allow(clippy::too_many_arguments)]
 fn clock_log(
     py: Python<'_>,
@@ -477,8 +477,11 @@ fn clock_log(
     period: Option<f64>,
     force: bool,
     stability: bool,
+    wheels: Option<Vec<i64>>,
+    pinions: Option<Vec<i64>>,
+    arbor_turns_per_hour: Option<f64>,
 ) -> PyResult<String> {
-    use pendulum_theory::clock_log::{analyse, LogInput, LogKind};
+    use pendulum_theory::clock_log::{analyse, LogInput, LogKind, TrainInput};
     use pendulum_theory::tide::Station;
     let kind = match kind {
         "offset" => LogKind::Offset,
@@ -531,6 +534,18 @@ fn clock_log(
         design: None,
         force,
         skip_stability: !stability,
+        // A count that is not a positive u32 becomes 0, which the library
+        // refuses by name.
+        train: wheels.map(|w| {
+            let counts = |c: &[i64]| -> Vec<u32> {
+                c.iter().map(|&x| u32::try_from(x).unwrap_or(0)).collect()
+            };
+            TrainInput {
+                wheels: counts(&w),
+                pinions: counts(pinions.as_deref().unwrap_or(&[])),
+                arbor_turns_per_hour,
+            }
+        }),
     };
     answer(py.detach(|| analyse(&input)))
 }

@@ -1555,6 +1555,10 @@ def _log_cases():
         "short": (t[:5], offset[:5], {}),
         "pressure_in_pa_as_hpa": (t, offset, {"pressure_pa": pressure_pa * 100}),
         "unsorted": (unsorted, offset, {}),
+        "train": (t, offset, {"train": ([64, 60, 30], [8, 8])}),
+        "train_half_periods": (t, half, {"kind": "half_periods", "train": ([15], [])}),
+        "train_zero_teeth": (t, offset, {"train": ([64, 0, 30], [8, 8])}),
+        "train_pinions_mismatch": (t, offset, {"train": ([64, 60, 30], [8])}),
     }
 
 
@@ -1589,4 +1593,8 @@ def test_clock_log(name, tmp_path):
         if flag in kw:
             args += [f"--{flag}", cli_value(kw[flag], "" if flag == "bph" else "s")]
     extra = {k: kw[k] for k in ["bin", "beat", "bph"] if k in kw}
+    if "train" in kw:
+        wheels, pinions = kw["train"]
+        args += ["--train", ",".join(map(str, wheels)) + ":" + ",".join(map(str, pinions))]
+        extra.update(wheels=wheels, pinions=pinions)
     check(args, lambda: pt.clock_log(t, values, kind=kind, **weather, **extra))

@@ -46,7 +46,21 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         CliError::refused(e, &[], &in_file)
     };
     let r = report(&input, &mut || !interrupt::requested()).map_err(|e| refused(&e))?;
-    let json = args.json.then(|| crate::output::json(&r)).transpose()?;
+    // The log is read and analysed before anything is written.
+    let log = args
+        .log
+        .as_ref()
+        .map(|file| log_section(args, file))
+        .transpose()?;
+    let json = args
+        .json
+        .then(|| {
+            crate::output::json(&ReportJson {
+                report: &r,
+                log: log.as_ref().map(|l| &l.result),
+            })
+        })
+        .transpose()?;
     let output = AtomicFolder::create(&args.output, "--output")?;
     let folder = output.path().to_path_buf();
     let damped = r.damped.friction.damped;
@@ -82,9 +96,23 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
             num(d.humidity * 100.0, 3)
         )
     });
+    let mut log_html = String::new();
+    if let Some(l) = &log {
+        log_html = format!(
+            "<h2>The clock's log</h2>\n<p>As <code>pendulum log</code> gives it: the rate against the weather{}, its stability before and after the model, and its periodic errors.</p>\n<pre>{}</pre>\n",
+            if args.longitude.is_some() { " and the tides" } else { "" },
+            escape(&super::log::text(&l.file, &l.result))
+        );
+        for (name, figure) in super::log::figures(&l.result) {
+            let file = format!("log-{name}.svg");
+            write_figure(&folder, &file, &figure)?;
+            log_html.push_str(&format!("<img src=\"{file}\" alt=\"the log: {name}\">\n"));
+        }
+    }
     let page = html(
         &rows(&r, &gravity, &pendulum),
         datasheet.as_deref().zip(air.as_deref()),
+        &log_html,
     );
     crate::output::check_finite_text(&page)?;
     let mut file = AtomicFile::create(&folder.join("index.html"), "--output")?;
@@ -274,6 +302,47 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
     rows
 }
 
+/// What `--json` prints: the report's numbers and the log's analysis.
+#[derive(serde::Serialize)]
+struct ReportJson<'a> {
+    #[serde(flatten)]
+    report: &'a Report,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    log: Option<&'a pendulum_theory::clock_log::LogResult>,
+}
+
+/// The log of `--log`, read as `pendulum log` reads it: the pendulum's
+/// design beside it, the tides with --latitude and --longitude.
+fn log_section(
+    args: &ReportArgs,
+    file: &crate::paths::InputPath,
+) -> Result<super::log::Analysed, CliError> {
+    super::log::analyse_file(&crate::args::LogArgs {
+        file: file.clone(),
+        kind: None,
+        columns: None,
+        latitude: args.gravity.latitude,
+        longitude: args.longitude,
+        height: args.gravity.height,
+        tides: args.longitude.is_some(),
+        start: None,
+        design: args.design.clone(),
+        events: args.events.clone(),
+        bin: None,
+        beat: None,
+        bph: None,
+        period: None,
+        flag_width: None,
+        gate_radius: None,
+        train: None,
+        arbor_turns_per_hour: None,
+        plot: None,
+        residuals: None,
+        force: false,
+        json: false,
+    })
+}
+
 fn write_figure(folder: &Path, name: &str, figure: &Figure) -> Result<(), CliError> {
     render(&Target::new(&folder.join(name), "--output")?, figure)?;
     Ok(())
@@ -397,7 +466,7 @@ fn powers_of_ten(text: &str) -> String {
 }
 
 /// The page: a table of figures with units, then the pictures.
-fn html(rows: &[Row], datasheet: Option<(&[(String, String)], &str)>) -> String {
+fn html(rows: &[Row], datasheet: Option<(&[(String, String)], &str)>, log: &str) -> String {
     let sheet = match datasheet {
         Some((sheet, air)) => {
             let mut t = format!(
@@ -456,7 +525,7 @@ pendulum): a web book at horology.sakura.ne.jp whose pages name no author.</p>
 <img src="decay.svg" alt="amplitude envelope against time">
 <h2>The simulated run-down and the rate it causes</h2>
 <img src="rundown.svg" alt="amplitude and rate against time">
-<script>
+{log}<script>
 // Only for automated checks: counts pictures that failed to load.
 window.addEventListener("load", function () {{
   var broken = 0;

@@ -56,6 +56,8 @@ struct Prepared {
     /// Drawn dashed (the n-th dash pattern, from 1): it lies on a line
     /// drawn before it; 0 for a solid line.
     dashed: usize,
+    /// Error bars inside the frame, axis units.
+    bars: Vec<(Point, Point)>,
 }
 
 /// One legend entry: its swatch and text.
@@ -81,6 +83,11 @@ fn spans(panel: &Panel) -> (Span, Span) {
             if let (Some(u), Some(v)) = (panel.x_scale.to_axis(x), panel.y_scale.to_axis(y)) {
                 xs.push(u);
                 ys.push(v);
+            }
+        }
+        for (&(x, _), &(lo, hi)) in s.points.iter().zip(s.bars.iter().flatten()) {
+            if panel.x_scale.to_axis(x).is_some() {
+                ys.extend([lo, hi].iter().filter_map(|&v| panel.y_scale.to_axis(v)));
             }
         }
     }
@@ -126,6 +133,19 @@ fn prepare(panel: &Panel, x: Span, y: Span) -> Vec<Prepared> {
                 (true, n) => format!("{n} points off-scale"),
                 (false, n) => format!("{} ({n} off-scale)", s.label),
             };
+            // Each bar clipped to the frame; a low end that a log axis
+            // cannot show is drawn from the frame's edge.
+            let bars = s
+                .points
+                .iter()
+                .zip(s.bars.iter().flatten())
+                .filter_map(|(&(a, _), &(lo, hi))| {
+                    let u = panel.x_scale.to_axis(a)?;
+                    let top = panel.y_scale.to_axis(hi)?;
+                    let bottom = panel.y_scale.to_axis(lo).unwrap_or(y.lo);
+                    clip::segment((u, bottom), (u, top), x, y)
+                })
+                .collect();
             Prepared {
                 pieces,
                 style: s.style,
@@ -133,6 +153,7 @@ fn prepare(panel: &Panel, x: Span, y: Span) -> Vec<Prepared> {
                 label,
                 weight: s.weight,
                 dashed: 0,
+                bars,
             }
         })
         .collect()
@@ -233,6 +254,9 @@ fn drawn(prepared: &[Prepared], panel: &Panel, map: Map, look: Look) -> Drawn {
                     (x, y, r)
                 }));
             }
+        }
+        for (a, b) in &p.bars {
+            d.trace(map.px(*a), map.px(*b), step);
         }
     }
     for m in &panel.marks {
@@ -544,6 +568,16 @@ impl Contents<'_> {
                         .map_err(fail)?;
                 }
             }
+        }
+        for p in self.prepared.iter().filter(|p| !p.bars.is_empty()) {
+            let stroke = p.color.stroke_width(look.px(1));
+            chart
+                .draw_series(
+                    p.bars
+                        .iter()
+                        .map(|(a, b)| PathElement::new(vec![value(a), value(b)], stroke)),
+                )
+                .map_err(fail)?;
         }
         for p in self.prepared.iter().filter(|p| p.style == Style::Dots) {
             let count = p.pieces[0].len();

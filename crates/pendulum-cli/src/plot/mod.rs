@@ -121,6 +121,8 @@ pub struct Series {
     pub color: Option<usize>,
     /// A line's weight.
     pub weight: Weight,
+    /// Dots' error bars: the low and high value at each point.
+    pub bars: Option<Vec<(f64, f64)>>,
 }
 
 impl Series {
@@ -132,6 +134,7 @@ impl Series {
             style: Style::Line,
             color: None,
             weight: Weight::Normal,
+            bars: None,
         }
     }
 
@@ -162,7 +165,15 @@ impl Series {
             style: Style::Dots,
             color: None,
             weight: Weight::Normal,
+            bars: None,
         }
+    }
+
+    /// Dots with an error bar each: `(x, y, low, high)`.
+    pub fn dots_with_bars(label: impl Into<String>, points: Vec<(f64, f64, f64, f64)>) -> Self {
+        let mut s = Self::dots(label, points.iter().map(|p| (p.0, p.1)).collect());
+        s.bars = Some(points.iter().map(|p| (p.2, p.3)).collect());
+        s
     }
 }
 

@@ -582,6 +582,70 @@ fn examples() -> Vec<(&'static str, Check)> {
                 }
             },
         ),
+        (
+            "pendulum log examples/clock-log.csv --events examples/clock-events.csv --plot clock.svg",
+            |r| {
+                // The generator's daily temperature swing of 1.5 °C, through
+                // the compensator's 3 h lag (|H| = 1/√(1 + (2π·3/24)²)) at
+                // -0.3 s/day per °C: a daily line of 0.354 s/day, which 60
+                // days cannot part from K1.
+                let day = r.line("day ");
+                let amplitude: f64 = day
+                    .split_whitespace()
+                    .nth(2)
+                    .unwrap()
+                    .parse()
+                    .unwrap();
+                let truth = 0.3 * 1.5 / (1.0 + (std::f64::consts::TAU * 3.0 / 24.0).powi(2)).sqrt();
+                assert!((amplitude / truth - 1.0).abs() < 0.05, "{amplitude} against {truth}");
+                assert!(day.contains("blended with K1"), "{day}");
+                for name in ["rate", "weather", "stability", "spectrum"] {
+                    r.svg(&format!("clock-{name}.svg"));
+                }
+            },
+        ),
+        (
+            "pendulum log examples/photogate.csv --flag-width 2mm --gate-radius 1m --train 15: --arbor-turns-per-hour 120 --plot gate.svg",
+            |r| {
+                // The generator (tools/examples/make_example_data.py): Q =
+                // 8,000 between impulses every 30 half swings; the count
+                // wheel lengthens the beat by 15 µs once a turn (1.296
+                // s/day).
+                r.within("Q", 8000.0, 3.0);
+                r.says("one every 30");
+                let line = r.line("escape wheel ");
+                let amplitude: f64 = line.split_whitespace().nth(3).unwrap().parse().unwrap();
+                assert!((amplitude / 1.296 - 1.0).abs() < 0.03, "{line}");
+                assert!(line.ends_with("seen"), "{line}");
+                r.says("a pattern the wheel makes");
+                // The rate: beats counted over their time, from the
+                // generator's noise-free half periods over a whole cycle.
+                let total: f64 = (0..60)
+                    .map(|k| {
+                        let a = 1.5f64.to_radians()
+                            * (-((k % 30) as f64) * std::f64::consts::PI / 16_000.0).exp();
+                        (1.0 + a * a / 16.0) / (1.0 + 1.2 / 86_400.0)
+                            + 15e-6 * (std::f64::consts::TAU * k as f64 / 30.0).sin()
+                            + if k % 2 == 1 { 100e-6 } else { -100e-6 }
+                    })
+                    .sum();
+                r.within("Rate", (60.0 / total - 1.0) * 86_400.0, 3.0);
+                for name in ["rate", "stability", "spectrum", "folds"] {
+                    r.svg(&format!("gate-{name}.svg"));
+                }
+            },
+        ),
+        (
+            "pendulum report --log examples/clock-log.csv --events examples/clock-events.csv --output clock-report",
+            |r| {
+                let page = r.file("clock-report/index.html");
+                assert!(page.contains("The clock's log") && page.contains("Stability after the model"));
+                for name in ["rate", "weather", "stability", "spectrum"] {
+                    assert!(page.contains(&format!("log-{name}.svg")));
+                    r.svg(&format!("clock-report/log-{name}.svg"));
+                }
+            },
+        ),
         ("pendulum stability examples/offsets.csv", |r| {
             // The generator: white frequency noise of 3e-7 a minute over
             // 5 µs of white phase noise: ADEV(60 s) = √(s² + 3σx²/τ²).

@@ -255,6 +255,20 @@ def _count(x):
     return max(-(2**63), min(int(x), 2**63 - 1))
 
 
+def _teeth(name, xs):
+    """A list of whole numbers (teeth, leaves); a fraction is refused,
+    as the CLI refuses it, not rounded."""
+    if xs is None:
+        return None
+    out = []
+    for x in xs:
+        v = float(x)
+        if isinstance(x, bool) or v != v or abs(v) == float("inf") or v != int(v):
+            raise ValueError(f"{name}: counts must be whole numbers, got {x!r}")
+        out.append(max(-(2**63), min(int(x), 2**63 - 1)))
+    return out
+
+
 def _text(x):
     return None if x is None else str(x)
 
@@ -637,17 +651,19 @@ def tide(latitude, longitude, time, *, height=0.0):
 def clock_log(time, values, *, kind="offset", temperature=None, pressure=None, humidity=None,
               amplitude=None, pulse_width=None, flag_width=None, gate_radius=None, epoch=None, latitude=None, longitude=None, height=0.0,
               tides=False, events=None, bin=None, beat=None, bph=None, period=None,
-              force=False, stability=True):
+              force=False, stability=True, wheels=None, pinions=None, arbor_turns_per_hour=None):
     """A clock's log, the CLI's ``log``, the same library call: ``time``
     (s, increasing; ``epoch`` the Unix time of 0, for the tides),
     ``values`` offsets (s, ``kind="offset"``), rates (s/day,
     ``"rate"``) or half periods (s, ``"half_periods"``); weather beside
     them (°C, hPa, %, degrees; NaN where not read); a photogate's
     ``pulse_width`` (s) with ``flag_width`` and ``gate_radius`` (m) gives
-    the amplitude exactly. Returns the CLI's
-    JSON as a dict (rate_s_per_day, drift_s_per_day_per_day,
-    coefficients, standard_errors, terms, temperature_lag_s, stability,
-    residual_stability, warnings, …)."""
+    the amplitude exactly; ``wheels`` and ``pinions`` (the CLI's
+    ``--train W,…:P,…``) mark the wheels' periods and fold the rate over
+    each. Returns the CLI's JSON as a dict (rate_s_per_day,
+    drift_s_per_day_per_day, coefficients, standard_errors, terms,
+    temperature_lag_s, stability, residual_stability, spectrum, folds,
+    swing, warnings, …)."""
     def optional(x):
         return None if x is None else _array(x)
     return _json.loads(_native.clock_log(
@@ -655,4 +671,6 @@ def clock_log(time, values, *, kind="offset", temperature=None, pressure=None, h
         optional(humidity), optional(amplitude), optional(pulse_width), _number(flag_width),
         _number(gate_radius), _number(epoch), _number(latitude),
         _number(longitude), float(height), bool(tides), optional(events), _number(bin),
-        _number(beat), _number(bph), _number(period), bool(force), bool(stability)))
+        _number(beat), _number(bph), _number(period), bool(force), bool(stability),
+        _teeth("wheels", wheels), _teeth("pinions", pinions),
+        _number(arbor_turns_per_hour)))

@@ -1,4 +1,4 @@
-from typing import Any, Dict, List, Optional, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -253,4 +253,7 @@ def clock_log(
     period: Optional[float] = ...,
     force: bool = ...,
     stability: bool = ...,
+    wheels: Optional[Sequence[int]] = ...,
+    pinions: Optional[Sequence[int]] = ...,
+    arbor_turns_per_hour: Optional[float] = ...,
 ) -> dict[str, Any]: ...

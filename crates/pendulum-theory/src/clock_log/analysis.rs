@@ -3,6 +3,9 @@
 
 use super::model::{fit, Fit, Walk};
 use super::series::{lagged, lagged_means, offsets_to_bins, rates_to_bins, unwrap, Bins, Wrap};
+use super::spectrum::{spectrum, Spectrum, TIDAL_LINES};
+use super::swing::{swing, Swing};
+use super::wheels::{folds, Arbor, Fold, TrainInput};
 use crate::analysis::{judge_work, require_finite, Refusal};
 use crate::compound::datasheet::{datasheet, Air};
 use crate::compound::description::Design;
@@ -65,7 +68,7 @@ pub struct LogInput {
     /// the log's time.
     pub events_s: Vec<f64>,
     /// The bin length, s (default an hour, or the samples' spacing if
-    /// longer).
+    /// longer; a 24th of the log when that leaves fewer than 24 bins).
     pub bin_s: Option<f64>,
     /// The clock's design: its predicted coefficients shown beside the
     /// measured ones.
@@ -75,6 +78,9 @@ pub struct LogInput {
     /// Leave out the stability (the result's two lists empty): for a
     /// caller that wants the model alone, sooner.
     pub skip_stability: bool,
+    /// The going train: its wheels' periods marked in the spectrum and
+    /// the rate folded over each.
+    pub train: Option<TrainInput>,
 }
 
 /// The model's coefficients (or their standard errors), each `None` when
@@ -165,6 +171,16 @@ pub enum LogWarning {
     /// Half periods were compared with their own mean: the rate is
     /// against the clock's average, not a standard beat.
     RateAgainstMean,
+    /// Pulse widths were given without the flag and the gate that turn
+    /// them into amplitudes: they are left aside.
+    PulsesIgnored,
+    /// The train's beat is not the log's.
+    TrainBeat {
+        /// Beats an hour the train gives.
+        train_bph: f64,
+        /// Beats an hour of the log.
+        log_bph: f64,
+    },
 }
 
 /// The analysis of a log.
@@ -225,9 +241,45 @@ pub struct LogResult {
     pub wraps: Vec<Wrap>,
     /// What to be careful of.
     pub warnings: Vec<LogWarning>,
+    /// The spectrum of the rate with the tides', the day's and the
+    /// wheels' lines (`None` when the log is too short for one).
+    pub spectrum: Option<Spectrum>,
+    /// The train's arbors and their periods.
+    pub arbors: Vec<Arbor>,
+    /// The rate folded over each arbor's turn (those the log resolves).
+    pub folds: Vec<Fold>,
+    /// Q and the energy's scatter, from amplitudes a half swing.
+    pub swing: Option<Swing>,
     /// Per bin: centre time (s), rate, model, residual (s/day).
     #[serde(skip)]
     pub per_bin: Vec<[f64; 4]>,
+    /// Each weather and tide term's partial residuals, for plots.
+    #[serde(skip)]
+    pub partials: Vec<Partial>,
+    /// The weather a bin, for plots: `temperature` (°C, as read, not
+    /// lagged), `pressure` (hPa), `humidity` (%), `amplitude` (°), those
+    /// the log has.
+    #[serde(skip)]
+    pub weather_per_bin: Vec<(&'static str, Vec<f64>)>,
+}
+
+/// One term's partial residuals: the rate with every other term taken
+/// out, against the term's variable, and the fitted line through them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Partial {
+    /// The term (`temperature`, `pressure`, …).
+    pub term: &'static str,
+    /// The variable a bin (the lagged temperature °C, the pressure hPa,
+    /// the humidity %, the amplitude °, the tidal rate s/day).
+    pub x: Vec<f64>,
+    /// The rate less every other term, s/day.
+    pub y: Vec<f64>,
+    /// The fitted line's slope, s/day per the variable's unit.
+    pub slope: f64,
+    /// The line's value at the variable's mean, s/day.
+    pub at_mean: f64,
+    /// The variable's mean.
+    pub mean: f64,
 }
 
 /// The optional terms, in the model's order after the constant.
@@ -408,6 +460,32 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
             }
         }
     }
+    let arbors = match &input.train {
+        Some(train) => train.arbors().ok_or_else(|| {
+            Refusal::field(
+                "train",
+                "needs one pinion fewer than wheels, no count zero and the first arbor's turns positive",
+            )
+        })?,
+        None => Vec::new(),
+    };
+    if let Some(a) = arbors
+        .iter()
+        .find(|a| !(1e-3..=3.2e8).contains(&a.period_s))
+    {
+        return Err(Refusal::field(
+            "train",
+            format!(
+                "makes the {} turn {}; a clock's arbors turn once in 1 ms to 10 years (check the first arbor's turns an hour)",
+                a.name,
+                if a.period_s.is_finite() {
+                    format!("once in {} s", format_significant(a.period_s, 3))
+                } else {
+                    "too slowly to count".to_string()
+                }
+            ),
+        ));
+    }
     let nominal_half = input
         .nominal
         .map(crate::listening::analysis::nominal_period)
@@ -419,10 +497,14 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
     let pressure = column("pressure", &input.pressure_hpa, n)?;
     let humidity = column("humidity", &input.humidity_percent, n)?;
     let mut amplitude = column("amplitude", &input.amplitude_deg, n)?;
-    if let (None, Some(pulses)) = (&amplitude, column("pulse_width", &input.pulse_width_s, n)?) {
-        amplitude = Some(amplitudes_from_pulses(input, &pulses)?);
-    }
     let mut warnings = Vec::new();
+    if let (None, Some(pulses)) = (&amplitude, column("pulse_width", &input.pulse_width_s, n)?) {
+        if input.flag_width_m.is_none() && input.gate_radius_m.is_none() {
+            warnings.push(LogWarning::PulsesIgnored);
+        } else {
+            amplitude = Some(amplitudes_from_pulses(input, &pulses)?);
+        }
+    }
     // The typical spacing, from at most 100,000 intervals evenly spread.
     let stride = ((n - 1) / 100_000).max(1);
     let mut spacing: Vec<f64> = (0..n - 1)
@@ -442,7 +524,16 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
             }
             b
         }
-        None => 3600f64.max(dt),
+        // An hour, or the samples' spacing if longer; a log too short
+        // for 24 of those in 24 bins.
+        None => {
+            let hour = 3600f64.max(dt);
+            if span / hour < 24.0 {
+                (span / 24.0).max(dt)
+            } else {
+                hour
+            }
+        }
     };
     if span / bin < 10.0 {
         return Err(Refusal::field(
@@ -471,6 +562,8 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
     )?;
 
     // The values as a rate or an offset.
+    let mut log_half = nominal_half;
+    let mut early_swing = None;
     let mut values = input.values.clone();
     let mut wraps = Vec::new();
     let env_raw: Vec<&[f64]> = [&pressure, &humidity, &amplitude]
@@ -492,7 +585,7 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
             )
         }
         LogKind::Rate => (
-            rates_to_bins(times, &values, &env, bin),
+            rates_to_bins(times, &values, None, &env, bin),
             DataKind::Frequency,
             values.iter().map(|r| r / 86_400.0).collect(),
         ),
@@ -515,11 +608,43 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
                     }
                 },
             };
+            log_half = Some(nominal);
             let rates: Vec<f64> = values
                 .iter()
                 .map(|h| (nominal / h - 1.0) * 86_400.0)
                 .collect();
-            let b = rates_to_bins(times, &rates, &env, bin);
+            if let Some(a) = amplitude.as_deref() {
+                early_swing = swing(a, &|i| times[i] - times[i - 1] > 1.5 * nominal);
+            }
+            // A bin that ends part way through a cycle the swing repeats
+            // (an impulse every few swings, the escape wheel's turn) takes
+            // part of the cycle's pattern into its rate and its mean
+            // amplitude alike, which the model would read as an effect of
+            // the amplitude: both are averaged over whole cycles first.
+            let cycle = whole_cycle(
+                early_swing.as_ref(),
+                arbors.last().map(|a| a.period_s / nominal),
+                bin / nominal,
+            );
+            let b = match cycle {
+                Some(w) => {
+                    let smooth_amplitude = amplitude.as_deref().map(|a| running_mean(a, w));
+                    let env_smooth: Vec<&[f64]> = vec![
+                        env_raw[0],
+                        env_raw[1],
+                        smooth_amplitude.as_deref().unwrap_or(&[]),
+                    ];
+                    // Weighted by the half periods, as the bins are.
+                    let timed: Vec<f64> = rates.iter().zip(&values).map(|(r, h)| r * h).collect();
+                    let smooth: Vec<f64> = running_mean(&timed, w)
+                        .iter()
+                        .zip(running_mean(&values, w))
+                        .map(|(rh, h)| rh / h)
+                        .collect();
+                    rates_to_bins(times, &smooth, Some(&values), &env_smooth, bin)
+                }
+                None => rates_to_bins(times, &rates, Some(&values), &env, bin),
+            };
             let fractional = rates.iter().map(|r| r / 86_400.0).collect();
             (b, DataKind::Frequency, fractional)
         }
@@ -924,6 +1049,24 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
         }
     }
 
+    // The circular error makes the rate fall with the amplitude by
+    // 86400·A/8 s/day a radian (ΔT/T = A²/16); an escapement may add to
+    // it or offset it, but not tenfold.
+    if let (Some(a), Some(mean_deg)) = (coefficients.amplitude_s_per_day_per_deg, reference[3]) {
+        let circular = 86_400.0 * mean_deg.to_radians() / 8.0 * 1f64.to_radians();
+        if a.abs() > 10.0 * circular.max(0.01) {
+            warnings.push(LogWarning::Implausible {
+                term: "amplitude",
+                reason: format!(
+                    "{} s/day per degree is more than ten times the circular error's {} at {}°: the amplitude hardly changes, or changes with something else that moves the rate (the bins cut a cycle of impulses?)",
+                    format_significant(a, 3),
+                    format_significant(-circular, 3),
+                    format_significant(mean_deg, 3)
+                ),
+            });
+        }
+    }
+
     // The design's predictions at the log's mean weather.
     let design = match &input.design {
         Some(d) => {
@@ -1000,6 +1143,69 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
         (raw_stability, residual_stability)
     };
 
+    // Periodic errors: the spectrum, the wheels' folds, the swing.
+    if let (Some(train), Some(h)) = (&input.train, log_half) {
+        if let Some(train_bph) = train.beats_per_hour() {
+            let log_bph = 3600.0 / h;
+            if (train_bph / log_bph - 1.0).abs() > 0.01 {
+                warnings.push(LogWarning::TrainBeat { train_bph, log_bph });
+            }
+        }
+    }
+    let periodic = periodic(&Periodic {
+        times,
+        raw: &raw_series,
+        kind: raw_kind,
+        half: (kind == LogKind::HalfPeriods).then_some(log_half).flatten(),
+        dt,
+        arbors: &arbors,
+        swing: early_swing,
+    })?;
+
+    // The weather a bin and each term's partial residuals, for plots.
+    let mut weather_per_bin = Vec::new();
+    if let Some(tc) = &temperature {
+        weather_per_bin.push(("temperature", bins.means(tc)));
+    }
+    for (k, name) in ["pressure", "humidity", "amplitude"]
+        .into_iter()
+        .enumerate()
+    {
+        if !env_raw[k].is_empty() {
+            weather_per_bin.push((name, bins.env[k].clone()));
+        }
+    }
+    let r0 = current.beta[0];
+    let partials = [
+        ("temperature", 1usize, reference[0]),
+        ("pressure", 2, reference[1]),
+        ("humidity", 3, reference[2]),
+        ("amplitude", 4, reference[3]),
+        ("tide", 5, Some(0.0)),
+    ]
+    .into_iter()
+    .filter_map(|(term, slot, offset)| {
+        let beta = value(term)?;
+        let column = optional[slot].as_ref()?;
+        let offset = offset?;
+        let present = |i: usize| slot < 2 || slot == 5 || bins.env[slot - 2][i].is_finite();
+        let (mut x, mut y) = (Vec::new(), Vec::new());
+        for i in (0..m).filter(|&i| present(i)) {
+            x.push(column[i] + offset);
+            y.push(current.residuals[i] + beta * column[i] + r0);
+        }
+        let mean = mean(&x);
+        Some(Partial {
+            term,
+            slope: beta,
+            at_mean: r0 + beta * (mean - offset),
+            mean,
+            x,
+            y,
+        })
+    })
+    .collect();
+
     let residual_rms = (current.residuals.iter().map(|r| r * r).sum::<f64>() / m as f64).sqrt();
     let per_bin = (0..m)
         .map(|i| {
@@ -1039,7 +1245,13 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
         design,
         wraps,
         warnings,
+        spectrum: periodic.spectrum,
+        arbors,
+        folds: periodic.folds,
+        swing: periodic.swing,
         per_bin,
+        partials,
+        weather_per_bin,
     })
 }
 
@@ -1064,15 +1276,15 @@ fn amplitudes_from_pulses(input: &LogInput, pulses: &[f64]) -> Result<Vec<f64>, 
         .map(crate::listening::analysis::nominal_period)
         .transpose()?
         .map(|p| p / 2.0);
-    let length = match (&input.design, nominal_half) {
+    // A log of half periods measures its own: their mean.
+    let measured_half = (input.kind == Some(LogKind::HalfPeriods)).then(|| mean(&input.values));
+    let length = match (&input.design, nominal_half.or(measured_half)) {
         (Some(d), _) => datasheet(d, Some(g), &Air::default())?.equivalent_length_m,
-        (None, Some(h)) => g * (2.0 * h / std::f64::consts::TAU).powi(2),
-        (None, None) => {
-            return Err(Refusal::field(
-                "design",
-                "or a nominal beat is needed to turn pulse widths into amplitudes",
-            ))
-        }
+        (None, Some(h)) if h > 0.0 => g * (2.0 * h / std::f64::consts::TAU).powi(2),
+        _ => return Err(Refusal::field(
+            "design",
+            "or a nominal beat (or half periods) is needed to turn pulse widths into amplitudes",
+        )),
     };
     pulses
         .iter()
@@ -1085,6 +1297,184 @@ fn amplitudes_from_pulses(input: &LogInput, pulses: &[f64]) -> Result<Vec<f64>, 
                 .map(f64::to_degrees)
                 .map_err(|r| Refusal::sample("pulse_width", i, r.reason))
         })
+        .collect()
+}
+
+/// What the periodic analyses read.
+struct Periodic<'a> {
+    /// The samples' times, s.
+    times: &'a [f64],
+    /// Offsets (s) or fractional rates a sample.
+    raw: &'a [f64],
+    /// Which.
+    kind: DataKind,
+    /// For half periods: the nominal half period, s.
+    half: Option<f64>,
+    /// The samples' typical spacing, s.
+    dt: f64,
+    /// The train's arbors.
+    arbors: &'a [Arbor],
+    /// Q and the energy's scatter, found before binning.
+    swing: Option<Swing>,
+}
+
+/// What they found.
+struct PeriodicFound {
+    spectrum: Option<Spectrum>,
+    folds: Vec<Fold>,
+    swing: Option<Swing>,
+}
+
+/// The grid the spectrum and the folds read: at most this many points.
+const FINE_POINTS: f64 = 1_048_576.0;
+
+/// The rate's spectrum on a grid of the samples' spacing (coarser when
+/// that would exceed [`FINE_POINTS`]), the folds over the arbors (by
+/// the count of beats for half periods, by the clock's time otherwise),
+/// and the swing's Q from amplitudes a half swing.
+fn periodic(p: &Periodic) -> Result<PeriodicFound, Refusal> {
+    let times = p.times;
+    let span = times[times.len() - 1] - times[0];
+    let step = p.dt.max(span / FINE_POINTS);
+    let gridded = crate::stability::grid(times, p.raw, Some(step))?.data;
+    // The rate (s/day) a grid point, and the clock's own time there.
+    let (rate, position): (Vec<f64>, Vec<f64>) = match p.kind {
+        DataKind::Phase => {
+            let rate: Vec<f64> = gridded
+                .windows(2)
+                .map(|w| (w[1] - w[0]) / step * 86_400.0)
+                .collect();
+            let mut last = 0.0;
+            let position = (0..rate.len())
+                .map(|j| {
+                    if gridded[j].is_finite() {
+                        last = gridded[j];
+                    }
+                    j as f64 * step + last
+                })
+                .collect();
+            (rate, position)
+        }
+        DataKind::Frequency => {
+            let rate: Vec<f64> = gridded.iter().map(|f| f * 86_400.0).collect();
+            let mut clock = 0.0;
+            let position = rate
+                .iter()
+                .enumerate()
+                .map(|(j, r)| {
+                    let at = j as f64 * step + clock;
+                    if r.is_finite() {
+                        clock += r / 86_400.0 * step;
+                    }
+                    at
+                })
+                .collect();
+            (rate, position)
+        }
+    };
+    let mut named: Vec<(String, f64)> = TIDAL_LINES
+        .iter()
+        .map(|(name, hours)| (name.to_string(), hours * 3600.0))
+        .collect();
+    named.extend(p.arbors.iter().map(|a| (a.name.clone(), a.period_s)));
+    let spectrum = Some(spectrum(&detrended(&rate), step, &named)).filter(|s| !s.points.is_empty());
+    // Half periods fold by the count of beats: each on its beat's slot.
+    let folds = match p.half {
+        Some(half) if !p.arbors.is_empty() => {
+            let mut index = 0usize;
+            let mut slots = Vec::with_capacity(times.len());
+            for i in 0..times.len() {
+                if i > 0 {
+                    index += ((times[i] - times[i - 1]) / half).round().max(1.0) as usize;
+                }
+                slots.push(index);
+            }
+            if index > 4 * times.len() {
+                Vec::new()
+            } else {
+                let mut by_beat = vec![f64::NAN; index + 1];
+                for (&slot, f) in slots.iter().zip(p.raw) {
+                    by_beat[slot] = f * 86_400.0;
+                }
+                folds(p.arbors, by_beat, &|j| j as f64 * half, half)
+            }
+        }
+        _ => folds(p.arbors, rate.clone(), &|j| position[j], step),
+    };
+    Ok(PeriodicFound {
+        spectrum,
+        folds,
+        swing: p.swing.clone(),
+    })
+}
+
+/// The half swings a cycle of the swing takes: the least common multiple
+/// of the impulse's period (from `swing`) and the escape wheel's turn
+/// (`escape_beats`), when one of them is known and the cycle is under half
+/// a bin (`bin_beats`).
+fn whole_cycle(swing: Option<&Swing>, escape_beats: Option<f64>, bin_beats: f64) -> Option<usize> {
+    let impulse = swing
+        .filter(|s| s.q.is_some())
+        .and_then(|s| s.half_swings_per_impulse)
+        .map(|n| n.round() as usize)
+        .filter(|&n| n >= 2);
+    let escape = escape_beats.map(|b| b.round() as usize).filter(|&b| b >= 2);
+    let gcd = |mut a: usize, mut b: usize| {
+        while b > 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    let cycle = match (impulse, escape) {
+        (Some(a), Some(b)) => a / gcd(a, b) * b,
+        (a, b) => a.or(b)?,
+    };
+    (cycle >= 2 && (cycle as f64) < bin_beats / 2.0).then_some(cycle)
+}
+
+/// The centred running mean of `values` over `window` samples (at the
+/// ends the first or last `window`; NaN left out).
+fn running_mean(values: &[f64], window: usize) -> Vec<f64> {
+    let n = values.len();
+    let (sum, count) = super::series::cumulative(values);
+    (0..n)
+        .map(|i| {
+            // A whole window at the ends too, moved inward: a part of a
+            // cycle would bring its pattern back.
+            let a = i.saturating_sub(window / 2).min(n.saturating_sub(window));
+            let b = (a + window).min(n);
+            let c = count[b] - count[a];
+            if c > 0 && values[i].is_finite() {
+                (sum[b] - sum[a]) / c as f64
+            } else {
+                f64::NAN
+            }
+        })
+        .collect()
+}
+
+/// `values` less their least-squares line (NaN kept).
+fn detrended(values: &[f64]) -> Vec<f64> {
+    let (mut n, mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for (j, &v) in values.iter().enumerate().filter(|(_, v)| v.is_finite()) {
+        let x = j as f64;
+        n += 1.0;
+        sx += x;
+        sy += v;
+        sxx += x * x;
+        sxy += x * v;
+    }
+    let d = n * sxx - sx * sx;
+    let (slope, intercept) = if d > 0.0 {
+        let b = (n * sxy - sx * sy) / d;
+        (b, (sy - b * sx) / n)
+    } else {
+        (0.0, if n > 0.0 { sy / n } else { 0.0 })
+    };
+    values
+        .iter()
+        .enumerate()
+        .map(|(j, v)| v - intercept - slope * j as f64)
         .collect()
 }
 

@@ -184,21 +184,32 @@ pub(crate) fn offsets_to_bins(times: &[f64], x: &[f64], env: &[&[f64]], length: 
     finish(bins, env)
 }
 
-/// Rates (s/day) to binned rates: the mean of each bin's; weight its
+/// Rates (s/day) to binned rates: the mean of each bin's, each sample
+/// weighted by its `durations` when given (half periods: the bin's rate
+/// is then its count of beats over its time, which an equal mean of each
+/// beat's rate is not: a beat error `e` would add `e²` to it); weight its
 /// samples' span.
-pub(crate) fn rates_to_bins(times: &[f64], r: &[f64], env: &[&[f64]], length: f64) -> Bins {
+pub(crate) fn rates_to_bins(
+    times: &[f64],
+    r: &[f64],
+    durations: Option<&[f64]>,
+    env: &[&[f64]],
+    length: f64,
+) -> Bins {
     let mut bins = empty(times.len());
     for (a, b) in ranges(times, length, 1) {
         let n = (b - a) as f64;
         let tm = times[a..b].iter().sum::<f64>() / n;
-        let mean = r[a..b].iter().sum::<f64>() / n;
+        let total = durations.map_or(n, |d| d[a..b].iter().sum::<f64>());
+        let weight = |i: usize| durations.map_or(1.0, |d| d[i]) / total;
+        let mean = (a..b).map(|i| weight(i) * r[i]).sum::<f64>();
         let span = if b - a > 1 {
             (times[b - 1] - times[a]) * n / (n - 1.0)
         } else {
             length
         };
-        for w in &mut bins.sample_weight[a..b] {
-            *w = 1.0 / n;
+        for i in a..b {
+            bins.sample_weight[i] = weight(i);
         }
         push(&mut bins, tm, mean, span, a, b);
     }
@@ -317,4 +328,23 @@ pub(crate) fn lagged_means(bins: &Bins, times: &[f64], values: &[f64], tau: f64)
 pub(crate) fn lagged(times: &[f64], values: &[f64], tau: f64) -> Vec<f64> {
     let mut lag = Lag::new(times, values, tau);
     (0..values.len()).map(|i| lag.at(i)).collect()
+}
+
+/// Cumulative sums and counts of `values`' finite samples, each with a
+/// leading zero: the sum over `a..b` is `sum[b] - sum[a]`.
+pub(crate) fn cumulative(values: &[f64]) -> (Vec<f64>, Vec<usize>) {
+    let mut sum = Vec::with_capacity(values.len() + 1);
+    let mut count = Vec::with_capacity(values.len() + 1);
+    let (mut s, mut c) = (0.0, 0usize);
+    sum.push(s);
+    count.push(c);
+    for v in values {
+        if v.is_finite() {
+            s += v;
+            c += 1;
+        }
+        sum.push(s);
+        count.push(c);
+    }
+    (sum, count)
 }

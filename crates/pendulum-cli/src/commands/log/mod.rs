@@ -1,4 +1,7 @@
-//! `pendulum log`: a clock's log, its rate model and its stability.
+//! `pendulum log`: a clock's log, its rate model, its stability and its
+//! periodic errors.
+
+mod figures;
 
 use crate::args::{LogArgs, LogKindArg};
 use crate::data::{read_table, Found, ReadOptions, Role};
@@ -6,7 +9,7 @@ use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
 use pendulum_theory::analysis::Refusal;
-use pendulum_theory::clock_log::{analyse, LogInput, LogKind, LogResult, LogWarning};
+use pendulum_theory::clock_log::{analyse, LogInput, LogKind, LogResult, LogWarning, TrainInput};
 use pendulum_theory::period::Nominal;
 use pendulum_theory::stability::StabilityRow;
 use pendulum_theory::tide::Station;
@@ -24,7 +27,90 @@ struct LogJson<'a> {
 /// Unix times look like this (after 1973): a column of dates.
 const UNIX_AFTER: f64 = 1e8;
 
+/// A log read and analysed, with what its reader found.
+pub(crate) struct Analysed {
+    /// The file, as named.
+    pub file: String,
+    /// How it was read.
+    pub format: crate::data::Format,
+    /// The log time of its first row, s (Unix time for dated logs).
+    pub origin: Option<f64>,
+    /// The analysis.
+    pub result: LogResult,
+}
+
 pub fn run(args: &LogArgs) -> Result<String, CliError> {
+    let plot = args
+        .plot
+        .as_ref()
+        .map(|p| figures::Prefix::new(p))
+        .transpose()?;
+    if let Some(prefix) = &plot {
+        // The figures' files checked with the other outputs, before work.
+        let mut outputs: Vec<(String, std::path::PathBuf)> = prefix
+            .paths()
+            .into_iter()
+            .map(|p| ("--plot".to_string(), p))
+            .collect();
+        if let Some(r) = &args.residuals {
+            outputs.push(("--residuals".to_string(), r.0.clone()));
+        }
+        let inputs: Vec<(String, std::path::PathBuf)> = [
+            ("FILE", Some(&args.file)),
+            ("--events", args.events.as_ref()),
+            ("--design", args.design.as_ref()),
+        ]
+        .into_iter()
+        .filter_map(|(flag, p)| Some((flag.to_string(), p?.0.clone())))
+        .collect();
+        crate::file::check_outputs(&outputs, &inputs)?;
+    }
+    let Analysed {
+        file,
+        format,
+        origin,
+        result,
+    } = analyse_file(args)?;
+    let mut written = Vec::new();
+    if let Some(path) = &args.residuals {
+        let mut csv = CsvFile::create(
+            path,
+            "--residuals",
+            "time_s,rate_s_per_day,model_s_per_day,residual_s_per_day",
+        )?;
+        for row in &result.per_bin {
+            csv.number(Some(row[0] + origin.unwrap_or(0.0)))
+                .number(Some(row[1]))
+                .number(Some(row[2]))
+                .number(Some(row[3]));
+            csv.end_row()?;
+        }
+        written.push(csv.commit()?);
+    }
+    if let Some(prefix) = &plot {
+        written.extend(figures::write(prefix, &result)?);
+    }
+    if args.json {
+        return output::json(&LogJson {
+            file,
+            format,
+            analysis: &result,
+        });
+    }
+    let mut out = text(&file, &result);
+    for w in written {
+        out.push_str(&format!("Wrote {w}\n"));
+    }
+    Ok(out)
+}
+
+/// The figures of a log's analysis, named (`rate`, `stability`, …).
+pub(crate) fn figures(r: &LogResult) -> Vec<(&'static str, crate::plot::Figure)> {
+    figures::all(r)
+}
+
+/// Reads the log `args` names and analyses it.
+pub(crate) fn analyse_file(args: &LogArgs) -> Result<Analysed, CliError> {
     let file = args.file.display().to_string();
     let wanted = args.kind;
     let chooser = |found: &[Found]| {
@@ -139,36 +225,19 @@ pub fn run(args: &LogArgs) -> Result<String, CliError> {
         design,
         force: args.force,
         skip_stability: false,
+        train: args.train.as_ref().map(|t| TrainInput {
+            wheels: t.wheels.clone(),
+            pinions: t.pinions.clone(),
+            arbor_turns_per_hour: args.arbor_turns_per_hour.map(|n| n.0),
+        }),
     };
     let result = analyse(&input).map_err(|r| refused(&r, &file, &table.lines, skip))?;
-    let mut written = Vec::new();
-    if let Some(path) = &args.residuals {
-        let mut csv = CsvFile::create(
-            path,
-            "--residuals",
-            "time_s,rate_s_per_day,model_s_per_day,residual_s_per_day",
-        )?;
-        for row in &result.per_bin {
-            csv.number(Some(row[0] + origin.unwrap_or(0.0)))
-                .number(Some(row[1]))
-                .number(Some(row[2]))
-                .number(Some(row[3]));
-            csv.end_row()?;
-        }
-        written.push(csv.commit()?);
-    }
-    if args.json {
-        return output::json(&LogJson {
-            file,
-            format: table.format,
-            analysis: &result,
-        });
-    }
-    let mut out = text(&file, &result);
-    for w in written {
-        out.push_str(&format!("Wrote {w}\n"));
-    }
-    Ok(out)
+    Ok(Analysed {
+        file,
+        format: table.format,
+        origin,
+        result,
+    })
 }
 
 /// The library's refusal in the tool's words: a flag, or a file line.
@@ -184,6 +253,7 @@ fn refused(r: &Refusal, file: &str, lines: &[u64], skip: usize) -> CliError {
             ("period", "--period"),
             ("bph", "--bph"),
             ("gate_radius", "--gate-radius"),
+            ("train", "--train"),
         ],
         &|at, reason| match at {
             Some((_, i)) => CliError::other(format!(
@@ -236,7 +306,7 @@ fn pm(v: Option<f64>, se: Option<f64>, digits: usize) -> Option<String> {
 }
 
 /// The whole for people.
-fn text(file: &str, r: &LogResult) -> String {
+pub(crate) fn text(file: &str, r: &LogResult) -> String {
     let mut s = Summary::default();
     s.row("File", file).row(
         "Log",
@@ -362,8 +432,107 @@ fn text(file: &str, r: &LogResult) -> String {
         out.push_str(&format!("\n{title}:\n"));
         out.push_str(&stability_table(rows));
     }
+    out.push_str(&periodic(r));
     for w in &r.warnings {
         out.push_str(&format!("warning: {}\n", warning(w)));
+    }
+    out
+}
+
+/// The lines, the folds and the swing, for people.
+fn periodic(r: &LogResult) -> String {
+    let mut out = String::new();
+    if let Some(s) = r.spectrum.as_ref().filter(|s| !s.lines.is_empty()) {
+        out.push_str("\nPeriodic errors (the rate's spectrum):\n");
+        let rows: Vec<Vec<String>> = s
+            .lines
+            .iter()
+            .map(|l| {
+                vec![
+                    l.name.clone(),
+                    num(l.period_s / 3600.0, 5),
+                    match l.amplitude_standard_error_s_per_day {
+                        Some(e) => format!("{} ± {}", num(l.amplitude_s_per_day, 3), num(e, 2)),
+                        None => num(l.amplitude_s_per_day, 3),
+                    },
+                    l.signal_to_noise.map_or("–".into(), |x| num(x, 2)),
+                    match (&l.blended_with, l.seen) {
+                        (Some(o), _) => format!("blended with {o} (a longer log parts them)"),
+                        (None, true) => "seen".into(),
+                        (None, false) => "not above the noise".into(),
+                    },
+                ]
+            })
+            .collect();
+        out.push_str(&output::table(
+            &[
+                "line",
+                "period (h)",
+                "amplitude (s/day)",
+                "signal/noise",
+                "verdict",
+            ],
+            &rows,
+        ));
+    }
+    for f in &r.folds {
+        out.push_str(&format!(
+            "The {} turns in {} s ({} turns logged): {} s/day peak to peak over the turn, a time error of {} s within it; {} ({}).\n",
+            f.arbor,
+            num(f.period_s, 6),
+            num(f.turns, 4),
+            num(f.peak_to_peak_s_per_day, 3),
+            num(f.time_error_peak_to_peak_s, 3),
+            if f.seen { "a pattern the wheel makes" } else { "no pattern above the scatter" },
+            figures::p_text(f.p_value)
+        ));
+    }
+    let fast: Vec<&str> = r
+        .arbors
+        .iter()
+        .filter(|a| !r.folds.iter().any(|f| f.arbor == a.name))
+        .map(|a| a.name.as_str())
+        .collect();
+    if !fast.is_empty() {
+        out.push_str(&format!(
+            "Not folded: the {} (a turn needs 4 samples and the log 3 turns; a photogate's half periods resolve every wheel).\n",
+            fast.join(", the ")
+        ));
+    }
+    if let Some(w) = &r.swing {
+        let mut s = Summary::default();
+        s.row(
+            "Swing",
+            format!(
+                "{} half swings, mean amplitude {}°",
+                w.half_swings,
+                num(w.mean_amplitude_deg, 4)
+            ),
+        );
+        match (w.q, w.q_standard_error, w.half_swings_per_impulse) {
+            (Some(q), Some(e), Some(every)) => s.row(
+                "Q",
+                format!(
+                    "{} ± {} from the decay between impulses (one every {} half swings)",
+                    num(q, 4),
+                    num(e, 2),
+                    num(every, 4)
+                ),
+            ),
+            _ => s.row(
+                "Q",
+                "not seen while the clock goes (no decay between impulses: impulsed every swing?); a run-down measures it: pendulum fit decay",
+            ),
+        };
+        s.row(
+            "Energy scatter",
+            format!(
+                "{} ppm from half swing to half swing (the gate's noise included)",
+                num(w.energy_scatter_ppm, 3)
+            ),
+        );
+        out.push('\n');
+        out.push_str(&s.render());
     }
     out
 }
@@ -410,6 +579,12 @@ fn warning(w: &LogWarning) -> String {
         } => format!(
             "{dropped} samples whose time did not advance left out (the first at {} s): a logger's repeated stamp, or files joined with an overlap",
             num(*first_time_s, 10)
+        ),
+        LogWarning::PulsesIgnored => "the pulse widths are left aside: give --flag-width and --gate-radius to read the swing's amplitude, Q and steadiness from them".to_string(),
+        LogWarning::TrainBeat { train_bph, log_bph } => format!(
+            "the train gives {} beats an hour, the log {}: check --train and --arbor-turns-per-hour",
+            num(*train_bph, 6),
+            num(*log_bph, 6)
         ),
         LogWarning::RateAgainstMean => {
             "no standard beat within 2% of the half periods: the rate is against their mean; give --bph or --period".to_string()

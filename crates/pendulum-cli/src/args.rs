@@ -557,6 +557,17 @@ pub struct ReportArgs {
     /// --events` takes them.
     #[arg(long, value_name = "FILE", requires = "log")]
     pub events: Option<InputPath>,
+    /// For the log's pulse widths: the flag's width (as `pendulum log`).
+    #[arg(long, value_name = "W", allow_hyphen_values = true, requires_all = ["log", "gate_radius"])]
+    pub flag_width: Option<Length>,
+    /// For the log's pulse widths: the gate's distance from the pivot.
+    #[arg(long, value_name = "R", allow_hyphen_values = true, requires_all = ["log", "flag_width"])]
+    pub gate_radius: Option<Length>,
+    /// The clock's going train, wheels:pinions (as `pendulum log`).
+    #[arg(long, value_name = "W,…:P,…", value_parser = parse_train, requires = "log")]
+    pub train: Option<TrainSpec>,
+    #[arg(long, allow_hyphen_values = true, value_name = "N", requires = "train", help = with_default("Turns an hour of the train's first arbor", train_analysis::DEFAULT_ARBOR_TURNS_PER_HOUR))]
+    pub arbor_turns_per_hour: Option<Number>,
     /// Folder to write index.html and its figures in.
     #[arg(long, value_name = "DIR", default_value = "pendulum-report")]
     pub output: std::path::PathBuf,
@@ -1158,7 +1169,7 @@ pub struct RegulateArgs {
     pub rate: RatePerDay,
     #[command(flatten)]
     pub pendulum: PendulumArgs,
-    #[arg(long, value_name = "NAME", help = with_default("The part the nut moves (with what rests on it)", pendulum_theory::compound::regulate::DEFAULT_PART))]
+    #[arg(long, value_name = "NAME", help = with_default("The part the nut moves (with what rests on it)", format_args!("the design's threaded part, else {}, else the bob", pendulum_theory::compound::regulate::DEFAULT_PART)))]
     pub part: Option<String>,
     /// The rating nut's thread pitch (e.g. 0.7mm).
     #[arg(long, allow_hyphen_values = true, value_name = "P")]

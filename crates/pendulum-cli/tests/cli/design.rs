@@ -585,3 +585,69 @@ fn compensated_designs_keep_their_period() {
         }
     }
 }
+
+/// A design with no part named `nut` (issue 27): `regulate` moves its bob
+/// and sizes a tray, both checked against the parallel-axis theorem here
+/// (a steel rod 1000 × 8 mm from the pivot, a brass cylinder 100 × 80 mm
+/// centred 950 mm down; L = I/(M d), solved for the bob's shift and the
+/// tray's mass by bisection); a rod whose top is a micrometre above the
+/// pivot (a dimension rounded) is taken as hanging from it, one 20 µm
+/// above is refused in millimetres that are not zero.
+#[test]
+fn a_design_without_a_nut_and_a_rod_to_the_micrometre() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, rod_centre: &str| {
+        let path = dir.path().join(name);
+        std::fs::write(
+            &path,
+            format!(
+                "[[part]]\nname = \"rod\"\nshape = \"rod\"\nmaterial = \"steel\"\nlength = \"1000 mm\"\ndiameter = \"8 mm\"\ncentre = \"{rod_centre}\"\n\n[[part]]\nname = \"bob\"\nshape = \"cylinder\"\nmaterial = \"brass\"\nlength = \"100 mm\"\ndiameter = \"80 mm\"\ncentre = \"950 mm\"\n"
+            ),
+        )
+        .unwrap();
+        path.to_str().unwrap().to_string()
+    };
+    let design = write("nonut.toml", "500 mm");
+    let pi = std::f64::consts::PI;
+    let (mr, cr) = (7850.0 * pi / 4.0 * 0.008f64.powi(2), 0.5);
+    let ir = mr * (1.0 / 12.0 + 0.008f64.powi(2) / 16.0 + cr * cr);
+    let mb = 8500.0 * pi / 4.0 * 0.08f64.powi(2) * 0.1;
+    let length = |bob: f64, extra: f64, at: f64| {
+        let i = ir
+            + mb * (0.1f64.powi(2) / 12.0 + 0.08f64.powi(2) / 16.0 + bob * bob)
+            + extra * at * at;
+        i / (mr * cr + mb * bob + extra * at)
+    };
+    let l0 = length(0.95, 0.0, 0.0);
+    // Gaining 10 s/day: the length must grow by (1 + 10/86400)².
+    let target = l0 * (1.0 + 10.0 / 86_400.0f64).powi(2);
+    let solve = |f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64| {
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if (f(mid) - target) * (f(lo) - target) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let shift = solve(&|d| length(0.95 + d, 0.0, 0.0), 0.0, 0.01);
+    let tray = solve(&|m| length(0.95, m, 0.3), -1.0, 0.0);
+    let r = json(&[
+        "regulate", "--design", &design, "--rate", "10", "--tray", "300mm",
+    ]);
+    assert!(
+        (f(&r, "shift_m") / shift - 1.0).abs() < 1e-6,
+        "{r} against {shift}"
+    );
+    assert!(
+        (f(&r, "tray_mass_kg") / tray - 1.0).abs() < 1e-6,
+        "{r} against {tray}"
+    );
+    assert!(r["warnings"].to_string().contains("moves the bob"), "{r}");
+    // The rod's top 1 µm above the pivot: taken; 20 µm: refused, in mm.
+    json(&["design", &write("micro.toml", "499.999 mm")]);
+    let said = refuses(&["design", &write("above.toml", "499.98 mm")], "");
+    assert!(said.contains("0.02 mm above the pivot"), "{said}");
+}

@@ -171,6 +171,20 @@ pub enum LogWarning {
     /// Half periods were compared with their own mean: the rate is
     /// against the clock's average, not a standard beat.
     RateAgainstMean,
+    /// Half periods far from the typical one (under half or over 1.5
+    /// times it: a transit the gate missed, a stray trigger) were left
+    /// out; the beats they span count as a gap.
+    BeatsMissed {
+        /// How many.
+        left_out: usize,
+    },
+    /// An event the model leaves out.
+    EventIgnored {
+        /// Its time, s of the log's time.
+        time_s: f64,
+        /// Why.
+        reason: &'static str,
+    },
     /// Pulse widths were given without the flag and the gate that turn
     /// them into amplitudes: they are left aside.
     PulsesIgnored,
@@ -229,7 +243,8 @@ pub struct LogResult {
     pub white_noise_s_per_day: f64,
     /// The random walk of the rate in a day, s/day (0: none found).
     pub random_walk_s_per_day_per_day: f64,
-    /// The RMS of the residuals, s/day.
+    /// The RMS of the residuals, each bin weighted by the time it covers,
+    /// s/day.
     pub residual_rms_s_per_day: f64,
     /// Stability of the raw series.
     pub stability: Vec<StabilityRow>,
@@ -250,6 +265,9 @@ pub struct LogResult {
     pub folds: Vec<Fold>,
     /// Q and the energy's scatter, from amplitudes a half swing.
     pub swing: Option<Swing>,
+    /// For half periods: the beat error, s (alternate half periods
+    /// differ by twice it).
+    pub beat_error_s: Option<f64>,
     /// Per bin: centre time (s), rate, model, residual (s/day).
     #[serde(skip)]
     pub per_bin: Vec<[f64; 4]>,
@@ -360,35 +378,69 @@ fn mean(v: &[f64]) -> f64 {
 /// order.
 pub fn analyse(input: &LogInput) -> Result<LogResult, Refusal> {
     let t = &input.time_s;
+    let n = t.len();
     let advances = |ti: f64, last: f64| ti > last || !ti.is_finite();
-    let (mut last, mut dropped) = (f64::NEG_INFINITY, 0);
-    for &ti in t {
-        if advances(ti, last) {
-            last = if ti.is_finite() { ti } else { last };
-        } else {
-            dropped += 1;
-        }
-    }
-    if dropped == 0 || dropped * 100 > t.len() {
-        return analyse_sorted(input);
-    }
-    let (mut keep, mut last, mut first) = (Vec::with_capacity(t.len()), f64::NEG_INFINITY, None);
+    let mut keep = vec![true; n];
+    let (mut last, mut repeated, mut first_repeated) = (f64::NEG_INFINITY, 0, None);
     for (i, &ti) in t.iter().enumerate() {
         if advances(ti, last) {
-            keep.push(i);
             last = if ti.is_finite() { ti } else { last };
         } else {
-            first.get_or_insert(i);
+            keep[i] = false;
+            repeated += 1;
+            first_repeated.get_or_insert(i);
         }
     }
+    if repeated * 100 > n {
+        // Out of order, not a few repeated stamps: refused by name below.
+        return analyse_sorted(input);
+    }
+    // Half periods far from the typical one: a transit the gate missed
+    // (two half periods read as one) or a stray trigger (one cut in two).
+    let mut odd = 0;
+    if input.kind == Some(LogKind::HalfPeriods) && input.values.len() == n && n >= 10 {
+        let mut typical: Vec<f64> = input
+            .values
+            .iter()
+            .step_by((n / 10_000).max(1))
+            .copied()
+            .filter(|v| v.is_finite() && *v > 0.0)
+            .collect();
+        if !typical.is_empty() {
+            let h = typical.len() / 2;
+            let median = *typical.select_nth_unstable_by(h, f64::total_cmp).1;
+            for (i, &v) in input.values.iter().enumerate() {
+                if keep[i]
+                    && v.is_finite()
+                    && v > 0.0
+                    && !(0.5 * median..=1.5 * median).contains(&v)
+                {
+                    keep[i] = false;
+                    odd += 1;
+                }
+            }
+            if odd * 4 > n {
+                return Err(Refusal::data(format!(
+                    "{odd} of {n} half periods are less than half or more than 1.5 times the typical {} s: are they half periods of one pendulum?",
+                    format_significant(median, 6)
+                )));
+            }
+        }
+    }
+    if repeated == 0 && odd == 0 {
+        return analyse_sorted(input);
+    }
     let pick = |v: &Vec<f64>| -> Vec<f64> {
-        if v.len() == t.len() {
-            keep.iter().map(|&i| v[i]).collect()
+        if v.len() == n {
+            v.iter()
+                .zip(&keep)
+                .filter(|(_, &k)| k)
+                .map(|(x, _)| *x)
+                .collect()
         } else {
             v.clone()
         }
     };
-    let first = first.unwrap_or(0);
     let filtered = LogInput {
         time_s: pick(&input.time_s),
         values: pick(&input.values),
@@ -400,13 +452,20 @@ pub fn analyse(input: &LogInput) -> Result<LogResult, Refusal> {
         ..input.clone()
     };
     let mut result = analyse_sorted(&filtered)?;
-    result.warnings.insert(
-        0,
-        LogWarning::TimesRepeated {
-            dropped,
-            first_time_s: t[first],
-        },
-    );
+    if odd > 0 {
+        result
+            .warnings
+            .insert(0, LogWarning::BeatsMissed { left_out: odd });
+    }
+    if let Some(first) = first_repeated {
+        result.warnings.insert(
+            0,
+            LogWarning::TimesRepeated {
+                dropped: repeated,
+                first_time_s: t[first],
+            },
+        );
+    }
     Ok(result)
 }
 
@@ -439,7 +498,21 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
             ));
         }
     }
+    if input.values.iter().all(|&v| v == input.values[0]) {
+        return Err(Refusal::data(format!(
+            "the values never change (all {n} are {}): a logger stuck, or a column that is not the clock's?",
+            format_significant(input.values[0], 6)
+        )));
+    }
     let kind = input.kind.unwrap_or(LogKind::Offset);
+    if let Some(t) = input.train.as_ref().and_then(|t| t.arbor_turns_per_hour) {
+        if require_finite("arbor_turns_per_hour", t)? <= 0.0 {
+            return Err(Refusal::field(
+                "arbor_turns_per_hour",
+                format!("must be positive, got {}", format_significant(t, 6)),
+            ));
+        }
+    }
     for (name, value, low, high) in [
         ("beat", input.beat_s, 1e-6, 3600.0),
         ("flag_width", input.flag_width_m, 1e-6, 1.0),
@@ -464,7 +537,7 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
         Some(train) => train.arbors().ok_or_else(|| {
             Refusal::field(
                 "train",
-                "needs one pinion fewer than wheels, no count zero and the first arbor's turns positive",
+                "needs one pinion fewer than wheels and no count zero",
             )
         })?,
         None => Vec::new(),
@@ -715,17 +788,32 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
                 .collect(),
         );
     }
-    let steps: Vec<Vec<f64>> = input
-        .events_s
-        .iter()
-        .map(|&e| {
-            bins.centre
-                .iter()
-                .map(|&c| ((c + 0.5 * bin - e) / bin).clamp(0.0, 1.0))
-                .collect()
-        })
-        .filter(|c: &Vec<f64>| c.iter().any(|&v| v > 0.0) && c.iter().any(|&v| v < 1.0))
-        .collect();
+    // A step needs bins on both sides of it: at least two whole ones, or
+    // it cannot be told from the rate (at the log's start) or from one
+    // bin's noise (at its end).
+    let (first_centre, last_centre) = (bins.centre[0], bins.centre[m - 1]);
+    let mut steps: Vec<Vec<f64>> = Vec::new();
+    for &e in &input.events_s {
+        let reason = if !e.is_finite() || e < times[0] || e > times[n - 1] {
+            Some("outside the log")
+        } else if e < first_centre + 1.5 * bin || e > last_centre - 1.5 * bin {
+            Some("within two bins of the log's start or end: a step there cannot be told from the rate or from one bin's noise")
+        } else {
+            None
+        };
+        match reason {
+            Some(reason) => warnings.push(LogWarning::EventIgnored {
+                time_s: if e.is_finite() { e } else { 0.0 },
+                reason,
+            }),
+            None => steps.push(
+                bins.centre
+                    .iter()
+                    .map(|&c| ((c + 0.5 * bin - e) / bin).clamp(0.0, 1.0))
+                    .collect(),
+            ),
+        }
+    }
 
     // The temperature lag: the best time constant by likelihood with every
     // other term in. The search lags a coarse copy of the temperatures
@@ -1206,7 +1294,17 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
     })
     .collect();
 
-    let residual_rms = (current.residuals.iter().map(|r| r * r).sum::<f64>() / m as f64).sqrt();
+    // Weighted as the fit weights the bins: a bin of one sample (the
+    // log's last) counts as little as it holds.
+    let total_weight: f64 = bins.weight.iter().sum();
+    let residual_rms = (current
+        .residuals
+        .iter()
+        .zip(&bins.weight)
+        .map(|(r, w)| w * r * r)
+        .sum::<f64>()
+        / total_weight)
+        .sqrt();
     let per_bin = (0..m)
         .map(|i| {
             [
@@ -1249,6 +1347,7 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
         arbors,
         folds: periodic.folds,
         swing: periodic.swing,
+        beat_error_s: periodic.beat_error_s,
         per_bin,
         partials,
         weather_per_bin,
@@ -1323,6 +1422,25 @@ struct PeriodicFound {
     spectrum: Option<Spectrum>,
     folds: Vec<Fold>,
     swing: Option<Swing>,
+    beat_error_s: Option<f64>,
+}
+
+/// Takes the alternation of a series a beat out: each parity's mean
+/// moved to the whole series' mean.
+fn take_out_alternation(values: &mut [f64]) {
+    let (mut s, mut c) = ([0.0; 2], [0usize; 2]);
+    for (j, v) in values.iter().enumerate().filter(|(_, v)| v.is_finite()) {
+        s[j % 2] += v;
+        c[j % 2] += 1;
+    }
+    if c[0] == 0 || c[1] == 0 {
+        return;
+    }
+    let all = (s[0] + s[1]) / (c[0] + c[1]) as f64;
+    let shift = [s[0] / c[0] as f64 - all, s[1] / c[1] as f64 - all];
+    for (j, v) in values.iter_mut().enumerate() {
+        *v -= shift[j % 2];
+    }
 }
 
 /// The grid the spectrum and the folds read: at most this many points.
@@ -1396,15 +1514,38 @@ fn periodic(p: &Periodic) -> Result<PeriodicFound, Refusal> {
                 for (&slot, f) in slots.iter().zip(p.raw) {
                     by_beat[slot] = f * 86_400.0;
                 }
+                // The beat error alternates every beat: a pattern of every
+                // turn with an even count of beats, not a wheel's.
+                take_out_alternation(&mut by_beat);
                 folds(p.arbors, by_beat, &|j| j as f64 * half, half)
             }
         }
         _ => folds(p.arbors, rate.clone(), &|j| position[j], step),
     };
+    // Tick and tock: alternate half periods differ by twice the beat error.
+    let beat_error_s = p.half.map(|half| {
+        let (mut s, mut c) = ([0.0; 2], [0usize; 2]);
+        let mut parity = 0usize;
+        for i in 0..times.len() {
+            if i > 0 {
+                parity += ((times[i] - times[i - 1]) / half).round().max(1.0) as usize;
+            }
+            if p.raw[i].is_finite() {
+                s[parity % 2] += p.raw[i];
+                c[parity % 2] += 1;
+            }
+        }
+        if c[0] > 0 && c[1] > 0 {
+            0.5 * half * (s[0] / c[0] as f64 - s[1] / c[1] as f64).abs()
+        } else {
+            0.0
+        }
+    });
     Ok(PeriodicFound {
         spectrum,
         folds,
         swing: p.swing.clone(),
+        beat_error_s,
     })
 }
 

@@ -197,16 +197,31 @@ pub(crate) fn rates_to_bins(
     length: f64,
 ) -> Bins {
     let mut bins = empty(times.len());
+    // The samples' typical spacing: the time one sample stands for.
+    let stride = (times.len() / 10_000).max(1);
+    let mut gaps: Vec<f64> = times
+        .windows(2)
+        .step_by(stride)
+        .map(|w| w[1] - w[0])
+        .collect();
+    let spacing = if gaps.is_empty() {
+        length
+    } else {
+        let h = gaps.len() / 2;
+        *gaps.select_nth_unstable_by(h, f64::total_cmp).1
+    };
     for (a, b) in ranges(times, length, 1) {
         let n = (b - a) as f64;
         let tm = times[a..b].iter().sum::<f64>() / n;
         let total = durations.map_or(n, |d| d[a..b].iter().sum::<f64>());
         let weight = |i: usize| durations.map_or(1.0, |d| d[i]) / total;
         let mean = (a..b).map(|i| weight(i) * r[i]).sum::<f64>();
-        let span = if b - a > 1 {
-            (times[b - 1] - times[a]) * n / (n - 1.0)
-        } else {
-            length
+        // The time the bin's samples cover: a bin of one sample (the
+        // log's last, say) stands for one spacing, not a whole bin.
+        let span = match durations {
+            Some(_) => total,
+            None if b - a > 1 => (times[b - 1] - times[a]) * n / (n - 1.0),
+            None => spacing.min(length),
         };
         for i in a..b {
             bins.sample_weight[i] = weight(i);

@@ -79,6 +79,18 @@ pub fn swing(amplitude_deg: &[f64], gap: &dyn Fn(usize) -> bool) -> Option<Swing
     let threshold = centre + IMPULSE_SIGMAS * sigma.max(1e-12);
     let is_impulse: Vec<bool> = steps.iter().map(|s| s.1 > threshold && s.1 > 0.0).collect();
     let impulses = is_impulse.iter().filter(|&&b| b).count();
+    // The half swings from one impulse to the next: the median spacing
+    // of the impulses (a gap or a missed impulse does not move it).
+    let at: Vec<usize> = steps
+        .iter()
+        .zip(&is_impulse)
+        .filter(|(_, &imp)| imp)
+        .map(|(s, _)| s.0)
+        .collect();
+    let every = (at.len() >= 3).then(|| {
+        let mut d: Vec<f64> = at.windows(2).map(|w| (w[1] - w[0]) as f64).collect();
+        median(&mut d)
+    });
     // Stretches: runs of half swings joined by steps that are not
     // impulses (nor gaps).
     let mut joins = vec![false; ln.len()];
@@ -159,7 +171,7 @@ pub fn swing(amplitude_deg: &[f64], gap: &dyn Fn(usize) -> bool) -> Option<Swing
     Some(Swing {
         half_swings: finite.len(),
         impulses,
-        half_swings_per_impulse: (impulses >= 2).then(|| steps.len() as f64 / impulses as f64),
+        half_swings_per_impulse: every,
         q,
         q_standard_error: q_se,
         energy_scatter_ppm: (var / 2.0).sqrt() * 1e6,

@@ -95,7 +95,8 @@ pub struct FoldBin {
     pub rate_s_per_day: f64,
     /// Its standard error, s/day.
     pub standard_error_s_per_day: f64,
-    /// Samples in it.
+    /// Turns that reached it (each turn's mean there is one
+    /// observation).
     pub count: usize,
 }
 
@@ -115,8 +116,9 @@ pub struct Fold {
     /// The clock's time error within a turn that the pattern makes,
     /// largest minus smallest, s.
     pub time_error_peak_to_peak_s: f64,
-    /// Fisher's F of the bins' means against the scatter within them.
-    pub f_statistic: f64,
+    /// Fisher's F of the bins' means against the scatter within them
+    /// (`None`: no scatter within them).
+    pub f_statistic: Option<f64>,
     /// The chance a flat pattern (no wheel error) gives an F this large.
     pub p_value: f64,
     /// Clearly there: `p_value` under 0.1%.
@@ -134,7 +136,7 @@ pub fn fold(
     spacing: f64,
     period: f64,
     max_bins: usize,
-) -> Option<(Vec<FoldBin>, f64, f64, f64)> {
+) -> Option<(Vec<FoldBin>, Option<f64>, f64, f64)> {
     let window = (period / spacing).round() as usize;
     let n = values.len();
     if window < 4 || (n as f64) < 3.0 * window as f64 {
@@ -143,7 +145,24 @@ pub fn fold(
     // The centred running mean over one turn, from cumulative sums.
     let (sum, count) = super::series::cumulative(values);
     let k = window.min(max_bins);
+    // Each turn's mean in each bin is one observation: the samples within
+    // a turn are correlated (a random walk of the rate leaves them so
+    // even after the running mean), the turns much less.
     let (mut s1, mut s2, mut c) = (vec![0.0; k], vec![0.0; k], vec![0usize; k]);
+    let (mut turn_sum, mut turn_count) = (vec![0.0; k], vec![0usize; k]);
+    let mut current_turn = None;
+    let mut flush = |turn_sum: &mut [f64], turn_count: &mut [usize]| {
+        for b in 0..k {
+            if turn_count[b] > 0 {
+                let m = turn_sum[b] / turn_count[b] as f64;
+                s1[b] += m;
+                s2[b] += m * m;
+                c[b] += 1;
+            }
+            turn_sum[b] = 0.0;
+            turn_count[b] = 0;
+        }
+    };
     let half = window / 2;
     let last = n.saturating_sub(window - half);
     for (j, &v) in values.iter().enumerate().take(last).skip(half) {
@@ -156,12 +175,17 @@ pub fn fold(
             continue;
         }
         let detrended = v - (sum[b] - sum[a]) / m as f64;
-        let phase = (position(j) / period).rem_euclid(1.0);
-        let bin = ((phase * k as f64) as usize).min(k - 1);
-        s1[bin] += detrended;
-        s2[bin] += detrended * detrended;
-        c[bin] += 1;
+        let turns = position(j) / period;
+        let turn = turns.floor();
+        if current_turn != Some(turn) {
+            flush(&mut turn_sum, &mut turn_count);
+            current_turn = Some(turn);
+        }
+        let bin = ((turns.rem_euclid(1.0) * k as f64) as usize).min(k - 1);
+        turn_sum[bin] += detrended;
+        turn_count[bin] += 1;
     }
+    flush(&mut turn_sum, &mut turn_count);
     let total: usize = c.iter().sum();
     if c.iter().any(|&m| m < 2) || total <= k {
         return None;
@@ -184,12 +208,16 @@ pub fn fold(
         })
         .collect();
     let (d1, d2) = ((k - 1) as f64, (total - k) as f64);
-    let f = if within > 0.0 {
-        (between / d1) / (within / d2)
-    } else {
-        0.0
+    // No scatter at all: nothing to judge (a constant log); no scatter
+    // within the bins but some between: a pattern beyond doubt.
+    if within <= 0.0 && between <= 0.0 {
+        return None;
+    }
+    let f = (within > 0.0).then(|| (between / d1) / (within / d2));
+    let p = match f {
+        Some(f) => FisherSnedecor::new(d1, d2).map_or(1.0, |d| 1.0 - d.cdf(f)),
+        None => 0.0,
     };
-    let p = FisherSnedecor::new(d1, d2).map_or(1.0, |d| 1.0 - d.cdf(f));
     // The time error within a turn: the running sum of the pattern (its
     // mean taken out) over each bin's share of the turn.
     let mut error = 0.0;

@@ -48,6 +48,11 @@ pub enum Placement {
     RestsOn(usize),
 }
 
+/// How far a part's top may reach above the pivot and still hang from
+/// it, m: a dimension rounded to the micrometre, not a part through the
+/// pivot.
+pub const PIVOT_TOLERANCE_M: f64 = 1e-5;
+
 /// One part of a pendulum.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Part {
@@ -732,20 +737,17 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
                 message: "must be a finite number".into(),
             });
         }
-        // Nothing above the pivot or through it (a rod may hang from it).
-        if c - 0.5 * p.shape.height() < -1e-9 {
+        // Nothing above the pivot or through it (a rod may hang from it;
+        // a top within 10 µm of the pivot is a dimension rounded, not a
+        // part through it).
+        if c - 0.5 * p.shape.height() < -PIVOT_TOLERANCE_M {
             return Err(DesignError {
                 part: p.name.clone(),
                 field: "centre",
-                message: match -1e3 * (c - 0.5 * p.shape.height()) {
-                    above if above < 1e-3 => {
-                        "its top would reach the pivot; parts hang below it".to_string()
-                    }
-                    above => format!(
-                        "its top would be {} mm above the pivot; parts hang below it",
-                        crate::error::format_significant(above, 4)
-                    ),
-                },
+                message: format!(
+                    "its top would be {} mm above the pivot; parts hang below it",
+                    crate::error::format_significant(-1e3 * (c - 0.5 * p.shape.height()), 4)
+                ),
             });
         }
         out.push(c);

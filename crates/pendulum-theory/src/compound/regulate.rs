@@ -10,7 +10,8 @@ use crate::analysis::{require_finite, Refusal};
 use crate::error::format_significant;
 use serde::Serialize;
 
-/// The part moved when none is named.
+/// The part moved when none is named and the design has no thread:
+/// this, else the bob, else the heaviest part hung by its centre.
 pub const DEFAULT_PART: &str = "nut";
 /// Thread pitches taken, m (clock threads: 0.25 mm, M1, to a few mm).
 pub const PITCH_RANGE_M: (f64, f64) = (1e-5, 0.05);
@@ -124,18 +125,31 @@ pub fn regulate(
         return Err(Refusal::field("nut_divisions", "must be at least 1"));
     }
     let mut divisions = nut.divisions;
+    let mut moved_instead: Option<String> = None;
     let (length, shift, tray) = match pendulum {
         Regulated::Design(read, part) => {
             let design = &read.pendulum;
             let p = design.properties();
-            let part = part.as_deref().unwrap_or(DEFAULT_PART);
-            let index = design
-                .parts()
-                .iter()
-                .position(|q| q.name == part)
-                .ok_or_else(|| {
-                    Refusal::field("part", format!("the design has no part named '{part}'"))
-                })?;
+            let index = match part.as_deref() {
+                Some(part) => design
+                    .parts()
+                    .iter()
+                    .position(|q| q.name == part)
+                    .ok_or_else(|| {
+                        Refusal::field("part", format!("the design has no part named '{part}'"))
+                    })?,
+                // None named: the threaded part, the nut, the bob, else the
+                // heaviest part that rests on no other (a design need not
+                // have a nut to be regulated, by a tray or by its bob).
+                None => match (read.thread, default_part(design)) {
+                    (Some(t), _) => t.part,
+                    (None, Some((i, said))) => {
+                        moved_instead = said;
+                        i
+                    }
+                    (None, None) => return Err(Refusal::field("part", "the design has no parts")),
+                },
+            };
             // The design's own thread, when the part moved is its nut and
             // no other is given.
             if let Some(t) = read.thread.filter(|t| t.part == index) {
@@ -195,6 +209,29 @@ pub fn regulate(
         tray_mass_kg: tray.map(|t| t.1),
         warnings: crate::pendulum::length_warning(length)
             .into_iter()
+            .chain(moved_instead)
             .collect(),
     })
+}
+
+/// The part moved when none is named: [`DEFAULT_PART`], else the bob,
+/// else the heaviest part resting on no other; with the words that say
+/// so when it is not the nut.
+fn default_part(design: &super::CompoundPendulum) -> Option<(usize, Option<String>)> {
+    let parts = design.parts();
+    if let Some(i) = parts.iter().position(|q| q.name == DEFAULT_PART) {
+        return Some((i, None));
+    }
+    let i = parts.iter().position(|q| q.name == "bob").or_else(|| {
+        (0..parts.len())
+            .filter(|&i| matches!(parts[i].placement, super::Placement::Centre(_)))
+            .max_by(|&a, &b| parts[a].mass().total_cmp(&parts[b].mass()))
+    })?;
+    Some((
+        i,
+        Some(format!(
+            "the design has no part named '{DEFAULT_PART}': the advice moves the {} (name another with --part)",
+            parts[i].name
+        )),
+    ))
 }

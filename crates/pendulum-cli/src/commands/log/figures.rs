@@ -289,12 +289,11 @@ fn spectrum(r: &LogResult) -> Option<Figure> {
     )
     .light()];
     for line in &s.lines {
-        let verdict = if line.blended_with.is_some() {
-            "blended".to_string()
-        } else if line.seen {
-            "seen".to_string()
-        } else {
-            "not seen".to_string()
+        let verdict = match (line.seen, line.blended_with.is_some()) {
+            (true, true) => "seen, blended",
+            (true, false) => "seen",
+            (false, true) => "not seen, blended",
+            (false, false) => "not seen",
         };
         series.push(Series::dots(
             format!(

@@ -254,6 +254,7 @@ fn refused(r: &Refusal, file: &str, lines: &[u64], skip: usize) -> CliError {
             ("bph", "--bph"),
             ("gate_radius", "--gate-radius"),
             ("train", "--train"),
+            ("arbor_turns_per_hour", "--arbor-turns-per-hour"),
         ],
         &|at, reason| match at {
             Some((_, i)) => CliError::other(format!(
@@ -457,7 +458,10 @@ fn periodic(r: &LogResult) -> String {
                     },
                     l.signal_to_noise.map_or("–".into(), |x| num(x, 2)),
                     match (&l.blended_with, l.seen) {
-                        (Some(o), _) => format!("blended with {o} (a longer log parts them)"),
+                        (Some(o), true) => {
+                            format!("seen, blended with {o} (a longer log parts them)")
+                        }
+                        (Some(o), false) => format!("not above the noise (blended with {o})"),
                         (None, true) => "seen".into(),
                         (None, false) => "not above the noise".into(),
                     },
@@ -497,6 +501,12 @@ fn periodic(r: &LogResult) -> String {
         out.push_str(&format!(
             "Not folded: the {} (a turn needs 4 samples and the log 3 turns; a photogate's half periods resolve every wheel).\n",
             fast.join(", the ")
+        ));
+    }
+    if let Some(b) = r.beat_error_s {
+        out.push_str(&format!(
+            "Beat error {} ms: alternate half periods differ by twice it (taken out before the folds).\n",
+            num(b * 1e3, 3)
         ));
     }
     if let Some(w) = &r.swing {
@@ -579,6 +589,13 @@ fn warning(w: &LogWarning) -> String {
         } => format!(
             "{dropped} samples whose time did not advance left out (the first at {} s): a logger's repeated stamp, or files joined with an overlap",
             num(*first_time_s, 10)
+        ),
+        LogWarning::BeatsMissed { left_out } => format!(
+            "{left_out} half periods under half or over 1.5 times the typical one left out (a transit the gate missed, a stray trigger): the beats they span count as a gap"
+        ),
+        LogWarning::EventIgnored { time_s, reason } => format!(
+            "the event at {} s of the log is left out: {reason}",
+            num(*time_s, 10)
         ),
         LogWarning::PulsesIgnored => "the pulse widths are left aside: give --flag-width and --gate-radius to read the swing's amplitude, Q and steadiness from them".to_string(),
         LogWarning::TrainBeat { train_bph, log_bph } => format!(

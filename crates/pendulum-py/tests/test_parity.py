@@ -1555,6 +1555,9 @@ def _log_cases():
         "short": (t[:5], offset[:5], {}),
         "pressure_in_pa_as_hpa": (t, offset, {"pressure_pa": pressure_pa * 100}),
         "unsorted": (unsorted, offset, {}),
+        "constant": (t, np.full(n, 0.5), {}),
+        "half_periods_missed": (t, np.where(np.arange(n) % 37 == 5, 2 * half, half), {"kind": "half_periods"}),
+        "train_turns_zero": (t, offset, {"train": ([64, 60, 30], [8, 8]), "turns": 0.0}),
         "train": (t, offset, {"train": ([64, 60, 30], [8, 8])}),
         "train_half_periods": (t, half, {"kind": "half_periods", "train": ([15], [])}),
         "train_zero_teeth": (t, offset, {"train": ([64, 0, 30], [8, 8])}),
@@ -1597,4 +1600,7 @@ def test_clock_log(name, tmp_path):
         wheels, pinions = kw["train"]
         args += ["--train", ",".join(map(str, wheels)) + ":" + ",".join(map(str, pinions))]
         extra.update(wheels=wheels, pinions=pinions)
+        if "turns" in kw:
+            args += ["--arbor-turns-per-hour", cli_value(kw["turns"], "")]
+            extra.update(arbor_turns_per_hour=kw["turns"])
     check(args, lambda: pt.clock_log(t, values, kind=kind, **weather, **extra))

@@ -1425,19 +1425,24 @@ struct PeriodicFound {
     beat_error_s: Option<f64>,
 }
 
-/// Takes the alternation of a series a beat out: each parity's mean
-/// moved to the whole series' mean.
-fn take_out_alternation(values: &mut [f64]) {
+/// The mean of the finite values at even and at odd indices (`None`
+/// when either parity has none).
+fn parity_means(values: impl Iterator<Item = (usize, f64)>) -> Option<[f64; 2]> {
     let (mut s, mut c) = ([0.0; 2], [0usize; 2]);
-    for (j, v) in values.iter().enumerate().filter(|(_, v)| v.is_finite()) {
+    for (j, v) in values.filter(|(_, v)| v.is_finite()) {
         s[j % 2] += v;
         c[j % 2] += 1;
     }
-    if c[0] == 0 || c[1] == 0 {
+    (c[0] > 0 && c[1] > 0).then(|| [s[0] / c[0] as f64, s[1] / c[1] as f64])
+}
+
+/// Takes the alternation of a series a beat out: each parity's mean
+/// moved to the mean of the two.
+fn take_out_alternation(values: &mut [f64]) {
+    let Some(m) = parity_means(values.iter().copied().enumerate()) else {
         return;
-    }
-    let all = (s[0] + s[1]) / (c[0] + c[1]) as f64;
-    let shift = [s[0] / c[0] as f64 - all, s[1] / c[1] as f64 - all];
+    };
+    let shift = [0.5 * (m[0] - m[1]), 0.5 * (m[1] - m[0])];
     for (j, v) in values.iter_mut().enumerate() {
         *v -= shift[j % 2];
     }
@@ -1496,21 +1501,27 @@ fn periodic(p: &Periodic) -> Result<PeriodicFound, Refusal> {
         .collect();
     named.extend(p.arbors.iter().map(|a| (a.name.clone(), a.period_s)));
     let spectrum = Some(spectrum(&detrended(&rate), step, &named)).filter(|s| !s.points.is_empty());
-    // Half periods fold by the count of beats: each on its beat's slot.
-    let folds = match p.half {
-        Some(half) if !p.arbors.is_empty() => {
-            let mut index = 0usize;
-            let mut slots = Vec::with_capacity(times.len());
-            for i in 0..times.len() {
+    // Half periods are placed on their beat's slot (a gap advances the
+    // count by the beats it spans): the folds read them by the count,
+    // the beat error by its parity.
+    let slots: Option<Vec<usize>> = p.half.map(|half| {
+        let mut index = 0usize;
+        (0..times.len())
+            .map(|i| {
                 if i > 0 {
                     index += ((times[i] - times[i - 1]) / half).round().max(1.0) as usize;
                 }
-                slots.push(index);
-            }
-            if index > 4 * times.len() {
+                index
+            })
+            .collect()
+    });
+    let folds = match (p.half, &slots) {
+        (Some(half), Some(slots)) if !p.arbors.is_empty() => {
+            let last = slots.last().copied().unwrap_or(0);
+            if last > 4 * times.len() {
                 Vec::new()
             } else {
-                let mut by_beat = vec![f64::NAN; index + 1];
+                let mut by_beat = vec![f64::NAN; last + 1];
                 for (&slot, f) in slots.iter().zip(p.raw) {
                     by_beat[slot] = f * 86_400.0;
                 }
@@ -1523,23 +1534,9 @@ fn periodic(p: &Periodic) -> Result<PeriodicFound, Refusal> {
         _ => folds(p.arbors, rate.clone(), &|j| position[j], step),
     };
     // Tick and tock: alternate half periods differ by twice the beat error.
-    let beat_error_s = p.half.map(|half| {
-        let (mut s, mut c) = ([0.0; 2], [0usize; 2]);
-        let mut parity = 0usize;
-        for i in 0..times.len() {
-            if i > 0 {
-                parity += ((times[i] - times[i - 1]) / half).round().max(1.0) as usize;
-            }
-            if p.raw[i].is_finite() {
-                s[parity % 2] += p.raw[i];
-                c[parity % 2] += 1;
-            }
-        }
-        if c[0] > 0 && c[1] > 0 {
-            0.5 * half * (s[0] / c[0] as f64 - s[1] / c[1] as f64).abs()
-        } else {
-            0.0
-        }
+    let beat_error_s = p.half.zip(slots.as_ref()).map(|(half, slots)| {
+        parity_means(slots.iter().copied().zip(p.raw.iter().copied()))
+            .map_or(0.0, |m| 0.5 * half * (m[0] - m[1]).abs())
     });
     Ok(PeriodicFound {
         spectrum,

@@ -1274,6 +1274,11 @@ pub struct ClockArgs {
     /// --design, moving the rate by its coefficients), linear between rows.
     #[arg(long, value_name = "FILE.csv", requires = "duration")]
     pub drive_file: Option<InputPath>,
+    /// The gas the --drive-file's pressure_hpa is of: air, nitrogen or
+    /// helium (a tank's pressure schedule) [default: air]. The pressure
+    /// moves the rate (buoyancy, carried gas) and the damping, so the arc.
+    #[arg(long, value_name = "GAS", requires = "drive_file")]
+    pub gas: Option<String>,
     /// With --duration: write the rows (time_s,beats,amplitude_rad,rate_s_per_day,time_error_s,drive_factor).
     #[arg(long, value_name = "FILE.csv", requires = "duration")]
     pub swings: Option<OutputPath>,
@@ -1318,8 +1323,21 @@ pub struct DesignArgs {
     pub temperature: Option<Celsius>,
     #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("The temperature the clock was regulated at, °C", sheet::DEFAULT_TEMPERATURE_C))]
     pub regulated_at: Option<Celsius>,
-    #[arg(long, allow_hyphen_values = true, value_name = "H", help = with_default("Relative humidity, %", sheet::DEFAULT_HUMIDITY * 100.0))]
+    #[arg(long, allow_hyphen_values = true, value_name = "H", help = with_default("Relative humidity, % (air only)", sheet::DEFAULT_HUMIDITY * 100.0))]
     pub humidity: Option<Percent>,
+    /// The gas it swings in: air, nitrogen or helium, 1 Pa to 1.2 bar
+    /// (a Shortt tank: --gas nitrogen --pressure 27hPa) [default: air].
+    #[arg(long, value_name = "GAS")]
+    pub gas: Option<String>,
+    /// The Q its pivot or suspension and escapement alone would give (in
+    /// a vacuum), to add to the gas's damping [default: the gas alone].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub pivot_q: Option<f64>,
+    /// The semi-arc it swings at this pressure: gives the arc a drive
+    /// keeps at other pressures, the circular error's share of the
+    /// barometric error, and the arc at which the two cancel.
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub amplitude: Option<Angle>,
     #[command(flatten)]
     pub gravity: GravityArgs,
     /// Print one JSON object.

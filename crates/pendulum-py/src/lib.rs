@@ -728,6 +728,7 @@ type RunArgs = (
     Option<(Vec<f64>, Vec<f64>)>,
     Option<Weather>,
     bool,
+    Option<String>,
 );
 
 /// The weather as the Python package passes it: times, and temperatures
@@ -788,6 +789,10 @@ fn clock<'py>(
     let refused = |r: Refusal| PyValueError::new_err(r.to_string());
     let schedule =
         |s: Option<(Vec<f64>, Vec<f64>)>| s.map(|(time, value)| Schedule { time, value });
+    let run_gas = match run.as_ref().and_then(|r| r.6.as_deref()) {
+        Some(name) => Some(pendulum_theory::gas::Gas::parse(name).map_err(refused)?),
+        None => None,
+    };
     let isochronism = match (drive_factor, drive_range) {
         (Some(f), _) => Some(DriveFactors::List(f)),
         (None, Some((from, to))) => Some(DriveFactors::Range {
@@ -823,20 +828,23 @@ fn clock<'py>(
         impulse_angle,
         every_beats: every_beats.map(count::<u64>),
         isochronism,
-        run: run.map(|(duration, every, drive, rate, weather, force)| RunInput {
-            duration,
-            every,
-            drive_schedule: schedule(drive),
-            weather: weather.map(|(time, temperature_c, pressure_pa)| {
-                pendulum_theory::clock::analysis::Weather {
-                    time,
-                    temperature_c,
-                    pressure_pa,
-                }
-            }),
-            rate_schedule: schedule(rate),
-            force,
-        }),
+        run: run.map(
+            |(duration, every, drive, rate, weather, force, _)| RunInput {
+                duration,
+                every,
+                drive_schedule: schedule(drive),
+                weather: weather.map(|(time, temperature_c, pressure_pa)| {
+                    pendulum_theory::clock::analysis::Weather {
+                        time,
+                        temperature_c,
+                        pressure_pa,
+                    }
+                }),
+                rate_schedule: schedule(rate),
+                force,
+                gas: run_gas,
+            },
+        ),
     };
     let mut rows = Columns::default();
     let result = py.detach(|| analyse(&input, &mut rows));
@@ -1105,7 +1113,8 @@ fn design_of(parts: &str) -> PyResult<pendulum_theory::compound::description::De
 
 /// A design's datasheet (the CLI's `design`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (parts, g, pressure, temperature, humidity, regulated_at))]
+#[pyo3(signature = (parts, g, pressure, temperature, humidity, regulated_at, gas, pivot_q, amplitude))]
+#[allow(clippy::too_many_arguments)]
 fn design(
     parts: &str,
     g: Option<f64>,
@@ -1113,9 +1122,16 @@ fn design(
     temperature: Option<f64>,
     humidity: Option<f64>,
     regulated_at: Option<f64>,
+    gas: Option<&str>,
+    pivot_q: Option<f64>,
+    amplitude: Option<f64>,
 ) -> PyResult<String> {
     use pendulum_theory::compound::datasheet::{datasheet, Air};
     let design = design_of(parts)?;
+    let gas = gas
+        .map(pendulum_theory::gas::Gas::parse)
+        .transpose()
+        .map_err(|r| PyValueError::new_err(r.to_string()))?;
     answer(datasheet(
         &design,
         g,
@@ -1124,6 +1140,9 @@ fn design(
             temperature_c: temperature,
             humidity,
             regulated_at_c: regulated_at,
+            gas,
+            pivot_q,
+            amplitude_rad: amplitude,
         },
     ))
 }

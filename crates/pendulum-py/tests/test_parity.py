@@ -1193,10 +1193,20 @@ DESIGN = {
     "negative_diameter": ([ROD, {**BOB, "diameter": -0.1}], {}),
     "rests_on_nothing": ([ROD, {k: v for k, v in BOB.items() if k != "centre"} |
                           {"rests_on": "nut"}], {}),
+    "shortt_tank": ([ROD, BOB], {"gas": "nitrogen", "pressure": 2700.0, "humidity": 0.0,
+                                 "amplitude": 0.026, "pivot_q": 50000.0}),
+    "helium_low": ([ROD, BOB], {"gas": "helium", "pressure": 1.0}),
+    "arc_in_air": ([ROD, BOB, NUT], {"amplitude": 0.035}),
+    "unknown_gas": ([ROD, BOB], {"gas": "argon"}),
+    "helium_humid": ([ROD, BOB], {"gas": "helium", "humidity": 0.5}),
+    "pivot_q_zero": ([ROD, BOB], {"pivot_q": 0.0}),
+    "arc_too_wide": ([ROD, BOB], {"amplitude": 1.5}),
+    "pressure_vacuum": ([ROD, BOB], {"pressure": 0.1}),
 }
 DESIGN_FLAGS = {"g": ("--g", 1.0), "pressure": ("--pressure", 0.01),
                 "temperature": ("--temperature", 1.0), "humidity": ("--humidity", 100.0),
-                "regulated_at": ("--regulated-at", 1.0)}
+                "regulated_at": ("--regulated-at", 1.0), "gas": ("--gas", None),
+                "pivot_q": ("--pivot-q", 1.0), "amplitude": ("--amplitude", "rad")}
 FLAG.update({"humidity": "--humidity", "regulated_at": "--regulated-at"})
 
 
@@ -1208,7 +1218,12 @@ def test_design(name, tmp_path):
     args = ["design", str(path), "--json"]
     for k, v in kw.items():
         flag, scale = DESIGN_FLAGS[k]
-        args += [flag, repr(v * scale)]
+        if scale is None:
+            args += [flag, v]
+        elif isinstance(scale, str):
+            args += [flag, f"{v!r}{scale}"]
+        else:
+            args += [flag, repr(v * scale)]
     check(args, lambda: pt.design(parts, **kw))
 
 

@@ -12,13 +12,13 @@
 //! what its water's lower molar mass gives.
 
 /// Molar gas constant, J/(mol K) (CIPM-2007's value).
-const R: f64 = 8.314_472;
+pub(crate) const R: f64 = 8.314_472;
 /// Molar mass of water, kg/mol.
 const M_V: f64 = 18.015_28e-3;
 
 /// The molar mass of dry air with a mole fraction `x_co2` of carbon
 /// dioxide, kg/mol (CIPM-2007, eq. A1.2 with the oxygen it replaces).
-fn dry_air_molar_mass(x_co2: f64) -> f64 {
+pub(crate) fn dry_air_molar_mass(x_co2: f64) -> f64 {
     (28.965_46 + 12.011 * (x_co2 - 0.0004)) * 1e-3
 }
 
@@ -38,13 +38,30 @@ pub fn air_density(p: f64, t: f64, h: f64) -> f64 {
     {
         return f64::NAN;
     }
+    cipm_density(p, t, h)
+}
+
+/// The saturation vapour pressure of water over a flat surface, Pa, at
+/// `t` °C (CIPM-2007, eq. A1.6, after Davis 1992).
+pub(crate) fn saturation_vapour_pressure(t: f64) -> f64 {
     let tk = t + 273.15;
-    // Saturation vapour pressure (eq. A1.6).
-    let psv =
-        (1.237_884_7e-5 * tk * tk - 1.912_131_6e-2 * tk + 33.937_110_47 - 6.343_164_5e3 / tk).exp();
-    // Enhancement factor (eq. A1.7).
+    (1.237_884_7e-5 * tk * tk - 1.912_131_6e-2 * tk + 33.937_110_47 - 6.343_164_5e3 / tk).exp()
+}
+
+/// The mole fraction of water vapour in air at `p` Pa, `t` °C and
+/// relative humidity `h` (CIPM-2007, eqs. A1.6 and A1.7).
+pub(crate) fn vapour_fraction(p: f64, t: f64, h: f64) -> f64 {
     let f = 1.000_62 + 3.14e-8 * p + 5.6e-7 * t * t;
-    let xv = h * f * psv / p;
+    h * f * saturation_vapour_pressure(t) / p
+}
+
+/// The CIPM-2007 density without its range check: its compressibility
+/// terms are the first terms of a virial expansion in the pressure, which
+/// vanish as the pressure falls, so below 600 hPa it tends to the ideal
+/// gas it then is (see [`crate::gas`]).
+pub(crate) fn cipm_density(p: f64, t: f64, h: f64) -> f64 {
+    let tk = t + 273.15;
+    let xv = vapour_fraction(p, t, h);
     // Compressibility (eq. A1.8).
     let z = 1.0
         - p / tk

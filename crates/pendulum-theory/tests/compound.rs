@@ -1,8 +1,8 @@
 //! The real pendulum against closed forms computed here and published
 //! figures (each test names its source).
 
-use pendulum_theory::air::air_density;
 use pendulum_theory::compound::{CompoundPendulum, Material, Part, Placement, Shape};
+use pendulum_theory::gas::{Gas, GasState};
 use pendulum_theory::train::beats_per_hour;
 
 fn part(name: &str, shape: Shape, material: &str, placement: Placement) -> Part {
@@ -147,17 +147,21 @@ fn buoyancy_and_the_barometer() {
         Placement::Centre(0.99),
     )])
     .unwrap();
-    let b = bob.rate_in_air(1.2).buoyancy;
+    let air = |p: f64| GasState::new(Gas::Air, p, 20.0, 0.5).unwrap();
+    let g = 9.80665;
+    // 1.2 kg/m³ is air at 1,014 hPa, 20 °C and 50%.
+    assert!((air(101_420.0).density() - 1.2).abs() < 1e-3);
+    let b = bob.in_gas(&air(101_420.0), g).rates.buoyancy;
     assert!((b + 6.1).abs() < 0.05, "{b}");
     // The barometric coefficient of a brass-bob seconds pendulum, per inch
     // of mercury (3386.39 Pa) at 20 °C and 50%: Matthys measured 0.2 to
     // 0.4 s/day per inHg on real regulators; buoyancy alone is 0.20.
     let clock = regulator();
     let inhg = 3386.39;
-    let rho = |p: f64| air_density(p, 20.0, 0.5);
     let (low, high) = (101_325.0 - inhg / 2.0, 101_325.0 + inhg / 2.0);
-    let total = clock.rate_in_air(rho(high)).total - clock.rate_in_air(rho(low)).total;
-    let buoyancy = clock.rate_in_air(rho(high)).buoyancy - clock.rate_in_air(rho(low)).buoyancy;
+    let rates = |p: f64| clock.in_gas(&air(p), g).rates;
+    let total = rates(high).total - rates(low).total;
+    let buoyancy = rates(high).buoyancy - rates(low).buoyancy;
     eprintln!("per inHg: total {total:.3}, buoyancy {buoyancy:.3} s/day");
     assert!((-0.5..=-0.2).contains(&total), "{total}");
     assert!((buoyancy + 0.20).abs() < 0.02, "{buoyancy}");

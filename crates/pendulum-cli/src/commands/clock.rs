@@ -185,6 +185,12 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
                 weather,
                 rate_schedule: None,
                 force: args.force,
+                gas: args
+                    .gas
+                    .as_deref()
+                    .map(pendulum_theory::gas::Gas::parse)
+                    .transpose()
+                    .map_err(|e| super::common::refused(&e))?,
             })
         }
         None => None,
@@ -444,6 +450,9 @@ fn render_text(r: &ClockResult, swings_file: Option<&str>) -> String {
         );
         if let Some(f) = swings_file {
             o.row("Written", f.to_string());
+        }
+        for w in &run.warnings {
+            o.row("WARNING", w.clone());
         }
         text.push('\n');
         text.push_str(&o.render());

@@ -219,8 +219,9 @@ fn three_days(design: &str, path: &std::path::Path, text: &str) -> f64 {
 
 /// A long run of a design through a warm spell: 10 °C warmer from the
 /// first day on moves the rate by ten times the design's temperature
-/// coefficient (`design` gives it on its own), so after three days the
-/// clock is 2 × 10 × coefficient seconds off the same run at constant
+/// coefficient (`design` gives it on its own) and by the thinner air's
+/// effect (the pressure held), so after three days the
+/// clock is 2 × that many seconds off the same run at constant
 /// temperature (within 1%). Without a design the temperature column is
 /// refused.
 #[test]
@@ -233,11 +234,20 @@ fn a_warm_spell() {
         &json(&["design", &design]),
         "temperature_coefficient_s_per_day_per_c",
     );
+    // The room's air at constant pressure thins as it warms: the design's
+    // air effect at 30 °C less at 20 °C.
+    let air = |t: &str| {
+        f(
+            &json(&["design", &design, "--temperature", t]),
+            "air_rate_s_per_day",
+        )
+    };
+    let thinner = air("30") - air("20");
     let dir = tempfile::tempdir().unwrap();
     let error_after = |text: &str| three_days(&design, &dir.path().join("weather.csv"), text);
     let steady = error_after("time_s,temperature_c\n0,20\n");
     let warm = error_after("time_s,temperature_c\n0,20\n86400,20\n86401,30\n");
-    let expected = 2.0 * 10.0 * coefficient;
+    let expected = 2.0 * (10.0 * coefficient + thinner);
     assert!(
         ((warm - steady) / expected - 1.0).abs() < 0.01,
         "{} against {expected}",
@@ -375,4 +385,59 @@ fn drive_files_as_people_write_them() {
         "--drive-file",
     );
     assert!(e.contains("'f' is not a unit of temperature"), "{e}");
+}
+
+/// A Shortt-like tank whose nitrogen leaks from 27 to 60 hPa: the gas damps
+/// more, so an impulse clock (the same energy every impulse, so its arc
+/// squared goes as Q for a linearly damped swing) settles at
+/// sqrt(Q₆₀/Q₂₇) of its arc, with Q at each pressure the given Q at 27 hPa
+/// (of which `design` says the gas takes `q_gas`) and the gas's share
+/// there changed to the design's `q_gas` at 60 hPa; within 0.5% (the
+/// circular error's and the impulse's small departures from that law).
+#[test]
+fn a_tank_that_leaks_damps_the_arc() {
+    let design = format!(
+        "{}/../../examples/seconds-steel-brass.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let q_gas = |p: &str| {
+        f(
+            &json(&["design", &design, "--gas", "nitrogen", "--pressure", p]),
+            "q_gas",
+        )
+    };
+    let (q27, q60) = (q_gas("27"), q_gas("60"));
+    let given = 20_000.0;
+    let pivot = 1.0 / (1.0 / given - 1.0 / q27);
+    let later = 1.0 / (1.0 / pivot + 1.0 / q60);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("tank.csv");
+    std::fs::write(&path, "time_s,pressure_hpa\n0,27\n86400,27\n86401,60\n").unwrap();
+    let v = json(&[
+        "clock",
+        "--design",
+        &design,
+        "--escapement",
+        "impulse",
+        "--drive",
+        "5uJ",
+        "--q",
+        "20000",
+        "--duration",
+        "4days",
+        "--every",
+        "1h",
+        "--drive-file",
+        path.to_str().unwrap(),
+        "--gas",
+        "nitrogen",
+    ]);
+    let start = f(&v["steady"], "amplitude_rad");
+    let end = f(&v["long_run"], "final_amplitude_rad");
+    let expected = (later / given).sqrt();
+    assert!(
+        ((end / start) / expected - 1.0).abs() < 0.005,
+        "arc ratio {} against {expected}",
+        end / start
+    );
 }

@@ -233,9 +233,21 @@ fn the_datasheet() {
             "design",
             &example("seconds-steel-brass.toml"),
             "--pressure",
-            "5",
+            "0.5Pa",
         ],
         "--pressure",
+    );
+    // A pressure the air cannot hold the humidity at: refused, naming it.
+    refuses(
+        &[
+            "design",
+            &example("seconds-steel-brass.toml"),
+            "--pressure",
+            "5",
+            "--humidity",
+            "80",
+        ],
+        "--humidity",
     );
 }
 

@@ -768,6 +768,29 @@ fn examples() -> Vec<(&'static str, Check)> {
             },
         ),
         (
+            "pendulum design examples/seconds-steel-brass.toml --amplitude 2deg",
+            |r| {
+                // A brass-bob regulator's air: Q of tens of thousands,
+                // and the arc's circular error cancels the barometric
+                // error at a few degrees (Westminster's was 2°45').
+                let q = r.number("Damping");
+                assert!((10_000.0..100_000.0).contains(&q), "{q}");
+                let arc = r.number("Cancelling arc");
+                assert!((2.0..5.0).contains(&arc), "{arc}");
+                r.says("At 27 hPa");
+                r.says("semi-arc 2° (circular error -6.58 s/day): 0 s/day against here");
+            },
+        ),
+        (
+            "pendulum design examples/seconds-steel-brass.toml --gas nitrogen --pressure 27hPa --pivot-q 50000 --amplitude 1.5deg",
+            |r| {
+                r.says("Gas (nitrogen)");
+                r.says("the pivot's Q 50000");
+                // In the tank the gas damps far less than in air.
+                assert!(r.number("Damping") > 100_000.0);
+            },
+        ),
+        (
             "pendulum period --design examples/seconds-steel-brass.toml --amplitude 2",
             |r| {
                 let l = r.number("Length");

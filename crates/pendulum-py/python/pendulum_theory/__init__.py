@@ -418,7 +418,7 @@ def clock(
 
 
 def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedule=None,
-              weather=None, force=False, **clock_keywords):
+              weather=None, gas=None, force=False, **clock_keywords):
     """A long run of the clock (the CLI's ``clock --duration``), started in
     its steady state and regulated to it: a row at every turning point, or
     every ``every`` s (then many beats per step: a year in a fraction of a
@@ -444,7 +444,7 @@ def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedul
     climate = None if weather is None else (
         column(weather[0]), column(weather[1]), column(weather[2] if len(weather) > 2 else None))
     run = (float(duration), _number(every), pairs(drive_schedule), pairs(rate_schedule),
-           climate, bool(force))
+           climate, bool(force), _text(gas))
     result, columns = _clock(length, run=run, **clock_keywords)
     names = ["time_s", "beats", "amplitude_rad", "rate_s_per_day", "time_error_s", "drive_factor"]
     return dict(zip(names, columns)), result
@@ -585,16 +585,20 @@ def _parts(parts):
 
 
 def design(parts, *, g=None, pressure=None, temperature=None, humidity=None,
-           regulated_at=None):
+           regulated_at=None, gas=None, pivot_q=None, amplitude=None):
     """The command's ``design`` (the same library call): a pendulum of
     ``parts`` (dicts with the design file's fields: name, shape,
     material, length, diameter, ..., centre or rests_on; sizes as numbers
-    in metres and kilograms) in air at ``pressure`` Pa, ``temperature`` °C
-    and relative ``humidity`` (0 to 1), regulated at ``regulated_at`` °C.
-    Returns its ``--json`` object as a dict (without ``file``)."""
+    in metres and kilograms) in ``gas`` ("air", "nitrogen" or "helium",
+    default air) at ``pressure`` Pa, ``temperature`` °C and relative
+    ``humidity`` (0 to 1, air only), regulated at ``regulated_at`` °C;
+    ``pivot_q`` the Q of its pivot's own losses and ``amplitude`` the
+    semi-arc (rad) it swings here. Returns its ``--json`` object as a dict
+    (without ``file``)."""
     return _json.loads(_native.design(_parts(parts), _number(g), _number(pressure),
                                       _number(temperature), _number(humidity),
-                                      _number(regulated_at)))
+                                      _number(regulated_at), _text(gas), _number(pivot_q),
+                                      _number(amplitude)))
 
 
 def regulate(rate, *, length=None, parts=None, part=None, nut_pitch=None, nut_tpi=None,

@@ -112,6 +112,7 @@ def clock_run(
     drive_schedule: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = ...,
     rate_schedule: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = ...,
     weather: Any = ...,
+    gas: Any = ...,
     force: Any = ...,
     **clock_keywords: Any,
 ) -> Tuple[Dict[str, npt.NDArray[np.float64]], Dict[str, Any]]: ...
@@ -186,6 +187,9 @@ def design(
     temperature: Any = ...,
     humidity: Any = ...,
     regulated_at: Any = ...,
+    gas: Any = ...,
+    pivot_q: Any = ...,
+    amplitude: Any = ...,
 ) -> Dict[str, Any]: ...
 def regulate(
     rate: Any,

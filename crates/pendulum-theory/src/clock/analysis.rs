@@ -7,10 +7,10 @@
 //! the weather's effect on the rate live here and nowhere else.
 
 use super::escapement::spec::{Drive, Kind, Spec};
-use super::long_run::{period_factor, piecewise_linear, run, Ending, LongRun, Row};
+use super::long_run::{period_factor, piecewise_linear, run_with_damping, Ending, LongRun, Row};
 use super::plan::{check_schedule, plan_run, RunPlan, MAX_RATE_S_PER_DAY};
 use super::{Clock, ClockError, HalfSwingMethod, Steady};
-use crate::air::{PRESSURE_RANGE_PA, TEMPERATURE_RANGE_C};
+use crate::air::TEMPERATURE_RANGE_C;
 use crate::analysis::{require_finite, require_finite_sample, Refusal};
 use crate::compound::CompoundPendulum;
 use crate::error::format_significant;
@@ -104,6 +104,9 @@ pub struct RunInput {
     pub weather: Option<Weather>,
     /// A rate change from outside, s/day, positive gaining.
     pub rate_schedule: Option<Schedule>,
+    /// The gas the weather's pressure is of (default air; nitrogen or
+    /// helium for a tank whose pressure is the schedule).
+    pub gas: Option<crate::gas::Gas>,
     /// Run what is estimated beyond a few seconds of computing anyway.
     pub force: bool,
 }
@@ -207,7 +210,7 @@ pub struct IsochronismPoint {
 }
 
 /// How a long run went.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct RunSummary {
     /// Time run, s (the last row's).
     pub duration_s: f64,
@@ -229,6 +232,9 @@ pub struct RunSummary {
     pub multi_beat_steps: u64,
     /// The period the clock was regulated to at the start, s.
     pub nominal_period_s: f64,
+    /// What to check.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
 }
 
 /// A clock's analysis.
@@ -488,9 +494,10 @@ pub fn drive_factors(factors: &DriveFactors) -> Result<Vec<f64>, Refusal> {
 }
 
 /// Checks the weather's columns: one value per time, each within the range
-/// where the air's density is known (CIPM-2007).
+/// where the gas's properties are known ([`crate::gas`]: -20 to 60 °C, 1 Pa
+/// to 1.2 bar).
 fn check_weather(w: &Weather) -> Result<(), Refusal> {
-    let (t, p) = (TEMPERATURE_RANGE_C, PRESSURE_RANGE_PA);
+    let (t, p) = (TEMPERATURE_RANGE_C, crate::gas::PRESSURE_RANGE_PA);
     let columns = [
         (
             "temperature_c",
@@ -498,7 +505,7 @@ fn check_weather(w: &Weather) -> Result<(), Refusal> {
             t,
             1.0,
             format!(
-                "{} to {} °C, where the air's density is known (CIPM-2007)",
+                "{} to {} °C, where the gas's properties are known",
                 t.0, t.1
             ),
         ),
@@ -507,7 +514,7 @@ fn check_weather(w: &Weather) -> Result<(), Refusal> {
             &w.pressure_pa,
             p,
             100.0,
-            format!("{} to {} hPa", p.0 / 100.0, p.1 / 100.0),
+            format!("{} Pa to {} hPa", p.0, p.1 / 100.0),
         ),
     ];
     for (name, column, range, per_unit, words) in columns {
@@ -527,24 +534,84 @@ fn check_weather(w: &Weather) -> Result<(), Refusal> {
     Ok(())
 }
 
-/// The rate change the weather makes, s/day, at each of its times,
-/// against its first row (where the clock was regulated), by the design's
-/// temperature coefficient and its barometric coefficient at the first
-/// row's weather.
-fn weather_rates(design: &CompoundPendulum, w: &Weather) -> Vec<f64> {
+/// What the weather does to a clock with a design, at each of its times
+/// against its first row (where the clock was regulated).
+struct WeatherEffect {
+    /// The rate change, s/day: the design's temperature coefficient times
+    /// the temperature's change, and the gas's effect (buoyancy and
+    /// carried gas, [`CompoundPendulum::in_gas`]) at the row's pressure and
+    /// temperature less at the first row's.
+    rates: Vec<f64>,
+    /// The factor on the clock's Q: the gas's damping at the row's
+    /// pressure against the first row's, with the rest of the losses (the
+    /// given Q less the gas's share at the first row) held.
+    q_factors: Vec<f64>,
+    /// What to check.
+    warnings: Vec<String>,
+}
+
+/// The weather's effect on `design` in `gas` (the first row's pressure
+/// and temperature taken for the composition: air of 50% humidity at
+/// 1,013.25 hPa pumped to that pressure) for a clock of total Q `q` at the
+/// first row.
+fn weather_effect(
+    design: &CompoundPendulum,
+    w: &Weather,
+    gas: crate::gas::Gas,
+    q: f64,
+    g: f64,
+) -> Result<WeatherEffect, Refusal> {
+    use crate::gas::{Gas, GasState};
     let first = |c: &Option<Vec<f64>>| c.as_ref().and_then(|v| v.first().copied());
     let (t0, p0) = (
         first(&w.temperature_c).unwrap_or(REFERENCE_WEATHER.0),
         first(&w.pressure_pa).unwrap_or(REFERENCE_WEATHER.1),
     );
+    let humidity = if gas == Gas::Air {
+        REFERENCE_WEATHER.2 * (p0 / REFERENCE_WEATHER.1).min(1.0)
+    } else {
+        0.0
+    };
+    let gas0 = GasState::new(gas, p0, t0, humidity)?;
+    let at = |c: &Option<Vec<f64>>, i: usize, c0: f64| c.as_ref().map_or(c0, |v| v[i]);
     let per_c = design.temperature_coefficient();
-    let per_pa = design.pressure_coefficient(p0, t0, REFERENCE_WEATHER.2) / 100.0;
-    (0..w.time.len())
-        .map(|i| {
-            let at = |c: &Option<Vec<f64>>, c0: f64| c.as_ref().map_or(0.0, |v| v[i] - c0);
-            per_c * at(&w.temperature_c, t0) + per_pa * at(&w.pressure_pa, p0)
-        })
-        .collect()
+    let here = design.in_gas(&gas0, g);
+    let q_gas0 = here.q;
+    let mut warnings = Vec::new();
+    // The losses that are not the gas's, as a Q.
+    let pivot = if q < q_gas0 {
+        Some(1.0 / (1.0 / q - 1.0 / q_gas0))
+    } else {
+        warnings.push(format!(
+            "the Q given ({}) is above what the gas alone allows this design ({}): the \
+             pressure's change of the damping is taken as the gas's alone",
+            format_significant(q, 5),
+            format_significant(q_gas0, 5)
+        ));
+        None
+    };
+    let mut rates = Vec::with_capacity(w.time.len());
+    let mut q_factors = Vec::with_capacity(w.time.len());
+    for i in 0..w.time.len() {
+        let (t, p) = (at(&w.temperature_c, i, t0), at(&w.pressure_pa, i, p0));
+        let there = design.in_gas(
+            &GasState {
+                temperature_c: t,
+                ..gas0.at_pressure(p)
+            },
+            g,
+        );
+        rates.push(per_c * (t - t0) + there.rates.total - here.rates.total);
+        q_factors.push(match pivot {
+            Some(qp) => 1.0 / (1.0 / qp + 1.0 / there.q) / q,
+            None => there.q / q_gas0,
+        });
+    }
+    Ok(WeatherEffect {
+        rates,
+        q_factors,
+        warnings,
+    })
 }
 
 /// The analysis: builds the clock, finds its steady state at the drive
@@ -632,6 +699,8 @@ fn long(
         0.0..=f64::MAX,
         "a drive factor of at least 0",
     )?;
+    let (mut warnings, mut damping) = (Vec::new(), None::<Schedule>);
+    let input_gas = input.gas.unwrap_or(crate::gas::Gas::Air);
     let rates = match (&input.weather, &built.design, &input.rate_schedule) {
         (Some(_), _, Some(_)) => {
             return Err(Refusal::field(
@@ -641,9 +710,18 @@ fn long(
         }
         (Some(w), Some(design), None) => {
             check_weather(w)?;
+            let effect =
+                weather_effect(design, w, input_gas, clock.q, built.clock.pendulum.g_m_s2())?;
+            warnings = effect.warnings;
+            if w.pressure_pa.is_some() {
+                damping = Some(Schedule {
+                    time: w.time.clone(),
+                    value: effect.q_factors,
+                });
+            }
             Some(Schedule {
                 time: w.time.clone(),
-                value: weather_rates(design, w),
+                value: effect.rates,
             })
         }
         (Some(w), None, None) if w.temperature_c.is_some() || w.pressure_pa.is_some() => {
@@ -682,10 +760,15 @@ fn long(
     if !sink.begin(&plan) {
         return Ok(summary(&empty_finish(&start), nominal_period));
     }
-    let finish = run(
+    let damping_at = |t: f64| match &damping {
+        Some(d) => piecewise_linear(&d.time, &d.value, t),
+        None => 1.0,
+    };
+    let finish = run_with_damping(
         clock,
         &drive_at,
         &stretch,
+        &damping_at,
         &LongRun::from_steady(&start, input.duration, input.every),
         &mut |row| sink.row(row),
     );
@@ -715,9 +798,10 @@ fn long(
                  units"
             ),
         )),
-        Ending::Duration | Ending::Sink | Ending::PendulumStopped => {
-            Ok(summary(&finish, nominal_period))
-        }
+        Ending::Duration | Ending::Sink | Ending::PendulumStopped => Ok(RunSummary {
+            warnings,
+            ..summary(&finish, nominal_period)
+        }),
     }
 }
 
@@ -752,6 +836,7 @@ fn summary(finish: &super::long_run::Finish, nominal_period: f64) -> RunSummary 
         half_swings_stepped: finish.single_steps,
         multi_beat_steps: finish.multi_steps,
         nominal_period_s: nominal_period,
+        warnings: Vec::new(),
     }
 }
 

@@ -148,12 +148,27 @@ pub fn run(
     options: &LongRun,
     sink: &mut dyn FnMut(&Row) -> bool,
 ) -> Finish {
+    run_with_damping(clock, drive, stretch, &|_| 1.0, options, sink)
+}
+
+/// [`run`] with the pendulum's Q multiplied by `damping(t)` at each
+/// moment (the gas around it changing with the pressure), held over a
+/// beat like the drive.
+pub fn run_with_damping(
+    clock: &Clock,
+    drive: &dyn Fn(f64) -> f64,
+    stretch: &dyn Fn(f64) -> f64,
+    damping: &dyn Fn(f64) -> f64,
+    options: &LongRun,
+    sink: &mut dyn FnMut(&Row) -> bool,
+) -> Finish {
     let omega = clock.pendulum.natural_angular_frequency();
     let nominal_beat = 0.5 * options.nominal_period;
     let escapement = clock.escapement.as_ref();
     let shift = !escapement.symmetric();
-    let map =
-        |a: f64, beat: u64, d: f64| half_swing_map(Some(escapement), clock.q, d, beat, a, shift);
+    let map = |a: f64, beat: u64, d: f64, t: f64| {
+        half_swing_map(Some(escapement), clock.q * damping(t), d, beat, a, shift)
+    };
     let rate_of = |beat_time: f64| 86_400.0 * (nominal_beat / beat_time - 1.0);
     let mut row = Row {
         time: 0.0,
@@ -178,7 +193,7 @@ pub fn run(
         carry = (t - row.time) - y;
         row.time = t;
     };
-    if let Some(h) = map(row.amplitude, 0, row.drive) {
+    if let Some(h) = map(row.amplitude, 0, row.drive, 0.0) {
         row.rate = rate_of(h.time * stretch(0.0) / omega);
     }
     if !sink(&row) {
@@ -187,7 +202,7 @@ pub fn run(
         return finish;
     }
     let cycle = escapement.cycle();
-    let relaxation_beats = (clock.q / std::f64::consts::PI * 2.0).max(1.0);
+    let relaxation_beats = |t: f64| (clock.q * damping(t) / std::f64::consts::PI * 2.0).max(1.0);
     let mut next_row = options.every.unwrap_or(0.0);
     let end = |finish: &mut Finish, ending: Ending| {
         finish.stopped = true;
@@ -219,7 +234,8 @@ pub fn run(
             None => options.duration,
         };
         let room = ((target - row.time) / beat_estimate).floor();
-        let step_beats = (room.min(relaxation_beats / 20.0).min(4096.0) as u64) / cycle * cycle;
+        let step_beats =
+            (room.min(relaxation_beats(row.time) / 20.0).min(4096.0) as u64) / cycle * cycle;
         if options.every.is_some() && cycle == 1 && step_beats >= 16 {
             // Many beats at once: RK4 on the modified equation.
             let n = step_beats as f64;
@@ -227,9 +243,9 @@ pub fn run(
             let flow = |a: f64, t: f64| -> Option<(f64, f64)> {
                 let d = drive(t);
                 let h = 1e-6 * a;
-                let m0 = map(a, 0, d)?;
-                let mp = map(a + h, 0, d)?;
-                let mm = map(a - h, 0, d)?;
+                let m0 = map(a, 0, d, t)?;
+                let mp = map(a + h, 0, d, t)?;
+                let mm = map(a - h, 0, d, t)?;
                 let g = m0.amplitude - a;
                 let dg = ((mp.amplitude - a - h) - (mm.amplitude - a + h)) / (2.0 * h);
                 let dtau = (mp.time - mm.time) / (2.0 * h);
@@ -262,7 +278,7 @@ pub fn run(
             finish.multi_steps += 1;
         } else {
             let beat = row.beats % cycle;
-            let Some(h) = map(row.amplitude, beat, d) else {
+            let Some(h) = map(row.amplitude, beat, d, row.time) else {
                 end(&mut finish, failed(row.amplitude, d));
                 break;
             };

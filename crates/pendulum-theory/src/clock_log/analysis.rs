@@ -1162,7 +1162,7 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
                 pressure_pa: reference[1].map(|p| p * 100.0),
                 temperature_c: reference[0],
                 humidity: Some(h),
-                regulated_at_c: None,
+                ..Air::default()
             };
             let h0 = reference[2].map_or(0.5, |h| h / 100.0);
             let sheet = datasheet(d, None, &air(h0))?;

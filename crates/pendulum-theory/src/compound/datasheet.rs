@@ -1,14 +1,28 @@
 //! A design's datasheet as one analysis: its parts, mass, inertia,
 //! equivalent length and period, its temperature and barometric
-//! coefficients, the air's effect and the rating nut's, in an air and at
-//! a temperature checked against the range of the air-density formula.
-//! The command line's `design` and Python's `design` are this call.
+//! coefficients, the gas's effect (buoyancy, carried gas, damping and so
+//! Q) and the rating nut's, in a gas (air, nitrogen or helium, 1 Pa to 1.2
+//! bar) at a temperature; with a semi-arc, the arc a drive keeps as the
+//! pressure changes and so the circular error's share of the barometric
+//! error, and the semi-arc at which the two cancel (Airy's and Baily's
+//! compensation by the arc). The command line's `design` and Python's
+//! `design` are this call.
+//!
+//! The arc against pressure: a drive that gives the same energy each
+//! swing keeps the arc at which the losses per cycle equal it: Stokes's
+//! damping and the pivot's (`π ω A² c`, the pivot's `c = I ω / Q_pivot`
+//! taken as independent of the gas) and the form drag's `(8/3) ω² A³ D`
+//! ([`super::gas`]). The circular error is the exact one, `T(A)/T(0) =
+//! (2/π) K(sin²(A/2))`. The barometric coefficient with the arc's change
+//! is a central difference of ±1% of the pressure of the two together,
+//! and the cancelling semi-arc the root of it, found by a scan and
+//! bisection.
 
 use super::description::Design;
 use super::rate_of_length_ratio;
-use crate::air::{air_density, PRESSURE_RANGE_PA, TEMPERATURE_RANGE_C};
 use crate::analysis::Refusal;
 use crate::error::format_significant;
+use crate::gas::{Gas, GasState};
 use crate::pendulum::{Pendulum, STANDARD_GRAVITY};
 use serde::Serialize;
 
@@ -16,7 +30,8 @@ use serde::Serialize;
 pub const DEFAULT_PRESSURE_PA: f64 = 101_325.0;
 /// The temperature when none is given, °C (also where it was regulated).
 pub const DEFAULT_TEMPERATURE_C: f64 = 20.0;
-/// Relative humidity when none is given (0 to 1).
+/// Relative humidity when none is given (0 to 1), at the standard
+/// pressure and above; below, this times the pressure over the standard.
 pub const DEFAULT_HUMIDITY: f64 = 0.5;
 /// Temperatures a clock may have been regulated at, °C.
 pub const REGULATED_AT_RANGE_C: (f64, f64) = (-50.0, 100.0);
@@ -33,6 +48,68 @@ pub struct Air {
     /// The temperature the clock was regulated at, °C (default the
     /// temperature's default).
     pub regulated_at_c: Option<f64>,
+    /// The gas (default air).
+    pub gas: Option<Gas>,
+    /// The Q the pendulum would have in a vacuum: its pivot's or
+    /// suspension's and the escapement's losses (default: none, so the gas
+    /// alone damps it).
+    pub pivot_q: Option<f64>,
+    /// The semi-arc it swings at this pressure, rad (default: none, so
+    /// the arc's share of the barometric error is not given).
+    pub amplitude_rad: Option<f64>,
+}
+
+/// The largest semi-arc a row of the pressure table may reach, rad (60°):
+/// beyond, the drive that keeps the given arc would swing it further than
+/// any clock's escapement allows.
+pub const MAX_SEMI_ARC_RAD: f64 = std::f64::consts::PI / 3.0;
+
+/// The pressures of the datasheet's table, Pa: a pumped tank to a high
+/// barometer, with a Shortt clock's tank (27 hPa) and the standard
+/// atmosphere.
+pub const TABLE_PRESSURES_PA: [f64; 11] = [
+    1.0, 10.0, 100.0, 1000.0, 2700.0, 10_000.0, 30_000.0, 60_000.0, 80_000.0, 101_325.0, 110_000.0,
+];
+
+/// One row of the pressure table.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PressureRow {
+    /// Pressure, Pa.
+    pub pressure_pa: f64,
+    /// The gas's density, kg/m³.
+    pub density_kg_m3: f64,
+    /// The Q the gas alone gives (none when nothing in the design meets
+    /// the gas: point masses on idealised rods).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q_gas: Option<f64>,
+    /// With the pivot's losses (`q_gas` when none are given; at the row's
+    /// arc with the form drag when a semi-arc is given).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q: Option<f64>,
+    /// Rate against a vacuum from buoyancy and the carried gas, s/day.
+    pub gas_rate_s_per_day: f64,
+    /// The semi-arc the drive keeps, degrees (with a semi-arc given; none
+    /// where it would pass 60°).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub semi_arc_deg: Option<f64>,
+    /// The circular error at that arc against a vanishing arc, s/day.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub circular_rate_s_per_day: Option<f64>,
+    /// The two together, against the rate at the datasheet's pressure,
+    /// s/day.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rate_change_s_per_day: Option<f64>,
+}
+
+/// One part's share of the gas's effect.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PartGas {
+    /// Its name.
+    pub name: String,
+    /// Its added-mass coefficient (gas carried over gas displaced).
+    pub added_mass_coefficient: f64,
+    /// Its share of the gas's damping, 0 to 1.
+    pub damping_share: f64,
 }
 
 /// One part's row.
@@ -79,8 +156,47 @@ pub struct Datasheet {
     pub air_rate_s_per_day: f64,
     /// Of which buoyancy, s/day.
     pub air_buoyancy_rate_s_per_day: f64,
-    /// The change per hPa of pressure at that temperature and humidity.
+    /// The change per hPa of pressure at that temperature and humidity
+    /// (buoyancy and carried gas, at a constant arc).
     pub pressure_coefficient_s_per_day_per_hpa: f64,
+    /// The gas.
+    pub gas: Gas,
+    /// Its viscosity, Pa s.
+    pub gas_viscosity_pa_s: f64,
+    /// Its mean free path, m.
+    pub mean_free_path_m: f64,
+    /// The damping torque per unit angular velocity, N m s.
+    pub gas_damping_n_m_s: f64,
+    /// The Q the gas's viscous damping alone gives (none when nothing in
+    /// the design meets the gas: point masses on idealised rods).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q_gas: Option<f64>,
+    /// The Q of the pivot's losses, as given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q_pivot: Option<f64>,
+    /// Both together, and at the semi-arc given with the form drag (none
+    /// when nothing damps it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q: Option<f64>,
+    /// Each part's share of the gas's effect.
+    pub gas_parts: Vec<PartGas>,
+    /// The semi-arc as given, degrees.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub semi_arc_deg: Option<f64>,
+    /// The circular error's change per hPa at that semi-arc, as the gas's
+    /// damping changes the arc, s/day.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub circular_pressure_coefficient_s_per_day_per_hpa: Option<f64>,
+    /// Both changes together, s/day per hPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub net_pressure_coefficient_s_per_day_per_hpa: Option<f64>,
+    /// The semi-arc at which the circular error's change cancels the
+    /// buoyancy's, degrees (none when the gas's damping does not change
+    /// with pressure, or the arc would pass 60°).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cancelling_semi_arc_deg: Option<f64>,
+    /// The pressure table.
+    pub against_pressure: Vec<PressureRow>,
     /// The rating nut: the part with a thread, or the part named `nut`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub nut: Option<String>,
@@ -134,30 +250,67 @@ fn within(
     ))
 }
 
+/// `, got V unit` for a finite value, else nothing.
+fn shown_got(v: f64, unit: &str) -> String {
+    if v.is_finite() {
+        format!(", got {}{unit}", format_significant(v, 6))
+    } else {
+        String::new()
+    }
+}
+
+/// Seconds in a day.
+const DAY: f64 = 86_400.0;
+
+/// The semi-arc, rad, at which `net(a)` (the barometric coefficient with
+/// the arc's change) is zero: scanned from 0.01° to 60° in steps of 5%,
+/// then bisected to 1e-9 rad. None without a change of sign.
+fn cancelling_arc(net: &dyn Fn(f64) -> f64) -> Option<f64> {
+    let mut a = 0.01_f64.to_radians();
+    let mut before = net(a);
+    while a < MAX_SEMI_ARC_RAD {
+        let next = (a * 1.05).min(MAX_SEMI_ARC_RAD);
+        let now = net(next);
+        if before.is_finite() && now.is_finite() && before.signum() != now.signum() {
+            let (mut lo, mut hi) = (a, next);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if net(mid).signum() == before.signum() {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+                if hi - lo < 1e-9 {
+                    break;
+                }
+            }
+            return Some(0.5 * (lo + hi));
+        }
+        before = now;
+        a = next;
+    }
+    None
+}
+
 /// The datasheet of `design` under `g` (default standard gravity) in
 /// `air`.
 pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet, Refusal> {
-    let p = within(
-        "pressure",
-        air.pressure_pa.unwrap_or(DEFAULT_PRESSURE_PA),
-        PRESSURE_RANGE_PA,
-        0.01,
-        "hPa",
-    )?;
-    let t = within(
-        "temperature",
+    let kind = air.gas.unwrap_or(Gas::Air);
+    let pressure = air.pressure_pa.unwrap_or(DEFAULT_PRESSURE_PA);
+    // Room air pumped down keeps its composition: below the standard
+    // pressure the default humidity falls with it.
+    let humidity_default = if kind == Gas::Air {
+        DEFAULT_HUMIDITY * (pressure / DEFAULT_PRESSURE_PA).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let gas = GasState::new(
+        kind,
+        pressure,
         air.temperature_c.unwrap_or(DEFAULT_TEMPERATURE_C),
-        TEMPERATURE_RANGE_C,
-        1.0,
-        "°C",
+        air.humidity.unwrap_or(humidity_default),
     )?;
-    let h = within(
-        "humidity",
-        air.humidity.unwrap_or(DEFAULT_HUMIDITY),
-        (0.0, 1.0),
-        100.0,
-        "%",
-    )?;
+    let (p, t, h) = (gas.pressure_pa, gas.temperature_c, gas.humidity);
     let regulated_at = within(
         "regulated_at",
         air.regulated_at_c.unwrap_or(DEFAULT_TEMPERATURE_C),
@@ -165,9 +318,27 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         1.0,
         "°C",
     )?;
+    if let Some(q) = air.pivot_q {
+        if !(q.is_finite() && q >= 1.0) {
+            return Err(Refusal::field(
+                "pivot_q",
+                format!("must be a number of 1 or more{}", shown_got(q, "")),
+            ));
+        }
+    }
+    if let Some(a) = air.amplitude_rad {
+        if !(a > 0.0 && a <= MAX_SEMI_ARC_RAD) {
+            return Err(Refusal::field(
+                "amplitude",
+                format!(
+                    "must lie between 0 and 60 degrees (a semi-arc){}",
+                    shown_got(a.to_degrees(), "°")
+                ),
+            ));
+        }
+    }
     let g = crate::analysis::require_finite("g", g.unwrap_or(STANDARD_GRAVITY))?;
     let pendulum = &design.pendulum;
-    let rho = air_density(p, t, h);
     let props = pendulum.properties();
     let period = Pendulum::new(props.equivalent_length, g)
         .map_err(|e| match e.quantity {
@@ -180,7 +351,82 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         .map_err(|e| Refusal::data(e.to_string()))?
         .properties()
         .equivalent_length;
-    let rates = pendulum.rate_in_air(rho);
+    let in_gas = pendulum.in_gas(&gas, g);
+    if in_gas.q < 0.5 {
+        return Err(Refusal::data(format!(
+            "in this gas the pendulum does not swing: the gas alone damps it to Q {} (below \
+             1/2, overdamped){}",
+            format_significant(in_gas.q, 3),
+            if g < 1e-3 { "; check g" } else { "" }
+        )));
+    }
+    let rates = in_gas.rates;
+    let rho = gas.density();
+    let coefficient = pendulum.pressure_coefficient(&gas, g);
+    // The pivot's losses as a damping torque, the same at every pressure.
+    let pivot = air
+        .pivot_q
+        .map_or(0.0, |qp| in_gas.inertia * in_gas.omega / qp);
+    let circular = |a: f64| {
+        let ratio = 2.0 / std::f64::consts::PI * crate::elliptic::ellipk((0.5 * a).sin().powi(2));
+        DAY * (1.0 / ratio - 1.0)
+    };
+    // The rate (gas and circular error) at pressure `pp` of a clock whose
+    // drive keeps semi-arc `a` at the sheet's pressure; None past 60°.
+    let drive = |a: f64| in_gas.loss_per_cycle(a, pivot);
+    let at = |pp: f64, a: f64| {
+        if pp == p {
+            // Here the arc is the one given (not a root found again).
+            return (in_gas.clone(), Some(a));
+        }
+        let there = pendulum.in_gas(&gas.at_pressure(pp), g);
+        let energy = drive(a);
+        if energy.is_nan() || energy <= 0.0 {
+            // Nothing damps it: nothing changes its arc.
+            return (there, Some(a));
+        }
+        let arc = there.arc_for_drive(energy, pivot);
+        (there, (arc <= MAX_SEMI_ARC_RAD).then_some(arc))
+    };
+    let net_per_hpa = |a: f64| {
+        let rate = |f: f64| match at(p * f, a) {
+            (there, Some(arc)) => there.rates.total + circular(arc),
+            (_, None) => f64::NAN,
+        };
+        (rate(1.01) - rate(0.99)) / (0.02 * p) * 100.0
+    };
+    let cancelling = cancelling_arc(&net_per_hpa).map(f64::to_degrees);
+    let q = crate::analysis::finite(air.amplitude_rad.map_or(
+        in_gas.inertia * in_gas.omega / (in_gas.damping + pivot),
+        |a| in_gas.q_at(a, pivot),
+    ));
+    let here = air.amplitude_rad.map(|a| (a, rates.total + circular(a)));
+    let against_pressure = TABLE_PRESSURES_PA
+        .iter()
+        .map(|&pp| {
+            let (there, arc) = match here {
+                Some((a, _)) => at(pp, a),
+                None => (pendulum.in_gas(&gas.at_pressure(pp), g), None),
+            };
+            PressureRow {
+                pressure_pa: pp,
+                density_kg_m3: gas.at_pressure(pp).density(),
+                q_gas: crate::analysis::finite(there.q),
+                q: crate::analysis::finite(
+                    arc.map_or(there.inertia * there.omega / (there.damping + pivot), |a| {
+                        there.q_at(a, pivot)
+                    }),
+                ),
+                gas_rate_s_per_day: there.rates.total,
+                semi_arc_deg: arc.map(f64::to_degrees),
+                circular_rate_s_per_day: arc.map(circular),
+                rate_change_s_per_day: arc
+                    .zip(here)
+                    .map(|(a, (_, r0))| there.rates.total + circular(a) - r0),
+            }
+        })
+        .collect();
+    let damping_total = in_gas.damping;
     let nut = design
         .thread
         .map(|th| th.part)
@@ -214,7 +460,35 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         air_density_kg_m3: rho,
         air_rate_s_per_day: rates.total,
         air_buoyancy_rate_s_per_day: rates.buoyancy,
-        pressure_coefficient_s_per_day_per_hpa: pendulum.pressure_coefficient(p, t, h),
+        pressure_coefficient_s_per_day_per_hpa: coefficient,
+        gas: kind,
+        gas_viscosity_pa_s: gas.viscosity(),
+        mean_free_path_m: gas.mean_free_path(),
+        gas_damping_n_m_s: damping_total,
+        q_gas: crate::analysis::finite(in_gas.q),
+        q_pivot: air.pivot_q,
+        q,
+        gas_parts: pendulum
+            .parts()
+            .iter()
+            .zip(&in_gas.parts)
+            .map(|(part, f)| PartGas {
+                name: part.name.clone(),
+                added_mass_coefficient: f.added_mass_coefficient,
+                damping_share: if damping_total > 0.0 {
+                    f.damping / damping_total
+                } else {
+                    0.0
+                },
+            })
+            .collect(),
+        semi_arc_deg: air.amplitude_rad.map(f64::to_degrees),
+        circular_pressure_coefficient_s_per_day_per_hpa: air
+            .amplitude_rad
+            .map(|a| net_per_hpa(a) - coefficient),
+        net_pressure_coefficient_s_per_day_per_hpa: air.amplitude_rad.map(net_per_hpa),
+        cancelling_semi_arc_deg: cancelling,
+        against_pressure,
         nut: per_metre.and(nut).map(|i| pendulum.parts()[i].name.clone()),
         nut_rate_s_per_day_per_mm: per_metre.map(|r| r * 1e-3),
         nut_pitch_m: per_metre.and(pitch),

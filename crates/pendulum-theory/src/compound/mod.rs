@@ -18,15 +18,17 @@
 //! down; a part resting on another sits on that part's top and grows
 //! upward from it (a bob on its rating nut).
 //!
-//! Air ([`CompoundPendulum::rate_in_air`]): buoyancy lessens the restoring
-//! torque by the weight of the displaced air, `Σ (m_i - ρ V_i) g d_i`, and
-//! the air carried along adds to the inertia, `Σ k_i ρ V_i d_i²`, with the
-//! added-mass coefficients of [`shape::Shape::added_mass_coefficient`].
+//! Gas ([`CompoundPendulum::in_gas`], in [`gas`]): buoyancy lessens the
+//! restoring torque by the weight of the displaced gas, `Σ (m_i - ρ V_i) g
+//! d_i`; the gas carried along adds to the inertia and the gas damps the
+//! swing, each part's by Stokes's oscillating flow
+//! ([`crate::oscillating_flow`]).
 
 pub mod compensate;
 pub mod compensator;
 pub mod datasheet;
 pub mod description;
+pub mod gas;
 pub mod material;
 pub mod regulate;
 pub mod shape;
@@ -296,33 +298,16 @@ impl CompoundPendulum {
     /// Mass, centre of mass, moment of inertia about the pivot and the
     /// equivalent simple length (see the module notes).
     pub fn properties(&self) -> Properties {
-        self.properties_in(0.0)
-    }
-
-    /// The same in air of density `rho` kg/m³: buoyancy and added mass.
-    fn properties_in(&self, rho: f64) -> Properties {
         let (mut mass, mut moment, mut inertia) = (0.0, 0.0, 0.0);
         for (p, &d) in self.parts.iter().zip(&self.centres) {
             let m = p.mass();
-            let v = p.shape.volume();
-            let weighing = m - rho * v;
             mass += m;
-            moment += weighing * d;
-            inertia += m * (p.shape.inertia_per_mass() + d * d)
-                + rho * p.shape.added_mass_coefficient() * v * d * d;
+            moment += m * d;
+            inertia += m * (p.shape.inertia_per_mass() + d * d);
         }
-        let weight_mass = self
-            .parts
-            .iter()
-            .map(|p| p.mass() - rho * p.shape.volume())
-            .sum::<f64>();
         Properties {
             mass,
-            centre_of_mass: if weight_mass > 0.0 {
-                moment / weight_mass
-            } else {
-                f64::NAN
-            },
+            centre_of_mass: if mass > 0.0 { moment / mass } else { f64::NAN },
             inertia,
             equivalent_length: inertia / moment,
         }
@@ -399,22 +384,6 @@ impl CompoundPendulum {
         rate_of_length_ratio(l(0.5) / l(-0.5))
     }
 
-    /// The rate in air of density `rho` kg/m³ against the same pendulum in
-    /// a vacuum, s/day (negative: slower): the total, and buoyancy alone.
-    pub fn rate_in_air(&self, rho: f64) -> AirRates {
-        let vacuum = self.properties_in(0.0).equivalent_length;
-        let total = rate_of_length_ratio(self.properties_in(rho).equivalent_length / vacuum);
-        let (mut weighing, mut inertia) = (0.0, 0.0);
-        for (p, &d) in self.parts.iter().zip(&self.centres) {
-            weighing += (p.mass() - rho * p.shape.volume()) * d;
-            inertia += p.mass() * (p.shape.inertia_per_mass() + d * d);
-        }
-        AirRates {
-            total,
-            buoyancy: rate_of_length_ratio(inertia / weighing / vacuum),
-        }
-    }
-
     /// The mass, kg, to add on a regulating tray `at` m below the pivot
     /// (negative: to take off) to correct a clock gaining `rate` s/day:
     /// with `μ` there the equivalent length becomes `(I + μ at²) /
@@ -434,19 +403,6 @@ impl CompoundPendulum {
             });
         }
         Ok(mass)
-    }
-
-    /// The rate change per hPa of air pressure, s/day, at `pressure` Pa,
-    /// `temperature` °C and relative humidity `humidity` (0-1): a central
-    /// difference of ±1 hPa of [`CompoundPendulum::rate_in_air`] with the
-    /// air's density from [`crate::air::air_density`]. NaN outside that
-    /// formula's range.
-    pub fn pressure_coefficient(&self, pressure: f64, temperature: f64, humidity: f64) -> f64 {
-        let rate = |p: f64| {
-            self.rate_in_air(crate::air::air_density(p, temperature, humidity))
-                .total
-        };
-        0.5 * (rate(pressure + 100.0) - rate(pressure - 100.0))
     }
 
     /// How far to move part `index` (and what rests on it) down, m

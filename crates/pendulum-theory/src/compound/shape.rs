@@ -174,33 +174,4 @@ impl Shape {
             other => other.scaled(width),
         }
     }
-
-    /// The potential-flow added-mass coefficient for the part moving
-    /// sideways in the plane of swing: the entrained air's mass over the
-    /// displaced air's. A sphere: 1/2, exact (Lamb, Hydrodynamics, 6th ed.,
-    /// 1932, §92). An upright cylinder moving across its axis: 1, the
-    /// two-dimensional value (Lamb §68), an upper bound for a short one. A
-    /// disc, lens or ring moving edgewise in its own plane: its thickness
-    /// over its diameter, the leading term for a thin oblate body moving
-    /// along its equator (Lamb §114). The air's viscosity entrains more
-    /// than potential flow (Stokes's boundary layer), so these are lower
-    /// bounds of the real effect.
-    pub fn added_mass_coefficient(&self) -> f64 {
-        match *self {
-            Shape::Sphere { .. } => 0.5,
-            Shape::Cylinder { .. } => 1.0,
-            Shape::Disc {
-                diameter,
-                thickness,
-            }
-            | Shape::Lens {
-                diameter,
-                thickness,
-            } => thickness / diameter,
-            Shape::Ring {
-                outer, thickness, ..
-            } => thickness / outer,
-            Shape::Point => 0.0,
-        }
-    }
 }

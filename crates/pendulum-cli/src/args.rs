@@ -128,6 +128,7 @@ unless --channel says otherwise.")]
     #[command(after_help = "Examples:
   pendulum compensate --design examples/seconds-steel-brass.toml --compensator zinc
   pendulum compensate --design examples/longcase-wood.toml --compensator collar
+  pendulum compensate --design examples/seconds-steel-brass.toml --compensator zinc-steel
   pendulum compensate --design examples/seconds-steel-brass.toml --compensator mercury --write jar.toml")]
     Compensate(CompensateArgs),
     /// A design's datasheet: parts, mass, inertia, equivalent length,
@@ -1195,9 +1196,10 @@ pub struct CompensateArgs {
     #[arg(long, value_name = "FILE.toml")]
     pub design: InputPath,
     /// What to size: a tube of a material under the bob (zinc, aluminium,
-    /// brass, ...; `collar`: a brass collar), `gridiron` (steel and brass
-    /// rods in place of the rod), or `mercury` (a jar of mercury in place
-    /// of the bob).
+    /// brass, ...; `collar`: a brass collar), a tube inside a tube
+    /// (`zinc-steel`: zinc on the nut, steel hanging from its top carrying
+    /// the bob), `gridiron` (steel and brass rods in place of the rod), or
+    /// `mercury` (a jar of mercury in place of the bob).
     #[arg(long, value_name = "KIND")]
     pub compensator: Option<String>,
     #[arg(long, value_name = "NAME", help = with_default("The part the tube goes under, or the jar replaces (it must rest on the nut)", pendulum_theory::compound::compensate::DEFAULT_PART))]

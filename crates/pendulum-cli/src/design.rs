@@ -23,7 +23,7 @@ use crate::error::CliError;
 use crate::units::{parse_quantity, Dimension};
 use pendulum_theory::compound::description::{design, Unit};
 pub use pendulum_theory::compound::description::{Design, Thread};
-use pendulum_theory::compound::{CompoundPendulum, Material, Placement, Shape};
+use pendulum_theory::compound::{CompoundPendulum, End, Material, Placement, Shape};
 use std::io::Read;
 use std::path::Path;
 
@@ -162,6 +162,13 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
             Placement::Centre(c) => out.push_str(&format!("centre = {}\n", mm(c))),
             Placement::RestsOn(j) => {
                 out.push_str(&format!("rests_on = {}\n", quoted(&parts[j].name)))
+            }
+            Placement::Held { part, end, height } => {
+                out.push_str(&format!("rests_on = {}\n", quoted(&parts[part].name)));
+                out.push_str(&format!("support_height = {}\n", mm(height)));
+                if end == End::Bottom {
+                    out.push_str("rests_on_end = \"bottom\"\n");
+                }
             }
         }
         if p.massless {

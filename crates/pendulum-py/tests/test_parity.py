@@ -1193,6 +1193,15 @@ DESIGN = {
     "negative_diameter": ([ROD, {**BOB, "diameter": -0.1}], {}),
     "rests_on_nothing": ([ROD, {k: v for k, v in BOB.items() if k != "centre"} |
                           {"rests_on": "nut"}], {}),
+    "held_too_high": ([ROD, {**NUT, "centre": 1.0},
+                       {k: v for k, v in BOB.items() if k != "centre"} |
+                       {"rests_on": "nut", "support_height": 0.5}], {}),
+    "rests_on_end_sideways": ([ROD, {**NUT, "centre": 1.0},
+                               {k: v for k, v in BOB.items() if k != "centre"} |
+                               {"rests_on": "nut", "rests_on_end": "left"}], {}),
+    "hangs_and_rests": ([ROD, {**NUT, "centre": 1.0},
+                         {k: v for k, v in BOB.items() if k != "centre"} |
+                         {"rests_on": "nut", "hangs_from": "rod"}], {}),
     "shortt_tank": ([ROD, BOB], {"gas": "nitrogen", "pressure": 2700.0, "humidity": 0.0,
                                  "amplitude": 0.026, "pivot_q": 50000.0}),
     "helium_low": ([ROD, BOB], {"gas": "helium", "pressure": 1.0}),
@@ -1305,6 +1314,23 @@ COMPENSATE = {
     "tube_on_hanging_bob": ([ROD, BOB], {"compensator": "zinc"}),
     "gains_already": ([{**STEEL_CLOCK[0], "material": "invar"}, STEEL_CLOCK[1],
                        {**STEEL_CLOCK[2], "material": "zinc"}], {"compensator": "zinc"}),
+    "zinc_in_steel": (STEEL_CLOCK, {"compensator": "zinc-steel"}),
+    "zinc_in_steel_words": (STEEL_CLOCK, {"compensator": "zinc in steel"}),
+    "aluminium_in_steel_on_a_hanging_bob": ([ROD, BOB], {"compensator": "aluminium-steel"}),
+    "tube_in_tube_unknown": (STEEL_CLOCK, {"compensator": "zinc-cheese"}),
+    "collar_on_annealed_invar": ([{**STEEL_CLOCK[0], "material": "invar annealed"},
+                                  *STEEL_CLOCK[1:]], {"compensator": "collar"}),
+    "bob_held_at_its_centre": ([INVAR_CLOCK[0], INVAR_CLOCK[1],
+                                {**INVAR_CLOCK[2], "support_height": 0.07}],
+                               {"compensator": "stainless steel"}),
+    "bob_on_a_flange": ([*STEEL_CLOCK[:2],
+                         {"name": "tube", "shape": "tube", "material": "zinc", "length": 0.3,
+                          "diameter": 0.014, "bore": 0.01, "rests_on": "nut"},
+                         {"name": "sleeve", "shape": "tube", "material": "steel",
+                          "length": 0.3, "diameter": 0.02, "bore": 0.015,
+                          "hangs_from": "tube"},
+                         {**STEEL_CLOCK[2], "rests_on": "sleeve", "rests_on_end": "bottom"}],
+                        {}),
 }
 COMPENSATE_UNITS = {"compensator": "", "part": "", "jar_material": "", "jar_diameter": "m",
                     "jar_wall": "m", "tube_diameter": "m", "tube_bore": "m"}

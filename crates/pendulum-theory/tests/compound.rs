@@ -1,20 +1,12 @@
 //! The real pendulum against closed forms computed here and published
 //! figures (each test names its source).
 
+mod common;
+
+use common::parts::part;
 use pendulum_theory::compound::{CompoundPendulum, Material, Part, Placement, Shape};
 use pendulum_theory::gas::{Gas, GasState};
 use pendulum_theory::train::beats_per_hour;
-
-fn part(name: &str, shape: Shape, material: &str, placement: Placement) -> Part {
-    Part {
-        name: name.into(),
-        shape,
-        material: Material::named(material).expect("a built-in material"),
-        point_mass: 0.0,
-        placement,
-        massless: false,
-    }
-}
 
 fn rod(length: f64, diameter: f64, material: &str) -> Part {
     part(

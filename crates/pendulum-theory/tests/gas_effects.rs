@@ -3,22 +3,14 @@
 //! circular error cancels the barometric error on a Westminster-like
 //! pendulum (Denison 1873), a tank at 27 hPa.
 
+mod common;
+
+use common::parts::part;
 use pendulum_theory::compound::datasheet::{datasheet, Air};
 use pendulum_theory::compound::description::Design;
-use pendulum_theory::compound::{CompoundPendulum, Material, Part, Placement, Shape};
+use pendulum_theory::compound::{CompoundPendulum, Placement, Shape};
 use pendulum_theory::gas::{Gas, GasState};
 use std::f64::consts::PI;
-
-fn part(name: &str, shape: Shape, material: &str, placement: Placement) -> Part {
-    Part {
-        name: name.into(),
-        shape,
-        material: Material::named(material).unwrap(),
-        point_mass: 0.0,
-        placement,
-        massless: false,
-    }
-}
 
 /// The Great Clock of Westminster's pendulum as published: 2 s beat
 /// (about 4 m long), a cast-iron bob of about 300 kg (660 lb), an iron

@@ -88,7 +88,21 @@ fn render(json: &CompensateJson, part: &str) -> Result<String, CliError> {
             if before < 0.0 { "losing" } else { "gaining" }
         ),
     );
-    if let (Some(name), Some(l)) = (&result.compensator, result.tube_length_m) {
+    if let (Some(inner), Some(outer), Some(l)) = (
+        &result.inner_tube_material,
+        &result.outer_tube_material,
+        result.tube_length_m,
+    ) {
+        s.row(
+            "Compensator",
+            format!(
+                "a {inner} tube {} mm long standing on the nut round the rod, and a {outer} tube as long ({} mm outside, {} mm bore) hanging from its top round it, the {part} on its lower end where the nut was, before regulating",
+                num(l * 1e3, 5),
+                num(result.tube_diameter_m.unwrap_or(0.0) * 1e3, 4),
+                num(result.tube_bore_m.unwrap_or(0.0) * 1e3, 4),
+            ),
+        );
+    } else if let (Some(name), Some(l)) = (&result.compensator, result.tube_length_m) {
         s.row(
             "Compensator",
             format!(

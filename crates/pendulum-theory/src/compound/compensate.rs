@@ -1,7 +1,8 @@
 //! Temperature compensation as one analysis: a design's temperature
 //! coefficient and the compensator that cancels it, a tube or collar under
-//! the bob, a steel and brass gridiron in place of the rod, or a jar of
-//! mercury in place of the bob, with the compensated design. The command
+//! the bob, a tube inside a tube (zinc in steel), a steel and brass
+//! gridiron in place of the rod, or a jar of mercury in place of the bob,
+//! with the compensated design. The command
 //! line's `compensate` and Python's `compensate` are this call; the
 //! defaults (a glass jar of 4 mm walls, a tube 1 mm over the rod with
 //! 1.5 mm walls) live here.
@@ -31,7 +32,8 @@ pub const MAX_SIZE_M: f64 = 1.0;
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct CompensateInput {
     /// A tube's material (zinc, aluminium, ...; `collar` a brass collar),
-    /// `gridiron` or `mercury`; none: the coefficient alone.
+    /// a tube inside a tube (`zinc-steel`), `gridiron` or `mercury`; none:
+    /// the coefficient alone.
     pub compensator: Option<String>,
     /// The part the tube goes under or the jar replaces.
     pub part: Option<String>,
@@ -63,9 +65,16 @@ pub struct Compensation {
     /// Its outer diameter, m.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tube_diameter_m: Option<f64>,
-    /// Its bore, m.
+    /// Its bore, m (for a tube inside a tube, the outer tube's).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tube_bore_m: Option<f64>,
+    /// For a tube inside a tube: the inner tube's material (standing on
+    /// the nut), the outer's being the one it carries the bob by.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inner_tube_material: Option<String>,
+    /// For a tube inside a tube: the outer tube's material.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outer_tube_material: Option<String>,
     /// For a gridiron: the brass in its series, m (the steel is the drop
     /// and this).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -168,6 +177,27 @@ fn part_index(design: &CompoundPendulum, name: &str) -> Result<usize, Refusal> {
         .iter()
         .position(|p| p.name == name)
         .ok_or_else(|| Refusal::field("part", format!("the design has no part named '{name}'")))
+}
+
+/// The diameter of the design's rod (the first upright cylinder hanging
+/// from the pivot), or the refusal saying it has none.
+fn rod_diameter(design: &CompoundPendulum) -> Result<f64, Refusal> {
+    design
+        .rod_index()
+        .and_then(|i| match design.parts()[i].shape {
+            Shape::Cylinder { diameter, .. } => Some(diameter),
+            _ => None,
+        })
+        .ok_or_else(|| Refusal::field("design", "has no rod hanging from the pivot"))
+}
+
+/// A tube inside a tube named as `inner-outer` or `inner in outer`
+/// (`zinc-steel`, `zinc in steel`): the two names, or `None`.
+fn tube_pair(name: &str) -> Option<(&str, &str)> {
+    name.split_once(" in ")
+        .or_else(|| name.split_once('-'))
+        .map(|(a, b)| (a.trim(), b.trim()))
+        .filter(|(a, b)| !a.is_empty() && !b.is_empty())
 }
 
 /// A size of a tube or jar, m: positive, at most [`MAX_SIZE_M`].
@@ -281,7 +311,7 @@ fn support_of(design: &CompoundPendulum, part: &str) -> Option<usize> {
     for _ in 0..design.parts().len() {
         match design.parts()[i].placement {
             Placement::Centre(_) => return Some(i),
-            Placement::RestsOn(j) => i = j,
+            Placement::RestsOn(j) | Placement::Held { part: j, .. } => i = j,
         }
     }
     None
@@ -403,6 +433,50 @@ fn sized(
             result.jar_wall_m = Some(wall);
             Some(compensated)
         }
+        Some(name)
+            if tube_pair(name).is_some_and(|(a, b)| {
+                Material::named(a).is_some() && Material::named(b).is_some()
+            }) =>
+        {
+            let (inner_name, outer_name) = tube_pair(name).unwrap_or_default();
+            let inner = table_material("compensator", inner_name)?;
+            let outer = table_material("compensator", outer_name)?;
+            if inner.liquid || outer.liquid {
+                return Err(Refusal::field(
+                    "compensator",
+                    "a liquid goes in a jar: give --compensator mercury",
+                ));
+            }
+            let bob = part_index(design, part)?;
+            let rod_diameter = rod_diameter(design)?;
+            let (compensated, length) = design
+                .with_tube_in_tube(bob, inner.clone(), outer.clone(), rod_diameter, TUBE_WALL_M)
+                .ok_or_else(|| {
+                    Refusal::field(
+                        "compensator",
+                        format!(
+                            "no {} tube inside a {} tube up to 1.5 m cancels this design's coefficient (the '{}' must rest on a nut placed on the rod, and the inner tube expand more than the outer and the rod)",
+                            inner.name, outer.name, part
+                        ),
+                    )
+                })?;
+            let tube = |name: &str| {
+                compensated
+                    .parts()
+                    .iter()
+                    .find(|p| p.name == name)
+                    .map(|p| p.shape)
+            };
+            if let Some(Shape::Cylinder { diameter, bore, .. }) = tube("outer tube") {
+                result.tube_diameter_m = Some(diameter);
+                result.tube_bore_m = Some(bore);
+            }
+            result.compensator = Some(format!("{} in {}", inner.name, outer.name));
+            result.inner_tube_material = Some(inner.name.clone());
+            result.outer_tube_material = Some(outer.name.clone());
+            result.tube_length_m = Some(length);
+            Some(compensated)
+        }
         Some(name) => {
             let material = table_material(
                 "compensator",
@@ -412,7 +486,7 @@ fn sized(
                 Refusal::field(
                     "compensator",
                     format!(
-                        "'{name}' is neither gridiron, mercury, collar nor a material of the table ({})",
+                        "'{name}' is neither gridiron, mercury, collar, a tube in a tube (zinc-steel) nor a material of the table ({})",
                         Material::names().join(", ")
                     ),
                 )
@@ -427,13 +501,7 @@ fn sized(
             if let Some(e) = lifting("a tube") {
                 return Err(e);
             }
-            let rod_diameter = design
-                .rod_index()
-                .and_then(|i| match design.parts()[i].shape {
-                    Shape::Cylinder { diameter, .. } => Some(diameter),
-                    _ => None,
-                })
-                .ok_or_else(|| Refusal::field("design", "has no rod hanging from the pivot"))?;
+            let rod_diameter = rod_diameter(design)?;
             let bore = positive_length(
                 "tube_bore",
                 input.tube_bore.unwrap_or(rod_diameter + TUBE_CLEARANCE_M),

@@ -12,7 +12,10 @@
 //! - Harrison's gridiron of steel and brass rods: [`gridiron`],
 //!   [`CompoundPendulum::with_gridiron`];
 //! - Graham's jar of mercury (1721), whose level rises as the mercury
-//!   expands: [`CompoundPendulum::with_mercury_jar`].
+//!   expands: [`CompoundPendulum::with_mercury_jar`];
+//! - a zinc tube standing on the nut inside a steel tube hanging from its
+//!   top, the bob on the steel tube's lower end (the Westminster clock's
+//!   compensation): [`CompoundPendulum::with_tube_in_tube`].
 
 use super::{CompoundPendulum, Material, Part, Placement, Shape};
 
@@ -35,9 +38,8 @@ impl CompoundPendulum {
         diameter: f64,
         bore: f64,
     ) -> Option<(Self, f64)> {
-        let Placement::RestsOn(nut) = self.parts.get(bob)?.placement else {
-            return None;
-        };
+        let held = self.parts.get(bob)?.placement.clone();
+        let nut = held.support()?;
         let Placement::Centre(nut_centre) = self.parts[nut].placement else {
             return None;
         };
@@ -71,10 +73,98 @@ impl CompoundPendulum {
                 massless: false,
             });
             let tube = parts.len() - 1;
-            parts[bob].placement = Placement::RestsOn(tube);
+            parts[bob].placement = held.carried_by(tube);
             Self::new(parts).ok()
         };
         let length = zero_coefficient(build, 1e-4, 1.5)?;
+        Some((build(length)?, length))
+    }
+
+    /// The same pendulum with the classical compensator of a tube inside a
+    /// tube (the Westminster clock's zinc and iron): a tube of `inner`
+    /// (zinc) standing on the nut the part `bob` rests on, around the rod,
+    /// and a tube of `outer` (steel) of the same length hanging from its
+    /// top around it, on whose lower end the bob is carried as it was on
+    /// the nut. The rod grows down, the inner tube up and the outer down
+    /// again, so the inner tube must expand more than the rod and the
+    /// outer tube together over its length: `L (α_in - α_out) ≈ D α_rod`
+    /// for a drop `D`, which for zinc and steel is about 0.6 of the rod.
+    /// The bob stays where it was at the reference temperature (the outer
+    /// tube ends where the nut's top is). Each tube's bore clears what it
+    /// surrounds by [`super::compensate::TUBE_CLEARANCE_M`], its wall
+    /// `wall`. The length is found by bisection between 0.1 mm and 1.5 m
+    /// (or the longest tube that stays below the pivot) on the exact
+    /// model's coefficient. Returns the design and the
+    /// length, m; `None` when no length in that range does it.
+    pub fn with_tube_in_tube(
+        &self,
+        bob: usize,
+        inner: Material,
+        outer: Material,
+        rod_diameter: f64,
+        wall: f64,
+    ) -> Option<(Self, f64)> {
+        let held = self.parts.get(bob)?.placement.clone();
+        let nut = held.support()?;
+        let clearance = super::compensate::TUBE_CLEARANCE_M;
+        let inner_bore = rod_diameter + clearance;
+        let inner_diameter = inner_bore + 2.0 * wall;
+        let outer_bore = inner_diameter + clearance;
+        let outer_diameter = outer_bore + 2.0 * wall;
+        let build = |length: f64| -> Option<Self> {
+            let mut parts = self.parts.clone();
+            parts.push(Part {
+                name: "inner tube".into(),
+                shape: Shape::Cylinder {
+                    length,
+                    diameter: inner_diameter,
+                    bore: inner_bore,
+                },
+                material: inner.clone(),
+                point_mass: 0.0,
+                placement: Placement::RestsOn(nut),
+                massless: false,
+            });
+            let tube = parts.len() - 1;
+            parts.push(Part {
+                name: "outer tube".into(),
+                shape: Shape::Cylinder {
+                    length,
+                    diameter: outer_diameter,
+                    bore: outer_bore,
+                },
+                material: outer.clone(),
+                point_mass: 0.0,
+                placement: Placement::Held {
+                    part: tube,
+                    end: super::End::Top,
+                    height: length,
+                },
+                massless: false,
+            });
+            let hanging = parts.len() - 1;
+            parts[bob].placement = match held {
+                Placement::Held { height, .. } => Placement::Held {
+                    part: hanging,
+                    end: super::End::Bottom,
+                    height,
+                },
+                _ => Placement::Held {
+                    part: hanging,
+                    end: super::End::Bottom,
+                    height: 0.0,
+                },
+            };
+            Self::new(parts).ok()
+        };
+        // The inner tube stands on the nut and must stay below the pivot
+        // (warmed by the design's whole span too): the longest that does.
+        let nut_top = self.centres[nut] - 0.5 * self.parts[nut].shape.height();
+        let mut high = (nut_top - 1e-3).min(1.5);
+        while build(high).is_none() && high > 1e-3 {
+            high *= 0.98;
+        }
+        let length = zero_coefficient(build, 1e-4, high)?;
         Some((build(length)?, length))
     }
 }

@@ -18,10 +18,16 @@
 //! centre = "500 mm"      # below the pivot; or rests_on = "nut"
 //! ```
 //!
+//! A part resting on another may be held at a point of its own:
+//! `support_height = "60 mm"` above its bottom (a bob on a collar at its
+//! centre), on the holder's `rests_on_end = "bottom"` (a flange at a
+//! tube's lower end; default its top); `hangs_from = "tube"` hangs it by
+//! its top from the top of that part (a tube inside or around another).
+//!
 //! The rating nut may state its thread, `pitch = "0.7 mm"` or `tpi = 36`,
 //! and `divisions = 20` when it is divided.
 
-use super::{CompoundPendulum, Material, Part, Placement, Shape};
+use super::{CompoundPendulum, End, Material, Part, Placement, Shape};
 use crate::analysis::Refusal;
 use serde_json::Value;
 
@@ -104,7 +110,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
         let t = p
             .as_object()
             .ok_or_else(|| bad("part", "must be a table".into()))?;
-        const KNOWN: [&str; 20] = [
+        const KNOWN: [&str; 23] = [
             "pitch",
             "tpi",
             "divisions",
@@ -120,6 +126,9 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             "mass",
             "centre",
             "rests_on",
+            "support_height",
+            "rests_on_end",
+            "hangs_from",
             "massless",
             "center",
             "brass_length",
@@ -325,24 +334,79 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             Some(c) => Some(c),
             None => size("center", Unit::Length)?,
         };
-        let placement = match (centre, t.get("rests_on")) {
-            (Some(c), None) => Placement::Centre(c),
-            (None, Some(Value::String(on))) => Placement::RestsOn(
-                names
-                    .iter()
-                    .position(|n| n == on)
-                    .ok_or_else(|| bad("rests_on", format!("no part is named '{on}'")))?,
-            ),
-            (Some(_), Some(_)) => {
+        let named = |field: &str, on: &str| {
+            names
+                .iter()
+                .position(|n| n == on)
+                .ok_or_else(|| bad(field, format!("no part is named '{on}'")))
+        };
+        let support_height = size("support_height", Unit::Length)?;
+        let end = match t.get("rests_on_end") {
+            None => None,
+            Some(Value::String(e)) if e == "top" => Some(End::Top),
+            Some(Value::String(e)) if e == "bottom" => Some(End::Bottom),
+            Some(_) => {
+                return Err(bad(
+                    "rests_on_end",
+                    "must be \"top\" or \"bottom\" (the end of the part it rests on)".into(),
+                ))
+            }
+        };
+        let placement = match (centre, t.get("rests_on"), t.get("hangs_from")) {
+            (Some(c), None, None) => {
+                if support_height.is_some() || end.is_some() {
+                    return Err(bad(
+                        "support_height",
+                        "goes with rests_on (the part placed by its centre hangs from the rod)"
+                            .into(),
+                    ));
+                }
+                Placement::Centre(c)
+            }
+            (None, Some(Value::String(on)), None) => {
+                let j = named("rests_on", on)?;
+                match (support_height, end) {
+                    (None, None) => Placement::RestsOn(j),
+                    (h, e) => Placement::Held {
+                        part: j,
+                        end: e.unwrap_or(End::Top),
+                        height: h.unwrap_or(0.0),
+                    },
+                }
+            }
+            (None, None, Some(Value::String(from))) => {
+                if support_height.is_some() || end.is_some() {
+                    return Err(bad(
+                        "hangs_from",
+                        "hangs by its top from the top of that part: give rests_on with \
+                         support_height for any other point"
+                            .into(),
+                    ));
+                }
+                Placement::Held {
+                    part: named("hangs_from", from)?,
+                    end: End::Top,
+                    height: shape.height(),
+                }
+            }
+            (_, Some(v), _) | (_, _, Some(v)) if !v.is_string() => {
+                let field = if t.get("rests_on").is_some_and(|r| !r.is_string()) {
+                    "rests_on"
+                } else {
+                    "hangs_from"
+                };
+                return Err(bad(field, "must be the name of another part".into()));
+            }
+            (None, None, None) => {
                 return Err(bad(
                     "centre",
-                    "give either centre or rests_on, not both".into(),
+                    "missing (or rests_on = \"another part\")".into(),
                 ))
             }
             _ => {
                 return Err(bad(
                     "centre",
-                    "missing (or rests_on = \"another part\")".into(),
+                    "give one of centre, rests_on and hangs_from".into(),
                 ))
             }
         };

@@ -16,7 +16,9 @@
 //! is carried by the rod (the first upright cylinder hanging from the
 //! pivot), so its centre moves with the rod's expansion from the pivot
 //! down; a part resting on another sits on that part's top and grows
-//! upward from it (a bob on its rating nut).
+//! upward from it (a bob on its rating nut); a part held at a point (a bob
+//! on a collar at its centre, a tube hanging from another's top) grows
+//! both ways from that point.
 //!
 //! Gas ([`CompoundPendulum::in_gas`], in [`gas`]): buoyancy lessens the
 //! restoring torque by the weight of the displaced gas, `Σ (m_i - ρ V_i) g
@@ -40,6 +42,15 @@ pub use shape::Shape;
 /// Seconds in a day.
 const DAY: f64 = 86_400.0;
 
+/// Which end of a part holds another.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum End {
+    /// Its top (a collar, a tube standing on a nut).
+    Top,
+    /// Its bottom (a flange at a tube's lower end).
+    Bottom,
+}
+
 /// Where a part is.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Placement {
@@ -48,6 +59,43 @@ pub enum Placement {
     Centre(f64),
     /// Its bottom on the top of the part with this index.
     RestsOn(usize),
+    /// Held by the end `end` of part `part` at the point `height` m above
+    /// its own bottom (at the reference temperature; it grows with the
+    /// part's own material): a bob on a collar at its centre (`height`
+    /// half its own), a tube hanging from the top of another (`height` its
+    /// whole length), a bob on a flange at a tube's lower end (`end`
+    /// bottom, `height` 0).
+    Held {
+        /// The part that holds it.
+        part: usize,
+        /// Which end of that part.
+        end: End,
+        /// The point held, above its own bottom, m.
+        height: f64,
+    },
+}
+
+impl Placement {
+    /// The part this one is carried by, when not placed by its centre.
+    pub fn support(&self) -> Option<usize> {
+        match *self {
+            Placement::Centre(_) => None,
+            Placement::RestsOn(j) | Placement::Held { part: j, .. } => Some(j),
+        }
+    }
+
+    /// The same placement carried by part `j` instead (a compensator put
+    /// between a bob and its support keeps how the bob is held).
+    pub fn carried_by(&self, j: usize) -> Placement {
+        match *self {
+            Placement::Held { end, height, .. } => Placement::Held {
+                part: j,
+                end,
+                height,
+            },
+            _ => Placement::RestsOn(j),
+        }
+    }
 }
 
 /// How far a part's top may reach above the pivot and still hang from
@@ -238,6 +286,18 @@ impl CompoundPendulum {
                     ),
                 ));
             }
+            if let Placement::Held { height, .. } = p.placement {
+                if !(0.0..=p.shape.height()).contains(&height) {
+                    return Err(fail(
+                        "support_height",
+                        format!(
+                            "must lie between 0 and the part's own height ({} m), got {}",
+                            shown(p.shape.height()),
+                            shown(height)
+                        ),
+                    ));
+                }
+            }
             if p.material.liquid {
                 let fits = matches!(p.shape, Shape::Cylinder { .. })
                     && matches!(p.placement, Placement::RestsOn(_));
@@ -339,9 +399,18 @@ impl CompoundPendulum {
                 }
                 let factor = 1.0 + p.material.expansion * delta;
                 material.density /= factor.powi(3);
+                let placement = match p.placement {
+                    Placement::Held { part, end, height } => Placement::Held {
+                        part,
+                        end,
+                        height: height * factor,
+                    },
+                    ref other => other.clone(),
+                };
                 Part {
                     shape: p.shape.scaled(factor),
                     material,
+                    placement,
                     ..p.clone()
                 }
             })
@@ -649,7 +718,7 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
                     centres[i] = Some(carried);
                     break Some(carried);
                 }
-                Placement::RestsOn(j) => {
+                Placement::RestsOn(j) | Placement::Held { part: j, .. } => {
                     if j >= parts.len() || j == i {
                         return Err(DesignError {
                             part: p.name.clone(),
@@ -666,12 +735,27 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
                 }
             }
         };
-        // Back up the chain: each part sits on the top of the one below.
+        // Back up the chain: each part held by the one below it in the
+        // chain (its bottom on that one's top, or the point it is held at
+        // on that one's end).
         while let Some(k) = chain.pop() {
             on_chain[k] = false;
-            if let (Some(below), Placement::RestsOn(j)) = (base, &parts[k].placement) {
-                let top = below - 0.5 * parts[*j].shape.height();
-                let c = top - 0.5 * parts[k].shape.height();
+            let held = |j: usize, end: End, height: f64, holder: f64| {
+                let half = 0.5 * parts[j].shape.height();
+                let point = match end {
+                    End::Top => holder - half,
+                    End::Bottom => holder + half,
+                };
+                point + height - 0.5 * parts[k].shape.height()
+            };
+            let c = match (base, &parts[k].placement) {
+                (Some(holder), Placement::RestsOn(j)) => Some(held(*j, End::Top, 0.0, holder)),
+                (Some(holder), Placement::Held { part, end, height }) => {
+                    Some(held(*part, *end, *height, holder))
+                }
+                _ => None,
+            };
+            if let Some(c) = c {
                 centres[k] = Some(c);
                 base = Some(c);
             }

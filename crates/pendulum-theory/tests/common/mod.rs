@@ -2,6 +2,8 @@
 //! the worst error. Each value is stored as `hi + lo` (two doubles).
 #![allow(dead_code)]
 
+pub mod parts;
+
 pub struct Reference {
     pub rows: Vec<Vec<f64>>,
 }

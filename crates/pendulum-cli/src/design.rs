@@ -68,6 +68,7 @@ pub fn read_design(path: &Path) -> Result<Design, CliError> {
         let dimension = match unit {
             Unit::Length => Dimension::Length,
             Unit::Mass => Dimension::Mass,
+            Unit::Time => Dimension::Time,
         };
         parse_quantity(text, dimension).map_err(|e| e.to_string())
     };
@@ -173,6 +174,9 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
         }
         if p.massless {
             out.push_str("massless = true\n");
+        }
+        if p.time_constant > 0.0 {
+            out.push_str(&format!("time_constant = \"{} s\"\n", p.time_constant));
         }
         if let Some(t) = thread.filter(|t| t.part == i) {
             out.push_str(&format!("pitch = {}\n", mm(t.pitch)));

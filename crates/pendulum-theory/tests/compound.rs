@@ -72,6 +72,7 @@ fn a_point_bob_on_a_massless_rod_is_the_simple_pendulum() {
         point_mass: 1.0,
         placement: Placement::Centre(0.99362),
         massless: false,
+        time_constant: 0.0,
     };
     let p = CompoundPendulum::new(vec![r, bob]).unwrap();
     let props = p.properties();
@@ -347,6 +348,7 @@ fn the_nut_rate_and_the_effective_mass_by_hand() {
         point_mass: m,
         placement: Placement::Centre(x),
         massless: false,
+        time_constant: 0.0,
     };
     let p = CompoundPendulum::new(vec![rod(big_l, dia, "steel"), bob]).unwrap();
     let m_r = 7850.0 * std::f64::consts::PI / 4.0 * dia * dia * big_l;

@@ -146,6 +146,28 @@ pub struct ClockInput {
     pub run: Option<RunInput>,
 }
 
+impl ClockInput {
+    /// A clock of `pendulum` with every other choice the library's
+    /// default (the drive must still be given).
+    pub fn new(pendulum: ClockPendulum) -> Self {
+        Self {
+            pendulum,
+            g: None,
+            mass: None,
+            q: None,
+            escapement: None,
+            lift_angle: None,
+            drive: None,
+            friction: None,
+            recoil: None,
+            impulse_angle: None,
+            every_beats: None,
+            isochronism: None,
+            run: None,
+        }
+    }
+}
+
 /// A steady state, with the units in its keys.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct SteadyState {
@@ -535,12 +557,16 @@ fn check_weather(w: &Weather) -> Result<(), Refusal> {
 }
 
 /// What the weather does to a clock with a design, at each of its times
-/// against its first row (where the clock was regulated).
+/// (and, where a part lags the air, at times between them) against its
+/// first row (where the clock was regulated).
 struct WeatherEffect {
-    /// The rate change, s/day: the design's temperature coefficient times
-    /// the temperature's change, and the gas's effect (buoyancy and
-    /// carried gas, [`CompoundPendulum::in_gas`]) at the row's pressure and
-    /// temperature less at the first row's.
+    /// The times, s.
+    time: Vec<f64>,
+    /// The rate change, s/day: the design at each part's temperature
+    /// ([`CompoundPendulum::at_part_temperatures`]: the air's, or as it
+    /// lags the air) against the design at the first row's, and the gas's
+    /// effect (buoyancy and carried gas, [`CompoundPendulum::in_gas`]) at
+    /// the row's pressure and temperature less at the first row's.
     rates: Vec<f64>,
     /// The factor on the clock's Q: the gas's damping at the row's
     /// pressure against the first row's, with the rest of the losses (the
@@ -550,10 +576,28 @@ struct WeatherEffect {
     warnings: Vec<String>,
 }
 
+/// The most times a lagging design's weather is evaluated at.
+const MAX_LAG_POINTS: usize = 1_000_000;
+
+/// A first-order lag `y' = (u - y)/τ` over a step of `h` s whose input
+/// goes linearly from `a` to `b`, from `y0`: exact,
+/// `y = b - sτ + (y0 - a + sτ) e^{-h/τ}` with `s = (b - a)/h`.
+fn lag_step(y0: f64, a: f64, b: f64, h: f64, tau: f64) -> f64 {
+    if tau <= 0.0 || h <= 0.0 {
+        return b;
+    }
+    let slope_tau = (b - a) / h * tau;
+    b - slope_tau + (y0 - a + slope_tau) * (-h / tau).exp()
+}
+
 /// The weather's effect on `design` in `gas` (the first row's pressure
 /// and temperature taken for the composition: air of 50% humidity at
 /// 1,013.25 hPa pumped to that pressure) for a clock of total Q `q` at the
-/// first row.
+/// first row. Parts with a thermal time constant follow the air's
+/// temperature as a first-order lag, integrated exactly over the weather
+/// (linear between its rows) on steps of at most a quarter of the
+/// shortest time constant (at most [`MAX_LAG_POINTS`] of them), from the
+/// first row's temperature, settled.
 fn weather_effect(
     design: &CompoundPendulum,
     w: &Weather,
@@ -574,7 +618,6 @@ fn weather_effect(
     };
     let gas0 = GasState::new(gas, p0, t0, humidity)?;
     let at = |c: &Option<Vec<f64>>, i: usize, c0: f64| c.as_ref().map_or(c0, |v| v[i]);
-    let per_c = design.temperature_coefficient();
     let here = design.in_gas(&gas0, g);
     let q_gas0 = here.q;
     let mut warnings = Vec::new();
@@ -590,8 +633,10 @@ fn weather_effect(
         ));
         None
     };
-    let mut rates = Vec::with_capacity(w.time.len());
-    let mut q_factors = Vec::with_capacity(w.time.len());
+    // The gas's rate and Q factor at each row (smooth in the row's
+    // pressure and temperature: linear between rows).
+    let mut gas_rate = Vec::with_capacity(w.time.len());
+    let mut gas_q = Vec::with_capacity(w.time.len());
     for i in 0..w.time.len() {
         let (t, p) = (at(&w.temperature_c, i, t0), at(&w.pressure_pa, i, p0));
         let there = design.in_gas(
@@ -601,13 +646,68 @@ fn weather_effect(
             },
             g,
         );
-        rates.push(per_c * (t - t0) + there.rates.total - here.rates.total);
-        q_factors.push(match pivot {
+        gas_rate.push(there.rates.total - here.rates.total);
+        gas_q.push(match pivot {
             Some(qp) => 1.0 / (1.0 / qp + 1.0 / there.q) / q,
             None => there.q / q_gas0,
         });
     }
+    // The times: the rows, and between them steps of a quarter of the
+    // shortest time constant when a part lags.
+    let lags: Vec<f64> = design.parts().iter().map(|p| p.time_constant).collect();
+    let shortest = lags
+        .iter()
+        .copied()
+        .filter(|&t| t > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    let span = w.time.last().copied().unwrap_or(0.0) - w.time.first().copied().unwrap_or(0.0);
+    let step = if w.temperature_c.is_some() && shortest.is_finite() {
+        (0.25 * shortest).max(span / MAX_LAG_POINTS as f64)
+    } else {
+        f64::INFINITY
+    };
+    let mut time = Vec::new();
+    for (k, &t) in w.time.iter().enumerate() {
+        time.push(t);
+        if let Some(&next) = w.time.get(k + 1) {
+            let n = ((next - t) / step).ceil();
+            if n.is_finite() && n > 1.0 {
+                for j in 1..n as usize {
+                    time.push(t + (next - t) * j as f64 / n);
+                }
+            }
+        }
+    }
+    let air_at = |t: f64| match &w.temperature_c {
+        Some(v) => super::long_run::piecewise_linear(&w.time, v, t),
+        None => t0,
+    };
+    let length0 = design.properties().equivalent_length;
+    let mut parts = vec![t0; lags.len()];
+    let mut rates = Vec::with_capacity(time.len());
+    let mut q_factors = Vec::with_capacity(time.len());
+    for (k, &t) in time.iter().enumerate() {
+        if k > 0 {
+            let (before, now) = (air_at(time[k - 1]), air_at(t));
+            for (y, &tau) in parts.iter_mut().zip(&lags) {
+                *y = lag_step(*y, before, now, t - time[k - 1], tau);
+            }
+        }
+        let deltas: Vec<f64> = parts.iter().map(|y| y - t0).collect();
+        // Within the span every design was checked valid for.
+        let length = design
+            .at_part_temperatures(&deltas)
+            .map_err(|e| Refusal::field("weather", e.to_string()))?
+            .properties()
+            .equivalent_length;
+        rates.push(
+            crate::compound::rate_of_length_ratio(length / length0)
+                + super::long_run::piecewise_linear(&w.time, &gas_rate, t),
+        );
+        q_factors.push(super::long_run::piecewise_linear(&w.time, &gas_q, t));
+    }
     Ok(WeatherEffect {
+        time,
         rates,
         q_factors,
         warnings,
@@ -715,12 +815,12 @@ fn long(
             warnings = effect.warnings;
             if w.pressure_pa.is_some() {
                 damping = Some(Schedule {
-                    time: w.time.clone(),
+                    time: effect.time.clone(),
                     value: effect.q_factors,
                 });
             }
             Some(Schedule {
-                time: w.time.clone(),
+                time: effect.time,
                 value: effect.rates,
             })
         }
@@ -846,19 +946,8 @@ mod tests {
 
     fn seconds_clock() -> ClockInput {
         ClockInput {
-            pendulum: ClockPendulum::Length(0.99362),
-            g: None,
-            mass: None,
-            q: None,
-            escapement: None,
-            lift_angle: None,
             drive: Some(Drive::Energy(20e-6)),
-            friction: None,
-            recoil: None,
-            impulse_angle: None,
-            every_beats: None,
-            isochronism: None,
-            run: None,
+            ..ClockInput::new(ClockPendulum::Length(0.99362))
         }
     }
 

@@ -71,6 +71,7 @@ impl CompoundPendulum {
                 point_mass: 0.0,
                 placement: Placement::RestsOn(nut),
                 massless: false,
+                time_constant: 0.0,
             });
             let tube = parts.len() - 1;
             parts[bob].placement = held.carried_by(tube);
@@ -124,6 +125,7 @@ impl CompoundPendulum {
                 point_mass: 0.0,
                 placement: Placement::RestsOn(nut),
                 massless: false,
+                time_constant: 0.0,
             });
             let tube = parts.len() - 1;
             parts.push(Part {
@@ -141,6 +143,7 @@ impl CompoundPendulum {
                     height: length,
                 },
                 massless: false,
+                time_constant: 0.0,
             });
             let hanging = parts.len() - 1;
             parts[bob].placement = match held {
@@ -275,6 +278,7 @@ impl CompoundPendulum {
                 point_mass: 0.0,
                 placement: Placement::RestsOn(support),
                 massless: false,
+                time_constant: 0.0,
             };
             let wall_part = Part {
                 name: format!("{name} (jar wall)"),
@@ -287,6 +291,7 @@ impl CompoundPendulum {
                 point_mass: 0.0,
                 placement: Placement::RestsOn(bob),
                 massless: false,
+                time_constant: 0.0,
             };
             let mercury_part = Part {
                 name: format!("{name} (mercury)"),
@@ -299,6 +304,7 @@ impl CompoundPendulum {
                 point_mass: 0.0,
                 placement: Placement::RestsOn(bob),
                 massless: false,
+                time_constant: 0.0,
             };
             parts.push(wall_part);
             parts.push(mercury_part);

@@ -24,6 +24,10 @@
 //! tube's lower end; default its top); `hangs_from = "tube"` hangs it by
 //! its top from the top of that part (a tube inside or around another).
 //!
+//! A part that takes time to reach the air's temperature (a zinc tube, a
+//! heavy bob, a jar of mercury) may give its thermal time constant,
+//! `time_constant = "2 h"`: it follows the air as a first-order lag.
+//!
 //! The rating nut may state its thread, `pitch = "0.7 mm"` or `tpi = 36`,
 //! and `divisions = 20` when it is divided.
 
@@ -62,6 +66,8 @@ pub enum Unit {
     Length,
     /// Kilograms.
     Mass,
+    /// Seconds.
+    Time,
 }
 
 /// Reads a size given as text (`"8 mm"`) in SI units, or says why not.
@@ -110,7 +116,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
         let t = p
             .as_object()
             .ok_or_else(|| bad("part", "must be a table".into()))?;
-        const KNOWN: [&str; 23] = [
+        const KNOWN: [&str; 24] = [
             "pitch",
             "tpi",
             "divisions",
@@ -130,6 +136,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             "rests_on_end",
             "hangs_from",
             "massless",
+            "time_constant",
             "center",
             "brass_length",
             "steel",
@@ -280,6 +287,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                 point_mass: 0.0,
                 placement: Placement::Centre(centre),
                 massless: false,
+                time_constant: size("time_constant", Unit::Time)?.unwrap_or(0.0),
             });
             continue;
         }
@@ -411,6 +419,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             }
         };
         let massless = t.get("massless").and_then(|m| m.as_bool()).unwrap_or(false);
+        let time_constant = size("time_constant", Unit::Time)?.unwrap_or(0.0);
         out.push(Part {
             name: name.clone(),
             shape,
@@ -418,6 +427,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             point_mass,
             placement,
             massless,
+            time_constant,
         });
     }
     let pendulum = CompoundPendulum::new(out)

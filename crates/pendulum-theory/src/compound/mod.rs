@@ -118,6 +118,9 @@ pub struct Part {
     pub placement: Placement,
     /// An idealised rod with no mass that still expands.
     pub massless: bool,
+    /// Its thermal time constant, s: it follows the air's temperature as a
+    /// first-order lag (0: at once).
+    pub time_constant: f64,
 }
 
 impl Part {
@@ -165,6 +168,9 @@ fn shown(v: f64) -> String {
 /// The largest thermal expansion a material may have, 1/K, either sign
 /// (solids are 1e-6 to 3e-5; liquids' volume expansion up to about 1.5e-3).
 pub const MAX_EXPANSION: f64 = 2e-3;
+
+/// The longest thermal time constant a part may have, s (a year).
+pub const MAX_TIME_CONSTANT_S: f64 = 3.156e7;
 
 /// A design must stay valid warmed or cooled by this much from its
 /// reference temperature, K (any clock's room, and every temperature a
@@ -286,6 +292,17 @@ impl CompoundPendulum {
                     ),
                 ));
             }
+            if !(p.time_constant.is_finite()
+                && (0.0..=MAX_TIME_CONSTANT_S).contains(&p.time_constant))
+            {
+                return Err(fail(
+                    "time_constant",
+                    format!(
+                        "must lie between 0 and {MAX_TIME_CONSTANT_S:e} s (a year), got {}",
+                        shown(p.time_constant)
+                    ),
+                ));
+            }
             if let Placement::Held { height, .. } = p.placement {
                 if !(0.0..=p.shape.height()).contains(&height) {
                     return Err(fail(
@@ -379,16 +396,34 @@ impl CompoundPendulum {
     /// beyond it, a design whose parts would then reach above the pivot is
     /// refused, saying at which temperature.
     pub fn at_temperature(&self, delta: f64) -> Result<Self, DesignError> {
+        self.at_part_temperatures(&vec![delta; self.parts.len()])
+    }
+
+    /// The same pendulum with part `i` `deltas[i]` °C warmer than the
+    /// reference (a part that lags the air; see
+    /// [`CompoundPendulum::at_temperature`]): each part grows by its own,
+    /// and what the rod carries moves with the rod's. A slice of the wrong
+    /// length is taken as the first value for every part.
+    pub fn at_part_temperatures(&self, deltas: &[f64]) -> Result<Self, DesignError> {
+        let delta_of = |i: usize| {
+            deltas
+                .get(i)
+                .copied()
+                .filter(|_| deltas.len() == self.parts.len())
+                .unwrap_or(deltas.first().copied().unwrap_or(0.0))
+        };
         let parts: Vec<Part> = self
             .parts
             .iter()
-            .map(|p| {
+            .enumerate()
+            .map(|(i, p)| {
+                let delta = delta_of(i);
                 // Every dimension grows; the mass does not (the density
                 // falls as the volume grows). A liquid keeps its jar's
                 // width and rises with its volume.
                 let mut material = p.material.clone();
                 if let (true, Placement::RestsOn(jar)) = (p.material.liquid, &p.placement) {
-                    let width = 1.0 + self.parts[*jar].material.expansion * delta;
+                    let width = 1.0 + self.parts[*jar].material.expansion * delta_of(*jar);
                     let volume = 1.0 + p.material.expansion * delta;
                     material.density /= volume;
                     return Part {
@@ -415,7 +450,9 @@ impl CompoundPendulum {
                 }
             })
             .collect();
-        let rod = self.rod().map(|i| self.parts[i].material.expansion);
+        let rod = self.rod();
+        let delta = rod.map_or(delta_of(0), delta_of);
+        let rod = rod.map(|i| self.parts[i].material.expansion);
         let centres = resolve(&parts, delta, rod).map_err(|e| DesignError {
             message: format!(
                 "{} when {} by {:.3} °C (a design must hold from -{TEMPERATURE_SPAN_K} to \

@@ -11,6 +11,7 @@ pub fn part(name: &str, shape: Shape, material: &str, placement: Placement) -> P
         point_mass: 0.0,
         placement,
         massless: false,
+        time_constant: 0.0,
     }
 }
 

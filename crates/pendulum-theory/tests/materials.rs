@@ -287,3 +287,52 @@ fn a_lagging_compensated_regulator_through_a_day() {
     let instant = 2.0 * amplitude * (air(20.5) - air(19.5)).abs();
     assert!(swing > 2.0 * instant, "{swing} {instant}");
 }
+
+/// After the weather's last row the air holds its temperature and the
+/// lagging parts go on settling towards it (a new user's find: they froze
+/// where the last row left them). A step of 10 °C in the first hour, then
+/// nothing more said: after two days (fifteen of the longest time
+/// constant, 3 h, past the step: e^-15 of the lag's offset remains) the
+/// rate is the settled design's at the new temperature, within 1e-4
+/// s/day, the same as a design whose parts follow at once.
+#[test]
+fn lagging_parts_settle_after_the_last_row() {
+    use pendulum_theory::clock::analysis::{
+        analyse, ClockInput, ClockPendulum, NoRows, RunInput, Weather,
+    };
+    use pendulum_theory::clock::escapement::spec::Drive;
+    let final_rate = |design: CompoundPendulum| {
+        analyse(
+            &ClockInput {
+                drive: Some(Drive::Energy(20e-6)),
+                run: Some(RunInput {
+                    duration: 2.0 * 86_400.0,
+                    every: Some(3600.0),
+                    weather: Some(Weather {
+                        time: vec![0.0, 3600.0],
+                        temperature_c: Some(vec![20.0, 30.0]),
+                        pressure_pa: None,
+                    }),
+                    ..RunInput::default()
+                }),
+                ..ClockInput::new(ClockPendulum::Design(design))
+            },
+            &mut NoRows,
+        )
+        .unwrap()
+        .long_run
+        .unwrap()
+        .final_rate_s_per_day
+    };
+    let lagging = lagging_regulator();
+    let mut parts = lagging.parts().to_vec();
+    for p in parts.iter_mut() {
+        p.time_constant = 0.0;
+    }
+    let (slow, prompt) = (
+        final_rate(lagging),
+        final_rate(CompoundPendulum::new(parts).unwrap()),
+    );
+    eprintln!("after two days: lagging {slow:.6}, prompt {prompt:.6} s/day");
+    assert!((slow - prompt).abs() < 1e-4, "{slow} {prompt}");
+}

@@ -96,8 +96,10 @@ fn render(json: &CompensateJson, part: &str) -> Result<String, CliError> {
         s.row(
             "Compensator",
             format!(
-                "a {inner} tube {} mm long standing on the nut round the rod, and a {outer} tube as long ({} mm outside, {} mm bore) hanging from its top round it, the {part} on its lower end where the nut was, before regulating",
+                "{} {inner} tube {} mm long standing on the nut round the rod, and {} {outer} tube as long ({} mm outside, {} mm bore) hanging from its top round it, the {part} on its lower end where the nut was, before regulating",
+                article(inner),
                 num(l * 1e3, 5),
+                article(outer),
                 num(result.tube_diameter_m.unwrap_or(0.0) * 1e3, 4),
                 num(result.tube_bore_m.unwrap_or(0.0) * 1e3, 4),
             ),
@@ -189,4 +191,13 @@ fn render(json: &CompensateJson, part: &str) -> Result<String, CliError> {
         s.row("Written", w.clone());
     }
     Ok(s.render())
+}
+
+/// "a" or "an" before `word`.
+fn article(word: &str) -> &'static str {
+    if word.starts_with(['a', 'e', 'i', 'o', 'u']) {
+        "an"
+    } else {
+        "a"
+    }
 }

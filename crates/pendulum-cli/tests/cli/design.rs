@@ -727,3 +727,88 @@ fn a_zinc_tube_in_a_steel_tube_and_a_bob_held_at_its_centre() {
     .unwrap();
     refuses(&["design", bad.to_str().unwrap()], "support_height");
 }
+
+/// What a new user's attack found, refused in one line naming the cause:
+/// a bob no denser than the air (it floats), a point mass at the pivot
+/// (it would not swing), tube sizes given to a tube inside a tube (sized
+/// from the rod), a single tube's bore that does not clear the rod, and a
+/// design already compensated. A semi-arc just under 60° answers without
+/// a non-finite number.
+#[test]
+fn what_floats_or_cannot_swing_or_is_already_done_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let light = write(
+        "light.toml",
+        "[[part]]\nname = \"rod\"\nshape = \"rod\"\nmaterial = \"steel\"\nlength = \"1 m\"\ndiameter = \"1 mm\"\ncentre = \"500 mm\"\nmassless = true\n\n\
+         [[part]]\nname = \"bob\"\nshape = \"sphere\"\nmaterial = { density = 0.5, expansion = 1e-6 }\ndiameter = \"100 mm\"\ncentre = \"900 mm\"\n",
+    );
+    let e = refuses(&["design", &light], "floats");
+    assert!(e.contains("1013.25 hPa"), "{e}");
+    // At 1 Pa it swings; the rows where the air would float it are left out.
+    let v = json(&["design", &light, "--pressure", "1Pa"]);
+    let top = v["against_pressure"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| f(r, "pressure_pa"))
+        .fold(0.0, f64::max);
+    assert!(top < 60_000.0, "{top}");
+    let pivot = write(
+        "pivot.toml",
+        "[[part]]\nname = \"bob\"\nshape = \"point\"\nmass = \"1 kg\"\ncentre = \"0 mm\"\n",
+    );
+    refuses(&["design", &pivot], "would not swing");
+    let seconds = example("seconds-steel-brass.toml");
+    refuses(
+        &[
+            "compensate",
+            "--design",
+            &seconds,
+            "--compensator",
+            "zinc-steel",
+            "--tube-diameter",
+            "30mm",
+        ],
+        "--tube-diameter",
+    );
+    refuses(
+        &[
+            "compensate",
+            "--design",
+            &seconds,
+            "--compensator",
+            "zinc",
+            "--tube-bore",
+            "7mm",
+        ],
+        "--tube-bore",
+    );
+    let out = dir.path().join("zs.toml");
+    json(&[
+        "compensate",
+        "--design",
+        &seconds,
+        "--compensator",
+        "zinc-steel",
+        "--write",
+        out.to_str().unwrap(),
+    ]);
+    let e = refuses(
+        &[
+            "compensate",
+            "--design",
+            out.to_str().unwrap(),
+            "--compensator",
+            "zinc",
+        ],
+        "--compensator",
+    );
+    assert!(e.contains("already compensated"), "{e}");
+    let v = json(&["design", &seconds, "--amplitude", "59.9deg"]);
+    assert!(v["semi_arc_deg"].as_f64().is_some(), "{v}");
+}

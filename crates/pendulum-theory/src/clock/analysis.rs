@@ -597,13 +597,16 @@ fn lag_step(y0: f64, a: f64, b: f64, h: f64, tau: f64) -> f64 {
 /// temperature as a first-order lag, integrated exactly over the weather
 /// (linear between its rows) on steps of at most a quarter of the
 /// shortest time constant (at most [`MAX_LAG_POINTS`] of them), from the
-/// first row's temperature, settled.
+/// first row's temperature, settled, and on after the last row (whose
+/// temperature holds) for twenty of the longest time constants or to
+/// `until`, the run's end, s.
 fn weather_effect(
     design: &CompoundPendulum,
     w: &Weather,
     gas: crate::gas::Gas,
     q: f64,
     g: f64,
+    until: f64,
 ) -> Result<WeatherEffect, Refusal> {
     use crate::gas::{Gas, GasState};
     let first = |c: &Option<Vec<f64>>| c.as_ref().and_then(|v| v.first().copied());
@@ -660,16 +663,26 @@ fn weather_effect(
         .copied()
         .filter(|&t| t > 0.0)
         .fold(f64::INFINITY, f64::min);
-    let span = w.time.last().copied().unwrap_or(0.0) - w.time.first().copied().unwrap_or(0.0);
+    let longest = lags.iter().copied().fold(0.0, f64::max);
+    // After the last row the air holds its temperature and the parts go
+    // on settling towards it: twenty of the longest time constants, or to
+    // the run's end.
+    let last = w.time.last().copied().unwrap_or(0.0);
+    let settled = until.min(last + 20.0 * longest).max(last);
+    let span = settled - w.time.first().copied().unwrap_or(0.0);
     let step = if w.temperature_c.is_some() && shortest.is_finite() {
         (0.25 * shortest).max(span / MAX_LAG_POINTS as f64)
     } else {
         f64::INFINITY
     };
     let mut time = Vec::new();
-    for (k, &t) in w.time.iter().enumerate() {
+    let mut ends: Vec<f64> = w.time.clone();
+    if settled > last && step.is_finite() {
+        ends.push(settled);
+    }
+    for (k, &t) in ends.iter().enumerate() {
         time.push(t);
-        if let Some(&next) = w.time.get(k + 1) {
+        if let Some(&next) = ends.get(k + 1) {
             let n = ((next - t) / step).ceil();
             if n.is_finite() && n > 1.0 {
                 for j in 1..n as usize {
@@ -810,8 +823,14 @@ fn long(
         }
         (Some(w), Some(design), None) => {
             check_weather(w)?;
-            let effect =
-                weather_effect(design, w, input_gas, clock.q, built.clock.pendulum.g_m_s2())?;
+            let effect = weather_effect(
+                design,
+                w,
+                input_gas,
+                clock.q,
+                built.clock.pendulum.g_m_s2(),
+                input.duration,
+            )?;
             warnings = effect.warnings;
             if w.pressure_pa.is_some() {
                 damping = Some(Schedule {

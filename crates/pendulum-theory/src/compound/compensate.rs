@@ -356,6 +356,15 @@ fn sized(
     let kind = input.compensator.as_deref().map(str::to_ascii_lowercase);
     // A tube lifts the bob as it warms: it can only cancel a loss.
     let lifting = |what: &str| -> Option<Refusal> {
+        if before.abs() < 1e-6 {
+            return Some(Refusal::field(
+                "compensator",
+                format!(
+                    "the design is already compensated ({} s/day per °C): nothing to size",
+                    format_significant(before, 3)
+                ),
+            ));
+        }
         (before > 0.0).then(|| {
             Refusal::field(
                 "compensator",
@@ -441,6 +450,21 @@ fn sized(
             let (inner_name, outer_name) = tube_pair(name).unwrap_or_default();
             let inner = table_material("compensator", inner_name)?;
             let outer = table_material("compensator", outer_name)?;
+            for (field, given) in [
+                ("tube_diameter", input.tube_diameter),
+                ("tube_bore", input.tube_bore),
+            ] {
+                if given.is_some() {
+                    return Err(Refusal::field(
+                        field,
+                        "is for a single tube: a tube inside a tube is sized from the rod (each \
+                         bore 1 mm over what it surrounds, walls of 1.5 mm)",
+                    ));
+                }
+            }
+            if let Some(e) = lifting("a tube inside a tube") {
+                return Err(e);
+            }
             if inner.liquid || outer.liquid {
                 return Err(Refusal::field(
                     "compensator",
@@ -506,6 +530,16 @@ fn sized(
                 "tube_bore",
                 input.tube_bore.unwrap_or(rod_diameter + TUBE_CLEARANCE_M),
             )?;
+            if bore <= rod_diameter {
+                return Err(Refusal::field(
+                    "tube_bore",
+                    format!(
+                        "the tube's bore ({} mm) must clear the rod ({} mm across)",
+                        format_significant(bore * 1e3, 4),
+                        format_significant(rod_diameter * 1e3, 4)
+                    ),
+                ));
+            }
             let diameter = positive_length(
                 "tube_diameter",
                 input.tube_diameter.unwrap_or(bore + 2.0 * TUBE_WALL_M),

@@ -91,7 +91,8 @@ impl CompoundPendulum {
     /// outer tube together over its length: `L (α_in - α_out) ≈ D α_rod`
     /// for a drop `D`, which for zinc and steel is about 0.6 of the rod.
     /// The bob stays where it was at the reference temperature (the outer
-    /// tube ends where the nut's top is). Each tube's bore clears what it
+    /// tube ends where the nut's top is); a cylindrical bob's bore is
+    /// widened to clear the outer tube. Each tube's bore clears what it
     /// surrounds by [`super::compensate::TUBE_CLEARANCE_M`], its wall
     /// `wall`. The length is found by bisection between 0.1 mm and 1.5 m
     /// (or the longest tube that stays below the pivot) on the exact
@@ -146,6 +147,22 @@ impl CompoundPendulum {
                 time_constant: 0.0,
             });
             let hanging = parts.len() - 1;
+            // The bob's bore clears the outer tube that now runs up it.
+            if let Shape::Cylinder {
+                length: l,
+                diameter: d,
+                bore: b,
+            } = parts[bob].shape
+            {
+                let clear = outer_diameter + clearance;
+                if b < clear && clear < d {
+                    parts[bob].shape = Shape::Cylinder {
+                        length: l,
+                        diameter: d,
+                        bore: clear,
+                    };
+                }
+            }
             parts[bob].placement = match held {
                 Placement::Held { height, .. } => Placement::Held {
                     part: hanging,

@@ -64,9 +64,10 @@ pub struct Air {
 /// any clock's escapement allows.
 pub const MAX_SEMI_ARC_RAD: f64 = std::f64::consts::PI / 3.0;
 
-/// The pressures of the datasheet's table, Pa: a pumped tank to a high
-/// barometer, with a Shortt clock's tank (27 hPa) and the standard
-/// atmosphere.
+/// The pressures of the datasheet's table, Pa: a pumped tank to 1.2 bar,
+/// with a Shortt clock's tank (27 hPa) and the standard atmosphere; the
+/// sheet's own pressure is added in its place. A pressure at which the gas
+/// would float the pendulum (a bob no denser than the gas) is left out.
 pub const TABLE_PRESSURES_PA: [f64; 11] = [
     1.0, 10.0, 100.0, 1000.0, 2700.0, 10_000.0, 30_000.0, 60_000.0, 80_000.0, 101_325.0, 110_000.0,
 ];
@@ -262,6 +263,18 @@ fn shown_got(v: f64, unit: &str) -> String {
 /// Seconds in a day.
 const DAY: f64 = 86_400.0;
 
+/// Whether the gas's effect is finite a little either side of the sheet's
+/// pressure (where the barometric coefficient is taken).
+fn coefficient_probe(pendulum: &super::CompoundPendulum, gas: &GasState, g: f64) -> bool {
+    [0.99, 1.01].iter().all(|f| {
+        pendulum
+            .in_gas(&gas.at_pressure(gas.pressure_pa * f), g)
+            .rates
+            .total
+            .is_finite()
+    })
+}
+
 /// The semi-arc, rad, at which `net(a)` (the barometric coefficient with
 /// the arc's change) is zero: scanned from 0.01° to 60° in steps of 5%,
 /// then bisected to 1e-9 rad. None without a change of sign.
@@ -352,6 +365,14 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         .properties()
         .equivalent_length;
     let in_gas = pendulum.in_gas(&gas, g);
+    if !in_gas.rates.total.is_finite() || !coefficient_probe(pendulum, &gas, g) {
+        return Err(Refusal::data(format!(
+            "in {} at {} hPa the pendulum floats: the gas it displaces weighs as much as it \
+             does (a part no denser than the gas)",
+            gas.gas.name(),
+            format_significant(gas.pressure_pa / 100.0, 6)
+        )));
+    }
     if in_gas.q < 0.5 {
         return Err(Refusal::data(format!(
             "in this gas the pendulum does not swing: the gas alone damps it to Q {} (below \
@@ -401,7 +422,12 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         |a| in_gas.q_at(a, pivot),
     ));
     let here = air.amplitude_rad.map(|a| (a, rates.total + circular(a)));
-    let against_pressure = TABLE_PRESSURES_PA
+    let mut pressures: Vec<f64> = TABLE_PRESSURES_PA.to_vec();
+    if !pressures.contains(&p) {
+        pressures.push(p);
+        pressures.sort_by(f64::total_cmp);
+    }
+    let against_pressure = pressures
         .iter()
         .map(|&pp| {
             let (there, arc) = match here {
@@ -425,6 +451,7 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
                     .map(|(a, (_, r0))| there.rates.total + circular(a) - r0),
             }
         })
+        .filter(|r| r.gas_rate_s_per_day.is_finite() && r.q_gas.is_none_or(f64::is_finite))
         .collect();
     let damping_total = in_gas.damping;
     let nut = design
@@ -485,8 +512,10 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         semi_arc_deg: air.amplitude_rad.map(f64::to_degrees),
         circular_pressure_coefficient_s_per_day_per_hpa: air
             .amplitude_rad
-            .map(|a| net_per_hpa(a) - coefficient),
-        net_pressure_coefficient_s_per_day_per_hpa: air.amplitude_rad.map(net_per_hpa),
+            .and_then(|a| crate::analysis::finite(net_per_hpa(a) - coefficient)),
+        net_pressure_coefficient_s_per_day_per_hpa: air
+            .amplitude_rad
+            .and_then(|a| crate::analysis::finite(net_per_hpa(a))),
         cancelling_semi_arc_deg: cancelling,
         against_pressure,
         nut: per_metre.and(nut).map(|i| pendulum.parts()[i].name.clone()),

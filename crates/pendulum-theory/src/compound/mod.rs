@@ -356,7 +356,14 @@ impl CompoundPendulum {
             return Err(DesignError {
                 part: "-".into(),
                 field: "mass",
-                message: "the pendulum has no mass".into(),
+                message: "the pendulum has no mass (every part is massless)".into(),
+            });
+        }
+        if !(props.equivalent_length.is_finite() && props.centre_of_mass > 0.0) {
+            return Err(DesignError {
+                part: "-".into(),
+                field: "centre",
+                message: "the centre of mass is at the pivot: the pendulum would not swing".into(),
             });
         }
         Ok(pendulum)

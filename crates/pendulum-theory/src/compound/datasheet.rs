@@ -12,8 +12,9 @@
 //! swing keeps the arc at which the losses per cycle equal it: Stokes's
 //! damping and the pivot's (`π ω A² c`, the pivot's `c = I ω / Q_pivot`
 //! taken as independent of the gas) and the form drag's `(8/3) ω² A³ D`
-//! ([`super::gas`]). The circular error is the exact one, `T(A)/T(0) =
-//! (2/π) K(sin²(A/2))`. The barometric coefficient with the arc's change
+//! ([`super::gas`]). The circular error is the exact one,
+//! [`crate::period::circular_error`]. The barometric coefficient with the
+//! arc's change
 //! is a central difference of ±1% of the pressure of the two together,
 //! and the cancelling semi-arc the root of it, found by a scan and
 //! bisection.
@@ -263,18 +264,6 @@ fn shown_got(v: f64, unit: &str) -> String {
 /// Seconds in a day.
 const DAY: f64 = 86_400.0;
 
-/// Whether the gas's effect is finite a little either side of the sheet's
-/// pressure (where the barometric coefficient is taken).
-fn coefficient_probe(pendulum: &super::CompoundPendulum, gas: &GasState, g: f64) -> bool {
-    [0.99, 1.01].iter().all(|f| {
-        pendulum
-            .in_gas(&gas.at_pressure(gas.pressure_pa * f), g)
-            .rates
-            .total
-            .is_finite()
-    })
-}
-
 /// The semi-arc, rad, at which `net(a)` (the barometric coefficient with
 /// the arc's change) is zero: scanned from 0.01° to 60° in steps of 5%,
 /// then bisected to 1e-9 rad. None without a change of sign.
@@ -365,7 +354,8 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         .properties()
         .equivalent_length;
     let in_gas = pendulum.in_gas(&gas, g);
-    if !in_gas.rates.total.is_finite() || !coefficient_probe(pendulum, &gas, g) {
+    let coefficient = pendulum.pressure_coefficient(&gas, g);
+    if !(in_gas.rates.total.is_finite() && coefficient.is_finite()) {
         return Err(Refusal::data(format!(
             "in {} at {} hPa the pendulum floats: the gas it displaces weighs as much as it \
              does (a part no denser than the gas)",
@@ -383,14 +373,14 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
     }
     let rates = in_gas.rates;
     let rho = gas.density();
-    let coefficient = pendulum.pressure_coefficient(&gas, g);
     // The pivot's losses as a damping torque, the same at every pressure.
     let pivot = air
         .pivot_q
         .map_or(0.0, |qp| in_gas.inertia * in_gas.omega / qp);
+    // The rate of the circular error at semi-arc a (losing: negative).
     let circular = |a: f64| {
-        let ratio = 2.0 / std::f64::consts::PI * crate::elliptic::ellipk((0.5 * a).sin().powi(2));
-        DAY * (1.0 / ratio - 1.0)
+        crate::Amplitude::from_radians(a)
+            .map_or(f64::NAN, |a| 0.0 - DAY * crate::period::circular_error(a))
     };
     // The rate (gas and circular error) at pressure `pp` of a clock whose
     // drive keeps semi-arc `a` at the sheet's pressure; None past 60°.

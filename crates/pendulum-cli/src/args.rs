@@ -6,8 +6,8 @@
 
 use crate::paths::{InputPath, OutputPath};
 use crate::units::{
-    Acceleration, Angle, BeatsPerHour, Celsius, Decibels, Drive, Fraction, Hectopascals, Hertz,
-    Length, Mass, Milliseconds, Number, Percent, Ppm, RateChange, RatePerDay, SampleRate,
+    Acceleration, Angle, BeatError, BeatsPerHour, Celsius, Decibels, Drive, Fraction, Hectopascals,
+    Hertz, Length, Mass, Milliseconds, Number, Percent, Ppm, RateChange, RatePerDay, SampleRate,
     ThreadsPerInch, Time,
 };
 use clap::{Args, Parser, Subcommand};
@@ -1247,14 +1247,20 @@ pub struct ClockArgs {
     /// the impulse, while the train's drive only adds locking friction.
     #[arg(long, value_name = "DRIVE", allow_hyphen_values = true)]
     pub drive: Drive,
-    #[arg(long, value_name = "MU", allow_hyphen_values = true, help = with_default("Dead-face (locking) friction coefficient: deadbeat, constant-force", clock::DEFAULT_FRICTION))]
+    #[arg(long, value_name = "MU", allow_hyphen_values = true, help = with_default("Pallet friction coefficient: on the dead (locking) faces of deadbeat and constant-force, on the recoil faces of recoil", clock::DEFAULT_FRICTION))]
     pub friction: Option<Number>,
-    #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("Recoil: the pushing-back torque one lift angle past the lift, over the drive torque", clock::DEFAULT_RECOIL))]
+    #[arg(long, value_name = "R", allow_hyphen_values = true, help = with_default("Recoil: the torque the wheel gives back through the recoil arc, over the impulse torque (1: one straight face)", clock::DEFAULT_RECOIL))]
     pub recoil: Option<Number>,
     #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("Where the impulse falls before the bottom (negative: after): for impulse and free the impulse's angle, for deadbeat the lift's centre (degrees)", clock::DEFAULT_IMPULSE_ANGLE_DEG))]
     pub impulse_angle: Option<Angle>,
     #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Free pendulum: beats between impulses (Shortt's)", clock::DEFAULT_EVERY_BEATS))]
     pub every_beats: Option<u64>,
+    /// Out of beat: the beat error the ticks show (e.g. 20ms, half the
+    /// difference of the tick and tock intervals, as `listen` measures it)
+    /// or the escapement's offset from the pendulum's rest (e.g. 0.3deg)
+    /// [default: in beat].
+    #[arg(long, value_name = "B", allow_hyphen_values = true)]
+    pub beat_error: Option<BeatError>,
     /// The isochronism curve: drive factors from..to (e.g. 0.5x..2x).
     #[arg(long, value_name = "A..B", allow_hyphen_values = true)]
     pub drive_range: Option<String>,

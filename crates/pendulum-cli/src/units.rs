@@ -659,6 +659,37 @@ impl std::str::FromStr for Drive {
     }
 }
 
+/// How far out of beat: a beat error (`20ms`) or the escapement's offset
+/// from the pendulum's rest (`0.3deg`). A bare number is refused: a
+/// timegrapher's milliseconds and a clockmaker's degrees are both usual.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BeatError(pub pendulum_theory::clock::analysis::BeatError);
+
+impl std::str::FromStr for BeatError {
+    type Err = ValueError;
+    fn from_str(text: &str) -> Result<Self, ValueError> {
+        use pendulum_theory::clock::analysis::BeatError::{Angle, Time};
+        if parse_number(text.trim()).is_ok() {
+            return Err(ValueError(format!(
+                "give a unit: a beat error ({}ms) or the escapement's offset from the rest ({}deg)",
+                text.trim(),
+                text.trim()
+            )));
+        }
+        match (
+            parse_quantity(text, Dimension::Time),
+            parse_quantity(text, Dimension::Angle),
+        ) {
+            (Ok(t), _) => Ok(BeatError(Time(t))),
+            (_, Ok(a)) => Ok(BeatError(Angle(a))),
+            (Err(e @ UnitError::NotFinite(_)), _) => Err(ValueError(e.to_string())),
+            _ => Err(ValueError(format!(
+                "'{text}' is neither a beat error (20ms) nor an angle out of beat (0.3deg)"
+            ))),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

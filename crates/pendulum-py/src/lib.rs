@@ -760,7 +760,7 @@ impl pendulum_theory::clock::analysis::RunSink for Columns {
 /// rows (time_s, beats, amplitude_rad, rate_s_per_day, time_error_s,
 /// drive_factor) when one was asked for. `None` is the library's default.
 #[pyfunction]
-#[pyo3(signature = (length, parts, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, drive_factor, drive_range, steps, run))]
+#[pyo3(signature = (length, parts, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, beat_error, out_of_beat, drive_factor, drive_range, steps, run))]
 #[allow(clippy::too_many_arguments)]
 fn clock<'py>(
     py: Python<'py>,
@@ -777,14 +777,16 @@ fn clock<'py>(
     recoil: Option<f64>,
     impulse_angle: Option<f64>,
     every_beats: Option<i64>,
+    beat_error: Option<f64>,
+    out_of_beat: Option<f64>,
     drive_factor: Option<Vec<f64>>,
     drive_range: Option<(f64, f64)>,
     steps: Option<i64>,
     run: Option<RunArgs>,
 ) -> PyResult<(String, Option<Vec<Array1<'py>>>)> {
     use pendulum_theory::clock::analysis::{
-        analyse, drive_of, escapement_named, ClockInput, ClockPendulum, DriveFactors, RunInput,
-        Schedule,
+        analyse, drive_of, escapement_named, BeatError, ClockInput, ClockPendulum, DriveFactors,
+        RunInput, Schedule,
     };
     let refused = |r: Refusal| PyValueError::new_err(r.to_string());
     let schedule =
@@ -827,6 +829,16 @@ fn clock<'py>(
         recoil,
         impulse_angle,
         every_beats: every_beats.map(count::<u64>),
+        beat_error: match (beat_error, out_of_beat) {
+            (Some(_), Some(_)) => {
+                return Err(PyValueError::new_err(
+                    "beat_error: give the beat error or the angle out of beat, not both",
+                ))
+            }
+            (Some(b), None) => Some(BeatError::Time(b)),
+            (None, Some(a)) => Some(BeatError::Angle(a)),
+            (None, None) => None,
+        },
         isochronism,
         run: run.map(
             |(duration, every, drive, rate, weather, force, _)| RunInput {

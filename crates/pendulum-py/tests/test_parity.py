@@ -612,7 +612,8 @@ CLOCK_FLAGS = {"drive_energy": ("--drive", "J"), "drive_torque": ("--drive", "Nm
                "friction": ("--friction", ""), "recoil": ("--recoil", ""),
                "impulse_angle": ("--impulse-angle", "rad"), "every_beats": ("--every-beats", ""),
                "g": ("--g", ""), "steps": ("--steps", ""), "duration": ("--duration", "s"),
-               "every": ("--every", "s")}
+               "every": ("--every", "s"), "beat_error": ("--beat-error", "s"),
+               "out_of_beat": ("--beat-error", "rad")}
 FLAG.update({"drive_schedule": "--drive-file"})
 
 SECONDS = 0.99362
@@ -641,6 +642,12 @@ CLOCK = {
     "recoil": {"drive_energy": 2e-5, "escapement": "recoil"},
     "recoil_torque": {"drive_torque": 2e-4, "escapement": "recoil"},
     "recoil_half": {"drive_energy": 2e-5, "escapement": "recoil", "recoil": 0.5},
+    "recoil_frictionless": {"drive_energy": 2e-5, "escapement": "recoil", "friction": 0.0},
+    "recoil_locked": {"drive_energy": 2e-5, "escapement": "recoil", "friction": 1.0},
+    "out_of_beat_ms": {"drive_energy": 2e-5, "beat_error": 0.02},
+    "out_of_beat_angle": {"drive_energy": 2e-5, "escapement": "recoil", "out_of_beat": 0.003},
+    "out_of_beat_too_far": {"drive_energy": 2e-5, "out_of_beat": 0.06},
+    "beat_error_too_big": {"drive_energy": 2e-5, "beat_error": 0.6},
     "impulse": {"drive_energy": 2e-5, "escapement": "impulse"},
     "impulse_early": {"drive_energy": 2e-5, "escapement": "impulse", "impulse_angle": 0.02},
     "free": {"drive_energy": 5e-4, "escapement": "free", "every_beats": 30},
@@ -718,6 +725,8 @@ RUNS = {
     "a_week_hourly": {"duration": 7 * DAY, "every": 3600.0},
     "a_year_daily": {"duration": 365.25 * DAY, "every": DAY},
     "recoil_week": {"duration": 7 * DAY, "every": 3600.0, "escapement": "recoil"},
+    "out_of_beat_week": {"duration": 7 * DAY, "every": 3600.0, "out_of_beat": 0.003},
+    "out_of_beat_every_beat": {"duration": 600.0, "beat_error": 0.01},
     "free_day": {"duration": DAY, "every": 600.0, "escapement": "free", "drive_energy": 5e-4},
     "running_down": {"duration": 8 * DAY, "every": 3600.0,
                      "drive_schedule": ([0.0, 8 * DAY], [1.0, 0.7])},

@@ -263,13 +263,20 @@ fn many_beats_per_step_against_one() {
     assert!(one.amplitude < s.amplitude && one.time_error > 0.0);
 }
 
-/// Isochronism as the horological texts describe it (Rawlings, The
-/// Science of Clocks and Watches, 3rd ed., ch. 5; Woodward, My Own Right
-/// Time, ch. 5): a deadbeat escapement adds almost no error of its own,
-/// so more drive means a larger arc and a losing clock (the circular
-/// error); a recoil escapement gains as the drive increases, which offsets
-/// much of the circular error; a constant-force escapement keeps the arc
-/// whatever the drive. Drive from 0.5x to 2x, Q = 10,000, lift 2°.
+/// Isochronism as the horological texts describe it. A deadbeat adds
+/// almost no error of its own, so more drive means a larger arc and a
+/// losing clock (the circular error), and a falling drive a gaining one:
+/// "the same clock fitted with [a deadbeat] would gradually gain as it
+/// ran down" (Hasluck, Cassell's Cyclopaedia of Mechanics, "Clock
+/// escapements and motive power"). An anchor (recoil) clock does the
+/// opposite: a recoil clock "go[es] gradually slower" as its spring runs
+/// down (Hasluck), "the clock loses as the arc of the pendulum falls off,
+/// and vice versa" (Encyclopaedia Britannica, 11th ed., 1911, "Clock").
+/// A little recoil still loses with the drive, so between it and the
+/// full recoil lies one that keeps time whatever the drive ("the
+/// escapement must not have much recoil, nor must it be perfectly dead",
+/// Hasluck). A constant-force escapement keeps the arc whatever the
+/// drive. Drive from 0.5x to 2x, Q = 10,000, lift 2°, friction 0.15.
 #[test]
 fn isochronism_of_deadbeat_recoil_and_constant_force() {
     use pendulum_theory::clock::escapement::ConstantForce;
@@ -284,14 +291,17 @@ fn isochronism_of_deadbeat_recoil_and_constant_force() {
             offset: 0.0,
         }),
     );
-    let recoil = clock(
-        1e4,
-        Box::new(Recoil {
-            lift,
-            torque,
-            recoil: 1.0,
-        }),
-    );
+    let anchor = |recoil: f64| {
+        clock(
+            1e4,
+            Box::new(Recoil {
+                lift,
+                torque,
+                recoil,
+                friction: 0.15,
+            }),
+        )
+    };
     let constant = clock(
         1e4,
         Box::new(ConstantForce {
@@ -303,14 +313,149 @@ fn isochronism_of_deadbeat_recoil_and_constant_force() {
     );
     let at = |c: &Clock, f: f64| c.steady(HalfSwingMethod::Direct, f).unwrap();
     let (d1, d2) = (at(&deadbeat, 0.5), at(&deadbeat, 2.0));
-    let (r1, r2) = (at(&recoil, 0.5), at(&recoil, 2.0));
+    let recoil = anchor(1.0);
+    let (r1, r, r2) = (at(&recoil, 0.5), at(&recoil, 1.0), at(&recoil, 2.0));
     let (c1, c2) = (at(&constant, 0.5), at(&constant, 2.0));
     assert!(d2.amplitude > d1.amplitude && d2.rate < d1.rate);
     assert!(d1.escapement_rate.abs() < 0.01 && d2.escapement_rate.abs() < 0.01);
+    // The anchor gains with the drive, at every step.
+    assert!(r2.rate > r.rate && r.rate > r1.rate, "{r1:?} {r:?} {r2:?}");
     assert!(r2.escapement_rate > r1.escapement_rate && r1.escapement_rate > 0.0);
-    assert!((r2.rate - r1.rate).abs() < 0.5 * (d2.rate - d1.rate).abs());
+    // A little recoil loses with the drive as a deadbeat does, so a
+    // recoil between it and the full one keeps time whatever the drive.
+    let little = anchor(0.1);
+    let (l1, l2) = (at(&little, 0.5), at(&little, 2.0));
+    assert!(l2.rate < l1.rate, "{l1:?} {l2:?}");
     // Constant force: the arc moves only by the locking friction's share.
     assert!((c2.amplitude / c1.amplitude - 1.0).abs() < 0.5 * (d2.amplitude / d1.amplitude - 1.0));
+}
+
+/// The anchor's arc hardly grows with the drive: the recoil faces'
+/// friction takes energy in proportion to the drive and to the arc beyond
+/// the lift (Britannica 1911, "Clock": the recoil escapement's pallets
+/// "absorb" the extra force). Without friction the energy it gives is the
+/// impulse's alone and the arc follows the square root of the drive
+/// (viscous losses grow as its square): a fourfold drive doubles it. With
+/// friction 0.15 the arc grows as less than the drive's fourth root, and
+/// its steady value is the small-angle energy balance's, solved here in
+/// closed form: the impulse `T·2h` less the friction's loss `r T (F - 1)
+/// (A - h)`, `F = ((1 + μ)/(1 - μ))²`, equals the viscous loss `π A² /
+/// (2 Q)` (to the small-angle error, `A²/8`, 2e-4). And the recoil's gain
+/// is Airy's small-angle integral of a constant torque towards the middle
+/// beyond the lift (returning `r T`, recoiling `r T F`): `86400 r T (1 +
+/// F) sqrt(A² - h²) / (π A²)` s/day.
+#[test]
+fn the_anchors_arc_is_held_by_its_recoil_friction() {
+    let (lift, torque, q) = (2f64.to_radians(), 2e-5, 1e4);
+    let anchor = |friction: f64| {
+        clock(
+            q,
+            Box::new(Recoil {
+                lift,
+                torque,
+                recoil: 1.0,
+                friction,
+            }),
+        )
+    };
+    let at = |c: &Clock, f: f64| c.steady(HalfSwingMethod::Direct, f).unwrap();
+    let frictionless = anchor(0.0);
+    let ratio = at(&frictionless, 4.0).amplitude / at(&frictionless, 1.0).amplitude;
+    assert!((ratio - 2.0).abs() < 1e-3, "{ratio}");
+    let oiled = anchor(0.15);
+    let (s1, s4) = (at(&oiled, 1.0), at(&oiled, 4.0));
+    let growth = (s4.amplitude / s1.amplitude).ln() / 4f64.ln();
+    assert!(growth < 0.25, "the arc grows as the drive to the {growth}");
+    let f = (1.15f64 / 0.85).powi(2);
+    let h = 0.5 * lift;
+    for (s, drive) in [(s1, 1.0), (s4, 4.0)] {
+        let t = torque * drive;
+        // π A²/(2Q) + t (F - 1) A - t (2h + (F - 1) h) = 0.
+        let (qa, qb, qc) = (
+            std::f64::consts::PI / (2.0 * q),
+            t * (f - 1.0),
+            -t * (2.0 * h + (f - 1.0) * h),
+        );
+        let a = (-qb + (qb * qb - 4.0 * qa * qc).sqrt()) / (2.0 * qa);
+        assert!((s.amplitude / a - 1.0).abs() < 1e-3, "{} {a}", s.amplitude);
+        let airy =
+            86_400.0 * t * (1.0 + f) * (a * a - h * h).sqrt() / (std::f64::consts::PI * a * a);
+        assert!(
+            (s.escapement_rate / airy - 1.0).abs() < 0.01,
+            "{} {airy}",
+            s.escapement_rate
+        );
+    }
+}
+
+/// A clock out of beat by `δ`: the ticks (the drop at the lift's far edge)
+/// fall at `θ = δ + h` on the swing out and `δ - h` on the swing back, and
+/// for the free swing of amplitude `A` the beat error is `|acos((δ -
+/// h)/A) + acos((δ + h)/A) - π| / ω` (closed form; the escapement's
+/// torques move it by their ratio to gravity's, 1e-3 here). The beat
+/// analysis of `fit beats` reads the same beat error from the model's
+/// tick times. In beat it is zero; the escapement's pushes on the two
+/// beats cancel to first order, so the rate moves by thousandths of a
+/// second a day; and the drive must carry the swing `δ` further to unlock.
+#[test]
+fn a_clock_out_of_beat_ticks_unevenly() {
+    use pendulum_theory::clock::direct::half_swing_ticked;
+    use pendulum_theory::clock::escapement::OutOfBeat;
+    use pendulum_theory::fitting::beats::analyse_beats;
+    let lift = 2f64.to_radians();
+    let deadbeat = || Deadbeat {
+        lift,
+        torque: 2e-5,
+        friction: 0.15,
+        offset: 0.0,
+    };
+    let delta = 0.2f64.to_radians();
+    let in_beat = clock(1e4, Box::new(deadbeat()));
+    let out = clock(
+        1e4,
+        Box::new(OutOfBeat {
+            inner: Box::new(deadbeat()),
+            offset: delta,
+        }),
+    );
+    let s0 = in_beat.steady(HalfSwingMethod::Direct, 1.0).unwrap();
+    let s = out.steady(HalfSwingMethod::Direct, 1.0).unwrap();
+    assert_eq!(s0.beat_error, 0.0);
+    let (a, h) = (s.amplitude, 0.5 * lift);
+    let omega = out.pendulum.natural_angular_frequency();
+    let free =
+        (((delta - h) / a).acos() + ((delta + h) / a).acos() - std::f64::consts::PI).abs() / omega;
+    assert!(
+        (s.beat_error / free - 1.0).abs() < 2e-3,
+        "{} {free}",
+        s.beat_error
+    );
+    assert!((s.rate - s0.rate).abs() < 1e-3, "{} {}", s.rate, s0.rate);
+    assert!(out.minimum_drive() > in_beat.minimum_drive());
+    // Its ticks, half swing by half swing, read as a beat log.
+    let mut ticks = Vec::new();
+    let (mut time, mut amplitude) = (0.0, s.amplitude);
+    for beat in 0..400u64 {
+        let (swing, tick) = half_swing_ticked(
+            out.escapement.as_ref(),
+            out.q,
+            1.0,
+            beat % 2,
+            amplitude,
+            1e-12,
+        )
+        .unwrap();
+        ticks.push((time + tick.unwrap()) / omega);
+        time += swing.time;
+        amplitude = swing.amplitude;
+    }
+    let log = analyse_beats(&ticks, Some(0.5 * s.period)).unwrap();
+    assert!(
+        (log.beat_error_ms / (1e3 * s.beat_error) - 1.0).abs() < 1e-3,
+        "{} {}",
+        log.beat_error_ms,
+        1e3 * s.beat_error
+    );
 }
 
 /// A drive too weak to carry the swing through the lift: the pendulum

@@ -213,6 +213,7 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
         recoil: args.recoil.map(|r| r.0),
         impulse_angle: args.impulse_angle.map(|a| a.0),
         every_beats: args.every_beats,
+        beat_error: args.beat_error.map(|b| b.0),
         isochronism: args
             .drive_range
             .as_deref()
@@ -386,6 +387,20 @@ fn render_text(r: &ClockResult, swings_file: Option<&str>) -> String {
             "Stops below",
             format!("{} × the drive", num(r.minimum_drive_factor, 4)),
         );
+    if let Some(change) = r.out_of_beat_rate_s_per_day {
+        out.row(
+            "Out of beat",
+            format!(
+                "{}° off the rest: beat error {} ms, {} s/day against the clock in beat",
+                num(r.out_of_beat_deg, 4),
+                num(s.beat_error_ms, 4),
+                num(change, 4)
+            ),
+        );
+    }
+    for w in &r.warnings {
+        out.row("WARNING", w.clone());
+    }
     let mut text = out.render();
     if let Some(rows) = &r.isochronism {
         let table: Vec<Vec<String>> = rows

@@ -84,3 +84,67 @@ fn the_readme_figures_are_what_the_binary_draws() {
     let between = differing_share(&drawn[0], &drawn[1]);
     assert!(between > 10.0 * PIXEL_SHARE, "{between}");
 }
+
+/// The sentences under the isochronism figures quote the figures' own
+/// numbers, as the binary computes them now: the arc and the rate at half
+/// and twice the drive for each escapement, and the spread of the rate
+/// with half the recoil.
+#[test]
+fn the_isochronism_sentences_are_what_the_binary_says() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let readme = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    let curve = |args: &[String]| -> Vec<(f64, f64)> {
+        let out = pendulum().args(args).arg("--json").output().unwrap();
+        assert!(out.status.success());
+        let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        json["isochronism"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| {
+                (
+                    p["amplitude_deg"].as_f64().unwrap(),
+                    p["rate_s_per_day"].as_f64().unwrap(),
+                )
+            })
+            .collect()
+    };
+    let says = |text: String| {
+        assert!(
+            readme.contains(&text),
+            "README.md should say '{text}' under the isochronism figures"
+        );
+    };
+    let figures = figures();
+    let args = |name: &str| {
+        figures
+            .iter()
+            .find(|(n, _)| n == name)
+            .unwrap_or_else(|| panic!("{name} is not in figures.txt"))
+            .1
+            .clone()
+    };
+    let deadbeat = curve(&args("isochronism-deadbeat.png"));
+    let recoil = curve(&args("isochronism-recoil.png"));
+    let (d0, d1) = (deadbeat[0], *deadbeat.last().unwrap());
+    let (r0, r1) = (recoil[0], *recoil.last().unwrap());
+    says(format!(
+        "({:.2}° to {:.2}° from half to twice the drive)",
+        d0.0, d1.0
+    ));
+    says(format!("({:.2} to {:.1} s/day;", d0.1, d1.1));
+    says(format!("much less ({:.2}° to {:.2}°)", r0.0, r1.0));
+    says(format!("(+{:.2} to +{:.1} s/day)", r0.1, r1.1));
+    assert!(recoil.windows(2).all(|w| w[1].1 > w[0].1), "{recoil:?}");
+    assert!(deadbeat.windows(2).all(|w| w[1].1 < w[0].1), "{deadbeat:?}");
+    let mut half = args("isochronism-recoil.png");
+    half.extend(["--recoil".into(), "0.5".into()]);
+    let rates: Vec<f64> = curve(&half).iter().map(|p| p.1).collect();
+    let spread = rates.iter().copied().fold(f64::MIN, f64::max)
+        - rates.iter().copied().fold(f64::MAX, f64::min);
+    assert!(
+        spread < 0.3,
+        "half the recoil: the rate spreads {spread} s/day"
+    );
+    says("keeps time within 0.3 s/day".into());
+}

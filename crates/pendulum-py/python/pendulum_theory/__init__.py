@@ -364,15 +364,16 @@ def fit_photogate(time, *, gate=None, select=None, bob_diameter=None, bph=None, 
 
 def _clock(length, *, parts=None, drive_energy=None, drive_torque=None, q=None, escapement=None,
            lift_angle=None, mass=None, friction=None, recoil=None, impulse_angle=None,
-           every_beats=None, g=None, drive_factor=None, drive_range=None, steps=None, run=None):
+           every_beats=None, beat_error=None, out_of_beat=None, g=None, drive_factor=None,
+           drive_range=None, steps=None, run=None):
     factors = None if drive_factor is None else [
         float(f) for f in _np.atleast_1d(_np.asarray(drive_factor, dtype=_np.float64)).ravel()]
     span = None if drive_range is None else (float(drive_range[0]), float(drive_range[1]))
     text, columns = _native.clock(
         _number(length), None if parts is None else _parts(parts), _number(g), _number(mass), _number(q), _text(escapement),
         _number(lift_angle), _number(drive_torque), _number(drive_energy), _number(friction),
-        _number(recoil), _number(impulse_angle), _count(every_beats),
-        factors, span, _count(steps), run)
+        _number(recoil), _number(impulse_angle), _count(every_beats), _number(beat_error),
+        _number(out_of_beat), factors, span, _count(steps), run)
     return _json.loads(text), columns
 
 
@@ -390,6 +391,8 @@ def clock(
     recoil=None,
     impulse_angle=None,
     every_beats=None,
+    beat_error=None,
+    out_of_beat=None,
     g=None,
     drive_factor=None,
     drive_range=None,
@@ -402,9 +405,12 @@ def clock(
     ``length`` m or a design of ``parts`` (see :func:`design`); angles in
     radians; a keyword
     left out is the library's default (``pendulum clock --help`` lists
-    them). Returns the command's ``--json`` object as a dict: the clock
+    them). Out of beat: ``beat_error`` (s, half the difference of the tick
+    and tock intervals) or ``out_of_beat`` (rad, the escapement's offset
+    from the rest), the CLI's ``--beat-error``. Returns the command's
+    ``--json`` object as a dict: the clock
     (escapement, q, length_m, mass_kg, lift_angle_rad, the drive,
-    minimum_drive_factor), ``steady`` (amplitude_rad, period_s, rate_s_per_day,
+    minimum_drive_factor, out_of_beat_deg, out_of_beat_rate_s_per_day), ``steady`` (amplitude_rad, period_s, rate_s_per_day,
     its circular and escapement parts, energy_per_beat_j, power_w, ...)
     and, with ``drive_factor`` (factors) or ``drive_range=(a, b)`` and
     ``steps``, ``isochronism``: one dict per factor, ``stops`` where the
@@ -412,7 +418,8 @@ def clock(
     stops: ...")."""
     result, _ = _clock(length, parts=parts, drive_energy=drive_energy, drive_torque=drive_torque, q=q,
                        escapement=escapement, lift_angle=lift_angle, mass=mass, friction=friction,
-                       recoil=recoil, impulse_angle=impulse_angle, every_beats=every_beats, g=g,
+                       recoil=recoil, impulse_angle=impulse_angle, every_beats=every_beats,
+                       beat_error=beat_error, out_of_beat=out_of_beat, g=g,
                        drive_factor=drive_factor, drive_range=drive_range, steps=steps)
     return result
 

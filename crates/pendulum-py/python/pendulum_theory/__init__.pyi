@@ -99,6 +99,8 @@ def clock(
     recoil: Optional[float] = ...,
     impulse_angle: Optional[float] = ...,
     every_beats: Optional[int] = ...,
+    beat_error: Optional[float] = ...,
+    out_of_beat: Optional[float] = ...,
     g: Optional[float] = ...,
     drive_factor: Optional[ArrayLike] = ...,
     drive_range: Any = ...,

@@ -100,14 +100,14 @@ fn given_by(
         // Before the start (for the derivative's wider orbit): the first
         // zone's torque continued.
         let zone = super::escapement::zone_of(edges, theta);
-        -escapement.work(zone, theta, -a, drive)
+        -escapement.work_on(zone, theta, -a, beat, drive)
     }
 }
 
 /// The escapement's change of the half swing's duration, scaled time, to
 /// first order, at amplitude `a` rad on beat `beat` (see the module notes).
 pub fn time_shift(escapement: &dyn Escapement, a: f64, beat: u64, drive: f64) -> f64 {
-    let edges = escapement.edges();
+    let edges = escapement.edges_on(beat);
     let total = escapement.energy(a, a, beat, drive);
     let delta = |theta: f64| given_by(escapement, &edges, a, theta, beat, drive) - 0.5 * total;
     let j = |energy: f64| -> f64 {
@@ -146,7 +146,7 @@ pub fn time_shift(escapement: &dyn Escapement, a: f64, beat: u64, drive: f64) ->
 /// steps of `δE` (integrated by parts: `(1/A²) ∫ δE(θ) dθ/dτ ...`); here
 /// as `d/dE` of `∫ δE(A sin φ) dφ`, the same quadrature with `dθ/v = dφ`.
 pub fn small_angle_time_shift(escapement: &dyn Escapement, a: f64, beat: u64, drive: f64) -> f64 {
-    let edges = escapement.edges();
+    let edges = escapement.edges_on(beat);
     let total = escapement.energy(a, a, beat, drive);
     let delta = |theta: f64| given_by(escapement, &edges, a, theta, beat, drive) - 0.5 * total;
     let j = |amp: f64| -> f64 {

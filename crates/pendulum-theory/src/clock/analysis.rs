@@ -24,11 +24,11 @@ pub const DEFAULT_Q: f64 = 10_000.0;
 pub const DEFAULT_MASS_KG: f64 = 5.0;
 /// Lift angle when none is given, degrees (a regulator's deadbeat).
 pub const DEFAULT_LIFT_DEG: f64 = 2.0;
-/// Dead-face friction coefficient when none is given (steel on brass,
-/// oiled).
+/// Pallet friction coefficient when none is given (steel on brass,
+/// oiled): the dead faces of a deadbeat, the recoil faces of an anchor.
 pub const DEFAULT_FRICTION: f64 = 0.15;
-/// Recoil (pushing-back torque one lift past the lift, over the drive)
-/// when none is given.
+/// The anchor's recoil torque over its impulse torque when none is given
+/// (1: one straight face, the recoil continuing the impulse's slope).
 pub const DEFAULT_RECOIL: f64 = 1.0;
 /// Where the impulse falls before the bottom when not given, degrees.
 pub const DEFAULT_IMPULSE_ANGLE_DEG: f64 = 0.0;
@@ -111,6 +111,23 @@ pub struct RunInput {
     pub force: bool,
 }
 
+/// How far out of beat a clock is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum BeatError {
+    /// The escapement's offset from the pendulum's rest, rad (the crutch's
+    /// bend), positive towards the side the first half swing travels to.
+    Angle(f64),
+    /// The beat error its ticks show, s (half the difference of the tick
+    /// and tock intervals, as `listen` measures it): the offset that gives
+    /// it at the drive given (factor 1) is found, and held at every other
+    /// drive.
+    Time(f64),
+}
+
+/// A beat error of this fraction of the beat or more is warned of: an
+/// uneven tick a clockmaker hears (the tick and tock intervals 51/49).
+pub const AUDIBLY_OUT_OF_BEAT: f64 = 0.01;
+
 /// A clock, described as a clockmaker would. Every `None` is the
 /// library's default.
 #[derive(Clone, Debug)]
@@ -130,7 +147,7 @@ pub struct ClockInput {
     pub lift_angle: Option<f64>,
     /// The drive: a torque at the pallets or an energy per beat.
     pub drive: Option<Drive>,
-    /// Dead-face friction (default [`DEFAULT_FRICTION`]).
+    /// Pallet friction (default [`DEFAULT_FRICTION`]).
     pub friction: Option<f64>,
     /// Recoil ratio (default [`DEFAULT_RECOIL`]).
     pub recoil: Option<f64>,
@@ -140,6 +157,8 @@ pub struct ClockInput {
     /// Free pendulum: beats between impulses (default
     /// [`DEFAULT_EVERY_BEATS`]).
     pub every_beats: Option<u64>,
+    /// How far out of beat (default in beat).
+    pub beat_error: Option<BeatError>,
     /// The isochronism curve, if wanted.
     pub isochronism: Option<DriveFactors>,
     /// A long run, if wanted.
@@ -162,6 +181,7 @@ impl ClockInput {
             recoil: None,
             impulse_angle: None,
             every_beats: None,
+            beat_error: None,
             isochronism: None,
             run: None,
         }
@@ -193,6 +213,9 @@ pub struct SteadyState {
     pub escapement_rate_s_per_day: f64,
     /// The escapement's part by Airy's first-order integral, s/day.
     pub escapement_rate_airy_s_per_day: f64,
+    /// The beat error, ms: half the difference of the tick and tock
+    /// intervals (0 in beat).
+    pub beat_error_ms: f64,
     /// Energy given per beat, J.
     pub energy_per_beat_j: f64,
     /// Mean power, W.
@@ -213,6 +236,7 @@ impl From<&Steady> for SteadyState {
             circular_error_s_per_day: -s.circular_rate,
             escapement_rate_s_per_day: s.escapement_rate,
             escapement_rate_airy_s_per_day: s.escapement_rate_first_order,
+            beat_error_ms: 1e3 * s.beat_error,
             energy_per_beat_j: s.energy_per_beat,
             power_w: s.power,
         }
@@ -278,6 +302,12 @@ pub struct ClockResult {
     pub drive_energy_j: Option<f64>,
     /// The smallest drive factor that keeps it going.
     pub minimum_drive_factor: f64,
+    /// How far the escapement sits off the pendulum's rest, degrees (0 in
+    /// beat; given, or found from the beat error given).
+    pub out_of_beat_deg: f64,
+    /// What being out of beat does to the rate at the drive given, s/day:
+    /// the rate less the same clock's in beat (`None` in beat).
+    pub out_of_beat_rate_s_per_day: Option<f64>,
     /// The steady state at the drive given.
     pub steady: SteadyState,
     /// The isochronism curve, if asked for.
@@ -286,6 +316,9 @@ pub struct ClockResult {
     /// The long run, if asked for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub long_run: Option<RunSummary>,
+    /// What to check.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
 }
 
 /// What a long run tells its caller as it goes.
@@ -324,6 +357,10 @@ pub struct Built {
     pub drive: Drive,
     /// The design, when the pendulum is one.
     pub design: Option<CompoundPendulum>,
+    /// How far out of beat, rad.
+    pub out_of_beat: f64,
+    /// The same clock in beat, when it is out of beat.
+    pub in_beat: Option<Clock>,
 }
 
 /// Builds the clock: the pendulum at `g`, the mass, Q, and the escapement
@@ -379,23 +416,111 @@ pub fn build(input: &ClockInput) -> Result<Built, Refusal> {
             .impulse_angle
             .unwrap_or(DEFAULT_IMPULSE_ANGLE_DEG.to_radians()),
         every: input.every_beats.unwrap_or(DEFAULT_EVERY_BEATS),
+        out_of_beat: 0.0,
     };
     let scale = mass * g * pendulum.length_m();
-    let escapement = spec
+    let clock_of = |out_of_beat: f64| -> Result<Clock, Refusal> {
+        let escapement = Spec {
+            out_of_beat,
+            ..spec
+        }
         .build(scale)
         .map_err(|e| Refusal::field(e.field, e.message))?;
-    Ok(Built {
-        clock: Clock {
+        Ok(Clock {
             pendulum,
             q,
             escapement,
             torque_scale: scale,
-        },
+        })
+    };
+    let in_beat = clock_of(0.0)?;
+    let out_of_beat = match input.beat_error {
+        None => 0.0,
+        Some(BeatError::Angle(a)) => require_finite("beat_error", a)?,
+        Some(BeatError::Time(b)) => {
+            offset_for_beat_error(&in_beat, require_finite("beat_error", b)?, &clock_of)?
+        }
+    };
+    let (clock, in_beat) = if out_of_beat == 0.0 {
+        (in_beat, None)
+    } else {
+        (clock_of(out_of_beat)?, Some(in_beat))
+    };
+    Ok(Built {
+        clock,
         mass,
         lift,
         drive,
         design,
+        out_of_beat,
+        in_beat,
     })
+}
+
+/// The offset that gives the beat error `b` s (its sign the offset's) at
+/// drive factor 1: from the free swing's small-angle relation `b = 2δ /
+/// (ω sqrt(A² - h²))` at the clock's steady amplitude in beat, then the
+/// secant method on the integrated steady states' beat error (to 1e-9 of
+/// it).
+fn offset_for_beat_error(
+    in_beat: &Clock,
+    b: f64,
+    clock_of: &dyn Fn(f64) -> Result<Clock, Refusal>,
+) -> Result<f64, Refusal> {
+    if b == 0.0 {
+        return Ok(0.0);
+    }
+    let beat = 0.5 * in_beat.pendulum.small_angle_period();
+    if b.abs() >= 0.5 * beat {
+        return Err(Refusal::field(
+            "beat_error",
+            format!(
+                "must be less than half the beat ({} s), got {} s",
+                format_significant(beat, 4),
+                format_significant(b.abs(), 4)
+            ),
+        ));
+    }
+    let steady = in_beat
+        .steady(HalfSwingMethod::Direct, 1.0)
+        .map_err(|e| refusal_of(e, "drive"))?;
+    let omega = in_beat.pendulum.natural_angular_frequency();
+    let a = steady.amplitude;
+    let h = in_beat
+        .escapement
+        .edges()
+        .last()
+        .map_or(0.0, |e| e.abs().min(0.9 * a));
+    let unreachable = || {
+        Refusal::field(
+            "beat_error",
+            format!(
+                "no offset of the escapement gives a beat error of {} ms at this drive: the                  pendulum stops before its ticks are that uneven",
+                format_significant(1e3 * b.abs(), 4)
+            ),
+        )
+    };
+    let error_at = |delta: f64| -> Result<f64, Refusal> {
+        let clock = clock_of(delta)?;
+        match clock.steady(HalfSwingMethod::Direct, 1.0) {
+            Ok(s) => Ok(s.beat_error - b.abs()),
+            Err(ClockError::Stops { .. }) => Err(unreachable()),
+            Err(e) => Err(refusal_of(e, "beat_error")),
+        }
+    };
+    let mut d0 = 0.5 * b.abs() * omega * (a * a - h * h).sqrt();
+    let mut f0 = error_at(d0)?;
+    let mut d1 = d0 * (1.0 - f0 / b.abs()).clamp(0.5, 2.0);
+    for _ in 0..40 {
+        let f1 = error_at(d1)?;
+        if f1.abs() <= 1e-9 * b.abs() || f1 == f0 {
+            return Ok(d1.copysign(b));
+        }
+        let next = d1 - f1 * (d1 - d0) / (f1 - f0);
+        (d0, f0) = (d1, f1);
+        d1 = next.clamp(0.5 * d1, 2.0 * d1);
+    }
+    Err(unreachable())
 }
 
 /// The escapement named `name` (`impulse`, `deadbeat`, `recoil`,
@@ -735,9 +860,53 @@ fn weather_effect(
 pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult, Refusal> {
     let built = build(input)?;
     let clock = &built.clock;
-    let steady = clock
-        .steady(HalfSwingMethod::Direct, 1.0)
-        .map_err(|e| refusal_of(e, "drive"))?;
+    let steady =
+        clock
+            .steady(HalfSwingMethod::Direct, 1.0)
+            .map_err(|e| match (&built.in_beat, e) {
+                (Some(in_beat), ClockError::Stops { unlocking_deg, .. })
+                    if in_beat.steady(HalfSwingMethod::Direct, 1.0).is_ok() =>
+                {
+                    Refusal::field(
+                        "beat_error",
+                        format!(
+                        "the pendulum stops: {}° out of beat, it must swing {}° to one side to \
+                         unlock the escapement, and this drive does not carry it there (in beat \
+                         it would go)",
+                        format_significant(built.out_of_beat.to_degrees().abs(), 4),
+                        format_significant(unlocking_deg, 4)
+                    ),
+                    )
+                }
+                (_, e) => refusal_of(e, "drive"),
+            })?;
+    let mut warnings = Vec::new();
+    let out_of_beat_rate = match &built.in_beat {
+        Some(c) => {
+            let in_beat = c
+                .steady(HalfSwingMethod::Direct, 1.0)
+                .map_err(|e| refusal_of(e, "drive"))?;
+            Some(steady.rate - in_beat.rate)
+        }
+        None => None,
+    };
+    let beat = 0.5 * steady.period;
+    if steady.beat_error >= AUDIBLY_OUT_OF_BEAT * beat {
+        let split = 50.0 * steady.beat_error / beat;
+        warnings.push(format!(
+            "out of beat: the ticks come {}/{} (a beat error of {} ms); bend the crutch {}° \
+             to set it in beat{}",
+            format_significant(50.0 + split, 3),
+            format_significant(50.0 - split, 3),
+            format_significant(1e3 * steady.beat_error, 3),
+            format_significant(built.out_of_beat.to_degrees().abs(), 3),
+            if steady.beat_error >= crate::listening::analysis::OUT_OF_BEAT * beat {
+                " (so uneven that `listen` would take it for a beat misread)"
+            } else {
+                ""
+            }
+        ));
+    }
     let isochronism = match &input.isochronism {
         Some(f) => {
             let mut rows = Vec::new();
@@ -782,9 +951,12 @@ pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult
             Drive::Torque(_) => None,
         },
         minimum_drive_factor: clock.minimum_drive(),
+        out_of_beat_deg: built.out_of_beat.to_degrees(),
+        out_of_beat_rate_s_per_day: out_of_beat_rate,
         steady: SteadyState::from(&steady),
         isochronism,
         long_run,
+        warnings,
     })
 }
 

@@ -32,7 +32,21 @@ pub fn half_swing(
     a1: f64,
     tol: f64,
 ) -> Option<HalfSwing> {
-    let edges = escapement.edges();
+    half_swing_ticked(escapement, q, drive, beat, a1, tol).map(|(h, _)| h)
+}
+
+/// [`half_swing`], with the time (scaled, from its start) at which it
+/// crosses the escapement's last edge on that beat: the drop of the next
+/// tooth, the tick a microphone hears (`None` if it does not reach it).
+pub fn half_swing_ticked(
+    escapement: &dyn Escapement,
+    q: f64,
+    drive: f64,
+    beat: u64,
+    a1: f64,
+    tol: f64,
+) -> Option<(HalfSwing, Option<f64>)> {
+    let edges = escapement.edges_on(beat);
     let c = if q.is_finite() { 1.0 / q } else { 0.0 };
     let tolerance = Tolerance::both(tol);
     // Gravity, viscous damping and the escapement in `zone`.
@@ -40,6 +54,7 @@ pub fn half_swing(
         let torque = InZone {
             escapement,
             zone,
+            beat,
             drive,
         };
         move |_t: f64, y: State2| -> State2 {
@@ -55,6 +70,7 @@ pub fn half_swing(
     let mut driver = Driver::<Dop853>::start(&rhs(zone), 0.0, [-a1, 0.0], &tolerance);
     driver.min_step = MIN_STEP;
     let mut steps = 0;
+    let mut tick = None;
     loop {
         let f = rhs(zone);
         let step = driver.attempt(&f, f64::INFINITY, &tolerance).ok()?;
@@ -74,10 +90,13 @@ pub fn half_swing(
         let events: [&dyn Fn(State2) -> f64; 2] = [&at_edge, &turned];
         match driver.first_terminal(&f, &step, &tolerance, &events) {
             Some((1, time, state)) => {
-                return Some(HalfSwing {
-                    amplitude: state[0],
-                    time,
-                })
+                return Some((
+                    HalfSwing {
+                        amplitude: state[0],
+                        time,
+                    },
+                    tick,
+                ))
             }
             Some((_, time, state)) => {
                 // Cross the edge: the next zone's torque, and any impulse.
@@ -85,6 +104,9 @@ pub fn half_swing(
                 let v = state[1];
                 let v_after = (v * v + 2.0 * kick).max(0.0).sqrt();
                 let e = edges[zone];
+                if zone + 1 == edges.len() {
+                    tick = Some(time);
+                }
                 zone += 1;
                 driver.restart(&rhs(zone), time, [e, v_after]);
             }

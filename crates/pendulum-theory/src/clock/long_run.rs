@@ -23,6 +23,12 @@
 
 use super::averaged::half_swing_map;
 use super::Clock;
+use crate::averaging::HalfSwing;
+
+/// The longest escapement cycle, in beats, stepped many beats at a time
+/// (its whole cycle's map as one step): one beat in beat, two out of beat.
+/// A free pendulum's longer cycle steps beat by beat.
+pub const MULTI_STEP_CYCLE: u64 = 2;
 
 /// A schedule's value at `t`: linear between the points `(times[i],
 /// values[i])` (times increasing), held beyond the first and the last; 1
@@ -166,9 +172,10 @@ pub fn run_with_damping(
     let nominal_beat = 0.5 * options.nominal_period;
     let escapement = clock.escapement.as_ref();
     let shift = !escapement.symmetric();
-    let map = |a: f64, beat: u64, d: f64, t: f64| {
+    let map_with = |a: f64, beat: u64, d: f64, t: f64, shift: bool| {
         half_swing_map(Some(escapement), clock.q * damping(t), d, beat, a, shift)
     };
+    let map = |a: f64, beat: u64, d: f64, t: f64| map_with(a, beat, d, t, shift);
     let rate_of = |beat_time: f64| 86_400.0 * (nominal_beat / beat_time - 1.0);
     let mut row = Row {
         time: 0.0,
@@ -193,15 +200,25 @@ pub fn run_with_damping(
         carry = (t - row.time) - y;
         row.time = t;
     };
-    if let Some(h) = map(row.amplitude, 0, row.drive, 0.0) {
-        row.rate = rate_of(h.time * stretch(0.0) / omega);
+    // The rate at the start: over the escapement's first whole cycle.
+    let cycle = escapement.cycle();
+    let mut recent = vec![0.0; cycle as usize];
+    let mut a = row.amplitude;
+    for (beat, seconds) in recent.iter_mut().enumerate() {
+        let Some(h) = map(a, beat as u64, row.drive, 0.0) else {
+            break;
+        };
+        *seconds = h.time * stretch(0.0) / omega;
+        a = h.amplitude;
+    }
+    if recent.iter().all(|&s| s > 0.0) {
+        row.rate = rate_of(recent.iter().sum::<f64>() / cycle as f64);
     }
     if !sink(&row) {
         finish.stopped = true;
         finish.ending = Ending::Sink;
         return finish;
     }
-    let cycle = escapement.cycle();
     let relaxation_beats = |t: f64| (clock.q * damping(t) / std::f64::consts::PI * 2.0).max(1.0);
     let mut next_row = options.every.unwrap_or(0.0);
     let end = |finish: &mut Finish, ending: Ending| {
@@ -236,16 +253,35 @@ pub fn run_with_damping(
         let room = ((target - row.time) / beat_estimate).floor();
         let step_beats =
             (room.min(relaxation_beats(row.time) / 20.0).min(4096.0) as u64) / cycle * cycle;
-        if options.every.is_some() && cycle == 1 && step_beats >= 16 {
-            // Many beats at once: RK4 on the modified equation.
-            let n = step_beats as f64;
+        if options.every.is_some() && cycle <= MULTI_STEP_CYCLE && step_beats >= 16 {
+            // Many beats at once: RK4 on the modified equation of the map
+            // of one whole cycle of the escapement.
+            let n = (step_beats / cycle) as f64;
+            let cycle_map = |a: f64, d: f64, t: f64, shift: bool| -> Option<HalfSwing> {
+                let mut swing = HalfSwing {
+                    amplitude: a,
+                    time: 0.0,
+                };
+                for beat in 0..cycle {
+                    let h = map_with(swing.amplitude, beat, d, t, shift)?;
+                    swing = HalfSwing {
+                        amplitude: h.amplitude,
+                        time: swing.time + h.time,
+                    };
+                }
+                Some(swing)
+            };
             // The drive at each stage's time: the flow is not autonomous.
+            // The neighbours only give the derivatives of the map, for the
+            // modified equation's second-order term: the escapement's time
+            // shift (Airy's integral, most of an asymmetric escapement's
+            // work) moves them by 1e-4 of that term, and is left out.
             let flow = |a: f64, t: f64| -> Option<(f64, f64)> {
                 let d = drive(t);
                 let h = 1e-6 * a;
-                let m0 = map(a, 0, d, t)?;
-                let mp = map(a + h, 0, d, t)?;
-                let mm = map(a - h, 0, d, t)?;
+                let m0 = cycle_map(a, d, t, shift)?;
+                let mp = cycle_map(a + h, d, t, false)?;
+                let mm = cycle_map(a - h, d, t, false)?;
                 let g = m0.amplitude - a;
                 let dg = ((mp.amplitude - a - h) - (mm.amplitude - a + h)) / (2.0 * h);
                 let dtau = (mp.time - mm.time) / (2.0 * h);
@@ -274,7 +310,7 @@ pub fn run_with_damping(
             row.amplitude = a + da;
             add_time(&mut row, dt);
             row.beats += step_beats;
-            row.rate = rate_of(k4.1 / omega);
+            row.rate = rate_of(k4.1 / omega / cycle as f64);
             finish.multi_steps += 1;
         } else {
             let beat = row.beats % cycle;
@@ -286,7 +322,11 @@ pub fn run_with_damping(
             row.amplitude = h.amplitude;
             add_time(&mut row, seconds);
             row.beats += 1;
-            row.rate = rate_of(seconds);
+            // The rate over the last whole cycle of the escapement (its
+            // beats differ when it is out of beat, or a free pendulum's
+            // impulse falls on one of them).
+            recent[beat as usize] = seconds;
+            row.rate = rate_of(recent.iter().sum::<f64>() / cycle as f64);
             finish.single_steps += 1;
         }
         row.drive = d;

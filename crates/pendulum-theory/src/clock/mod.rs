@@ -95,6 +95,11 @@ pub struct Steady {
     pub escapement_rate: f64,
     /// The escapement's part by Airy's first-order integral, s/day.
     pub escapement_rate_first_order: f64,
+    /// The beat error, s: half the difference of the intervals between
+    /// ticks on alternate beats (the crossings of the escapement's last
+    /// edge, the drop), from the integrated half swings of one cycle; 0 in
+    /// beat.
+    pub beat_error: f64,
     /// The energy the escapement gives per beat, J.
     pub energy_per_beat: f64,
     /// The mean power, W.
@@ -227,12 +232,61 @@ impl Clock {
             }
         }
         let (_, scaled_time) = f(a1)?;
-        self.describe(drive, a1, scaled_time)
+        let beat_error = self.beat_error(drive, a1)?;
+        self.describe(drive, a1, scaled_time, beat_error)
+    }
+
+    /// The beat error of the steady cycle from `a`, s (see
+    /// [`Steady::beat_error`]): the ticks of the integrated half swings
+    /// (at tolerance [`DIRECT_TOLERANCE`]) of one cycle.
+    fn beat_error(&self, drive: f64, a: f64) -> Result<f64, ClockError> {
+        let n = self.escapement.cycle();
+        if (0..n).all(|beat| self.escapement.offset(beat) == 0.0) || n % 2 == 1 {
+            return Ok(0.0);
+        }
+        let mut amplitude = a;
+        let mut beats = Vec::with_capacity(n as usize);
+        for beat in 0..n {
+            let (h, tick) = direct::half_swing_ticked(
+                self.escapement.as_ref(),
+                self.q,
+                drive,
+                beat,
+                amplitude,
+                DIRECT_TOLERANCE,
+            )
+            .ok_or(ClockError::Integration(amplitude))?;
+            let Some(tick) = tick else { return Ok(0.0) };
+            beats.push((h.time, tick));
+            amplitude = h.amplitude;
+        }
+        // The interval from beat k's tick to beat k+1's (the cycle's first
+        // beat again after the last), alternately summed.
+        let difference: f64 = (0..beats.len())
+            .map(|k| {
+                let (time, tick) = beats[k];
+                let next = beats[(k + 1) % beats.len()].1;
+                let interval = time - tick + next;
+                if k % 2 == 0 {
+                    interval
+                } else {
+                    -interval
+                }
+            })
+            .sum();
+        let omega = self.pendulum.natural_angular_frequency();
+        Ok((difference / n as f64).abs() / omega)
     }
 
     /// The steady state's figures from its amplitude and the scaled
     /// duration of one cycle.
-    fn describe(&self, drive: f64, a: f64, cycle_time: f64) -> Result<Steady, ClockError> {
+    fn describe(
+        &self,
+        drive: f64,
+        a: f64,
+        cycle_time: f64,
+        beat_error: f64,
+    ) -> Result<Steady, ClockError> {
         let omega = self.pendulum.natural_angular_frequency();
         let n = self.escapement.cycle() as f64;
         let period = 2.0 * cycle_time / n / omega;
@@ -258,6 +312,7 @@ impl Clock {
             circular_rate: DAY * (small / free_period - 1.0),
             escapement_rate: DAY * (free_period / period - 1.0),
             escapement_rate_first_order: DAY * (free_half / (free_half + shift) - 1.0),
+            beat_error,
             energy_per_beat,
             power: 2.0 * energy_per_beat / period,
         })

@@ -4,6 +4,7 @@
 //! `clock --duration` and Python's `clock_run` both plan here, so neither
 //! can start a run the other would refuse.
 
+use super::long_run::MULTI_STEP_CYCLE;
 use super::Clock;
 use crate::analysis::{judge_work, require_finite, require_finite_sample, Refusal};
 use crate::error::format_significant;
@@ -22,6 +23,15 @@ pub const SECONDS_PER_ROW: f64 = 0.5e-6;
 /// Computing time of one step of many beats, s (1.2 µs measured, rounded
 /// up).
 pub const SECONDS_PER_MULTI_STEP: f64 = 1.5e-6;
+/// Computing time of a half swing of an escapement that is not symmetric
+/// (its time shift is Airy's integral, by quadrature), s: one by one (a
+/// week of a recoil clock's turning points, 1.2 million, in 2.6 s), and
+/// per beat of its cycle in a step of many beats (a year of a recoil clock
+/// at a row a day in 1.7 s, 99,000 steps; out of beat, two beats a
+/// cycle, 4.4 s), rounded up.
+pub const SECONDS_PER_SHIFTED_ROW: f64 = 2.5e-6;
+/// See [`SECONDS_PER_SHIFTED_ROW`].
+pub const SECONDS_PER_SHIFTED_MULTI_STEP: f64 = 2.5e-5;
 
 /// A long run's size, judged.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -74,16 +84,23 @@ pub fn plan_run(
     }
     // The rows, and the beats stepped between them (many at a time, up to
     // 4096 or a twentieth of the relaxation, when rows are sparse and the
-    // escapement's cycle is one beat; one by one otherwise). Measured: a
+    // escapement's cycle is one beat or two (out of beat); one by one
+    // otherwise). Measured: a
     // week of every turning point in 0.2 s; ten years of a row a day at
     // Q = 10^4 (3.2e8 beats) in 1.2 s.
     let rows = duration / every.unwrap_or(0.5 * period);
     let beats = duration / (0.5 * period);
     let per_step = (clock.q / (10.0 * std::f64::consts::PI)).min(4096.0);
-    let stepping = if every.is_some() && clock.escapement.cycle() == 1 && per_step >= 16.0 {
-        beats / per_step * SECONDS_PER_MULTI_STEP
+    let cycle = clock.escapement.cycle();
+    let (per_row, per_multi_step) = if clock.escapement.symmetric() {
+        (SECONDS_PER_ROW, SECONDS_PER_MULTI_STEP)
     } else {
-        beats * SECONDS_PER_ROW
+        (SECONDS_PER_SHIFTED_ROW, SECONDS_PER_SHIFTED_MULTI_STEP)
+    };
+    let stepping = if every.is_some() && cycle <= MULTI_STEP_CYCLE && per_step >= 16.0 {
+        beats / per_step * per_multi_step * cycle as f64
+    } else {
+        beats * per_row
     };
     let seconds = rows * SECONDS_PER_ROW + stepping;
     judge_work(

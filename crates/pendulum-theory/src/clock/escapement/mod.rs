@@ -1,8 +1,8 @@
 //! Escapements as torques over windows of the swing.
 //!
-//! Every escapement here is symmetric (in beat): what it does to a half
-//! swing travelling towards `+θ` it does, mirrored, to the one travelling
-//! back. So each is described for a half swing from `-A` to `+A` only, by
+//! An escapement in beat is symmetric: what it does to a half swing
+//! travelling towards `+θ` it does, mirrored, to the one travelling back.
+//! So each is described for a half swing from `-A` to `+A` only, by
 //! the angles where its torque changes ([`Escapement::edges`], ascending),
 //! the torque in each zone between them, its work over part of a zone
 //! (closed forms, for the long-run method), and instantaneous impulses at
@@ -14,6 +14,13 @@
 //! of 1e-5 is a hundred-thousandth of the bob's weight at the end of a
 //! horizontal arm.
 //!
+//! One out of beat ([`OutOfBeat`]) sits off the pendulum's rest by an
+//! angle `δ`: in the frame of each half swing its edges and torques are
+//! moved by `+δ` on even beats and `-δ` on odd ones
+//! ([`Escapement::offset`]), and every caller reads them through
+//! [`Escapement::edges_on`], [`Escapement::torque_on`] and
+//! [`Escapement::work_on`].
+//!
 //! The drive factor multiplies what the train delivers (a mainspring
 //! running down, a dirtier train): 1 is the escapement as specified.
 //!
@@ -24,6 +31,7 @@ mod constant_force;
 mod deadbeat;
 mod free;
 mod impulse;
+mod out_of_beat;
 mod recoil;
 pub mod spec;
 
@@ -31,6 +39,7 @@ pub use constant_force::ConstantForce;
 pub use deadbeat::Deadbeat;
 pub use free::FreePendulum;
 pub use impulse::Impulse;
+pub use out_of_beat::OutOfBeat;
 pub use recoil::Recoil;
 
 /// An escapement's action on a half swing travelling from `-A` to `+A`
@@ -66,11 +75,32 @@ pub trait Escapement: Send + Sync + std::fmt::Debug {
     /// The smallest amplitude at which it can work (the pendulum must
     /// carry the escapement through its lift), rad.
     fn unlocking_amplitude(&self) -> f64;
+    /// How far the escapement sits from the pendulum's rest in the frame
+    /// of the half swing on beat `beat`, rad: 0 in beat, `+δ` and `-δ` on
+    /// alternate beats for one out of beat by `δ`.
+    fn offset(&self, _beat: u64) -> f64 {
+        0.0
+    }
+    /// The edges on beat `beat`: [`Escapement::edges`] moved by the
+    /// beat's [`Escapement::offset`].
+    fn edges_on(&self, beat: u64) -> Vec<f64> {
+        let s = self.offset(beat);
+        self.edges().into_iter().map(|e| e + s).collect()
+    }
+    /// The torque in zone `zone` at `theta` on beat `beat`.
+    fn torque_on(&self, zone: usize, theta: f64, beat: u64, drive: f64) -> f64 {
+        self.torque(zone, theta - self.offset(beat), drive)
+    }
+    /// The work over zone `zone` from `from` to `to` on beat `beat`.
+    fn work_on(&self, zone: usize, from: f64, to: f64, beat: u64, drive: f64) -> f64 {
+        let s = self.offset(beat);
+        self.work(zone, from - s, to - s, drive)
+    }
     /// The energy it gives a half swing whose ends are `-a1` and `+a2`, on
     /// beat `beat`, over `m g l`: the work of each zone between the ends
     /// and the kicks at the edges passed.
     fn energy(&self, a1: f64, a2: f64, beat: u64, drive: f64) -> f64 {
-        let edges = self.edges();
+        let edges = self.edges_on(beat);
         let (start, end) = (-a1, a2);
         let mut total = 0.0;
         let mut from = start;
@@ -79,11 +109,11 @@ pub trait Escapement: Send + Sync + std::fmt::Debug {
             if e >= end {
                 break;
             }
-            total += self.work(zone, from, e, drive) + self.kick(i, beat, drive);
+            total += self.work_on(zone, from, e, beat, drive) + self.kick(i, beat, drive);
             from = e;
             zone = i + 1;
         }
-        total + self.work(zone, from, end, drive)
+        total + self.work_on(zone, from, end, beat, drive)
     }
 }
 
@@ -95,6 +125,8 @@ pub struct InZone<'a> {
     pub escapement: &'a dyn Escapement,
     /// The zone.
     pub zone: usize,
+    /// The beat.
+    pub beat: u64,
     /// The drive factor.
     pub drive: f64,
 }
@@ -102,7 +134,8 @@ pub struct InZone<'a> {
 impl crate::forces::Term for InZone<'_> {
     #[inline]
     fn acceleration(&self, y: crate::integrate::State2, _direction: f64) -> f64 {
-        self.escapement.torque(self.zone, y[0], self.drive)
+        self.escapement
+            .torque_on(self.zone, y[0], self.beat, self.drive)
     }
 }
 

@@ -2,7 +2,7 @@
 //! friction, ...), turned into one of the escapement types, in the
 //! pendulum's units. One place for the command line and the bindings.
 
-use super::{ConstantForce, Deadbeat, Escapement, FreePendulum, Impulse, Recoil};
+use super::{ConstantForce, Deadbeat, Escapement, FreePendulum, Impulse, OutOfBeat, Recoil};
 
 /// The escapements by name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -52,15 +52,21 @@ pub struct Spec {
     pub lift: f64,
     /// The drive.
     pub drive: Drive,
-    /// Dead-face (locking) friction coefficient.
+    /// The pallets' friction coefficient: on the dead (locking) faces of a
+    /// deadbeat or constant-force escapement, on the recoil faces of an
+    /// anchor.
     pub friction: f64,
-    /// Recoil torque one lift angle past the lift, over the drive torque.
+    /// The torque the anchor's wheel gives back through the recoil arc,
+    /// over the impulse torque.
     pub recoil: f64,
     /// Where the impulse falls before the bottom, rad (the impulse's angle;
     /// the deadbeat's lift centre).
     pub angle: f64,
     /// Free pendulum: beats between impulses.
     pub every: u64,
+    /// How far the escapement sits off the pendulum's rest, rad (0: in
+    /// beat; see [`OutOfBeat`]).
+    pub out_of_beat: f64,
 }
 
 /// Why a description makes no escapement; `field` names the input.
@@ -68,7 +74,7 @@ pub struct Spec {
 #[error("{field}: {message}")]
 pub struct SpecError {
     /// The input at fault: `lift_angle`, `drive`, `friction`, `recoil`,
-    /// `impulse_angle`, `every_beats`.
+    /// `impulse_angle`, `every_beats`, `beat_error`.
     pub field: &'static str,
     /// What is wrong.
     pub message: String,
@@ -152,11 +158,24 @@ impl Spec {
                 friction: self.friction,
                 offset: self.angle,
             }),
-            Kind::Recoil => Box::new(Recoil {
-                lift,
-                torque,
-                recoil: self.recoil,
-            }),
+            Kind::Recoil => {
+                if self.friction >= 1.0 {
+                    return fail(
+                        "friction",
+                        format!(
+                            "the recoil faces' friction must be below 1 (a face that friction \
+                             locks cannot recoil), got {}",
+                            self.friction
+                        ),
+                    );
+                }
+                Box::new(Recoil {
+                    lift,
+                    torque,
+                    recoil: self.recoil,
+                    friction: self.friction,
+                })
+            }
             Kind::ConstantForce => Box::new(ConstantForce {
                 lift,
                 impulse: torque,
@@ -164,7 +183,33 @@ impl Spec {
                 friction: self.friction,
             }),
         };
+        if !self.out_of_beat.is_finite() {
+            return fail(
+                "beat_error",
+                format!("must be finite, got {}", self.out_of_beat),
+            );
+        }
+        let in_beat_unlocking = escapement.unlocking_amplitude();
+        let escapement: Box<dyn Escapement> = if self.out_of_beat == 0.0 {
+            escapement
+        } else {
+            Box::new(OutOfBeat {
+                inner: escapement,
+                offset: self.out_of_beat,
+            })
+        };
         let unlocking = escapement.unlocking_amplitude();
+        if unlocking >= TOP && in_beat_unlocking < TOP {
+            return fail(
+                "beat_error",
+                format!(
+                    "an escapement {}° out of beat unlocks only at {}° on one side, beyond the \
+                     170° a pendulum can swing",
+                    crate::error::format_significant(self.out_of_beat.to_degrees(), 5),
+                    crate::error::format_significant(unlocking.to_degrees(), 5)
+                ),
+            );
+        }
         if unlocking >= TOP {
             return fail(
                 "lift_angle",

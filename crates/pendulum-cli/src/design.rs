@@ -136,6 +136,16 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
                 fields.push(("thickness", mm(thickness)));
                 "ring"
             }
+            Shape::Spring {
+                length,
+                width,
+                thickness,
+            } => {
+                fields.push(("length", mm(length)));
+                fields.push(("width", mm(width)));
+                fields.push(("thickness", mm(thickness)));
+                "spring"
+            }
             Shape::Point => {
                 fields.push(("mass", format!("\"{} kg\"", p.point_mass)));
                 "point"
@@ -147,11 +157,15 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
             let material = match Material::named(&m.name) {
                 Some(t) if t == *m => quoted(&m.name),
                 _ => format!(
-                    "{{ name = {}, density = {:?}, expansion = {:?}{} }}",
+                    "{{ name = {}, density = {:?}, expansion = {:?}{}{}{} }}",
                     quoted(&m.name),
                     m.density,
                     m.expansion,
-                    if m.liquid { ", liquid = true" } else { "" }
+                    if m.liquid { ", liquid = true" } else { "" },
+                    m.modulus
+                        .map_or(String::new(), |e| format!(", modulus = {e:?}")),
+                    m.modulus_coefficient
+                        .map_or(String::new(), |b| format!(", modulus_coefficient = {b:?}")),
                 ),
             };
             out.push_str(&format!("material = {material}\n"));
@@ -160,6 +174,8 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
             out.push_str(&format!("{key} = {value}\n"));
         }
         match p.placement {
+            // A spring hangs from the pivot: its centre follows.
+            Placement::Centre(_) if matches!(p.shape, Shape::Spring { .. }) => {}
             Placement::Centre(c) => out.push_str(&format!("centre = {}\n", mm(c))),
             Placement::RestsOn(j) => {
                 out.push_str(&format!("rests_on = {}\n", quoted(&parts[j].name)))

@@ -1168,6 +1168,9 @@ def keyword_args(kw, units, tmp_path):
     return args
 
 
+SPRING = {"name": "spring", "shape": "spring", "material": "steel", "length": 0.015,
+          "width": 0.012, "thickness": 1e-4}
+
 DESIGN = {
     "rod_and_bob": ([ROD, BOB], {}),
     "sizes_in_mm_as_numbers": ([{**ROD, "length": 1000.0, "diameter": 8.0, "centre": 500.0},
@@ -1220,6 +1223,13 @@ DESIGN = {
     "pivot_q_zero": ([ROD, BOB], {"pivot_q": 0.0}),
     "arc_too_wide": ([ROD, BOB], {"amplitude": 1.5}),
     "pressure_vacuum": ([ROD, BOB], {"pressure": 0.1}),
+    "spring": ([SPRING, {**ROD, "centre": 0.515}, {**BOB, "centre": 0.965}], {}),
+    "spring_own_material": ([{**SPRING, "material": {"density": 8800, "expansion": 17e-6,
+                                                      "modulus": 1.1e11,
+                                                      "modulus_coefficient": -4e-4}},
+                             {**ROD, "centre": 0.515}, {**BOB, "centre": 0.965}], {}),
+    "spring_of_brass": ([{**SPRING, "material": "brass"}, {**ROD, "centre": 0.515}, BOB], {}),
+    "spring_placed_low": ([{**SPRING, "centre": 0.05}, ROD, BOB], {}),
 }
 DESIGN_FLAGS = {"g": ("--g", 1.0), "pressure": ("--pressure", 0.01),
                 "temperature": ("--temperature", 1.0), "humidity": ("--humidity", 100.0),

@@ -68,6 +68,7 @@ pub mod period;
 pub mod report;
 pub mod simulation;
 pub mod stability;
+pub mod suspension;
 pub mod tide;
 pub mod train;
 

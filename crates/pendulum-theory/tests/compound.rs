@@ -198,6 +198,8 @@ fn warming_keeps_the_mass_and_a_rising_bob_gains() {
         density: 7850.0,
         expansion: 0.0,
         liquid: false,
+        modulus: None,
+        modulus_coefficient: None,
     };
     let mut r = rod(1.1, 0.008, "steel");
     r.material = zero.clone();
@@ -251,6 +253,8 @@ fn the_mercury_jar_against_the_first_order_condition() {
         density: 1e-9,
         expansion: 9e-6,
         liquid: false,
+        modulus: None,
+        modulus_coefficient: None,
     };
     let mut rod_part = rod(r, 0.008, "steel");
     rod_part.massless = true;

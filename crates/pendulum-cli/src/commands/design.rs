@@ -52,6 +52,20 @@ pub fn rows(d: &Datasheet, gravity: &ResolvedGravity) -> Vec<(String, String)> {
             gravity.describe()
         ),
     ));
+    if let Some(sp) = &d.spring {
+        rows.push((
+            "Spring".into(),
+            format!(
+                "bends over {} mm (its bending length); the pendulum turns {} mm below the \
+                 chops and gains {} s/day against a rigid pivot there (in the length above); \
+                 its modulus's change with temperature {} s/day per °C",
+                num(sp.bending_length_m * 1e3, 4),
+                num(sp.effective_pivot_m * 1e3, 4),
+                num(sp.rate_s_per_day, 4),
+                num(sp.modulus_temperature_coefficient_s_per_day_per_c, 3)
+            ),
+        ));
+    }
     rows.push((
         "Temperature".into(),
         format!(

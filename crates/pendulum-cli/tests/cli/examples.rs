@@ -916,6 +916,16 @@ fn examples() -> Vec<(&'static str, Check)> {
             },
         ),
         (
+            "pendulum design examples/invar-spring.toml",
+            |r| {
+                // A regulator's spring: a bending length of about 2 mm,
+                // a gain of tens of seconds a day.
+                let line = r.line("Spring");
+                assert!(line.contains("bends over 1.8"), "{line}");
+                assert!(line.contains("gains 75"), "{line}");
+            },
+        ),
+        (
             "pendulum clock --length 0.994m --drive 20uJ --beat-error 20ms",
             |r| {
                 // Found to the microsecond, and audibly uneven (2% of the beat).

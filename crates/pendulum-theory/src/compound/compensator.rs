@@ -220,6 +220,8 @@ pub fn gridiron(
         density: mass / (area * drop),
         expansion: (steel_length * steel.expansion - brass_length * brass.expansion) / drop,
         liquid: false,
+        modulus: None,
+        modulus_coefficient: None,
     }
 }
 

@@ -215,6 +215,9 @@ pub struct Datasheet {
     /// Per division of the nut, s/day.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub nut_rate_s_per_day_per_division: Option<f64>,
+    /// The suspension spring's effect, when the design hangs from one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spring: Option<SpringSheet>,
     /// What to check before trusting the sheet.
     pub warnings: Vec<String>,
     /// The air as taken: pressure, Pa.
@@ -223,6 +226,30 @@ pub struct Datasheet {
     /// Relative humidity, 0 to 1.
     #[serde(skip)]
     pub humidity: f64,
+}
+
+/// A spring that gives more than this share of the restoring torque is
+/// warned of (a regulator's gives about a thousandth).
+pub const STIFF_SPRING_SHARE: f64 = 0.05;
+
+/// What a suspension spring does ([`crate::suspension`]).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SpringSheet {
+    /// Its bending length `sqrt(EI/T)`, m.
+    pub bending_length_m: f64,
+    /// The point the pendulum turns about, below the chops, m.
+    pub effective_pivot_m: f64,
+    /// Its rate against the design rigid about the chops, s/day
+    /// (positive: gaining; in the equivalent length and period).
+    pub rate_s_per_day: f64,
+    /// The elastic share of the restoring stiffness.
+    pub elastic_share: f64,
+    /// The part of the design's temperature coefficient that its modulus's
+    /// change with temperature makes, s/day per °C.
+    pub modulus_temperature_coefficient_s_per_day_per_c: f64,
+    /// The pendulum rocking on the spring, Hz (none for a point mass).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub second_mode_hz: Option<f64>,
 }
 
 /// Checks `value` within `range` (in the unit shown, `scale` times the
@@ -513,8 +540,30 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         nut_pitch_m: per_metre.and(pitch),
         nut_rate_s_per_day_per_turn: per_turn,
         nut_rate_s_per_day_per_division: per_division.map(|(r, d)| r / f64::from(d)),
+        spring: pendulum.spring_effect().map(|e| SpringSheet {
+            bending_length_m: e.bending_length,
+            effective_pivot_m: e.effective_pivot,
+            rate_s_per_day: e.rate,
+            elastic_share: e.elastic_share,
+            modulus_temperature_coefficient_s_per_day_per_c: pendulum.temperature_coefficient()
+                - pendulum
+                    .without_spring_thermoelasticity()
+                    .temperature_coefficient(),
+            second_mode_hz: e.second_mode_hz,
+        }),
         warnings: crate::pendulum::length_warning(props.equivalent_length)
             .into_iter()
+            .chain(pendulum.spring_effect().and_then(|e| {
+                (e.elastic_share > STIFF_SPRING_SHARE).then(|| {
+                    format!(
+                        "the suspension spring is stiff: it gives {}% of the restoring torque \
+                         (its bending length {} mm); the pendulum bends it rather than turning \
+                         about it, and its temperature and its fatigue dominate the rate",
+                        crate::error::format_significant(100.0 * e.elastic_share, 3),
+                        crate::error::format_significant(1e3 * e.bending_length, 3)
+                    )
+                })
+            }))
             .collect(),
         pressure_pa: p,
         humidity: h,

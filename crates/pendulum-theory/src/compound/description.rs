@@ -116,7 +116,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
         let t = p
             .as_object()
             .ok_or_else(|| bad("part", "must be a table".into()))?;
-        const KNOWN: [&str; 24] = [
+        const KNOWN: [&str; 25] = [
             "pitch",
             "tpi",
             "divisions",
@@ -127,6 +127,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             "diameter",
             "bore",
             "thickness",
+            "width",
             "outer",
             "inner",
             "mass",
@@ -222,7 +223,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
         let shape_name = t.get("shape").and_then(|s| s.as_str()).ok_or_else(|| {
             bad(
                 "shape",
-                "missing (rod, cylinder, tube, disc, lens, sphere, ring or point)".into(),
+                "missing (rod, cylinder, tube, disc, lens, sphere, ring, spring or point)".into(),
             )
         })?;
         let shape = match shape_name {
@@ -247,12 +248,17 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                 inner: size("inner", Unit::Length)?.unwrap_or(0.0),
                 thickness: need("thickness")?,
             },
+            "spring" => Shape::Spring {
+                length: need("length")?,
+                width: need("width")?,
+                thickness: need("thickness")?,
+            },
             "point" => Shape::Point,
             other => {
                 return Err(bad(
                     "shape",
                     format!(
-                    "'{other}' is not one of rod, cylinder, tube, disc, lens, sphere, ring, point"
+                    "'{other}' is not one of rod, cylinder, tube, disc, lens, sphere, ring, spring, point"
                 ),
                 ))
             }
@@ -322,6 +328,11 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                             return Err(bad("material", "liquid must be true or false".into()))
                         }
                     },
+                    modulus: m.get("modulus").map(|_| number("modulus")).transpose()?,
+                    modulus_coefficient: m
+                        .get("modulus_coefficient")
+                        .map(|_| number("modulus_coefficient"))
+                        .transpose()?,
                 }
             }
             None if shape == Shape::Point => Material {
@@ -329,6 +340,8 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                 density: 0.0,
                 expansion: 0.0,
                 liquid: false,
+                modulus: None,
+                modulus_coefficient: None,
             },
             _ => return Err(bad("material", "missing".into())),
         };
@@ -404,6 +417,10 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                     "hangs_from"
                 };
                 return Err(bad(field, "must be the name of another part".into()));
+            }
+            // A spring hangs from the pivot.
+            (None, None, None) if matches!(shape, Shape::Spring { .. }) => {
+                Placement::Centre(0.5 * shape.height())
             }
             (None, None, None) => {
                 return Err(bad(

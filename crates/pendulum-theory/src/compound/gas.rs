@@ -190,7 +190,9 @@ impl CompoundPendulum {
             form_drag,
         };
         match part.shape {
-            Shape::Point => PartFlow {
+            // A spring moves at most its length from the pivot (a
+            // hundredth of the bob's speed): its gas is left out.
+            Shape::Point | Shape::Spring { .. } => PartFlow {
                 added_mass_coefficient: 0.0,
                 added_inertia: 0.0,
                 damping: 0.0,
@@ -257,6 +259,7 @@ impl CompoundPendulum {
             | Shape::Lens { diameter, .. }
             | Shape::Sphere { diameter } => diameter,
             Shape::Ring { outer, .. } => outer,
+            Shape::Spring { width, .. } => width,
             Shape::Point => 0.0,
         };
         let own = width(&self.parts[i].shape);

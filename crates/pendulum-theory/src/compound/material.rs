@@ -51,7 +51,31 @@ pub struct Material {
     /// rests on, whose expansion sets that width) and rises as its volume
     /// grows.
     pub liquid: bool,
+    /// Young's modulus, Pa, where known (a suspension spring needs it).
+    pub modulus: Option<f64>,
+    /// The modulus's temperature coefficient `(1/E) dE/dT`, 1/K, where
+    /// known (a suspension spring's own temperature effect).
+    pub modulus_coefficient: Option<f64>,
 }
+
+/// The elastic constants of the table's materials that springs are made
+/// of: (name, Young's modulus Pa, its temperature coefficient 1/K where
+/// known). Moduli of spring materials from PTC's spring-design table
+/// ("Modulus of elasticity values for non-compression springs": music
+/// wire 29.0e6 psi, stainless 302/304/316 28.0e6, spring brass 15.0e6);
+/// Invar 36 145 GPa (its makers' datasheets; NIST's cryogenic fit gives
+/// 152 GPa at 293 K); fused silica 72 GPa. Temperature coefficients: a
+/// spring steel (C70 wire) -2.5e-4/K and fused silica +1.52e-4/K, as the
+/// Advanced LIGO suspension parameters give them (pygwinc,
+/// `ifo/aLIGO/ifo.yaml`, `dlnEdT`); the others are not in the table: give
+/// them as a material's `modulus_coefficient`.
+pub const ELASTIC: [(&str, f64, Option<f64>); 5] = [
+    ("steel", 200e9, Some(-2.5e-4)),
+    ("stainless steel", 193e9, None),
+    ("brass", 103e9, None),
+    ("invar", 145e9, None),
+    ("fused silica", 72e9, Some(1.52e-4)),
+];
 
 /// The built-in table: (name, density kg/m³, expansion 1/K).
 pub const TABLE: [(&str, f64, f64); 15] = [
@@ -92,11 +116,16 @@ impl Material {
         TABLE
             .iter()
             .find(|(n, _, _)| n.replace(' ', "") == key)
-            .map(|&(n, density, expansion)| Self {
-                name: n.to_string(),
-                density,
-                expansion,
-                liquid: LIQUIDS.contains(&n),
+            .map(|&(n, density, expansion)| {
+                let elastic = ELASTIC.iter().find(|e| e.0 == n);
+                Self {
+                    name: n.to_string(),
+                    density,
+                    expansion,
+                    liquid: LIQUIDS.contains(&n),
+                    modulus: elastic.map(|e| e.1),
+                    modulus_coefficient: elastic.and_then(|e| e.2),
+                }
             })
     }
 

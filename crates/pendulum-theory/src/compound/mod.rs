@@ -209,6 +209,89 @@ impl Properties {
     }
 }
 
+/// The largest share of a modulus's change per kelvin a material may
+/// give (steels -2.5e-4/K, fused silica +1.5e-4/K, bronzes about -4e-4/K).
+const MAX_MODULUS_COEFFICIENT: f64 = 1e-2;
+
+/// Checks suspension spring `p` among `parts`: the only one, hanging from
+/// the pivot (its centre half its length down), of a material with a
+/// modulus and its temperature coefficient.
+fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> {
+    let Shape::Spring { length, .. } = p.shape else {
+        return Ok(());
+    };
+    if parts
+        .iter()
+        .filter(|q| matches!(q.shape, Shape::Spring { .. }))
+        .count()
+        > 1
+    {
+        return Err((
+            "shape",
+            "a design hangs from one suspension spring (give springs side by side as one, of \
+             their summed width)"
+                .into(),
+        ));
+    }
+    match p.placement {
+        Placement::Centre(c) if (c - 0.5 * length).abs() <= 1e-9 * length => {}
+        _ => {
+            return Err((
+                "centre",
+                format!(
+                    "a suspension spring hangs from the pivot: its centre is half its length \
+                     down ({} m; leave centre out)",
+                    shown(0.5 * length)
+                ),
+            ))
+        }
+    }
+    let m = &p.material;
+    match m.modulus {
+        Some(e) if e.is_finite() && e > 0.0 && e <= 1.2e12 => {}
+        Some(e) => {
+            return Err((
+                "modulus",
+                format!(
+                    "must lie between 0 and 1.2e12 Pa (diamond's), got {}",
+                    shown(e)
+                ),
+            ))
+        }
+        None => {
+            return Err((
+                "material",
+                format!(
+                    "a spring needs its material's Young's modulus: '{}' has none in the table \
+                     (steel, fused silica have it with its temperature coefficient); give the \
+                     material as {{ density = …, expansion = …, modulus = …, \
+                     modulus_coefficient = … }}",
+                    m.name
+                ),
+            ))
+        }
+    }
+    match m.modulus_coefficient {
+        Some(b) if b.abs() <= MAX_MODULUS_COEFFICIENT => Ok(()),
+        Some(b) => Err((
+            "modulus_coefficient",
+            format!(
+                "must lie within ±{MAX_MODULUS_COEFFICIENT:e} per K (steel's is -2.5e-4), got {}",
+                shown(b)
+            ),
+        )),
+        None => Err((
+            "modulus_coefficient",
+            format!(
+                "the temperature coefficient of {}'s modulus is not in the table: give the \
+                 material as {{ density = …, expansion = …, modulus = …, \
+                 modulus_coefficient = … }} ((1/E) dE/dT, 1/K)",
+                m.name
+            ),
+        )),
+    }
+}
+
 impl CompoundPendulum {
     /// A pendulum of `parts`, checked: every size positive and finite,
     /// every part with mass (unless `massless`), nothing above or through
@@ -247,6 +330,15 @@ impl CompoundPendulum {
                     inner,
                     thickness,
                 } => vec![("outer", outer), ("inner", inner), ("thickness", thickness)],
+                Shape::Spring {
+                    length,
+                    width,
+                    thickness,
+                } => vec![
+                    ("length", length),
+                    ("width", width),
+                    ("thickness", thickness),
+                ],
                 Shape::Point => vec![("mass", p.point_mass)],
             };
             for (field, v) in dims {
@@ -280,6 +372,9 @@ impl CompoundPendulum {
                         ),
                     ));
                 }
+            }
+            if let Shape::Spring { .. } = p.shape {
+                check_spring(p, &parts).map_err(|(field, message)| fail(field, message))?;
             }
             let alpha = p.material.expansion;
             if !(-MAX_EXPANSION..=MAX_EXPANSION).contains(&alpha) {
@@ -359,6 +454,21 @@ impl CompoundPendulum {
                 message: "the pendulum has no mass (every part is massless)".into(),
             });
         }
+        if let Some(i) = pendulum
+            .parts
+            .iter()
+            .position(|p| matches!(p.shape, Shape::Spring { .. }))
+        {
+            if pendulum.spring_effect().is_none() {
+                return Err(DesignError {
+                    part: pendulum.parts[i].name.clone(),
+                    field: "length",
+                    message: "the parts it carries must hang below the spring: their centre of \
+                              mass is above its bottom"
+                        .into(),
+                });
+            }
+        }
         if !(props.equivalent_length.is_finite() && props.centre_of_mass > 0.0) {
             return Err(DesignError {
                 part: "-".into(),
@@ -380,8 +490,79 @@ impl CompoundPendulum {
     }
 
     /// Mass, centre of mass, moment of inertia about the pivot and the
-    /// equivalent simple length (see the module notes).
+    /// equivalent simple length (see the module notes). A design hanging
+    /// from a suspension spring has the length of the simple pendulum of
+    /// its frequency on the spring ([`CompoundPendulum::spring_effect`]):
+    /// the rigid `I / (M d)` times `(ω_rigid / ω)²`.
     pub fn properties(&self) -> Properties {
+        let rigid = self.rigid_properties();
+        match self.spring_effect() {
+            Some(e) => Properties {
+                equivalent_length: rigid.equivalent_length * (e.rigid_omega / e.omega).powi(2),
+                ..rigid
+            },
+            None => rigid,
+        }
+    }
+
+    /// The suspension spring's effect ([`crate::suspension::effect`]) on
+    /// the rest of the design, taken as a rigid body hanging from its
+    /// bottom, in standard gravity (the tension is the weight: in another
+    /// gravity the bending length moves by half its fractional change, a
+    /// spring's gain of 50 s/day by 0.07 s/day between equator and pole);
+    /// `None` without a spring.
+    pub fn spring_effect(&self) -> Option<crate::suspension::SpringEffect> {
+        let i = self
+            .parts
+            .iter()
+            .position(|p| matches!(p.shape, Shape::Spring { .. }))?;
+        let Shape::Spring {
+            length,
+            width,
+            thickness,
+        } = self.parts[i].shape
+        else {
+            return None;
+        };
+        let (mut mass, mut moment, mut inertia) = (0.0, 0.0, 0.0);
+        for (j, (p, &d)) in self.parts.iter().zip(&self.centres).enumerate() {
+            if j != i {
+                let m = p.mass();
+                mass += m;
+                moment += m * d;
+                inertia += m * (p.shape.inertia_per_mass() + d * d);
+            }
+        }
+        let com = moment / mass;
+        let body = crate::suspension::Body {
+            mass,
+            centre: com - length,
+            inertia: inertia - mass * com * com,
+        };
+        let strip = crate::suspension::Strip {
+            length,
+            width,
+            thickness,
+            modulus: self.parts[i].material.modulus?,
+        };
+        crate::suspension::effect(&strip, &body, crate::pendulum::STANDARD_GRAVITY).ok()
+    }
+
+    /// The same design with its spring's modulus unchanged by temperature
+    /// (to separate the spring's part of the temperature coefficient).
+    pub fn without_spring_thermoelasticity(&self) -> Self {
+        let mut out = self.clone();
+        for p in &mut out.parts {
+            if matches!(p.shape, Shape::Spring { .. }) {
+                p.material.modulus_coefficient = Some(0.0);
+            }
+        }
+        out
+    }
+
+    /// [`CompoundPendulum::properties`] of the design as a rigid body about
+    /// the pivot.
+    fn rigid_properties(&self) -> Properties {
         let (mut mass, mut moment, mut inertia) = (0.0, 0.0, 0.0);
         for (p, &d) in self.parts.iter().zip(&self.centres) {
             let m = p.mass();
@@ -441,6 +622,9 @@ impl CompoundPendulum {
                 }
                 let factor = 1.0 + p.material.expansion * delta;
                 material.density /= factor.powi(3);
+                if let (Some(e), Some(beta)) = (material.modulus, material.modulus_coefficient) {
+                    material.modulus = Some(e * (1.0 + beta * delta));
+                }
                 let placement = match p.placement {
                     Placement::Held { part, end, height } => Placement::Held {
                         part,
@@ -474,14 +658,22 @@ impl CompoundPendulum {
     }
 
     /// The index of the rod: the first upright cylinder hanging from the
-    /// pivot (its top within a millimetre of it).
+    /// pivot (its top within a millimetre of it, or of the bottom of the
+    /// suspension spring the design hangs from).
     pub fn rod_index(&self) -> Option<usize> {
         self.rod()
     }
 
     fn rod(&self) -> Option<usize> {
+        // Its top at the pivot, or at a suspension spring's bottom.
+        let top = self
+            .parts
+            .iter()
+            .find(|p| matches!(p.shape, Shape::Spring { .. }))
+            .map_or(0.0, |p| p.shape.height());
         self.parts.iter().zip(&self.centres).position(|(p, &c)| {
-            matches!(p.shape, Shape::Cylinder { .. }) && (c - 0.5 * p.shape.height()).abs() < 1e-3
+            matches!(p.shape, Shape::Cylinder { .. })
+                && (c - 0.5 * p.shape.height() - top).abs() < 1e-3
         })
     }
 
@@ -744,6 +936,15 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
     // placed by its centre; every part is resolved once (linear in the
     // number of parts), and a chain that comes back on itself is a circle.
     let mut centres: Vec<Option<f64>> = vec![None; parts.len()];
+    // A suspension spring hangs from the pivot and grows with its own
+    // material; what is placed by its centre hangs from the spring's
+    // bottom and grows below it with the rod.
+    let spring = parts.iter().enumerate().find_map(|(i, p)| match p.shape {
+        Shape::Spring { length, .. } => {
+            Some((i, length, length / (1.0 + p.material.expansion * delta)))
+        }
+        _ => None,
+    });
     let mut chain: Vec<usize> = Vec::new();
     let mut on_chain = vec![false; parts.len()];
     for start in 0..parts.len() {
@@ -755,9 +956,14 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
             let p = &parts[i];
             match p.placement {
                 Placement::Centre(c) => {
-                    let carried = match rod {
+                    let grown = |c: f64| match rod {
                         Some(alpha) => c * (1.0 + alpha * delta),
                         None => c,
+                    };
+                    let carried = match spring {
+                        Some((s, length, _)) if s == i => 0.5 * length,
+                        Some((_, length, reference)) => length + grown(c - reference),
+                        None => grown(c),
                     };
                     centres[i] = Some(carried);
                     break Some(carried);

@@ -63,6 +63,16 @@ pub enum Shape {
         /// Thickness, m.
         thickness: f64,
     },
+    /// A flat suspension spring hanging from the chops (the pivot), its
+    /// thickness in the plane of swing: see [`crate::suspension`].
+    Spring {
+        /// Free length, m.
+        length: f64,
+        /// Width across the plane of swing, m.
+        width: f64,
+        /// Thickness in the plane of swing, m.
+        thickness: f64,
+    },
     /// A point mass (its mass is given, not a material's).
     Point,
 }
@@ -90,6 +100,11 @@ impl Shape {
                 inner,
                 thickness,
             } => 0.25 * PI * (outer * outer - inner * inner) * thickness,
+            Shape::Spring {
+                length,
+                width,
+                thickness,
+            } => length * width * thickness,
             Shape::Point => 0.0,
         }
     }
@@ -101,6 +116,7 @@ impl Shape {
             Shape::Disc { diameter, .. } | Shape::Lens { diameter, .. } => diameter,
             Shape::Sphere { diameter } => diameter,
             Shape::Ring { outer, .. } => outer,
+            Shape::Spring { length, .. } => length,
             Shape::Point => 0.0,
         }
     }
@@ -118,6 +134,9 @@ impl Shape {
             Shape::Lens { diameter, .. } => diameter * diameter / 12.0,
             Shape::Sphere { diameter } => 0.1 * diameter * diameter,
             Shape::Ring { outer, inner, .. } => (outer * outer + inner * inner) / 8.0,
+            Shape::Spring {
+                length, thickness, ..
+            } => (length * length + thickness * thickness) / 12.0,
             Shape::Point => 0.0,
         }
     }
@@ -151,6 +170,15 @@ impl Shape {
             } => Shape::Ring {
                 outer: outer * factor,
                 inner: inner * factor,
+                thickness: thickness * factor,
+            },
+            Shape::Spring {
+                length,
+                width,
+                thickness,
+            } => Shape::Spring {
+                length: length * factor,
+                width: width * factor,
                 thickness: thickness * factor,
             },
             Shape::Point => Shape::Point,

@@ -1,0 +1,318 @@
+//! The suspension spring against the closed forms of its limits, and the
+//! statements of the literature it reproduces.
+
+use pendulum_theory::suspension::{effect, Body, Strip};
+
+const G: f64 = 9.80665;
+
+/// A regulator's spring: steel, 15 mm long, 12 mm wide, 0.1 mm thick.
+fn spring(length: f64, thickness: f64) -> Strip {
+    Strip {
+        length,
+        width: 0.012,
+        thickness,
+        modulus: 2.0e11,
+    }
+}
+
+fn close(a: f64, b: f64, tol: f64) {
+    assert!(
+        (a / b - 1.0).abs() <= tol,
+        "{a} against {b} (tolerance {tol})"
+    );
+}
+
+/// Without tension the strip is a cantilever: its end stiffnesses are
+/// `12EI/L³`, `-6EI/L²`, `4EI/L` (any strength-of-materials text, e.g.
+/// Timoshenko & Gere §1.11 with the axial force zero); the tension's first
+/// correction is the geometric stiffness `T/(30L) [36, -3L, 4L²]`
+/// (Przemieniecki, *Theory of Matrix Structural Analysis*, 1968, §15.2),
+/// which this checks at a tension where the next term is 1e-7 of it.
+#[test]
+fn a_strip_without_tension_is_a_cantilever() {
+    let s = spring(0.015, 1e-4);
+    let (l, ei): (f64, f64) = (s.length, s.bending_stiffness());
+    let t = 1e-6 * ei / (l * l);
+    let k = s.stiffness(t);
+    let cantilever = [12.0 * ei / l.powi(3), -6.0 * ei / (l * l), 4.0 * ei / l];
+    let geometric = [36.0 * t / (30.0 * l), -3.0 * t / 30.0, 4.0 * l * t / 30.0];
+    for i in 0..3 {
+        close(k[i], cantilever[i] + geometric[i], 1e-9);
+    }
+}
+
+/// A point mass at the end of a strip clamped at the top: the strip
+/// bends within `λ` of the clamp and hangs straight below, so the mass
+/// swings on `L - λ tanh(L/λ)` (the lateral stiffness of a tensioned
+/// strip with a free end, solved in closed form; Saulson 1990 gives its
+/// long-strip form `L - λ`), and the elastic share `∂ ln ω²/∂ ln EI` is
+/// `½ λ (tanh a - a sech² a) / (L - λ tanh a)`, `a = L/λ`.
+#[test]
+fn a_point_mass_hangs_from_a_point_lambda_below_the_clamp() {
+    for (length, thickness) in [(0.015, 1e-4), (0.3, 5e-5), (0.01, 4e-4), (0.002, 3e-4)] {
+        let s = spring(length, thickness);
+        let body = Body {
+            mass: 8.0,
+            centre: 0.0,
+            inertia: 0.0,
+        };
+        let e = effect(&s, &body, G).unwrap();
+        let lambda = (s.bending_stiffness() / (8.0 * G)).sqrt();
+        let a = length / lambda;
+        let l_eff = length - lambda * a.tanh();
+        close(e.omega, (G / l_eff).sqrt(), 1e-12);
+        close(e.bending_length, lambda, 1e-15);
+        let share = 0.5 * lambda * (a.tanh() - a / a.cosh().powi(2)) / l_eff;
+        close(e.elastic_share, share, 1e-7);
+        assert!(e.second_mode_hz.is_none());
+    }
+}
+
+/// A strip of no stiffness is a string: the rigid pendulum below it is a
+/// double pendulum whose upper link has no mass, `det([[T/L, 0], [0, M g
+/// d]] - ω² [[M, M d], [M d, M d² + I_c]]) = 0` in the string's bottom
+/// displacement and the body's angle. (A strip of great stiffness is not
+/// a rigid pivot but a cantilever the pendulum must bend: clamped in the
+/// chops, it swings only as far as it flexes.)
+#[test]
+fn a_strip_of_no_stiffness_is_a_string() {
+    let body = Body {
+        mass: 8.0,
+        centre: 0.9,
+        inertia: 8.0 * 0.05 * 0.05 / 2.0,
+    };
+    let length: f64 = 0.015;
+    let (m, d, ic) = (body.mass, body.centre, body.inertia);
+    // A modulus that makes λ = 1e-9 L.
+    let t = m * G;
+    let floppy = Strip {
+        modulus: (1e-9 * length).powi(2) * t * 12.0 / (0.012 * 1e-12),
+        ..spring(length, 1e-4)
+    };
+    let e = effect(&floppy, &body, G).unwrap();
+    let (k11, k22) = (t / length, m * G * d);
+    let (a, b, c) = (m * ic, m * k22 + (m * d * d + ic) * k11, k11 * k22);
+    let string = (b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a);
+    close(e.omega, string.sqrt(), 1e-6);
+}
+
+/// A seconds pendulum of 8 kg on a regulator's spring: it turns about a
+/// point close to `λ` below the chops (to the order of `λ/l`), the spring
+/// gains by about `λ/l` of a day (86,400 λ/(2 l) s/day from the shorter
+/// pendulum plus as much from the bending), and its elastic share is
+/// about `λ/(2l)`.
+#[test]
+fn a_regulators_spring() {
+    let s = spring(0.015, 1e-4);
+    let body = Body {
+        mass: 8.0,
+        centre: 0.98,
+        inertia: 8.0 * 0.06 * 0.06 / 4.0,
+    };
+    let e = effect(&s, &body, G).unwrap();
+    let lambda = e.bending_length;
+    assert!((1e-3..2e-3).contains(&lambda), "{lambda}");
+    let l = s.length + body.centre;
+    assert!((e.effective_pivot / lambda - 1.0).abs() < 0.05, "{e:?}");
+    assert!(
+        (e.elastic_share / (lambda / (2.0 * l)) - 1.0).abs() < 0.05,
+        "{e:?}"
+    );
+    let expected = 86_400.0 * 0.5 * e.elastic_share * 2.0;
+    assert!(
+        e.rate > 0.0 && (e.rate / expected - 1.0).abs() < 0.1,
+        "{e:?}"
+    );
+    assert!(e.second_mode_hz.unwrap() > 10.0, "{e:?}");
+}
+
+/// Bad strips are refused by field, never a non-finite number.
+#[test]
+fn bad_strips_are_refused() {
+    let body = Body {
+        mass: 8.0,
+        centre: 0.98,
+        inertia: 0.01,
+    };
+    for (strip, field) in [
+        (spring(0.0, 1e-4), "length"),
+        (spring(0.015, -1e-4), "thickness"),
+        (spring(f64::NAN, 1e-4), "length"),
+        (
+            Strip {
+                modulus: 0.0,
+                ..spring(0.015, 1e-4)
+            },
+            "modulus",
+        ),
+    ] {
+        let e = effect(&strip, &body, G).unwrap_err();
+        assert_eq!(e.field_name(), Some(field), "{e}");
+    }
+    let e = effect(
+        &spring(0.015, 1e-4),
+        &Body {
+            centre: -1.0,
+            ..body
+        },
+        G,
+    )
+    .unwrap_err();
+    assert_eq!(e.field_name(), Some("centre"), "{e}");
+}
+
+/// A strip clamped at both ends, its bottom moved sideways without
+/// turning: González's stiffness of a suspension wire clamped at both
+/// ends (Class. Quantum Grav. 17, 4409, 2000, eq. 9, as pygwinc's
+/// `suspQuad` uses it) tends at low frequency to `T / (L - 2λ)`, the
+/// strip shortened by a bending length at each end; exactly it is `T / (L
+/// - 2λ tanh(L/2λ))`, which differs by `e^{-L/λ}`.
+#[test]
+fn a_strip_clamped_at_both_ends_is_two_bending_lengths_shorter() {
+    for (length, thickness, tension) in [(0.015, 1e-4, 80.0), (0.6, 4e-4, 200.0), (0.3, 1e-4, 20.0)]
+    {
+        let s = spring(length, thickness);
+        let lambda = (s.bending_stiffness() / tension).sqrt();
+        let k = s.stiffness(tension)[0];
+        close(
+            k,
+            tension / (length - 2.0 * lambda),
+            2.0 * (-length / lambda).exp() + 1e-14,
+        );
+        // González's formula itself at a frequency far below the wire's
+        // own (k L = 1e-5): a steel strip's density, 7850 kg/m³.
+        let wave = 1e-5 / length;
+        let kd = wave * lambda;
+        let gonzalez =
+            tension * wave * (1.0 + kd * kd) * ((wave * length).cos() + kd * (wave * length).sin())
+                / ((1.0 - kd * kd) * (wave * length).sin() - 2.0 * kd * (wave * length).cos());
+        close(k, gonzalez, 2.0 * (-length / lambda).exp() + 1e-9);
+    }
+}
+
+mod common;
+use common::parts::{cylinder, part};
+use pendulum_theory::compound::{CompoundPendulum, Placement, Shape};
+
+/// A design hanging from a spring: the spring `thickness` thick, an
+/// Invar rod clamped below it and a brass bob held at its centre on the
+/// rod (no compensation: the rod's expansion alone, 0.65e-6/K).
+fn regulator(thickness: f64, massless_spring: bool) -> CompoundPendulum {
+    let spring = pendulum_theory::compound::Part {
+        massless: massless_spring,
+        ..spring_part(thickness, "steel", 0.0075)
+    };
+    CompoundPendulum::new(vec![
+        spring,
+        part(
+            "rod",
+            cylinder(1.0, 0.008, 0.0),
+            "invar",
+            Placement::Centre(0.515),
+        ),
+        part(
+            "bob",
+            cylinder(0.1, 0.1, 0.0),
+            "brass",
+            Placement::Centre(0.965),
+        ),
+    ])
+    .unwrap()
+}
+
+/// A spring 15 mm long, 12 mm wide and `thickness` thick, of `material`,
+/// its centre `centre` below the pivot.
+fn spring_part(thickness: f64, material: &str, centre: f64) -> pendulum_theory::compound::Part {
+    part(
+        "spring",
+        Shape::Spring {
+            length: 0.015,
+            width: 0.012,
+            thickness,
+        },
+        material,
+        Placement::Centre(centre),
+    )
+}
+
+/// Through the design: a point mass at the bottom of a massless spring
+/// has the equivalent length `L - λ tanh(L/λ)` of the closed form above.
+/// A spring not hanging from the pivot, or of a material without its
+/// modulus's temperature coefficient, is refused by field.
+#[test]
+fn a_design_hanging_from_a_spring() {
+    let spring = pendulum_theory::compound::Part {
+        massless: true,
+        ..spring_part(1e-4, "steel", 0.0075)
+    };
+    let bob = pendulum_theory::compound::Part {
+        point_mass: 8.0,
+        ..part("bob", Shape::Point, "steel", Placement::Centre(0.015))
+    };
+    let design = CompoundPendulum::new(vec![spring, bob]).unwrap();
+    let lambda = (2e11 * 0.012 * 1e-12 / 12.0 / (8.0 * G)).sqrt();
+    close(
+        design.properties().equivalent_length,
+        0.015 - lambda * (0.015 / lambda).tanh(),
+        1e-12,
+    );
+    let bob = || {
+        part(
+            "bob",
+            cylinder(0.1, 0.1, 0.0),
+            "brass",
+            Placement::Centre(0.5),
+        )
+    };
+    for (spring, field) in [
+        (spring_part(1e-4, "steel", 0.01), "centre"),
+        (spring_part(1e-4, "brass", 0.0075), "modulus_coefficient"),
+        (spring_part(1e-4, "lead", 0.0075), "material"),
+    ] {
+        let e = CompoundPendulum::new(vec![spring, bob()]).unwrap_err();
+        assert_eq!(e.field, field, "{e}");
+    }
+}
+
+/// "Anywhere from 16% to 84% of a pendulum's total temperature
+/// sensitivity is due to the suspension spring, with the actual amount
+/// depending on the spring's dimensions, modulus of elasticity, and
+/// suspended weight" (Matthys, Accurate Clock Pendulums, 2004, ch. 16,
+/// from James's equations): an uncompensated Invar seconds pendulum of 6
+/// kg on steel springs 0.1 to 0.3 mm thick (a regulator's) falls in that
+/// range, the thicker spring the larger share; a spring as thin as 0.03
+/// mm would fall below it.
+#[test]
+fn the_springs_share_of_the_temperature_coefficient() {
+    let share = |thickness: f64| {
+        let d = regulator(thickness, false);
+        let total = d.temperature_coefficient();
+        let spring = total
+            - d.without_spring_thermoelasticity()
+                .temperature_coefficient();
+        assert!(total < 0.0 && spring < 0.0, "{total} {spring}");
+        spring / total
+    };
+    let shares: Vec<f64> = [1e-4, 2e-4, 3e-4].iter().map(|&t| share(t)).collect();
+    assert!(
+        shares.iter().all(|s| (0.16..=0.84).contains(s)),
+        "{shares:?}"
+    );
+    assert!(shares.windows(2).all(|w| w[1] > w[0]), "{shares:?}");
+    assert!(share(3e-5) < 0.16);
+}
+
+/// The spring's own expansion moves what hangs below it: a design on a
+/// steel spring warmed by 10 °C is the rigid design whose parts below the
+/// spring were lowered by the spring's growth (its length times steel's
+/// 11.5e-6/K) and grew with the rod, its modulus 0.25% lower.
+#[test]
+fn what_hangs_from_the_spring_moves_with_it() {
+    let cold = regulator(1e-4, true);
+    let warm = cold.at_temperature(10.0).unwrap();
+    let grown = 0.015 * 11.5e-6 * 10.0;
+    // The rod's centre: the spring's new bottom, then half the warmed rod.
+    let rod_half = 0.5 * 1.0 * (1.0 + 0.65e-6 * 10.0);
+    close(warm.centres()[1], 0.015 + grown + rod_half, 1e-12);
+    assert!((warm.centres()[0] - 0.5 * (0.015 + grown)).abs() < 1e-15);
+}

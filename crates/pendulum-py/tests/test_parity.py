@@ -647,7 +647,7 @@ CLOCK = {
     "out_of_beat_ms": {"drive_energy": 2e-5, "beat_error": 0.02},
     "out_of_beat_angle": {"drive_energy": 2e-5, "escapement": "recoil", "out_of_beat": 0.003},
     "out_of_beat_too_far": {"drive_energy": 2e-5, "out_of_beat": 0.06},
-    "beat_error_too_big": {"drive_energy": 2e-5, "beat_error": 0.6},
+    "beat_error_too_big": {"drive_energy": 2e-5, "beat_error": 1.2},
     "impulse": {"drive_energy": 2e-5, "escapement": "impulse"},
     "impulse_early": {"drive_energy": 2e-5, "escapement": "impulse", "impulse_angle": 0.02},
     "free": {"drive_energy": 5e-4, "escapement": "free", "every_beats": 30},

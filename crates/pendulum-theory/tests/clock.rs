@@ -498,3 +498,39 @@ fn schedules_and_period_factors() {
     assert_eq!(piecewise_linear(&[], &[], 3.0), 1.0);
     assert_eq!(period_factor(86.4), 1.0 / 1.001);
 }
+
+/// Near stopping, out of beat by as much as half the lift, the swing
+/// barely passes the far edge on one side: the ticks come most unevenly,
+/// and the beat error is still the free swing's closed form (within 5%:
+/// the escapement's pushes are a larger share of so small a swing), not
+/// nothing.
+#[test]
+fn a_clock_far_out_of_beat_near_stopping() {
+    use pendulum_theory::clock::escapement::OutOfBeat;
+    let lift = 2f64.to_radians();
+    let delta = 1f64.to_radians();
+    let out = clock(
+        1e4,
+        Box::new(OutOfBeat {
+            inner: Box::new(Deadbeat {
+                lift,
+                torque: 2e-5,
+                friction: 0.15,
+                offset: 0.0,
+            }),
+            offset: delta,
+        }),
+    );
+    let s = out
+        .steady(HalfSwingMethod::Direct, 1.002 * out.minimum_drive())
+        .unwrap();
+    let (a, h) = (s.amplitude, 0.5 * lift);
+    let omega = out.pendulum.natural_angular_frequency();
+    let free =
+        (((delta - h) / a).acos() + ((delta + h) / a).acos() - std::f64::consts::PI).abs() / omega;
+    assert!(
+        (s.beat_error / free - 1.0).abs() < 0.05,
+        "{} {free}",
+        s.beat_error
+    );
+}

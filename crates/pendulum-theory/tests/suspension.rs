@@ -264,14 +264,66 @@ fn a_design_hanging_from_a_spring() {
             Placement::Centre(0.5),
         )
     };
+    let clamped = || {
+        part(
+            "rod",
+            cylinder(0.5, 0.008, 0.0),
+            "steel",
+            Placement::Centre(0.265),
+        )
+    };
     for (spring, field) in [
         (spring_part(1e-4, "steel", 0.01), "centre"),
         (spring_part(1e-4, "brass", 0.0075), "modulus_coefficient"),
         (spring_part(1e-4, "lead", 0.0075), "material"),
     ] {
-        let e = CompoundPendulum::new(vec![spring, bob()]).unwrap_err();
-        assert_eq!(e.field, field, "{e}");
+        let e = CompoundPendulum::new(vec![spring, clamped()]).unwrap_err();
+        assert_eq!((e.part.as_str(), e.field), ("spring", field), "{e}");
     }
+    // Geometry: the rod clamped at the spring's bottom, nothing reaching
+    // into it, nothing resting on it, one spring, and something below it.
+    let steel = || spring_part(1e-4, "steel", 0.0075);
+    let cases: Vec<(Vec<pendulum_theory::compound::Part>, &str, &str)> = vec![
+        (vec![steel(), bob()], "spring", "length"),
+        (
+            vec![
+                steel(),
+                part(
+                    "rod",
+                    cylinder(0.5, 0.008, 0.0),
+                    "steel",
+                    Placement::Centre(0.26),
+                ),
+            ],
+            "spring",
+            "length",
+        ),
+        (
+            vec![
+                steel(),
+                clamped(),
+                part(
+                    "nut",
+                    cylinder(0.01, 0.02, 0.0),
+                    "steel",
+                    Placement::RestsOn(0),
+                ),
+            ],
+            "nut",
+            "rests_on",
+        ),
+        (
+            vec![steel(), clamped(), spring_part(1e-4, "steel", 0.0075)],
+            "spring",
+            "shape",
+        ),
+        (vec![steel()], "spring", "shape"),
+    ];
+    for (parts, name, field) in cases {
+        let e = CompoundPendulum::new(parts).unwrap_err();
+        assert_eq!((e.part.as_str(), e.field), (name, field), "{e}");
+    }
+    assert!(CompoundPendulum::new(vec![steel(), clamped(), bob()]).is_ok());
 }
 
 /// "Anywhere from 16% to 84% of a pendulum's total temperature

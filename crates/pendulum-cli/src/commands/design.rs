@@ -57,7 +57,7 @@ pub fn rows(d: &Datasheet, gravity: &ResolvedGravity) -> Vec<(String, String)> {
             "Spring".into(),
             format!(
                 "bends over {} mm (its bending length); the pendulum turns {} mm below the \
-                 chops and gains {} s/day against a rigid pivot there (in the length above); \
+                 chops and gains {} s/day against a rigid pivot at the chops (in the length above); \
                  its modulus's change with temperature {} s/day per °C",
                 num(sp.bending_length_m * 1e3, 4),
                 num(sp.effective_pivot_m * 1e3, 4),

@@ -168,6 +168,18 @@ fn bad_clocks_are_refused() {
             "below 1",
         ),
         (
+            vec![
+                "--drive",
+                "20uJ",
+                "--escapement",
+                "recoil",
+                "--friction",
+                "0.99999",
+            ],
+            "--escapement",
+            "no drive keeps this escapement going",
+        ),
+        (
             vec!["--drive", "20uJ", "--beat-error", "5"],
             "--beat-error",
             "give a unit",
@@ -178,9 +190,9 @@ fn bad_clocks_are_refused() {
             "neither a beat error",
         ),
         (
-            vec!["--drive", "20uJ", "--beat-error", "0.6s"],
+            vec!["--drive", "20uJ", "--beat-error", "1.2s"],
             "--beat-error",
-            "less than half the beat",
+            "less than the beat",
         ),
         (
             vec!["--drive", "20uJ", "--beat-error", "3deg"],

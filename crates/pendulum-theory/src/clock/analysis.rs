@@ -470,12 +470,14 @@ fn offset_for_beat_error(
     if b == 0.0 {
         return Ok(0.0);
     }
+    // The ticks on one side can come at most a whole beat apart from
+    // those on the other: the beat error is below the beat.
     let beat = 0.5 * in_beat.pendulum.small_angle_period();
-    if b.abs() >= 0.5 * beat {
+    if b.abs() >= beat {
         return Err(Refusal::field(
             "beat_error",
             format!(
-                "must be less than half the beat ({} s), got {} s",
+                "must be less than the beat ({} s), got {} s",
                 format_significant(beat, 4),
                 format_significant(b.abs(), 4)
             ),
@@ -495,7 +497,7 @@ fn offset_for_beat_error(
         Refusal::field(
             "beat_error",
             format!(
-                "no offset of the escapement gives a beat error of {} ms at this drive: the                  pendulum stops before its ticks are that uneven",
+                "no offset of the escapement gives a beat error of {} ms at this drive: the pendulum stops before its ticks are that uneven",
                 format_significant(1e3 * b.abs(), 4)
             ),
         )
@@ -573,6 +575,7 @@ pub fn refusal_of(e: ClockError, drive: &'static str) -> Refusal {
             ),
         ),
         ClockError::OverTheTop => Refusal::field(drive, e.to_string()),
+        ClockError::NeverRuns => Refusal::field("escapement", e.to_string()),
         ClockError::Undamped => Refusal::field("q", e.to_string()),
         ClockError::Integration(a) => Refusal::field(
             drive,
@@ -985,6 +988,18 @@ fn long(
         "a drive factor of at least 0",
     )?;
     let (mut warnings, mut damping) = (Vec::new(), None::<Schedule>);
+    if input.gas.is_some()
+        && input
+            .weather
+            .as_ref()
+            .is_none_or(|w| w.pressure_pa.is_none())
+    {
+        return Err(Refusal::field(
+            "gas",
+            "names the gas whose pressure the weather gives: give a pressure column (a tank's \
+             pressure through the run), or leave the gas out",
+        ));
+    }
     let input_gas = input.gas.unwrap_or(crate::gas::Gas::Air);
     let rates = match (&input.weather, &built.design, &input.rate_schedule) {
         (Some(_), _, Some(_)) => {

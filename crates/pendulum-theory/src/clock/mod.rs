@@ -39,6 +39,10 @@ pub enum ClockError {
         /// The amplitude it must reach, degrees.
         unlocking_deg: f64,
     },
+    /// No drive keeps it going: the escapement takes more than it gives as
+    /// soon as the swing passes the lift, whatever the drive.
+    #[error("no drive keeps this escapement going: it takes more energy than it gives as soon as the swing passes the lift (a recoil or its friction too large; a constant-force impulse too small for its locking friction)")]
+    NeverRuns,
     /// The swing would go over the top.
     #[error("the drive swings the pendulum past 170°: give less drive or more damping")]
     OverTheTop,
@@ -163,12 +167,16 @@ impl Clock {
 
     /// The smallest drive factor that carries the swing past the
     /// escapement's unlocking amplitude (bisection on the energy balance
-    /// there).
+    /// there); infinite when none below 1e12 does (the escapement takes
+    /// more than it gives there, in proportion to the drive).
     pub fn minimum_drive(&self) -> f64 {
         let a = (self.escapement.unlocking_amplitude() * (1.0 + 1e-9)).max(1e-6);
         let (mut lo, mut hi) = (0.0, 1.0);
         while self.balance(hi, a) <= 0.0 && hi < 1e12 {
             hi *= 2.0;
+        }
+        if self.balance(hi, a) <= 0.0 {
+            return f64::INFINITY;
         }
         for _ in 0..100 {
             let mid = 0.5 * (lo + hi);
@@ -192,6 +200,9 @@ impl Clock {
         let unlock = (self.escapement.unlocking_amplitude() * (1.0 + 1e-9)).max(1e-6);
         let top = 170f64.to_radians();
         if self.balance(drive, unlock) <= 0.0 {
+            if self.minimum_drive().is_infinite() {
+                return Err(ClockError::NeverRuns);
+            }
             return Err(ClockError::Stops {
                 minimum_factor: self.minimum_drive() / drive,
                 unlocking_deg: unlock.to_degrees(),
@@ -256,7 +267,9 @@ impl Clock {
                 DIRECT_TOLERANCE,
             )
             .ok_or(ClockError::Integration(amplitude))?;
-            let Some(tick) = tick else { return Ok(0.0) };
+            // A swing that only grazes the last edge (the clock near
+            // stopping) turns there: the drop is at the turn.
+            let tick = tick.unwrap_or(h.time);
             beats.push((h.time, tick));
             amplitude = h.amplitude;
         }

@@ -502,6 +502,21 @@ fn sized(
             Some(compensated)
         }
         Some(name) => {
+            // "zinc-" or "in steel": a pair with a side missing, not zinc.
+            let trimmed = name.trim();
+            if trimmed.starts_with('-')
+                || trimmed.ends_with('-')
+                || trimmed.starts_with("in ")
+                || trimmed.ends_with(" in")
+            {
+                return Err(Refusal::field(
+                    "compensator",
+                    format!(
+                        "'{name}' names one tube of a pair: give both, inner-outer (zinc-steel) \
+                         or inner in outer"
+                    ),
+                ));
+            }
             let material = table_material(
                 "compensator",
                 if name == "collar" { "brass" } else { name },

@@ -356,6 +356,12 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             None => size("center", Unit::Length)?,
         };
         let named = |field: &str, on: &str| {
+            if on == name.as_str() {
+                return Err(bad(
+                    field,
+                    format!("names the part itself: give another part ('{on}' cannot hold '{on}')"),
+                ));
+            }
             names
                 .iter()
                 .position(|n| n == on)
@@ -377,7 +383,11 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             (Some(c), None, None) => {
                 if support_height.is_some() || end.is_some() {
                     return Err(bad(
-                        "support_height",
+                        if support_height.is_some() {
+                            "support_height"
+                        } else {
+                            "rests_on_end"
+                        },
                         "goes with rests_on (the part placed by its centre hangs from the rod)"
                             .into(),
                     ));

@@ -200,12 +200,15 @@ pub struct Properties {
 
 impl Properties {
     /// The mass, kg, of the simple pendulum of the equivalent length that
-    /// has this pendulum's restoring torque and energy at every angle:
-    /// `M d / l` (the potential energy `M g d (1 - cos θ)` equals `m g l
-    /// (1 - cos θ)`, and the kinetic `I θ'²/2` equals `m l² θ'²/2` since
-    /// `I = M d l`). The energy budget of a design uses it.
+    /// has this pendulum's energy at every amplitude: `I / l²`, so that
+    /// the kinetic energy `I θ'²/2` equals `m l² θ'²/2` and the restoring
+    /// stiffness `I ω²` equals `m g l`. For a rigid pendulum (`I = M d l`)
+    /// it is `M d / l`, and the potential energies `M g d (1 - cos θ)` and
+    /// `m g l (1 - cos θ)` agree at every angle; on a suspension spring
+    /// the spring's share of the stiffness is in it too. The energy budget
+    /// of a design uses it.
     pub fn effective_mass(&self) -> f64 {
-        self.mass * self.centre_of_mass / self.equivalent_length
+        self.inertia / (self.equivalent_length * self.equivalent_length)
     }
 }
 
@@ -220,12 +223,10 @@ fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> 
     let Shape::Spring { length, .. } = p.shape else {
         return Ok(());
     };
-    if parts
+    let first = parts
         .iter()
-        .filter(|q| matches!(q.shape, Shape::Spring { .. }))
-        .count()
-        > 1
-    {
+        .find(|q| matches!(q.shape, Shape::Spring { .. }));
+    if !first.is_some_and(|q| std::ptr::eq(q, p)) {
         return Err((
             "shape",
             "a design hangs from one suspension spring (give springs side by side as one, of \
@@ -233,8 +234,27 @@ fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> 
                 .into(),
         ));
     }
+    if parts.len() == 1 {
+        return Err((
+            "shape",
+            "a spring carries the pendulum: give the parts clamped below it".into(),
+        ));
+    }
     match p.placement {
         Placement::Centre(c) if (c - 0.5 * length).abs() <= 1e-9 * length => {}
+        Placement::RestsOn(_) => {
+            return Err((
+                "rests_on",
+                "a suspension spring hangs from the pivot: leave rests_on out".into(),
+            ))
+        }
+        Placement::Held { .. } => {
+            return Err((
+                "hangs_from",
+                "a suspension spring hangs from the pivot: leave hangs_from (and rests_on) out"
+                    .into(),
+            ))
+        }
         _ => {
             return Err((
                 "centre",
@@ -244,6 +264,41 @@ fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> 
                     shown(0.5 * length)
                 ),
             ))
+        }
+    }
+    // What is placed by its centre hangs below the spring, the rod clamped
+    // at its bottom (within 1 µm: sizes in mm; a millimetre for the rod).
+    let tops: Vec<(&str, f64)> = parts
+        .iter()
+        .filter(|q| !matches!(q.shape, Shape::Spring { .. }))
+        .filter_map(|q| match q.placement {
+            Placement::Centre(c) => Some((q.name.as_str(), c - 0.5 * q.shape.height())),
+            _ => None,
+        })
+        .collect();
+    if let Some((name, top)) = tops.iter().find(|(_, top)| *top < length - 1e-6) {
+        return Err((
+            "length",
+            format!(
+                "part '{name}' reaches up into the spring (its top {} mm below the pivot, the \
+                 spring's bottom {} mm): parts are clamped below the spring",
+                shown(top * 1e3),
+                shown(length * 1e3)
+            ),
+        ));
+    }
+    if let Some(nearest) = tops.iter().map(|t| t.1).reduce(f64::min) {
+        if nearest > length + 1e-3 {
+            return Err((
+                "length",
+                format!(
+                    "nothing is clamped to the spring's bottom ({} mm below the pivot): the \
+                     highest part placed on the rod starts at {} mm; the rod's top belongs \
+                     there",
+                    shown(length * 1e3),
+                    shown(nearest * 1e3)
+                ),
+            ));
         }
     }
     let m = &p.material;
@@ -375,6 +430,20 @@ impl CompoundPendulum {
             }
             if let Shape::Spring { .. } = p.shape {
                 check_spring(p, &parts).map_err(|(field, message)| fail(field, message))?;
+            }
+            if let Some(j) = p.placement.support() {
+                if matches!(parts.get(j).map(|q| &q.shape), Some(Shape::Spring { .. })) {
+                    return Err(fail(
+                        if matches!(p.placement, Placement::RestsOn(_)) {
+                            "rests_on"
+                        } else {
+                            "hangs_from"
+                        },
+                        "nothing rests on or hangs from a suspension spring: parts are clamped \
+                         below it (placed by their centre)"
+                            .into(),
+                    ));
+                }
             }
             let alpha = p.material.expansion;
             if !(-MAX_EXPANSION..=MAX_EXPANSION).contains(&alpha) {

@@ -107,11 +107,14 @@ impl Spec {
                 format!("must be positive, got {} rad", self.lift),
             );
         }
-        if self.friction.is_nan() || self.friction < 0.0 {
-            return fail("friction", "must not be negative".into());
-        }
-        if self.recoil.is_nan() || self.recoil < 0.0 {
-            return fail("recoil", "must not be negative".into());
+        let shown = |v: f64| crate::error::format_significant(v, 6);
+        for (field, v) in [("friction", self.friction), ("recoil", self.recoil)] {
+            if !v.is_finite() || v < 0.0 {
+                return fail(
+                    field,
+                    format!("must be a finite number, not negative, got {}", shown(v)),
+                );
+            }
         }
         if self.angle.is_nan() || self.angle.abs() >= TOP {
             return fail("impulse_angle", "must lie within 170° of the bottom".into());
@@ -165,7 +168,7 @@ impl Spec {
                         format!(
                             "the recoil faces' friction must be below 1 (a face that friction \
                              locks cannot recoil), got {}",
-                            self.friction
+                            shown(self.friction)
                         ),
                     );
                 }

@@ -175,7 +175,7 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
         }
         match p.placement {
             // A spring hangs from the pivot: its centre follows.
-            Placement::Centre(_) if matches!(p.shape, Shape::Spring { .. }) => {}
+            Placement::Centre(_) if p.shape.is_spring() => {}
             Placement::Centre(c) => out.push_str(&format!("centre = {}\n", mm(c))),
             Placement::RestsOn(j) => {
                 out.push_str(&format!("rests_on = {}\n", quoted(&parts[j].name)))

@@ -429,9 +429,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                 return Err(bad(field, "must be the name of another part".into()));
             }
             // A spring hangs from the pivot.
-            (None, None, None) if matches!(shape, Shape::Spring { .. }) => {
-                Placement::Centre(0.5 * shape.height())
-            }
+            (None, None, None) if shape.is_spring() => Placement::Centre(0.5 * shape.height()),
             (None, None, None) => {
                 return Err(bad(
                     "centre",

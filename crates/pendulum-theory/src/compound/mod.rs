@@ -212,6 +212,12 @@ impl Properties {
     }
 }
 
+/// The index of the suspension spring among `parts`: the first part of
+/// that shape (a design has at most one).
+fn spring_index(parts: &[Part]) -> Option<usize> {
+    parts.iter().position(|p| p.shape.is_spring())
+}
+
 /// The largest share of a modulus's change per kelvin a material may
 /// give (steels -2.5e-4/K, fused silica +1.5e-4/K, bronzes about -4e-4/K).
 const MAX_MODULUS_COEFFICIENT: f64 = 1e-2;
@@ -223,10 +229,7 @@ fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> 
     let Shape::Spring { length, .. } = p.shape else {
         return Ok(());
     };
-    let first = parts
-        .iter()
-        .find(|q| matches!(q.shape, Shape::Spring { .. }));
-    if !first.is_some_and(|q| std::ptr::eq(q, p)) {
+    if !spring_index(parts).is_some_and(|i| std::ptr::eq(&parts[i], p)) {
         return Err((
             "shape",
             "a design hangs from one suspension spring (give springs side by side as one, of \
@@ -270,7 +273,7 @@ fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> 
     // at its bottom (within 1 µm: sizes in mm; a millimetre for the rod).
     let tops: Vec<(&str, f64)> = parts
         .iter()
-        .filter(|q| !matches!(q.shape, Shape::Spring { .. }))
+        .filter(|q| !q.shape.is_spring())
         .filter_map(|q| match q.placement {
             Placement::Centre(c) => Some((q.name.as_str(), c - 0.5 * q.shape.height())),
             _ => None,
@@ -428,11 +431,11 @@ impl CompoundPendulum {
                     ));
                 }
             }
-            if let Shape::Spring { .. } = p.shape {
+            if p.shape.is_spring() {
                 check_spring(p, &parts).map_err(|(field, message)| fail(field, message))?;
             }
             if let Some(j) = p.placement.support() {
-                if matches!(parts.get(j).map(|q| &q.shape), Some(Shape::Spring { .. })) {
+                if parts.get(j).is_some_and(|q| q.shape.is_spring()) {
                     return Err(fail(
                         if matches!(p.placement, Placement::RestsOn(_)) {
                             "rests_on"
@@ -523,11 +526,7 @@ impl CompoundPendulum {
                 message: "the pendulum has no mass (every part is massless)".into(),
             });
         }
-        if let Some(i) = pendulum
-            .parts
-            .iter()
-            .position(|p| matches!(p.shape, Shape::Spring { .. }))
-        {
+        if let Some(i) = spring_index(&pendulum.parts) {
             if pendulum.spring_effect().is_none() {
                 return Err(DesignError {
                     part: pendulum.parts[i].name.clone(),
@@ -581,10 +580,7 @@ impl CompoundPendulum {
     /// spring's gain of 50 s/day by 0.07 s/day between equator and pole);
     /// `None` without a spring.
     pub fn spring_effect(&self) -> Option<crate::suspension::SpringEffect> {
-        let i = self
-            .parts
-            .iter()
-            .position(|p| matches!(p.shape, Shape::Spring { .. }))?;
+        let i = spring_index(&self.parts)?;
         let Shape::Spring {
             length,
             width,
@@ -622,7 +618,7 @@ impl CompoundPendulum {
     pub fn without_spring_thermoelasticity(&self) -> Self {
         let mut out = self.clone();
         for p in &mut out.parts {
-            if matches!(p.shape, Shape::Spring { .. }) {
+            if p.shape.is_spring() {
                 p.material.modulus_coefficient = Some(0.0);
             }
         }
@@ -735,11 +731,7 @@ impl CompoundPendulum {
 
     fn rod(&self) -> Option<usize> {
         // Its top at the pivot, or at a suspension spring's bottom.
-        let top = self
-            .parts
-            .iter()
-            .find(|p| matches!(p.shape, Shape::Spring { .. }))
-            .map_or(0.0, |p| p.shape.height());
+        let top = spring_index(&self.parts).map_or(0.0, |i| self.parts[i].shape.height());
         self.parts.iter().zip(&self.centres).position(|(p, &c)| {
             matches!(p.shape, Shape::Cylinder { .. })
                 && (c - 0.5 * p.shape.height() - top).abs() < 1e-3
@@ -1008,11 +1000,13 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
     // A suspension spring hangs from the pivot and grows with its own
     // material; what is placed by its centre hangs from the spring's
     // bottom and grows below it with the rod.
-    let spring = parts.iter().enumerate().find_map(|(i, p)| match p.shape {
-        Shape::Spring { length, .. } => {
-            Some((i, length, length / (1.0 + p.material.expansion * delta)))
-        }
-        _ => None,
+    let spring = spring_index(parts).map(|i| {
+        let length = parts[i].shape.height();
+        (
+            i,
+            length,
+            length / (1.0 + parts[i].material.expansion * delta),
+        )
     });
     let mut chain: Vec<usize> = Vec::new();
     let mut on_chain = vec![false; parts.len()];

@@ -109,6 +109,11 @@ impl Shape {
         }
     }
 
+    /// Whether it is a suspension spring.
+    pub fn is_spring(&self) -> bool {
+        matches!(self, Shape::Spring { .. })
+    }
+
     /// Vertical extent, m: from the part's top to its bottom.
     pub fn height(&self) -> f64 {
         match *self {

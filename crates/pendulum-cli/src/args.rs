@@ -1278,8 +1278,9 @@ pub struct ClockArgs {
     )]
     pub every: Option<Time>,
     /// With --duration: what changes with time (CSV: time_s and any of
-    /// drive_factor, temperature_c, pressure_hpa; the last two with
-    /// --design, moving the rate by its coefficients), linear between rows.
+    /// drive_factor, temperature_c, pressure_hpa, humidity_percent,
+    /// gradient_k_per_m; all but the first with --design, moving the rate
+    /// by its coefficients), linear between rows.
     #[arg(long, value_name = "FILE.csv", requires = "duration")]
     pub drive_file: Option<InputPath>,
     /// The gas the --drive-file's pressure_hpa is of: air, nitrogen or

@@ -85,6 +85,8 @@ pub enum Role {
     PulseWidth,
     /// Relative humidity, %.
     Humidity,
+    /// A vertical temperature gradient, K/m, warmer upwards.
+    Gradient,
 }
 
 /// A role's name for messages ("offset", "half period").
@@ -121,6 +123,7 @@ impl Role {
             Role::HalfPeriod => "half period",
             Role::PulseWidth => "pulse width",
             Role::Humidity => "humidity",
+            Role::Gradient => "gradient",
         }
     }
 
@@ -200,6 +203,13 @@ impl Role {
             | "dwell" | "blocked" | "blocked_time" | "transit" | "transit_time" => Role::PulseWidth,
             "humidity" | "rh" | "relative_humidity" | "relative humidity" | "hum" | "feuchte"
             | "luftfeuchte" | "humidité" | "humedad" | "umidità" => Role::Humidity,
+            "gradient"
+            | "temperature_gradient"
+            | "temperature gradient"
+            | "vertical_gradient"
+            | "vertical gradient"
+            | "dt_dz"
+            | "dtdz" => Role::Gradient,
             // phyphox's raw gyroscope data, in the app's languages.
             _ if gyro_axis(base).is_some() => gyro_axis(base)?,
             _ => return None,
@@ -752,6 +762,19 @@ fn split_header(header: &str) -> (String, Option<String>) {
             }
         }
     }
+    // A gradient in kelvin a metre: `gradient_k_per_m`, `dT/dz K/m`.
+    for (suffix, unit) in [
+        ("_k_per_m", "k/m"),
+        ("_c_per_m", "c/m"),
+        (" k/m", "k/m"),
+        ("_k/m", "k/m"),
+    ] {
+        if let Some(base) = text.strip_suffix(suffix) {
+            if !base.trim().is_empty() {
+                return (base.trim().to_string(), Some(unit.to_string()));
+            }
+        }
+    }
     // `Time (s)`, `t [s]`, `Gyroscope x (rad/s)`: the unit in brackets.
     for (open, close) in [('(', ')'), ('[', ']'), ('{', '}')] {
         if let (Some(i), true) = (text.find(open), text.ends_with(close)) {
@@ -788,6 +811,8 @@ enum Kind {
     ClockRate,
     /// A percentage.
     Percent,
+    /// A temperature gradient, K/m.
+    Gradient,
 }
 
 /// The index of a column the reader makes (times from a sample rate).
@@ -883,6 +908,8 @@ fn unit_of(unit: &str) -> Option<(Kind, f64)> {
         "ppm" => (Kind::ClockRate, 1e-6),
         "ppb" => (Kind::ClockRate, 1e-9),
         "%" | "percent" | "pct" | "%rh" | "rh" => (Kind::Percent, 1.0),
+        "k/m" | "°c/m" | "c/m" | "degc/m" | "k_per_m" | "c_per_m" => (Kind::Gradient, 1.0),
+        "k/cm" | "°c/cm" | "c/cm" => (Kind::Gradient, 100.0),
         _ => return None,
     })
 }
@@ -901,6 +928,7 @@ fn units_for(role: Role) -> &'static str {
         Role::Offset | Role::HalfPeriod | Role::PulseWidth => "s, ms, us, ns",
         Role::Frequency => "s/day, ppm, ppb, or none (a fraction)",
         Role::Humidity => "%",
+        Role::Gradient => "K/m, °C/m, K/cm",
         _ => "none",
     }
 }
@@ -968,6 +996,8 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
             (Role::Frequency, None) => Some(1.0),
             (Role::Frequency, Some(_)) => kind(Kind::ClockRate),
             (Role::Humidity, _) => unit.as_deref().map_or(Some(1.0), |_| kind(Kind::Percent)),
+            // A bare gradient is in K/m.
+            (Role::Gradient, _) => unit.as_deref().map_or(Some(1.0), |_| kind(Kind::Gradient)),
             (Role::Pressure, Some(_)) => kind(Kind::Pressure),
         };
         found.push(Found {

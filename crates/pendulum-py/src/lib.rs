@@ -720,7 +720,8 @@ fn fit_trajectory(
 
 /// A long run as the Python package passes it: duration, row interval,
 /// drive schedule (times, factors), rate schedule (times, s/day), weather
-/// (times, temperatures °C, pressures Pa), force.
+/// (times, temperatures °C, pressures Pa, humidities %, gradients K/m),
+/// force.
 type RunArgs = (
     f64,
     Option<f64>,
@@ -731,9 +732,16 @@ type RunArgs = (
     Option<String>,
 );
 
-/// The weather as the Python package passes it: times, and temperatures
-/// (°C) and pressures (Pa), either or both.
-type Weather = (Vec<f64>, Option<Vec<f64>>, Option<Vec<f64>>);
+/// The weather as the Python package passes it: times, and any of
+/// temperatures (°C), pressures (Pa), relative humidities (%) and vertical
+/// gradients (K/m).
+type Weather = (
+    Vec<f64>,
+    Option<Vec<f64>>,
+    Option<Vec<f64>>,
+    Option<Vec<f64>>,
+    Option<Vec<f64>>,
+);
 
 /// A long run's rows, column by column.
 #[derive(Default)]
@@ -845,13 +853,17 @@ fn clock<'py>(
                 duration,
                 every,
                 drive_schedule: schedule(drive),
-                weather: weather.map(|(time, temperature_c, pressure_pa)| {
-                    pendulum_theory::clock::analysis::Weather {
-                        time,
-                        temperature_c,
-                        pressure_pa,
-                    }
-                }),
+                weather: weather.map(
+                    |(time, temperature_c, pressure_pa, humidity_percent, gradient_k_per_m)| {
+                        pendulum_theory::clock::analysis::Weather {
+                            time,
+                            temperature_c,
+                            pressure_pa,
+                            humidity_percent,
+                            gradient_k_per_m,
+                        }
+                    },
+                ),
                 rate_schedule: schedule(rate),
                 force,
                 gas: run_gas,

@@ -79,3 +79,31 @@ def test_odd_inputs(name):
 def test_counts_out_of_range_are_value_errors(call):
     with pytest.raises(ValueError):
         call()
+
+
+@pytest.mark.parametrize("call, keyword", [
+    (lambda: pt.clock(1.0, drive_energy=2e-5, beat_error=True), "beat_error"),
+    (lambda: pt.clock_run(1.0, 86400.0, drive_energy=2e-5, q=False), "q"),
+    (lambda: pt.period(True, 0.1), "length"),
+    (lambda: pt.design([ROD, BOB], humidity=True), "humidity"),
+    (lambda: pt.clock_run(1.0, 86400.0, drive_energy=2e-5,
+                          drive_schedule=([0.0, 3600.0], [1.0, True])), "drive_schedule"),
+    (lambda: pt.train([True, 60, 30], [8, 8]), "wheels"),
+    (lambda: pt.exact_angle([0.0, True], 1.0, 0.1), "t"),
+    (lambda: pt.period(__import__("numpy").array([True, False]), 0.1), "length"),
+])
+def test_true_and_false_are_not_numbers(call, keyword):
+    """Python takes True for 1: ``beat_error=True`` was a beat error of a
+    second. Every function refuses a boolean where it takes a number."""
+    with pytest.raises(ValueError, match=f"^{keyword}: must be a number"):
+        call()
+    assert pt.stability([0.0, 1.0, 2.0, 4.0] * 8, 1.0, force=True) is not None
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -float("inf")])
+def test_a_non_finite_size_in_a_design_names_its_field(bad):
+    """NaN in a design's dict gave the JSON reader's "expected value at line
+    1 column 74"; it is refused as the command line refuses ``nan`` in a
+    design file: by the part and the field."""
+    with pytest.raises(ValueError, match="^part 'rod': length: must be a finite number"):
+        pt.design([dict(ROD, length=bad), BOB])

@@ -1187,13 +1187,13 @@ DESIGN = {
     "rests_on": ([ROD, {**NUT, "centre": 1.0}, {"name": "bob", "shape": "cylinder",
                                                   "material": "brass", "length": 0.1,
                                                   "diameter": 0.1, "rests_on": "nut"}], {}),
-    "hot_humid": ([ROD, BOB], {"temperature": 35.0, "humidity": 0.75, "pressure": 95000.0}),
+    "hot_humid": ([ROD, BOB], {"temperature": 35.0, "humidity": 75.0, "pressure": 95000.0}),
     "cold_low": ([ROD, BOB], {"temperature": -10.0, "pressure": 70000.0,
                               "regulated_at": 15.0}),
     "lunar": ([ROD, BOB], {"g": 1.62}),
     "pressure_high": ([ROD, BOB], {"pressure": 120000.0}),
     "temperature_cold": ([ROD, BOB], {"temperature": -40.0}),
-    "humidity_over": ([ROD, BOB], {"humidity": 1.2}),
+    "humidity_over": ([ROD, BOB], {"humidity": 120.0}),
     "regulated_hot": ([ROD, BOB], {"regulated_at": 150.0}),
     "unknown_shape": ([ROD, {**BOB, "shape": "cone"}], {}),
     "unknown_material": ([ROD, {**BOB, "material": "unobtainium"}], {}),
@@ -1219,7 +1219,7 @@ DESIGN = {
     "helium_low": ([ROD, BOB], {"gas": "helium", "pressure": 1.0}),
     "arc_in_air": ([ROD, BOB, NUT], {"amplitude": 0.035}),
     "unknown_gas": ([ROD, BOB], {"gas": "argon"}),
-    "helium_humid": ([ROD, BOB], {"gas": "helium", "humidity": 0.5}),
+    "helium_humid": ([ROD, BOB], {"gas": "helium", "humidity": 50.0}),
     "pivot_q_zero": ([ROD, BOB], {"pivot_q": 0.0}),
     "arc_too_wide": ([ROD, BOB], {"amplitude": 1.5}),
     "pressure_vacuum": ([ROD, BOB], {"pressure": 0.1}),
@@ -1232,7 +1232,7 @@ DESIGN = {
     "spring_placed_low": ([{**SPRING, "centre": 0.05}, ROD, BOB], {}),
 }
 DESIGN_FLAGS = {"g": ("--g", 1.0), "pressure": ("--pressure", 0.01),
-                "temperature": ("--temperature", 1.0), "humidity": ("--humidity", 100.0),
+                "temperature": ("--temperature", 1.0), "humidity": ("--humidity", 1.0),
                 "regulated_at": ("--regulated-at", 1.0), "gas": ("--gas", None),
                 "pivot_q": ("--pivot-q", 1.0), "amplitude": ("--amplitude", "rad")}
 FLAG.update({"humidity": "--humidity", "regulated_at": "--regulated-at"})
@@ -1368,28 +1368,37 @@ def test_compensate(name, tmp_path):
 
 # --- clock: a design's weather -------------------------------------------------
 
-#: (times, temperatures °C or None, pressures hPa or None).
+#: (times, temperatures °C, pressures hPa, humidities %, gradients K/m; any None).
 WEATHER = {
-    "warm_spell": ([0.0, DAY, DAY + 1], [20.0, 20.0, 30.0], None),
-    "pressure_falls": ([0.0, 2 * DAY], None, [1013.25, 980.5]),
-    "both": ([0.0, DAY, 2 * DAY], [18.0, 25.0, 21.5], [1000.0, 1010.0, 995.25]),
-    "cold_out_of_range": ([0.0, DAY], [20.0, -40.0], None),
-    "pressure_out_of_range": ([0.0, DAY], None, [1013.25, 500.0]),
-    "unsorted": ([0.0, DAY, 100.0], [20.0, 21.0, 22.0], None),
-    "one_row": ([0.0], [25.0], None),
-    "constant": ([0.0, DAY], [20.0, 20.0], None),
-    "cold_edge": ([0.0, DAY], [20.0, -20.0], None),
-    "hot_edge": ([0.0, DAY], [20.0, 60.0], None),
-    "hot_out_of_range": ([0.0, DAY], [20.0, 61.0], None),
-    "temperature_nan": ([0.0, DAY], [20.0, NAN], None),
-    "pressure_nan": ([0.0, DAY], None, [1013.25, NAN]),
-    "times_repeat": ([0.0, DAY, DAY], [20.0, 21.0, 22.0], None),
-    "negative_time": ([-DAY, 0.0, DAY], [20.0, 21.0, 22.0], None),
-    "starts_late": ([DAY, 2 * DAY], [20.0, 25.0], None),
-    "ends_early": ([0.0, 3600.0], [20.0, 25.0], None),
-    "pressure_high": ([0.0, DAY], None, [1013.25, 1100.0]),
-    "pressure_low": ([0.0, DAY], None, [1013.25, 700.0]),
-    "time_nan": ([0.0, NAN], [20.0, 21.0], None),
+    "warm_spell": ([0.0, DAY, DAY + 1], [20.0, 20.0, 30.0], None, None, None),
+    "pressure_falls": ([0.0, 2 * DAY], None, [1013.25, 980.5], None, None),
+    "both": ([0.0, DAY, 2 * DAY], [18.0, 25.0, 21.5], [1000.0, 1010.0, 995.25], None, None),
+    "cold_out_of_range": ([0.0, DAY], [20.0, -40.0], None, None, None),
+    "pressure_out_of_range": ([0.0, DAY], None, [1013.25, 500.0], None, None),
+    "unsorted": ([0.0, DAY, 100.0], [20.0, 21.0, 22.0], None, None, None),
+    "one_row": ([0.0], [25.0], None, None, None),
+    "constant": ([0.0, DAY], [20.0, 20.0], None, None, None),
+    "cold_edge": ([0.0, DAY], [20.0, -20.0], None, None, None),
+    "hot_edge": ([0.0, DAY], [20.0, 60.0], None, None, None),
+    "hot_out_of_range": ([0.0, DAY], [20.0, 61.0], None, None, None),
+    "temperature_nan": ([0.0, DAY], [20.0, NAN], None, None, None),
+    "pressure_nan": ([0.0, DAY], None, [1013.25, NAN], None, None),
+    "times_repeat": ([0.0, DAY, DAY], [20.0, 21.0, 22.0], None, None, None),
+    "negative_time": ([-DAY, 0.0, DAY], [20.0, 21.0, 22.0], None, None, None),
+    "starts_late": ([DAY, 2 * DAY], [20.0, 25.0], None, None, None),
+    "ends_early": ([0.0, 3600.0], [20.0, 25.0], None, None, None),
+    "pressure_high": ([0.0, DAY], None, [1013.25, 1100.0], None, None),
+    "pressure_low": ([0.0, DAY], None, [1013.25, 700.0], None, None),
+    "time_nan": ([0.0, NAN], [20.0, 21.0], None, None, None),
+    "humid_day": ([0.0, DAY, 2 * DAY], [20.0, 20.0, 21.0], None, [40.0, 80.0, 55.5], None),
+    "humidity_only": ([0.0, DAY], None, None, [50.0, 90.0], None),
+    "humidity_out_of_range": ([0.0, DAY], None, None, [50.0, 101.0], None),
+    "humidity_nan": ([0.0, DAY], None, None, [50.0, NAN], None),
+    "gradient": ([0.0, DAY, 2 * DAY], [20.0, 20.0, 20.0], None, None, [0.0, 1.5, -0.5]),
+    "gradient_only": ([0.0, DAY], None, None, None, [0.2, 2.0]),
+    "gradient_out_of_range": ([0.0, DAY], None, None, None, [0.0, 150.0]),
+    "everything": ([0.0, DAY, 2 * DAY], [18.0, 25.0, 21.5], [1000.0, 1010.0, 995.25],
+                   [45.0, 60.0, 52.0], [0.1, 0.8, 0.3]),
 }
 
 
@@ -1397,18 +1406,17 @@ FLAG.update({"weather": "--drive-file"})
 
 
 def weather_case(name, tmp_path, parts):
-    times, temps, press = WEATHER[name]
+    times, temps, press, humid, gradient = WEATHER[name]
     header, columns = ["time_s"], [times]
-    if temps is not None:
-        header.append("temperature_c")
-        columns.append(temps)
-    if press is not None:
-        header.append("pressure_hpa")
-        columns.append(press)
+    for title, column in [("temperature_c", temps), ("pressure_hpa", press),
+                          ("humidity_percent", humid), ("gradient_k_per_m", gradient)]:
+        if column is not None:
+            header.append(title)
+            columns.append(column)
     path = tmp_path / "weather.csv"
     write_csv(path, header, columns)
     pa = None if press is None else [p * 100.0 for p in press]
-    return path, (times, temps, pa)
+    return path, (times, temps, pa, humid, gradient)
 
 
 @pytest.mark.parametrize("name", sorted(WEATHER))

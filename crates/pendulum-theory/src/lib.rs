@@ -62,6 +62,7 @@ pub mod gravity;
 pub mod integrate;
 pub mod lift;
 pub mod listening;
+pub mod moisture;
 pub mod oscillating_flow;
 pub mod pendulum;
 pub mod period;

@@ -46,8 +46,73 @@
 //! and the elastica's nonlinearity at large angles are left out: the
 //! spring's mass is a part of the design, and its bending at 3° is
 //! linear to 1e-4.
+//!
+//! At a finite swing the spring changes the circular error: its torque is
+//! linear in the angle where gravity's is `sin θ`, so a pendulum of elastic
+//! share `ε` keeps `θ'' = -ω²[(1 - ε) sin θ + ε θ]` and its period grows
+//! with the amplitude by `1 - ε` of a rigid pendulum's
+//! ([`period_ratio`]): the spring shrinks the circular error. (The
+//! elastica's own nonlinearity adds a term of order `ε A²` relative to the
+//! elastic torque, `ε² A²/16`-sized in the period: under 1e-8 of it for a
+//! regulator's spring at 3°.)
 
 use crate::analysis::{require_finite, Refusal};
+
+/// The period at semi-arc `amplitude` (rad, below π) over the small-swing
+/// period of a pendulum whose restoring torque is the share `elastic_share`
+/// (ε, 0 to 1) of a linear spring's and the rest gravity's:
+/// `θ'' = -ω²[(1 - ε) sin θ + ε θ]`, so
+/// `T/T0 = (2/π) ∫₀^{π/2} dφ / sqrt((1 - ε) sinc(u) sinc(v) + ε)` with
+/// `θ = A sin φ`, `u = (A + θ)/2`, `v = (A - θ)/2` (the energy integral,
+/// written with `cos θ - cos A = 2 sin u sin v` so that nothing cancels).
+///
+/// Method: the integrand is even and analytic about both ends, so the
+/// trapezoidal rule converges geometrically (Trefethen & Weideman, SIAM
+/// Review 56, 385, 2014); the number of points doubles from 8 until two
+/// estimates agree to 2 ulp (16 to 64 points to 90°). Measured error: ε =
+/// 0 is the crate's AGM ([`crate::period::period_ratio`]) within 2 ulp to
+/// 150°; ε = 1 is 1; the small-angle slope is `(1 - ε)/16`; against the
+/// integrated equation of motion within 1e-12 (`tests/suspension.rs`).
+pub fn period_ratio(amplitude: f64, elastic_share: f64) -> f64 {
+    let a = amplitude.abs();
+    let e = elastic_share.clamp(0.0, 1.0);
+    if a.is_nan() || a >= std::f64::consts::PI {
+        return f64::NAN;
+    }
+    if a == 0.0 || e == 1.0 {
+        return 1.0;
+    }
+    let sinc = |x: f64| if x == 0.0 { 1.0 } else { x.sin() / x };
+    let f = |phi: f64| {
+        let theta = a * phi.sin();
+        let (u, v) = (0.5 * (a + theta), 0.5 * (a - theta));
+        1.0 / ((1.0 - e) * sinc(u) * sinc(v) + e).sqrt()
+    };
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    // Trapezoid on [0, π/2] with n intervals, refined by halving (reusing
+    // the points already summed).
+    let mut n = 8usize;
+    let mut sum = 0.5 * (f(0.0) + f(half_pi))
+        + (1..n)
+            .map(|k| f(half_pi * k as f64 / n as f64))
+            .sum::<f64>();
+    let mut estimate = sum / n as f64;
+    while n < 1 << 16 {
+        let added: f64 = (0..n)
+            .map(|k| f(half_pi * (2 * k + 1) as f64 / (2 * n) as f64))
+            .sum();
+        sum += added;
+        n *= 2;
+        let next = sum / n as f64;
+        let settled = (next - estimate).abs() <= 4.0 * f64::EPSILON * next;
+        estimate = next;
+        if settled {
+            break;
+        }
+    }
+    estimate
+}
+
 use crate::error::format_significant;
 
 /// A flat suspension strip (or several side by side: give their summed

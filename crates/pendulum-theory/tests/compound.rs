@@ -73,6 +73,7 @@ fn a_point_bob_on_a_massless_rod_is_the_simple_pendulum() {
         placement: Placement::Centre(0.99362),
         massless: false,
         time_constant: 0.0,
+        moisture_time_constant: 0.0,
     };
     let p = CompoundPendulum::new(vec![r, bob]).unwrap();
     let props = p.properties();
@@ -200,6 +201,7 @@ fn warming_keeps_the_mass_and_a_rising_bob_gains() {
         liquid: false,
         modulus: None,
         modulus_coefficient: None,
+        moisture_expansion: None,
     };
     let mut r = rod(1.1, 0.008, "steel");
     r.material = zero.clone();
@@ -255,6 +257,7 @@ fn the_mercury_jar_against_the_first_order_condition() {
         liquid: false,
         modulus: None,
         modulus_coefficient: None,
+        moisture_expansion: None,
     };
     let mut rod_part = rod(r, 0.008, "steel");
     rod_part.massless = true;
@@ -353,6 +356,7 @@ fn the_nut_rate_and_the_effective_mass_by_hand() {
         placement: Placement::Centre(x),
         massless: false,
         time_constant: 0.0,
+        moisture_time_constant: 0.0,
     };
     let p = CompoundPendulum::new(vec![rod(big_l, dia, "steel"), bob]).unwrap();
     let m_r = 7850.0 * std::f64::consts::PI / 4.0 * dia * dia * big_l;

@@ -25,6 +25,8 @@ use std::path::Path;
 const FLAGS: &[(&str, &str)] = &[
     ("drive_schedule", "--drive-file"),
     ("weather", "--drive-file"),
+    ("humidity", "--drive-file"),
+    ("gradient", "--drive-file"),
 ];
 
 /// A plain number flag.
@@ -33,15 +35,18 @@ fn number(flag: &str, text: &str) -> Result<f64, CliError> {
 }
 
 /// The columns a drive file may have besides its times.
-const COLUMNS: [(Role, &str); 3] = [
+const COLUMNS: [(Role, &str); 5] = [
     (Role::DriveFactor, "drive_factor"),
     (Role::Temperature, "temperature_c"),
     (Role::Pressure, "pressure_hpa"),
+    (Role::Humidity, "humidity_percent"),
+    (Role::Gradient, "gradient_k_per_m"),
 ];
 
 /// A drive file read by the shared reader (any separator, decimal commas,
-/// units in the header): times and any of a drive factor, a temperature
-/// and a pressure (hPa without a unit).
+/// units in the header): times and any of a drive factor, a temperature,
+/// a pressure (hPa without a unit), a relative humidity (%) and a vertical
+/// temperature gradient (K/m, warmer upwards).
 fn read_schedule(path: &Path) -> Result<(Table, Option<Schedule>, Option<Weather>), CliError> {
     let flag = |e: CliError| e.of_flag("--drive-file");
     let choose = |found: &[Found]| -> Result<Vec<Role>, String> {
@@ -77,12 +82,14 @@ fn read_schedule(path: &Path) -> Result<(Table, Option<Schedule>, Option<Weather
         time: time.clone(),
         value,
     });
-    let (temperature_c, pressure_pa) = (column(Role::Temperature), column(Role::Pressure));
-    let weather = (temperature_c.is_some() || pressure_pa.is_some()).then(|| Weather {
+    let weather = Weather {
         time: time.clone(),
-        temperature_c,
-        pressure_pa,
-    });
+        temperature_c: column(Role::Temperature),
+        pressure_pa: column(Role::Pressure),
+        humidity_percent: column(Role::Humidity),
+        gradient_k_per_m: column(Role::Gradient),
+    };
+    let weather = weather.any().then_some(weather);
     Ok((table, drive, weather))
 }
 
@@ -244,6 +251,8 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
             Some(("drive_schedule", _)) => Role::DriveFactor,
             Some(("temperature_c", _)) => Role::Temperature,
             Some(("pressure", _)) => Role::Pressure,
+            Some(("humidity", _)) => Role::Humidity,
+            Some(("gradient", _)) => Role::Gradient,
             _ => Role::Time,
         };
         match (&file, which) {
@@ -385,7 +394,11 @@ fn render_text(r: &ClockResult, swings_file: Option<&str>) -> String {
         )
         .row(
             "Stops below",
-            format!("{} × the drive", num(r.minimum_drive_factor, 4)),
+            if r.minimum_drive_factor > 0.0 {
+                format!("{} × the drive", num(r.minimum_drive_factor, 4))
+            } else {
+                "never for want of drive (its impulse does not depend on the drive)".into()
+            },
         );
     if let Some(change) = r.out_of_beat_rate_s_per_day {
         out.row(

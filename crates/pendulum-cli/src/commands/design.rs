@@ -76,6 +76,26 @@ pub fn rows(d: &Datasheet, gravity: &ResolvedGravity) -> Vec<(String, String)> {
             num(d.temperature_rate_s_per_day, 4)
         ),
     ));
+    rows.push((
+        "Gradient".into(),
+        format!(
+            "{} s/day per K/m warmer upwards (at the same temperature half-way down)",
+            num(d.gradient_coefficient_s_per_day_per_k_per_m, 3)
+        ),
+    ));
+    if let (Some(c), Some(m)) = (
+        d.humidity_coefficient_s_per_day_per_percent,
+        d.wood_moisture_percent,
+    ) {
+        rows.push((
+            "Humidity".into(),
+            format!(
+                "{} s/day per % relative humidity once the wood has settled (at {} % moisture)",
+                num(c, 3),
+                num(m, 3)
+            ),
+        ));
+    }
     let humidity = if d.gas == Gas::Air {
         format!(", {} %", num(d.humidity * 100.0, 3))
     } else {

@@ -320,6 +320,49 @@ fn a_warm_spell() {
     assert!(e.contains("need a design"), "{e}");
 }
 
+/// The long-case clock's wooden rod through a damp spell: 2 points more
+/// humidity from the first day on move the rate by twice the datasheet's
+/// humidity coefficient (the wood settled at once) and by the damper air's
+/// own effect (`design --humidity`), so after three days the clock is 2 ×
+/// that many seconds off the dry run (within 2%: Simpson's isotherm curves
+/// over the 2 points). A gradient of 1 K/m from the first day on moves it
+/// by the datasheet's gradient coefficient (within 1%), and a gradient
+/// column in K/cm is read as such.
+#[test]
+fn a_damp_spell_and_a_gradient_through_the_binary() {
+    let design = format!(
+        "{}/../../examples/longcase-wood.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let sheet = json(&["design", &design]);
+    let humidity = f(&sheet, "humidity_coefficient_s_per_day_per_percent");
+    let gradient = f(&sheet, "gradient_coefficient_s_per_day_per_k_per_m");
+    let air = |h: &str| {
+        f(
+            &json(&["design", &design, "--humidity", h]),
+            "air_rate_s_per_day",
+        )
+    };
+    let damper = air("52") - air("50");
+    let dir = tempfile::tempdir().unwrap();
+    let error_after = |text: &str| three_days(&design, &dir.path().join("weather.csv"), text);
+    let dry = error_after("time_s,humidity_percent\n0,50\n");
+    let damp = error_after("time_s,humidity_percent\n0,50\n86400,50\n86401,52\n");
+    let expected = 2.0 * (2.0 * humidity + damper);
+    assert!(
+        ((damp - dry) / expected - 1.0).abs() < 0.02,
+        "{} against {expected}",
+        damp - dry
+    );
+    let steep = error_after("time_s,gradient (K/cm)\n0,0\n86400,0\n86401,0.01\n");
+    assert!(
+        ((steep - dry) / (2.0 * gradient) - 1.0).abs() < 0.01,
+        "{} against {}",
+        steep - dry,
+        2.0 * gradient
+    );
+}
+
 /// `simulate --method averaged`: the same turning points as the
 /// symplectic method at tolerance 1e-12 over 200 periods at Q = 10,000
 /// (amplitude within 1e-9, time within 1e-6 s); drag and dry friction are

@@ -242,8 +242,51 @@ def _array(x):
 
 def _number(x):
     """A keyword's number as a float (``None`` stays ``None``: the library
-    chooses the default)."""
+    chooses the default). ``True`` and ``False`` are refused where the
+    function is called (:func:`_refusing_bools`)."""
     return None if x is None else float(x)
+
+
+def _holds_bool(value):
+    """Whether ``value`` is ``True`` or ``False``, or a list, tuple or array
+    holding one (a design's part dicts are the library's to read: their
+    ``massless = true`` is a flag)."""
+    if isinstance(value, (bool, _np.bool_)):
+        return True
+    if isinstance(value, _np.ndarray):
+        return value.dtype == bool or (value.dtype == object and
+                                       any(_holds_bool(v) for v in value.ravel()))
+    if isinstance(value, (list, tuple)):
+        return any(_holds_bool(v) for v in value)
+    return False
+
+
+def _refusing_bools(f):
+    """``f`` refusing ``True`` or ``False`` for any argument whose default
+    is not itself ``True`` or ``False`` (Python takes ``True`` for 1:
+    ``beat_error=True`` would be a beat error of a second), naming it as
+    the library names a field."""
+    import functools
+    import inspect
+    signature = inspect.signature(f)
+    flags = {n for n, p in signature.parameters.items() if isinstance(p.default, bool)}
+
+    @functools.wraps(f)
+    def checked(*args, **kwargs):
+        try:
+            bound = signature.bind_partial(*args, **kwargs)
+        except TypeError:
+            return f(*args, **kwargs)
+        for name, value in bound.arguments.items():
+            if signature.parameters[name].kind == inspect.Parameter.VAR_KEYWORD:
+                items = value.items()
+            else:
+                items = [(name, value)]
+            for key, v in items:
+                if key not in flags and _holds_bool(v):
+                    raise ValueError(f"{key}: must be a number or a name, not True or False")
+        return f(*args, **kwargs)
+    return checked
 
 
 def _count(x):
@@ -436,8 +479,10 @@ def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedul
     file makes from temperature and pressure with a design: for a
     coefficient of -0.5 s/day per °C and a 10 °C warm spell, ``([0, 86400,
     86401], [0, 0, -5])``; or, for a clock of ``parts``, ``weather`` is
-    ``(times_s, temperatures_c, pressures_pa)`` (either column ``None``)
-    and the design's own coefficients move the rate. Returns a dict of arrays (time_s, beats,
+    ``(times_s, temperatures_c, pressures_pa)``, optionally followed by
+    ``humidities_percent`` and ``gradients_k_per_m`` (the vertical
+    temperature gradient, warmer upwards; any column ``None``), and the
+    design's own coefficients move the rate. Returns a dict of arrays (time_s, beats,
     amplitude_rad, rate_s_per_day, time_error_s, drive_factor) and the
     command's ``--json`` object (its ``long_run`` the run's summary)."""
     def pairs(schedule):
@@ -448,8 +493,14 @@ def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedul
     def column(values):
         return None if values is None else [float(x) for x in values]
 
-    climate = None if weather is None else (
-        column(weather[0]), column(weather[1]), column(weather[2] if len(weather) > 2 else None))
+    def nth(k):
+        return column(weather[k]) if len(weather) > k else None
+
+    if weather is not None and not 2 <= len(weather) <= 5:
+        raise ValueError("weather: give (times_s, temperatures_c, pressures_pa, "
+                         "humidities_percent, gradients_k_per_m), the last four optional")
+
+    climate = None if weather is None else tuple(nth(k) for k in range(5))
     run = (float(duration), _number(every), pairs(drive_schedule), pairs(rate_schedule),
            climate, bool(force), _text(gas))
     result, columns = _clock(length, run=run, **clock_keywords)
@@ -583,12 +634,27 @@ def train_for(bph, *, escape_teeth=None, tolerance=None):
         _number(tolerance)))
 
 
+def _finite_or_none(value):
+    """``value`` with every non-finite float in it made ``None``, as the
+    command line's TOML reader makes a ``nan`` or ``inf`` (JSON holds
+    neither): the library then refuses it naming the part and the field."""
+    if isinstance(value, dict):
+        return {k: _finite_or_none(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite_or_none(v) for v in value]
+    if isinstance(value, (float, _np.floating)) and not _np.isfinite(value):
+        return None
+    if isinstance(value, _np.generic):
+        return value.item()
+    return value
+
+
 def _parts(parts):
     """A design's parts as the library reads them: a list of part dicts
     (or ``{"part": [...]}``, the TOML file's shape), sizes in SI units."""
-    if isinstance(parts, dict):
-        return _json.dumps(parts)
-    return _json.dumps({"part": list(parts)})
+    if not isinstance(parts, dict):
+        parts = {"part": list(parts)}
+    return _json.dumps(_finite_or_none(parts))
 
 
 def design(parts, *, g=None, pressure=None, temperature=None, humidity=None,
@@ -598,12 +664,14 @@ def design(parts, *, g=None, pressure=None, temperature=None, humidity=None,
     material, length, diameter, ..., centre or rests_on; sizes as numbers
     in metres and kilograms) in ``gas`` ("air", "nitrogen" or "helium",
     default air) at ``pressure`` Pa, ``temperature`` °C and relative
-    ``humidity`` (0 to 1, air only), regulated at ``regulated_at`` °C;
+    ``humidity`` (%, 0 to 100, air only, as the CLI's ``--humidity`` and
+    the weather of :func:`clock_run` and :func:`clock_log`), regulated at ``regulated_at`` °C;
     ``pivot_q`` the Q of its pivot's own losses and ``amplitude`` the
     semi-arc (rad) it swings here. Returns its ``--json`` object as a dict
     (without ``file``)."""
+    humidity = None if humidity is None else _number(humidity) / 100.0
     return _json.loads(_native.design(_parts(parts), _number(g), _number(pressure),
-                                      _number(temperature), _number(humidity),
+                                      _number(temperature), humidity,
                                       _number(regulated_at), _text(gas), _number(pivot_q),
                                       _number(amplitude)))
 
@@ -685,3 +753,12 @@ def clock_log(time, values, *, kind="offset", temperature=None, pressure=None, h
         _number(beat), _number(bph), _number(period), bool(force), bool(stability),
         _teeth("wheels", wheels), _teeth("pinions", pinions),
         _number(arbor_turns_per_hour)))
+
+
+# Every public function refuses a boolean where it takes a number.
+for _name in __all__:
+    _f = globals().get(_name)
+    if callable(_f) and getattr(_f, "__module__", None) == __name__ and \
+            type(_f).__name__ == "function":
+        globals()[_name] = _refusing_bools(_f)
+del _name, _f

@@ -12,7 +12,7 @@ use super::plan::{check_schedule, plan_run, RunPlan, MAX_RATE_S_PER_DAY};
 use super::{Clock, ClockError, HalfSwingMethod, Steady};
 use crate::air::TEMPERATURE_RANGE_C;
 use crate::analysis::{require_finite, require_finite_sample, Refusal};
-use crate::compound::CompoundPendulum;
+use crate::compound::{CompoundPendulum, PartState};
 use crate::error::format_significant;
 use crate::pendulum::{Pendulum, STANDARD_GRAVITY};
 use serde::Serialize;
@@ -89,7 +89,30 @@ pub struct Weather {
     pub temperature_c: Option<Vec<f64>>,
     /// Pressure, Pa.
     pub pressure_pa: Option<Vec<f64>>,
+    /// Relative humidity, % (the air's density, and the moisture of parts
+    /// that take up water: wood).
+    pub humidity_percent: Option<Vec<f64>>,
+    /// The vertical temperature gradient, K/m, warmer upwards: each part
+    /// is at the temperature of its centre, the temperature column being
+    /// read half-way down the pendulum
+    /// ([`CompoundPendulum::heights_above_thermometer`]).
+    pub gradient_k_per_m: Option<Vec<f64>>,
 }
+
+impl Weather {
+    /// Whether any column is given.
+    pub fn any(&self) -> bool {
+        self.temperature_c.is_some()
+            || self.pressure_pa.is_some()
+            || self.humidity_percent.is_some()
+            || self.gradient_k_per_m.is_some()
+    }
+}
+
+/// The steepest vertical temperature gradient a weather may give, K/m
+/// (a clock case's is a fraction of a kelvin per metre; a room's by a
+/// radiator a few).
+pub const MAX_GRADIENT_K_PER_M: f64 = 100.0;
 
 /// A long run's request.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -123,6 +146,12 @@ pub enum BeatError {
     /// drive.
     Time(f64),
 }
+
+/// Airy's first-order integral is warned of as far from the integrated
+/// escapement error when they differ by more than this share of the larger
+/// and by more than this many s/day (it is exact to first order in the
+/// drive: at a regulator's drive they agree to 1%).
+pub const AIRY_FAR: (f64, f64) = (0.05, 0.01);
 
 /// A beat error of this fraction of the beat or more is warned of: an
 /// uneven tick a clockmaker hears (the tick and tock intervals 51/49).
@@ -300,7 +329,8 @@ pub struct ClockResult {
     pub drive_torque_n_m: Option<f64>,
     /// The drive as an energy per beat, J, when so given.
     pub drive_energy_j: Option<f64>,
-    /// The smallest drive factor that keeps it going.
+    /// The smallest drive factor that keeps it going (0: any drive does,
+    /// its impulse not depending on the drive).
     pub minimum_drive_factor: f64,
     /// How far the escapement sits off the pendulum's rest, degrees (0 in
     /// beat; given, or found from the beat error given).
@@ -419,6 +449,10 @@ pub fn build(input: &ClockInput) -> Result<Built, Refusal> {
         out_of_beat: 0.0,
     };
     let scale = mass * g * pendulum.length_m();
+    let elastic_share = design
+        .as_ref()
+        .and_then(CompoundPendulum::spring_effect)
+        .map_or(0.0, |e| e.elastic_share);
     let clock_of = |out_of_beat: f64| -> Result<Clock, Refusal> {
         let escapement = Spec {
             out_of_beat,
@@ -431,6 +465,7 @@ pub fn build(input: &ClockInput) -> Result<Built, Refusal> {
             q,
             escapement,
             torque_scale: scale,
+            elastic_share,
         })
     };
     let in_beat = clock_of(0.0)?;
@@ -666,9 +701,41 @@ fn check_weather(w: &Weather) -> Result<(), Refusal> {
             100.0,
             format!("{} Pa to {} hPa", p.0, p.1 / 100.0),
         ),
+        (
+            "humidity",
+            &w.humidity_percent,
+            (0.0, 100.0),
+            1.0,
+            "0 to 100 %".to_string(),
+        ),
+        (
+            "gradient",
+            &w.gradient_k_per_m,
+            (-MAX_GRADIENT_K_PER_M, MAX_GRADIENT_K_PER_M),
+            1.0,
+            format!("-{MAX_GRADIENT_K_PER_M} to {MAX_GRADIENT_K_PER_M} K/m"),
+        ),
     ];
     for (name, column, range, per_unit, words) in columns {
         let Some(values) = column else { continue };
+        // A value that is not a number, named by its column (the times
+        // are checked by the schedule's own check, as the weather's).
+        if values.len() == w.time.len() {
+            if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+                return Err(Refusal::sample(
+                    name,
+                    i,
+                    format!(
+                        "must be a finite number, got {}",
+                        if values[i].is_nan() {
+                            "a value that is not a number"
+                        } else {
+                            "an infinite value"
+                        }
+                    ),
+                ));
+            }
+        }
         check_schedule("weather", &w.time, values, f64::MIN..=f64::MAX, "a number")?;
         if let Some(i) = values.iter().position(|v| !(range.0..=range.1).contains(v)) {
             return Err(Refusal::sample(
@@ -742,10 +809,20 @@ fn weather_effect(
         first(&w.temperature_c).unwrap_or(REFERENCE_WEATHER.0),
         first(&w.pressure_pa).unwrap_or(REFERENCE_WEATHER.1),
     );
-    let humidity = if gas == Gas::Air {
-        REFERENCE_WEATHER.2 * (p0 / REFERENCE_WEATHER.1).min(1.0)
-    } else {
-        0.0
+    if w.humidity_percent.is_some() && gas != Gas::Air {
+        return Err(Refusal::field(
+            "humidity",
+            format!(
+                "a humidity column is the air's: a tank of {} holds no water vapour (drop the column, \
+                 or run in air)",
+                gas.name()
+            ),
+        ));
+    }
+    let humidity = match first(&w.humidity_percent) {
+        Some(h) => h / 100.0,
+        None if gas == Gas::Air => REFERENCE_WEATHER.2 * (p0 / REFERENCE_WEATHER.1).min(1.0),
+        None => 0.0,
     };
     let gas0 = GasState::new(gas, p0, t0, humidity)?;
     let at = |c: &Option<Vec<f64>>, i: usize, c0: f64| c.as_ref().map_or(c0, |v| v[i]);
@@ -765,40 +842,70 @@ fn weather_effect(
         None
     };
     // The gas's rate and Q factor at each row (smooth in the row's
-    // pressure and temperature: linear between rows).
+    // pressure, temperature and humidity: linear between rows).
     let mut gas_rate = Vec::with_capacity(w.time.len());
     let mut gas_q = Vec::with_capacity(w.time.len());
     for i in 0..w.time.len() {
         let (t, p) = (at(&w.temperature_c, i, t0), at(&w.pressure_pa, i, p0));
-        let there = design.in_gas(
-            &GasState {
-                temperature_c: t,
-                ..gas0.at_pressure(p)
-            },
-            g,
-        );
+        let humidity = match &w.humidity_percent {
+            Some(h) => h[i] / 100.0,
+            None => gas0.at_pressure(p).humidity,
+        };
+        // Each row checked as the first was (the humidity a row's air can
+        // hold, at its own temperature and pressure).
+        let state = GasState::new(gas, p, t, humidity).map_err(|e| {
+            let column = match e.field_name() {
+                Some("humidity") if w.humidity_percent.is_some() => "humidity",
+                Some("pressure") if w.pressure_pa.is_some() => "pressure",
+                Some("humidity" | "pressure") if w.pressure_pa.is_some() => "pressure",
+                _ => "temperature_c",
+            };
+            Refusal::sample(column, i, e.reason)
+        })?;
+        let there = design.in_gas(&state, g);
         gas_rate.push(there.rates.total - here.rates.total);
         gas_q.push(match pivot {
             Some(qp) => 1.0 / (1.0 / qp + 1.0 / there.q) / q,
             None => there.q / q_gas0,
         });
     }
-    // The times: the rows, and between them steps of a quarter of the
-    // shortest time constant when a part lags.
-    let lags: Vec<f64> = design.parts().iter().map(|p| p.time_constant).collect();
-    let shortest = lags
+    // The parts' lags: thermal (when the temperature or its gradient
+    // changes) and, for parts that take up water, of moisture (when the
+    // humidity or the temperature changes).
+    let parts_of = design.parts();
+    let lags: Vec<f64> = parts_of.iter().map(|p| p.time_constant).collect();
+    let wet: Vec<bool> = parts_of
+        .iter()
+        .map(|p| p.material.moisture_expansion.is_some())
+        .collect();
+    let wet_lags: Vec<f64> = parts_of.iter().map(|p| p.moisture_time_constant).collect();
+    let thermal_moves = w.temperature_c.is_some() || w.gradient_k_per_m.is_some();
+    let water_moves = wet.iter().any(|&x| x) && (w.humidity_percent.is_some() || thermal_moves);
+    let relevant: Vec<f64> = lags
+        .iter()
+        .copied()
+        .filter(|_| thermal_moves)
+        .chain(
+            wet_lags
+                .iter()
+                .zip(&wet)
+                .filter(|(_, &x)| x && water_moves)
+                .map(|(&t, _)| t),
+        )
+        .collect();
+    let shortest = relevant
         .iter()
         .copied()
         .filter(|&t| t > 0.0)
         .fold(f64::INFINITY, f64::min);
-    let longest = lags.iter().copied().fold(0.0, f64::max);
-    // After the last row the air holds its temperature and the parts go
-    // on settling towards it: twenty of the longest time constants, or to
+    let longest = relevant.iter().copied().fold(0.0, f64::max);
+    // After the last row the air holds its state and the parts go on
+    // settling towards it: twenty of the longest time constants, or to
     // the run's end.
     let last = w.time.last().copied().unwrap_or(0.0);
     let settled = until.min(last + 20.0 * longest).max(last);
     let span = settled - w.time.first().copied().unwrap_or(0.0);
-    let step = if w.temperature_c.is_some() && shortest.is_finite() {
+    let step = if shortest.is_finite() {
         (0.25 * shortest).max(span / MAX_LAG_POINTS as f64)
     } else {
         f64::INFINITY
@@ -819,28 +926,74 @@ fn weather_effect(
             }
         }
     }
-    let air_at = |t: f64| match &w.temperature_c {
+    let column_at = |c: &Option<Vec<f64>>, c0: f64, t: f64| match c {
         Some(v) => super::long_run::piecewise_linear(&w.time, v, t),
-        None => t0,
+        None => c0,
     };
-    let length0 = design.properties().equivalent_length;
-    let mut parts = vec![t0; lags.len()];
-    let mut rates = Vec::with_capacity(time.len());
-    let mut q_factors = Vec::with_capacity(time.len());
-    for (k, &t) in time.iter().enumerate() {
-        if k > 0 {
-            let (before, now) = (air_at(time[k - 1]), air_at(t));
-            for (y, &tau) in parts.iter_mut().zip(&lags) {
-                *y = lag_step(*y, before, now, t - time[k - 1], tau);
-            }
-        }
-        let deltas: Vec<f64> = parts.iter().map(|y| y - t0).collect();
+    let heights = design.heights_above_thermometer();
+    // What part `i` settles towards at time `t`: its temperature, and
+    // (taking up water) its moisture content.
+    let g0 = first(&w.gradient_k_per_m).unwrap_or(0.0);
+    let targets = |t: f64| -> Vec<(f64, f64, f64)> {
+        let (air, gradient) = (
+            column_at(&w.temperature_c, t0, t),
+            column_at(&w.gradient_k_per_m, g0, t),
+        );
+        let rh = column_at(&w.humidity_percent, 100.0 * humidity, t) / 100.0;
+        heights
+            .iter()
+            .zip(&wet)
+            .map(|(h, &x)| {
+                let temperature = air + gradient * h;
+                let moisture = if x {
+                    crate::moisture::equilibrium_moisture_content(rh, temperature)
+                } else {
+                    0.0
+                };
+                (temperature, moisture, gradient)
+            })
+            .collect()
+    };
+    // The parts start settled in the first row's weather, where the clock
+    // was regulated.
+    let start = targets(time.first().copied().unwrap_or(0.0));
+    let mut parts = start.clone();
+    let length_of = |parts: &[(f64, f64, f64)]| -> Result<f64, Refusal> {
+        let states: Vec<PartState> = parts
+            .iter()
+            .zip(&start)
+            .map(
+                |(&(temperature, moisture, gradient), &(_, m0, _))| PartState {
+                    temperature: temperature - t0,
+                    moisture,
+                    reference_moisture: m0,
+                    gradient,
+                },
+            )
+            .collect();
         // Within the span every design was checked valid for.
-        let length = design
-            .at_part_temperatures(&deltas)
+        Ok(design
+            .at_part_states(&states)
             .map_err(|e| Refusal::field("weather", e.to_string()))?
             .properties()
-            .equivalent_length;
+            .equivalent_length)
+    };
+    let length0 = length_of(&start)?;
+    let mut rates = Vec::with_capacity(time.len());
+    let mut q_factors = Vec::with_capacity(time.len());
+    let mut before = start.clone();
+    for (k, &t) in time.iter().enumerate() {
+        if k > 0 {
+            let now = targets(t);
+            let h = t - time[k - 1];
+            for (i, y) in parts.iter_mut().enumerate() {
+                y.0 = lag_step(y.0, before[i].0, now[i].0, h, lags[i]);
+                y.1 = lag_step(y.1, before[i].1, now[i].1, h, wet_lags[i]);
+                y.2 = lag_step(y.2, before[i].2, now[i].2, h, lags[i]);
+            }
+            before = now;
+        }
+        let length = length_of(&parts)?;
         rates.push(
             crate::compound::rate_of_length_ratio(length / length0)
                 + super::long_run::piecewise_linear(&w.time, &gas_rate, t),
@@ -908,6 +1061,19 @@ pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult
             } else {
                 ""
             }
+        ));
+    }
+    let (integrated, airy) = (steady.escapement_rate, steady.escapement_rate_first_order);
+    if (integrated - airy).abs() > AIRY_FAR.0 * integrated.abs().max(airy.abs())
+        && (integrated - airy).abs() > AIRY_FAR.1
+    {
+        warnings.push(format!(
+            "Airy's first-order integral gives the escapement {} s/day where the integrated \
+             swing gives {}: the escapement disturbs the swing beyond first order (a drive, \
+             friction or recoil large against the pendulum); the integrated figure is the \
+             one to use",
+            format_significant(airy, 4),
+            format_significant(integrated, 4)
         ));
     }
     let isochronism = match &input.isochronism {
@@ -1030,10 +1196,11 @@ fn long(
                 value: effect.rates,
             })
         }
-        (Some(w), None, None) if w.temperature_c.is_some() || w.pressure_pa.is_some() => {
+        (Some(w), None, None) if w.any() => {
             return Err(Refusal::field(
                 "weather",
-                "temperature and pressure need a design (the pendulum's own coefficients)",
+                "temperature, pressure, humidity and gradient need a design (the pendulum's \
+                 own coefficients)",
             ))
         }
         (_, _, Some(r)) => {
@@ -1196,11 +1363,12 @@ mod tests {
             weather: Some(Weather {
                 time: vec![0.0],
                 temperature_c: Some(vec![20.0]),
-                pressure_pa: None
+                pressure_pa: None,
+                ..Weather::default()
             }),
             ..RunInput::default()
         }))
-        .starts_with("weather: temperature and pressure need a design"));
+        .starts_with("weather: temperature, pressure, humidity and gradient need a design"));
     }
 
     #[test]

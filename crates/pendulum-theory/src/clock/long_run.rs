@@ -172,8 +172,15 @@ pub fn run_with_damping(
     let nominal_beat = 0.5 * options.nominal_period;
     let escapement = clock.escapement.as_ref();
     let shift = !escapement.symmetric();
+    // A suspension spring's share of the circular error, a factor on each
+    // half swing's duration.
     let map_with = |a: f64, beat: u64, d: f64, t: f64, shift: bool| {
-        half_swing_map(Some(escapement), clock.q * damping(t), d, beat, a, shift)
+        half_swing_map(Some(escapement), clock.q * damping(t), d, beat, a, shift).map(|h| {
+            HalfSwing {
+                time: h.time * clock.spring_factor(a),
+                ..h
+            }
+        })
     };
     let map = |a: f64, beat: u64, d: f64, t: f64| map_with(a, beat, d, t, shift);
     let rate_of = |beat_time: f64| 86_400.0 * (nominal_beat / beat_time - 1.0);

@@ -72,6 +72,7 @@ impl CompoundPendulum {
                 placement: Placement::RestsOn(nut),
                 massless: false,
                 time_constant: 0.0,
+                moisture_time_constant: 0.0,
             });
             let tube = parts.len() - 1;
             parts[bob].placement = held.carried_by(tube);
@@ -127,6 +128,7 @@ impl CompoundPendulum {
                 placement: Placement::RestsOn(nut),
                 massless: false,
                 time_constant: 0.0,
+                moisture_time_constant: 0.0,
             });
             let tube = parts.len() - 1;
             parts.push(Part {
@@ -145,6 +147,7 @@ impl CompoundPendulum {
                 },
                 massless: false,
                 time_constant: 0.0,
+                moisture_time_constant: 0.0,
             });
             let hanging = parts.len() - 1;
             // The bob's bore clears the outer tube that now runs up it.
@@ -222,6 +225,7 @@ pub fn gridiron(
         liquid: false,
         modulus: None,
         modulus_coefficient: None,
+        moisture_expansion: None,
     }
 }
 
@@ -298,6 +302,7 @@ impl CompoundPendulum {
                 placement: Placement::RestsOn(support),
                 massless: false,
                 time_constant: 0.0,
+                moisture_time_constant: 0.0,
             };
             let wall_part = Part {
                 name: format!("{name} (jar wall)"),
@@ -311,6 +316,7 @@ impl CompoundPendulum {
                 placement: Placement::RestsOn(bob),
                 massless: false,
                 time_constant: 0.0,
+                moisture_time_constant: 0.0,
             };
             let mercury_part = Part {
                 name: format!("{name} (mercury)"),
@@ -324,6 +330,7 @@ impl CompoundPendulum {
                 placement: Placement::RestsOn(bob),
                 massless: false,
                 time_constant: 0.0,
+                moisture_time_constant: 0.0,
             };
             parts.push(wall_part);
             parts.push(mercury_part);

@@ -13,7 +13,8 @@
 //! damping and the pivot's (`π ω A² c`, the pivot's `c = I ω / Q_pivot`
 //! taken as independent of the gas) and the form drag's `(8/3) ω² A³ D`
 //! ([`super::gas`]). The circular error is the exact one,
-//! [`crate::period::circular_error`]. The barometric coefficient with the
+//! [`crate::period::circular_error`], or on a suspension spring
+//! [`crate::suspension::period_ratio`]'s. The barometric coefficient with the
 //! arc's change
 //! is a central difference of ±1% of the pressure of the two together,
 //! and the cancelling semi-arc the root of it, found by a scan and
@@ -148,6 +149,19 @@ pub struct Datasheet {
     pub temperature_coefficient_s_per_day_per_c: f64,
     /// At `temperature_c` against `regulated_at_c`, s/day.
     pub temperature_rate_s_per_day: f64,
+    /// The rate change per K/m of vertical temperature gradient (warmer
+    /// upwards) at a constant temperature half-way down the pendulum,
+    /// s/day.
+    pub gradient_coefficient_s_per_day_per_k_per_m: f64,
+    /// The rate change per percentage point of relative humidity once the
+    /// parts that take up water (wood) have settled, s/day (none when no
+    /// part takes up water).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub humidity_coefficient_s_per_day_per_percent: Option<f64>,
+    /// The moisture content wood settles at in the air as given, % (none
+    /// when no part takes up water).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wood_moisture_percent: Option<f64>,
     /// The temperature, °C.
     pub temperature_c: f64,
     /// Where it was regulated, °C.
@@ -405,7 +419,13 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         .pivot_q
         .map_or(0.0, |qp| in_gas.inertia * in_gas.omega / qp);
     // The rate of the circular error at semi-arc a (losing: negative).
+    // On a suspension spring the circular error shrinks by its elastic
+    // share ([`crate::suspension::period_ratio`]).
+    let share = pendulum.spring_effect().map_or(0.0, |e| e.elastic_share);
     let circular = |a: f64| {
+        if share > 0.0 {
+            return DAY * (1.0 / crate::suspension::period_ratio(a, share) - 1.0);
+        }
         crate::Amplitude::from_radians(a)
             .map_or(f64::NAN, |a| 0.0 - DAY * crate::period::circular_error(a))
     };
@@ -479,6 +499,22 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
     let pitch = design.thread.map(|th| th.pitch);
     let per_turn = per_metre.zip(pitch).map(|(r, p)| r * p);
     let per_division = per_turn.zip(design.thread.and_then(|th| th.divisions));
+    let takes_water = pendulum
+        .parts()
+        .iter()
+        .any(|q| q.material.moisture_expansion.is_some());
+    let across_grain = pendulum
+        .parts()
+        .iter()
+        .filter(|q| {
+            // A rod is a cylinder at least five times as long as it is
+            // wide, its grain along it.
+            q.material.moisture_expansion.is_some()
+                && !q.massless
+                && !matches!(q.shape, super::Shape::Cylinder { length, diameter, .. }
+                    if length >= 5.0 * diameter)
+        })
+        .map(|q| q.name.clone());
     Ok(Datasheet {
         parts: pendulum
             .parts()
@@ -499,6 +535,10 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         g_m_s2: g,
         temperature_coefficient_s_per_day_per_c: pendulum.temperature_coefficient(),
         temperature_rate_s_per_day: rate_of_length_ratio(warmer / props.equivalent_length),
+        gradient_coefficient_s_per_day_per_k_per_m: pendulum.gradient_coefficient(),
+        humidity_coefficient_s_per_day_per_percent: pendulum.humidity_coefficient(h, t),
+        wood_moisture_percent: takes_water
+            .then(|| crate::moisture::equilibrium_moisture_content(h, t)),
         temperature_c: t,
         regulated_at_c: regulated_at,
         air_density_kg_m3: rho,
@@ -563,6 +603,14 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
                         crate::error::format_significant(1e3 * e.bending_length, 3)
                     )
                 })
+            }))
+            .chain(across_grain.map(|name| {
+                format!(
+                    "'{name}' takes up water but is not a rod (a cylinder five times as long \
+                     as it is wide): only its growth along its \
+                     length (wood's along the grain) is modelled, not the 20 to 40 times larger \
+                     swelling across the grain"
+                )
             }))
             .collect(),
         pressure_pa: p,

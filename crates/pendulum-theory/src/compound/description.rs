@@ -26,7 +26,12 @@
 //!
 //! A part that takes time to reach the air's temperature (a zinc tube, a
 //! heavy bob, a jar of mercury) may give its thermal time constant,
-//! `time_constant = "2 h"`: it follows the air as a first-order lag.
+//! `time_constant = "2 h"`: it follows the air as a first-order lag. A
+//! wooden part takes up the air's moisture more slowly still (days through
+//! a varnish): `moisture_time_constant = "3 d"`. A material of the user's
+//! that takes up water gives `moisture_expansion`, its growth along its
+//! length per percentage point of moisture content (wood's is in the
+//! table).
 //!
 //! The rating nut may state its thread, `pitch = "0.7 mm"` or `tpi = 36`,
 //! and `divisions = 20` when it is divided.
@@ -116,7 +121,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
         let t = p
             .as_object()
             .ok_or_else(|| bad("part", "must be a table".into()))?;
-        const KNOWN: [&str; 25] = [
+        const KNOWN: [&str; 26] = [
             "pitch",
             "tpi",
             "divisions",
@@ -138,6 +143,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             "hangs_from",
             "massless",
             "time_constant",
+            "moisture_time_constant",
             "center",
             "brass_length",
             "steel",
@@ -155,6 +161,14 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                 Some(Value::String(s)) => {
                     quantity(s, dimension).map(Some).map_err(|e| bad(field, e))
                 }
+                // A TOML `nan` or `inf` (which JSON cannot hold) arrives as
+                // nothing.
+                Some(Value::Null) => Err(bad(
+                    field,
+                    "must be a finite number, got a value that is not a number or an infinite \
+                     one"
+                    .into(),
+                )),
                 Some(_) => Err(bad(
                     field,
                     "must be a number or a quantity such as \"8 mm\"".into(),
@@ -294,6 +308,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                 placement: Placement::Centre(centre),
                 massless: false,
                 time_constant: size("time_constant", Unit::Time)?.unwrap_or(0.0),
+                moisture_time_constant: 0.0,
             });
             continue;
         }
@@ -333,6 +348,10 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                         .get("modulus_coefficient")
                         .map(|_| number("modulus_coefficient"))
                         .transpose()?,
+                    moisture_expansion: m
+                        .get("moisture_expansion")
+                        .map(|_| number("moisture_expansion"))
+                        .transpose()?,
                 }
             }
             None if shape == Shape::Point => Material {
@@ -342,6 +361,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                 liquid: false,
                 modulus: None,
                 modulus_coefficient: None,
+                moisture_expansion: None,
             },
             _ => return Err(bad("material", "missing".into())),
         };
@@ -445,6 +465,17 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
         };
         let massless = t.get("massless").and_then(|m| m.as_bool()).unwrap_or(false);
         let time_constant = size("time_constant", Unit::Time)?.unwrap_or(0.0);
+        let moisture_time_constant = size("moisture_time_constant", Unit::Time)?;
+        if moisture_time_constant.is_some() && material.moisture_expansion.is_none() {
+            return Err(bad(
+                "moisture_time_constant",
+                format!(
+                    "'{}' takes up no water (wood does; a material of your own gives \
+                     moisture_expansion)",
+                    material.name
+                ),
+            ));
+        }
         out.push(Part {
             name: name.clone(),
             shape,
@@ -453,6 +484,7 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             placement,
             massless,
             time_constant,
+            moisture_time_constant: moisture_time_constant.unwrap_or(0.0),
         });
     }
     let pendulum = CompoundPendulum::new(out)

@@ -138,16 +138,22 @@ impl CompoundPendulum {
         let added: f64 = parts.iter().map(|p| p.added_inertia).sum();
         let damping: f64 = parts.iter().map(|p| p.damping).sum();
         let form_drag: f64 = parts.iter().map(|p| p.form_drag).sum();
-        let (mut weighing, mut inertia) = (0.0, 0.0);
+        let (mut weighing, mut weight, mut inertia) = (0.0, 0.0, 0.0);
         for (p, &d) in self.parts.iter().zip(&self.centres) {
             weighing += (p.mass() - rho * displaced_volume(p)) * d;
+            weight += p.mass() * d;
             inertia += p.mass() * (p.shape.inertia_per_mass() + d * d);
         }
-        let l0 = vacuum.equivalent_length;
+        // The gas lightens gravity's share of the restoring stiffness, not
+        // a suspension spring's (share `ε`): `ω²` moves by
+        // `[(1 - ε) W'/W + ε] I/(I + I_added)` for the moments of weight
+        // `W` in a vacuum and `W'` in the gas.
+        let share = self.spring_effect().map_or(0.0, |e| e.elastic_share);
+        let stiffness = (1.0 - share) * weighing / weight + share;
         InGas {
             rates: AirRates {
-                total: rate_of_length_ratio((inertia + added) / weighing / l0),
-                buoyancy: rate_of_length_ratio(inertia / weighing / l0),
+                total: rate_of_length_ratio((inertia + added) / inertia / stiffness),
+                buoyancy: rate_of_length_ratio(1.0 / stiffness),
             },
             parts,
             damping,

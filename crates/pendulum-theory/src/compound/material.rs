@@ -15,7 +15,8 @@
 //! 8.5-9.5e-6/K); wood along the grain from
 //! the USDA Wood Handbook (FPL-GTR-190, 2010, ch. 4: 3.1e-6 to 4.5e-6/K for
 //! dry wood parallel to the grain; 3.5e-6 taken, density 600 kg/m³ as for
-//! dry oak or hard maple); carbon-fibre epoxy (unidirectional, along the
+//! dry oak or hard maple; its growth with the water it takes up is
+//! [`crate::moisture`]'s); carbon-fibre epoxy (unidirectional, along the
 //! fibres) from typical manufacturers' data (-0.5e-6 to 0.5e-6/K; 0.0
 //! taken, density 1600 kg/m³). Clock steel (a plain carbon steel rod):
 //! 11.5e-6/K, the figure the horological literature uses (Rawlings, "The
@@ -56,6 +57,11 @@ pub struct Material {
     /// The modulus's temperature coefficient `(1/E) dE/dT`, 1/K, where
     /// known (a suspension spring's own temperature effect).
     pub modulus_coefficient: Option<f64>,
+    /// Its growth along its length per percentage point of moisture
+    /// content it takes up, 1/% (wood along the grain,
+    /// [`crate::moisture::WOOD_MOISTURE_EXPANSION`]); `None` for what takes
+    /// up no water.
+    pub moisture_expansion: Option<f64>,
 }
 
 /// The elastic constants of the table's materials that springs are made
@@ -125,6 +131,8 @@ impl Material {
                     liquid: LIQUIDS.contains(&n),
                     modulus: elastic.map(|e| e.1),
                     modulus_coefficient: elastic.and_then(|e| e.2),
+                    moisture_expansion: (n == "wood")
+                        .then_some(crate::moisture::WOOD_MOISTURE_EXPANSION),
                 }
             })
     }

@@ -121,6 +121,10 @@ pub struct Part {
     /// Its thermal time constant, s: it follows the air's temperature as a
     /// first-order lag (0: at once).
     pub time_constant: f64,
+    /// Its moisture time constant, s: a part that takes up water
+    /// (`material.moisture_expansion`) follows the air's humidity as a
+    /// first-order lag (0: at once).
+    pub moisture_time_constant: f64,
 }
 
 impl Part {
@@ -134,6 +138,22 @@ impl Part {
             self.material.density * self.shape.volume()
         }
     }
+}
+
+/// A part's state away from the design's reference (see
+/// [`CompoundPendulum::at_part_states`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PartState {
+    /// Its temperature above the reference, K.
+    pub temperature: f64,
+    /// Its moisture content, % of its dry mass (a part that takes up water).
+    pub moisture: f64,
+    /// Its moisture content at the reference, %.
+    pub reference_moisture: f64,
+    /// The temperature's gradient along it, K/m, warmer upwards (of the
+    /// rod: what it carries at a point along it moves by its expansion
+    /// down to that point; a part's own length needs only its mean).
+    pub gradient: f64,
 }
 
 /// Why a design is refused: the part and the field.
@@ -168,6 +188,10 @@ fn shown(v: f64) -> String {
 /// The largest thermal expansion a material may have, 1/K, either sign
 /// (solids are 1e-6 to 3e-5; liquids' volume expansion up to about 1.5e-3).
 pub const MAX_EXPANSION: f64 = 2e-3;
+
+/// The largest growth per percentage point of moisture content a material
+/// may have, 1/% (wood along the grain 5e-5, across it up to 3e-3).
+pub const MAX_MOISTURE_EXPANSION: f64 = 1e-2;
 
 /// The longest thermal time constant a part may have, s (a year).
 pub const MAX_TIME_CONSTANT_S: f64 = 3.156e7;
@@ -470,6 +494,29 @@ impl CompoundPendulum {
                     ),
                 ));
             }
+            if !(p.moisture_time_constant.is_finite()
+                && (0.0..=MAX_TIME_CONSTANT_S).contains(&p.moisture_time_constant))
+            {
+                return Err(fail(
+                    "moisture_time_constant",
+                    format!(
+                        "must lie between 0 and {MAX_TIME_CONSTANT_S:e} s (a year), got {}",
+                        shown(p.moisture_time_constant)
+                    ),
+                ));
+            }
+            if let Some(m) = p.material.moisture_expansion {
+                if !(0.0..=MAX_MOISTURE_EXPANSION).contains(&m) {
+                    return Err(fail(
+                        "moisture_expansion",
+                        format!(
+                            "must lie between 0 and {MAX_MOISTURE_EXPANSION:e} per % of \
+                             moisture content (wood along the grain 5e-5), got {}",
+                            shown(m)
+                        ),
+                    ));
+                }
+            }
             if let Placement::Held { height, .. } = p.placement {
                 if !(0.0..=p.shape.height()).contains(&height) {
                     return Err(fail(
@@ -493,7 +540,7 @@ impl CompoundPendulum {
                 }
             }
         }
-        let centres = resolve(&parts, 0.0, None)?;
+        let centres = resolve(&parts, None)?;
         let pendulum = Self { parts, centres };
         // Every size is linear in the temperature, so a design valid at both
         // ends of the span is valid everywhere in it: the commands that warm
@@ -665,19 +712,43 @@ impl CompoundPendulum {
                 .filter(|_| deltas.len() == self.parts.len())
                 .unwrap_or(deltas.first().copied().unwrap_or(0.0))
         };
+        let states: Vec<PartState> = (0..self.parts.len())
+            .map(|i| PartState {
+                temperature: delta_of(i),
+                ..PartState::default()
+            })
+            .collect();
+        self.at_part_states(&states)
+    }
+
+    /// The same pendulum with each part in its own state: `states[i]`
+    /// (missing entries are the reference). Every dimension of a part grows
+    /// with its temperature, the mass staying; a part that takes up water
+    /// (`material.moisture_expansion`) grows along its length with the
+    /// moisture it gains (a rod with its grain along it: the growth across
+    /// the grain, 20 to 40 times more, is not modelled, and the datasheet
+    /// says so for any other wooden shape) and gains the water's mass. What
+    /// the rod carries moves with the rod.
+    pub fn at_part_states(&self, states: &[PartState]) -> Result<Self, DesignError> {
+        let state = |i: usize| states.get(i).copied().unwrap_or_default();
+        // Each part's growth along its length.
+        let along = |i: usize| {
+            let (p, s) = (&self.parts[i], state(i));
+            let water =
+                p.material.moisture_expansion.unwrap_or(0.0) * (s.moisture - s.reference_moisture);
+            (1.0 + p.material.expansion * s.temperature) * (1.0 + water)
+        };
         let parts: Vec<Part> = self
             .parts
             .iter()
             .enumerate()
             .map(|(i, p)| {
-                let delta = delta_of(i);
-                // Every dimension grows; the mass does not (the density
-                // falls as the volume grows). A liquid keeps its jar's
-                // width and rises with its volume.
+                let s = state(i);
+                // A liquid keeps its jar's width and rises with its volume.
                 let mut material = p.material.clone();
                 if let (true, Placement::RestsOn(jar)) = (p.material.liquid, &p.placement) {
-                    let width = 1.0 + self.parts[*jar].material.expansion * delta_of(*jar);
-                    let volume = 1.0 + p.material.expansion * delta;
+                    let width = 1.0 + self.parts[*jar].material.expansion * state(*jar).temperature;
+                    let volume = 1.0 + p.material.expansion * s.temperature;
                     material.density /= volume;
                     return Part {
                         shape: p.shape.stretched(width, volume / (width * width)),
@@ -685,21 +756,38 @@ impl CompoundPendulum {
                         ..p.clone()
                     };
                 }
-                let factor = 1.0 + p.material.expansion * delta;
-                material.density /= factor.powi(3);
+                let factor = 1.0 + p.material.expansion * s.temperature;
+                let length = along(i);
+                let water = if p.material.moisture_expansion.is_some() {
+                    (100.0 + s.moisture) / (100.0 + s.reference_moisture)
+                } else {
+                    1.0
+                };
+                let shape = match p.shape {
+                    Shape::Cylinder { .. } => p.shape.stretched(factor, length),
+                    _ => p.shape.scaled(factor),
+                };
+                // The mass stays (and gains any water): the density follows
+                // the volume, by the factors themselves (the volumes'
+                // ratio would add rounding a nested solve feels).
+                let volume = match p.shape {
+                    Shape::Cylinder { .. } => factor * factor * length,
+                    _ => factor.powi(3),
+                };
+                material.density = material.density * water / volume;
                 if let (Some(e), Some(beta)) = (material.modulus, material.modulus_coefficient) {
-                    material.modulus = Some(e * (1.0 + beta * delta));
+                    material.modulus = Some(e * (1.0 + beta * s.temperature));
                 }
                 let placement = match p.placement {
                     Placement::Held { part, end, height } => Placement::Held {
                         part,
                         end,
-                        height: height * factor,
+                        height: height * length,
                     },
                     ref other => other.clone(),
                 };
                 Part {
-                    shape: p.shape.scaled(factor),
+                    shape,
                     material,
                     placement,
                     ..p.clone()
@@ -707,9 +795,17 @@ impl CompoundPendulum {
             })
             .collect();
         let rod = self.rod();
-        let delta = rod.map_or(delta_of(0), delta_of);
-        let rod = rod.map(|i| self.parts[i].material.expansion);
-        let centres = resolve(&parts, delta, rod).map_err(|e| DesignError {
+        let delta = rod.map_or(state(0).temperature, |i| state(i).temperature);
+        let factors: Vec<f64> = (0..self.parts.len()).map(along).collect();
+        // Down a rod of length `L` warmer upwards by `G`, a point `x` below
+        // its top moves by `α G x (L/2 - x/2)` besides its mean growth.
+        let bend = rod.map_or((0.0, 0.0), |r| {
+            (
+                self.parts[r].material.expansion * state(r).gradient,
+                self.parts[r].shape.height(),
+            )
+        });
+        let centres = resolve(&parts, Some((rod, &factors, bend))).map_err(|e| DesignError {
             message: format!(
                 "{} when {} by {:.3} °C (a design must hold from -{TEMPERATURE_SPAN_K} to \
                  +{TEMPERATURE_SPAN_K} °C about its reference)",
@@ -748,6 +844,78 @@ impl CompoundPendulum {
                 .map_or(f64::NAN, |p| p.properties().equivalent_length)
         };
         rate_of_length_ratio(l(0.5) / l(-0.5))
+    }
+
+    /// Each part's centre above the thermometer, m: the height at which a
+    /// vertical temperature gradient is read. The thermometer is taken
+    /// half-way down the pendulum (between the pivot and the bottom of its
+    /// lowest part); for a compensated pendulum, whose rate does not move
+    /// with the temperature there, where it hangs does not change what a
+    /// gradient does.
+    pub fn heights_above_thermometer(&self) -> Vec<f64> {
+        let bottom = self
+            .parts
+            .iter()
+            .zip(&self.centres)
+            .map(|(p, &c)| c + 0.5 * p.shape.height())
+            .fold(0.0, f64::max);
+        self.centres.iter().map(|&c| 0.5 * bottom - c).collect()
+    }
+
+    /// The rate change per K/m of vertical temperature gradient (warmer
+    /// upwards) at a constant temperature at the thermometer
+    /// ([`CompoundPendulum::heights_above_thermometer`]), s/day: each part
+    /// at the temperature of its centre (exact for a part's length in a
+    /// linear gradient) and what the rod carries moved by the rod's
+    /// expansion down to it, by a central difference of ±0.5 K/m on the exact
+    /// model (error of order α², 1e-10 relative).
+    pub fn gradient_coefficient(&self) -> f64 {
+        let heights = self.heights_above_thermometer();
+        let l = |g: f64| {
+            let states: Vec<PartState> = heights
+                .iter()
+                .map(|h| PartState {
+                    temperature: g * h,
+                    gradient: g,
+                    ..PartState::default()
+                })
+                .collect();
+            self.at_part_states(&states)
+                .map_or(f64::NAN, |p| p.properties().equivalent_length)
+        };
+        rate_of_length_ratio(l(0.5) / l(-0.5))
+    }
+
+    /// The rate change per percentage point of relative humidity, s/day,
+    /// when every part that takes up water has settled at wood's
+    /// equilibrium moisture content ([`crate::moisture`]) in air of
+    /// `humidity` (0 to 1) at `temperature_c`: by a central difference of
+    /// ±1 point. `None` when no part takes up water.
+    pub fn humidity_coefficient(&self, humidity: f64, temperature_c: f64) -> Option<f64> {
+        if self
+            .parts
+            .iter()
+            .all(|p| p.material.moisture_expansion.is_none())
+        {
+            return None;
+        }
+        let emc = |h: f64| crate::moisture::equilibrium_moisture_content(h, temperature_c);
+        let h = humidity.clamp(0.02, 0.97);
+        let reference = emc(h);
+        let l = |dh: f64| {
+            let states: Vec<PartState> = self
+                .parts
+                .iter()
+                .map(|_| PartState {
+                    moisture: emc(h + dh),
+                    reference_moisture: reference,
+                    ..PartState::default()
+                })
+                .collect();
+            self.at_part_states(&states)
+                .map_or(f64::NAN, |p| p.properties().equivalent_length)
+        };
+        Some(0.5 * rate_of_length_ratio(l(0.01) / l(-0.01)))
     }
 
     /// The mass, kg, to add on a regulating tray `at` m below the pivot
@@ -930,7 +1098,7 @@ impl CompoundPendulum {
             return None;
         };
         parts[index].placement = Placement::Centre(c + shift);
-        let centres = resolve(&parts, 0.0, None).ok()?;
+        let centres = resolve(&parts, None).ok()?;
         Some(Self { parts, centres }.properties().equivalent_length)
     }
 
@@ -992,7 +1160,13 @@ pub fn rate_of_length_ratio(ratio: f64) -> f64 {
 
 /// Each part's centre, `delta` °C from the reference, carried by a rod of
 /// expansion `rod` (1/K) when there is one.
-fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, DesignError> {
+/// How the parts have grown from the design: the rod's index, each part's
+/// growth along its length, and the rod's expansion times its temperature
+/// gradient with its reference length.
+type Grown<'a> = (Option<usize>, &'a [f64], (f64, f64));
+
+/// `grown`: how the parts have grown (none: the parts as designed).
+fn resolve(parts: &[Part], grown: Option<Grown<'_>>) -> Result<Vec<f64>, DesignError> {
     // Each part's centre follows its chain of supports down to a part
     // placed by its centre; every part is resolved once (linear in the
     // number of parts), and a chain that comes back on itself is a circle.
@@ -1000,13 +1174,12 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
     // A suspension spring hangs from the pivot and grows with its own
     // material; what is placed by its centre hangs from the spring's
     // bottom and grows below it with the rod.
+    let growth = |i: usize| grown.map_or(1.0, |(_, f, _)| f.get(i).copied().unwrap_or(1.0));
+    let rod = grown.and_then(|(rod, _, _)| rod).map_or(1.0, growth);
+    let (bend, rod_length) = grown.map_or((0.0, 0.0), |(_, _, b)| b);
     let spring = spring_index(parts).map(|i| {
         let length = parts[i].shape.height();
-        (
-            i,
-            length,
-            length / (1.0 + parts[i].material.expansion * delta),
-        )
+        (i, length, length / growth(i))
     });
     let mut chain: Vec<usize> = Vec::new();
     let mut on_chain = vec![false; parts.len()];
@@ -1019,9 +1192,13 @@ fn resolve(parts: &[Part], delta: f64, rod: Option<f64>) -> Result<Vec<f64>, Des
             let p = &parts[i];
             match p.placement {
                 Placement::Centre(c) => {
-                    let grown = |c: f64| match rod {
-                        Some(alpha) => c * (1.0 + alpha * delta),
-                        None => c,
+                    // The rod itself keeps its ends (its centre is their
+                    // middle); what it carries moves with the point it is at.
+                    let rod_index = grown.and_then(|(rod, _, _)| rod);
+                    let grown = |c: f64| {
+                        let x = c.clamp(0.0, rod_length);
+                        let bent = if rod_index == Some(i) { 0.0 } else { bend };
+                        c * rod + bent * x * 0.5 * (rod_length - x)
                     };
                     let carried = match spring {
                         Some((s, length, _)) if s == i => 0.5 * length,

@@ -12,6 +12,7 @@ pub fn part(name: &str, shape: Shape, material: &str, placement: Placement) -> P
         placement,
         massless: false,
         time_constant: 0.0,
+        moisture_time_constant: 0.0,
     }
 }
 

@@ -268,6 +268,10 @@ pub struct ReadOptions {
     pub angle_unit: Option<AngleUnit>,
     /// `--columns`: the names of a headerless file's columns, in order.
     pub columns: Option<Vec<String>>,
+    /// The command has no `--columns` for this file (a drive file, a
+    /// log's events): a file without a header is told to name its columns
+    /// in a header line.
+    pub no_columns_flag: bool,
     /// `--frame-rate`: rebuild times as the first time + row index / rate.
     pub frame_rate: Option<f64>,
     /// Keep times as written instead of measuring them from the first row
@@ -638,6 +642,26 @@ fn datetime_has_offset(cell: &str) -> Option<bool> {
     Some(time.ends_with(['Z', 'z']) || time.contains(['+', '-']))
 }
 
+/// The offset from UTC a date-time cell ends with (`+02:00`, `-0530`), in
+/// hours; `None` without one (or `Z`).
+fn utc_offset_hours(cell: &str) -> Option<f64> {
+    let cell = cell.trim();
+    let time = &cell[cell.find(['T', 't', ' '])? + 1..];
+    let sign_at = time.rfind(['+', '-'])?;
+    let sign = if time[sign_at..].starts_with('-') {
+        -1.0
+    } else {
+        1.0
+    };
+    let digits: String = time[sign_at + 1..]
+        .chars()
+        .filter(char::is_ascii_digit)
+        .collect();
+    let hours: f64 = digits.get(..2)?.parse().ok()?;
+    let minutes: f64 = digits.get(2..4).map_or(Some(0.0), |m| m.parse().ok())?;
+    Some(sign * (hours + minutes / 60.0))
+}
+
 /// A date and time (ISO 8601 / RFC 3339: `2024-07-19T09:27:13.125Z`,
 /// `2024-07-19 09:27:13.125+02:00`; without an offset read as UTC) as
 /// seconds since 1970, or a time of day (`09:27:13.125`) as seconds since
@@ -651,7 +675,9 @@ fn datetime_seconds(cell: &str) -> Option<f64> {
     }
     let of = |t: Timestamp| t.as_nanosecond() as f64 * 1e-9;
     if let Ok(t) = cell.parse::<Timestamp>() {
-        return Some(of(t));
+        // jiff takes offsets to ±25:59; the world's run from -12:00 to
+        // +14:00 (Kiribati), and past them a cell is not a clock's time.
+        return (utc_offset_hours(cell).is_none_or(|h| (-12.0..=14.0).contains(&h))).then(|| of(t));
     }
     if let Ok(d) = cell.parse::<DateTime>() {
         return jiff::tz::Offset::UTC.to_timestamp(d).ok().map(of);
@@ -1208,6 +1234,12 @@ pub fn stream_table(
                     described()
                 )
             };
+            if options.no_columns_flag {
+                return Err(fail(format!(
+                    "no header line{above}: name the columns in a first line (e.g. \
+                     time_s,temperature_c)"
+                )));
+            }
             return Err(fail(format!(
                 "no header line{above}: name the columns with --columns (e.g. --columns \
                  time_s,angle_deg{})",
@@ -1247,14 +1279,20 @@ pub fn stream_table(
             if names != held && cells.len() != width {
                 return Err(fail(format!(
                     "the header (line {}) names {names} columns ({}) where the rows hold {held}: \
-                     name the columns with --columns (e.g. --columns time_s,angle_deg)",
+                     {}",
                     sample[first_numeric - 1].0,
                     cells
                         .iter()
                         .filter(|c| !c.trim().is_empty())
                         .cloned()
                         .collect::<Vec<_>>()
-                        .join(", ")
+                        .join(", "),
+                    if options.no_columns_flag {
+                        "give each row a cell under each name (numbers with a decimal comma \
+                         need a semicolon or a tab between the cells)"
+                    } else {
+                        "name the columns with --columns (e.g. --columns time_s,angle_deg)"
+                    }
                 )));
             }
             cells
@@ -1593,5 +1631,26 @@ mod tests {
         assert_eq!(name, "spaces");
         let (_, name, comma) = sniff(&lines(&["time (s),amplitude (rad)", "0,0.1", "1,0.09"]));
         assert_eq!((name, comma), ("comma", false));
+    }
+}
+
+#[cfg(test)]
+mod offsets {
+    use super::{datetime_seconds, utc_offset_hours};
+
+    /// Offsets from UTC as the world has them, -12:00 to +14:00; jiff
+    /// takes them to ±25:59, which no clock's log holds (a new user's
+    /// `+25:00` was read).
+    #[test]
+    fn only_the_worlds_offsets_are_read() {
+        assert_eq!(utc_offset_hours("2024-07-19T09:27:13+02:00"), Some(2.0));
+        assert_eq!(utc_offset_hours("2024-07-19 09:27:13.5-0530"), Some(-5.5));
+        assert_eq!(utc_offset_hours("2024-07-19T09:27:13Z"), None);
+        let utc = datetime_seconds("2024-07-19T09:27:13Z").unwrap();
+        let kiribati = datetime_seconds("2024-07-19T23:27:13+14:00").unwrap();
+        assert_eq!(utc, kiribati);
+        assert!(datetime_seconds("2024-07-19T09:27:13-12:00").is_some());
+        assert!(datetime_seconds("2024-07-19T09:27:13+25:00").is_none());
+        assert!(datetime_seconds("2024-07-19T09:27:13-12:30").is_none());
     }
 }

@@ -157,7 +157,7 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
             let material = match Material::named(&m.name) {
                 Some(t) if t == *m => quoted(&m.name),
                 _ => format!(
-                    "{{ name = {}, density = {:?}, expansion = {:?}{}{}{} }}",
+                    "{{ name = {}, density = {:?}, expansion = {:?}{}{}{}{} }}",
                     quoted(&m.name),
                     m.density,
                     m.expansion,
@@ -166,6 +166,8 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
                         .map_or(String::new(), |e| format!(", modulus = {e:?}")),
                     m.modulus_coefficient
                         .map_or(String::new(), |b| format!(", modulus_coefficient = {b:?}")),
+                    m.moisture_expansion
+                        .map_or(String::new(), |w| format!(", moisture_expansion = {w:?}")),
                 ),
             };
             out.push_str(&format!("material = {material}\n"));
@@ -193,6 +195,12 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
         }
         if p.time_constant > 0.0 {
             out.push_str(&format!("time_constant = \"{} s\"\n", p.time_constant));
+        }
+        if p.moisture_time_constant > 0.0 {
+            out.push_str(&format!(
+                "moisture_time_constant = \"{} s\"\n",
+                p.moisture_time_constant
+            ));
         }
         if let Some(t) = thread.filter(|t| t.part == i) {
             out.push_str(&format!("pitch = {}\n", mm(t.pitch)));

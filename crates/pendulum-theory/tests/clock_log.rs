@@ -311,3 +311,27 @@ fn pulse_width_gives_the_amplitude_of_the_exact_motion() {
     assert!(amplitude_from_pulse(10.0, 0.01, 1.0, 1.0, g).is_err());
     assert!(amplitude_from_pulse(-1.0, 0.01, 1.0, 1.0, g).is_err());
 }
+
+/// A photogate's flag width or gate radius without its pulse widths was
+/// ignored (a new user's find): refused by name.
+#[test]
+fn a_photogates_sizes_without_its_pulses_are_refused() {
+    let time: Vec<f64> = (0..200).map(|i| i as f64 * 3600.0).collect();
+    let values: Vec<f64> = time.iter().map(|t| 1e-6 * t).collect();
+    for (flag, radius, field) in [
+        (Some(0.01), None, "flag_width"),
+        (None, Some(1.0), "gate_radius"),
+    ] {
+        let e = analyse(&LogInput {
+            time_s: time.clone(),
+            kind: Some(LogKind::Offset),
+            values: values.clone(),
+            flag_width_m: flag,
+            gate_radius_m: radius,
+            ..LogInput::default()
+        })
+        .unwrap_err();
+        assert_eq!(e.field_name(), Some(field), "{e}");
+        assert!(e.to_string().contains("pulse_width"), "{e}");
+    }
+}

@@ -66,6 +66,7 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
         absolute_time: true,
         run: None,
         tick_rate: None,
+        no_columns_flag: false,
     };
     let table = read_table(&args.file, &options, &choose)?;
     let file = table.file.clone();

@@ -19,6 +19,7 @@ pub fn read_options(args: &MeasurementArgs) -> Result<ReadOptions, CliError> {
         absolute_time: false,
         run: run(args.run)?,
         tick_rate: None,
+        no_columns_flag: false,
     })
 }
 

@@ -354,6 +354,50 @@ fn a_damp_spell_and_a_gradient_through_the_binary() {
         "{} against {expected}",
         damp - dry
     );
+    // Humidities that never pass 1 are likely fractions: said so.
+    let path = dir.path().join("fractions.csv");
+    std::fs::write(&path, "time_s,humidity_percent\n0,0.5\n86400,0.6\n").unwrap();
+    let v = json(&[
+        "clock",
+        "--design",
+        &design,
+        "--drive",
+        "20uJ",
+        "--duration",
+        "2days",
+        "--every",
+        "1h",
+        "--drive-file",
+        path.to_str().unwrap(),
+    ]);
+    assert!(
+        v["long_run"]["warnings"]
+            .to_string()
+            .contains("multiply it by 100"),
+        "{}",
+        v["long_run"]
+    );
+    // A drive file without a header is told to name its columns there
+    // (clock has no --columns).
+    std::fs::write(&path, "0,20\n86400,21\n").unwrap();
+    let e = refuses(
+        &[
+            "clock",
+            "--design",
+            &design,
+            "--drive",
+            "20uJ",
+            "--duration",
+            "1day",
+            "--drive-file",
+            path.to_str().unwrap(),
+        ],
+        "--drive-file",
+    );
+    assert!(
+        e.contains("in a first line") && !e.contains("--columns"),
+        "{e}"
+    );
     let steep = error_after("time_s,gradient (K/cm)\n0,0\n86400,0\n86401,0.01\n");
     assert!(
         ((steep - dry) / (2.0 * gradient) - 1.0).abs() < 0.01,

@@ -829,6 +829,15 @@ fn weather_effect(
     let here = design.in_gas(&gas0, g);
     let q_gas0 = here.q;
     let mut warnings = Vec::new();
+    if let Some(h) = &w.humidity_percent {
+        if h.iter().all(|&v| v <= 1.0) && h.iter().any(|&v| v > 0.0) {
+            warnings.push(
+                "the humidity never passes 1 %: it is read in per cent (air that dry is \
+                 rare indoors); if it is a fraction of 1, multiply it by 100"
+                    .to_string(),
+            );
+        }
+    }
     // The losses that are not the gas's, as a Q.
     let pivot = if q < q_gas0 {
         Some(1.0 / (1.0 / q - 1.0 / q_gas0))

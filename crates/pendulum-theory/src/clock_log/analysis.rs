@@ -571,6 +571,21 @@ fn analyse_sorted(input: &LogInput) -> Result<LogResult, Refusal> {
     let humidity = column("humidity", &input.humidity_percent, n)?;
     let mut amplitude = column("amplitude", &input.amplitude_deg, n)?;
     let mut warnings = Vec::new();
+    // A photogate's sizes without its pulses would be ignored: refused.
+    if input.pulse_width_s.is_none() {
+        for (field, given) in [
+            ("flag_width", input.flag_width_m),
+            ("gate_radius", input.gate_radius_m),
+        ] {
+            if given.is_some() {
+                return Err(Refusal::field(
+                    field,
+                    "reads a photogate's pulse widths, and the log has none (a pulse_width \
+                     column)",
+                ));
+            }
+        }
+    }
     if let (None, Some(pulses)) = (&amplitude, column("pulse_width", &input.pulse_width_s, n)?) {
         if input.flag_width_m.is_none() && input.gate_radius_m.is_none() {
             warnings.push(LogWarning::PulsesIgnored);

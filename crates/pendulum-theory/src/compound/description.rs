@@ -60,6 +60,21 @@ pub struct Design {
     pub thread: Option<Thread>,
 }
 
+/// The fields that give a part's size, each of some shapes only.
+const SHAPE_FIELDS: [&str; 11] = [
+    "length",
+    "diameter",
+    "bore",
+    "thickness",
+    "width",
+    "outer",
+    "inner",
+    "mass",
+    "brass_length",
+    "steel",
+    "brass",
+];
+
 /// The most parts a design may have.
 pub const MAX_PARTS: usize = 1000;
 
@@ -240,6 +255,43 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                 "missing (rod, cylinder, tube, disc, lens, sphere, ring, spring or point)".into(),
             )
         })?;
+        // A size that does not belong to the shape is refused, not ignored
+        // (a rod's `mass`, a spring's `diameter`): it was meant for
+        // something.
+        let applies: &[&str] = match shape_name {
+            "rod" | "cylinder" | "tube" => &["length", "diameter", "bore"],
+            "gridiron" => &[
+                "length",
+                "diameter",
+                "bore",
+                "brass_length",
+                "steel",
+                "brass",
+            ],
+            "disc" | "lens" => &["diameter", "thickness"],
+            "sphere" => &["diameter"],
+            "ring" => &["outer", "inner", "thickness"],
+            "spring" => &["length", "width", "thickness"],
+            "point" => &["mass"],
+            _ => &SHAPE_FIELDS,
+        };
+        if let Some(key) = SHAPE_FIELDS
+            .iter()
+            .find(|k| t.contains_key(**k) && !applies.contains(k))
+        {
+            return Err(bad(
+                key,
+                format!(
+                    "does not apply to a {shape_name} (it takes {}{})",
+                    applies.join(", "),
+                    if *key == "mass" {
+                        "; its mass comes from its material and size"
+                    } else {
+                        ""
+                    }
+                ),
+            ));
+        }
         let shape = match shape_name {
             "rod" | "cylinder" | "tube" | "gridiron" => Shape::Cylinder {
                 length: need("length")?,
@@ -516,6 +568,40 @@ mod tests {
         assert_eq!(
             design(&bad, &no_units).unwrap_err().to_string(),
             "part 'rod': length: give a number in SI units"
+        );
+    }
+
+    /// A size that does not belong to the shape is refused by name: a
+    /// rod's `mass` (its mass comes from its material), a spring's
+    /// `diameter`, a sphere's `length` (a new user's finds: they were
+    /// ignored).
+    #[test]
+    fn a_size_of_another_shape_is_refused() {
+        let with = |extra: (&str, serde_json::Value)| {
+            let mut rod = serde_json::json!({"name": "rod", "shape": "rod", "material": "steel",
+                "length": 1.0, "diameter": 0.008, "centre": 0.5});
+            rod[extra.0] = extra.1;
+            let v = serde_json::json!({"part": [rod, {"name": "bob", "shape": "sphere",
+                "material": "brass", "diameter": 0.1, "centre": 0.95}]});
+            design(&v, &no_units).map(|_| ()).map_err(|e| e.to_string())
+        };
+        let e = with(("mass", serde_json::json!(2.0))).unwrap_err();
+        assert!(
+            e.starts_with(
+                "part 'rod': mass: does not apply to a rod (it takes length, diameter, bore"
+            ),
+            "{e}"
+        );
+        assert!(with(("thickness", serde_json::json!(0.01))).is_err());
+        assert!(with(("bore", serde_json::json!(0.002))).is_ok());
+        let sphere = serde_json::json!({"part": [{"name": "rod", "shape": "rod",
+            "material": "steel", "length": 1.0, "diameter": 0.008, "centre": 0.5},
+            {"name": "bob", "shape": "sphere", "material": "brass", "diameter": 0.1,
+             "length": 0.1, "centre": 0.95}]});
+        let e = design(&sphere, &no_units).unwrap_err().to_string();
+        assert!(
+            e.starts_with("part 'bob': length: does not apply to a sphere"),
+            "{e}"
         );
     }
 }

@@ -864,8 +864,9 @@ fn weather_effect(
         // hold, at its own temperature and pressure).
         let state = GasState::new(gas, p, t, humidity).map_err(|e| {
             let column = match e.field_name() {
+                // The humidity's own column, else the pressure that thinned
+                // the air (its humidity scaled with it), else the heat.
                 Some("humidity") if w.humidity_percent.is_some() => "humidity",
-                Some("pressure") if w.pressure_pa.is_some() => "pressure",
                 Some("humidity" | "pressure") if w.pressure_pa.is_some() => "pressure",
                 _ => "temperature_c",
             };

@@ -131,8 +131,11 @@ impl Clock {
         if self.elastic_share <= 0.0 {
             return 1.0;
         }
-        crate::suspension::period_ratio(a, self.elastic_share)
-            / crate::suspension::period_ratio(a, 0.0)
+        // The rigid pendulum's ratio is the AGM's (the same to 4e-16).
+        crate::Amplitude::from_radians(a).map_or(1.0, |amplitude| {
+            crate::suspension::period_ratio(a, self.elastic_share)
+                / crate::period::period_ratio(amplitude)
+        })
     }
 
     /// The half swing from `-a1` on beat `beat`.

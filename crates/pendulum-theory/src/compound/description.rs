@@ -136,21 +136,14 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
         let t = p
             .as_object()
             .ok_or_else(|| bad("part", "must be a table".into()))?;
-        const KNOWN: [&str; 26] = [
+        // Besides the sizes of the shapes ([`SHAPE_FIELDS`]).
+        const KNOWN: [&str; 15] = [
             "pitch",
             "tpi",
             "divisions",
             "name",
             "shape",
             "material",
-            "length",
-            "diameter",
-            "bore",
-            "thickness",
-            "width",
-            "outer",
-            "inner",
-            "mass",
             "centre",
             "rests_on",
             "support_height",
@@ -160,12 +153,9 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
             "time_constant",
             "moisture_time_constant",
             "center",
-            "brass_length",
-            "steel",
-            "brass",
         ];
         for key in t.keys() {
-            if !KNOWN.contains(&key.as_str()) {
+            if !KNOWN.contains(&key.as_str()) && !SHAPE_FIELDS.contains(&key.as_str()) {
                 return Err(bad(key, "unknown field".into()));
             }
         }

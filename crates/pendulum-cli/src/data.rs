@@ -281,6 +281,10 @@ pub struct ReadOptions {
     pub run: Option<usize>,
     /// `--tick-rate HZ`: the clock whose ticks a `ticks` column counts.
     pub tick_rate: Option<f64>,
+    /// A blank cell in a used column is refused, naming its line and
+    /// column, instead of its row being skipped (a schedule, whose every
+    /// row is a setting).
+    pub refuse_blank: bool,
 }
 
 /// What was read, for the JSON output (`format`).
@@ -296,6 +300,9 @@ pub struct Format {
     pub rows: usize,
     /// Rows skipped for a blank cell in a used column.
     pub skipped_rows: usize,
+    /// The file lines of the first few of them, for the warning.
+    #[serde(skip)]
+    pub skipped_lines: Vec<u64>,
     /// The frame rate the times were rebuilt from (`--frame-rate`), if any.
     pub frame_rate: Option<f64>,
     /// When the file writes several readings under one time stamp: their
@@ -381,6 +388,8 @@ pub struct Found {
     /// temperature stays in °C); `None` for an angle column without a
     /// unit, or a unit that is not one of the column's kind.
     factor: Option<f64>,
+    /// Added after the factor (a temperature in K or °F to °C).
+    offset: f64,
 }
 
 /// The columns a command uses, chosen from those the header has: the
@@ -945,7 +954,7 @@ fn units_for(role: Role) -> &'static str {
     match role {
         Role::Time => "s, ms, us, min, h",
         Role::Angle | Role::Amplitude => "deg, rad",
-        Role::Temperature => "°C (c, degc, celsius)",
+        Role::Temperature => "°C (c, degc, celsius), K, °F (f, degf)",
         Role::Pressure => "hPa, mbar, Pa, kPa, inHg, mmHg",
         Role::Period | Role::PeriodError => "s, ms, us, min, h",
         Role::Length => "m, cm, mm, in",
@@ -982,7 +991,16 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
                 .filter(|(of, _)| *of == k)
                 .map(|(_, f)| f)
         };
+        // A temperature in kelvin or Fahrenheit: a factor and an offset.
+        let kelvin_or_fahrenheit = match (role, unit.as_deref()) {
+            (Role::Temperature, Some("k" | "kelvin")) => Some((1.0, -273.15)),
+            (Role::Temperature, Some("f" | "°f" | "degf" | "fahrenheit")) => {
+                Some((5.0 / 9.0, -160.0 / 9.0))
+            }
+            _ => None,
+        };
         let factor = match (role, unit.as_deref()) {
+            _ if kelvin_or_fahrenheit.is_some() => kelvin_or_fahrenheit.map(|(f, _)| f),
             (
                 Role::Angle
                 | Role::Amplitude
@@ -1032,6 +1050,7 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
             index,
             unit,
             factor,
+            offset: kelvin_or_fahrenheit.map_or(0.0, |(_, o)| o),
         });
     }
     found
@@ -1161,7 +1180,19 @@ pub fn stream_table(
             None => widths.push((w, 1)),
         }
     }
-    let width = widths.iter().max_by_key(|&&(w, c)| (c, w)).map(|&(w, _)| w);
+    // On a tie (a short file), the width whose first row sits under a
+    // header of as many names, then the wider.
+    let under_header = |w: usize| {
+        sample
+            .iter()
+            .position(|(_, l)| numeric(l) && width_of(l) == w)
+            .and_then(|i| i.checked_sub(1))
+            .is_some_and(|i| !numeric(&sample[i].1) && width_of(&sample[i].1) == w)
+    };
+    let width = widths
+        .iter()
+        .max_by_key(|&&(w, c)| (c, under_header(w), w))
+        .map(|&(w, _)| w);
     let first_numeric = sample
         .iter()
         .position(|(_, l)| numeric(l) && Some(width_of(l)) == width);
@@ -1319,6 +1350,7 @@ pub fn stream_table(
             index: MADE_COLUMN,
             unit: None,
             factor: Some(1.0),
+            offset: 0.0,
         });
     }
     let rate = options.frame_rate.or(file_rate.filter(|_| made_time));
@@ -1370,6 +1402,7 @@ pub fn stream_table(
         columns_used: names.clone(),
         rows: 0,
         skipped_rows: 0,
+        skipped_lines: Vec::new(),
         frame_rate: rate,
         tracker_track: track,
         sheet,
@@ -1396,6 +1429,24 @@ pub fn stream_table(
             return Ok(());
         }
         let cells = separator.split(line);
+        // A row of numbers with more cells than the table's rows hold
+        // would shift no meaning, but says the file is not what it seems.
+        if options.columns.is_none()
+            && cells.len() > width
+            && cells[width..].iter().any(|c| !c.trim().is_empty())
+            && is_numeric(&cells, decimal_comma)
+        {
+            return Err(fail(format!(
+                "line {line_number} holds {} cells where the rows before it hold {width} \
+                 (read as {shown_separator}){}",
+                cells.len(),
+                if separator == Separator::Char(',') {
+                    ": numbers with a decimal comma need a semicolon or a tab between the cells"
+                } else {
+                    ""
+                }
+            )));
+        }
         let row_index = index;
         index += 1;
         let mut blank = false;
@@ -1445,7 +1496,15 @@ pub fn stream_table(
                 }
             }
             match cell_value(cell, decimal_comma) {
-                Some(Some(v)) => row[k] = v * f.factor.unwrap_or(1.0),
+                Some(Some(v)) => row[k] = v * f.factor.unwrap_or(1.0) + f.offset,
+                Some(None) if options.refuse_blank => {
+                    return Err(fail(format!(
+                        "line {line_number}, column {}: empty: every row of this file needs \
+                         a value in every column it uses (fill the cell, or leave the column \
+                         out)",
+                        f.header
+                    )));
+                }
                 Some(None) => blank = true,
                 None => {
                     // A NaN or infinite cell in the library's words (the
@@ -1466,6 +1525,9 @@ pub fn stream_table(
         }
         if blank {
             format.skipped_rows += 1;
+            if format.skipped_lines.len() < 3 {
+                format.skipped_lines.push(line_number);
+            }
             return Ok(());
         }
         if let Some(k) = time_column {
@@ -1542,6 +1604,42 @@ pub fn stream_table(
         }
         format.run = Some(want);
         format.runs = Some(runs);
+    }
+    // Nothing left out without a word: rows skipped for a blank cell, and
+    // columns of a kind after the first, which are not read.
+    if format.skipped_rows > 0 {
+        let shown: Vec<String> = format.skipped_lines.iter().map(u64::to_string).collect();
+        crate::output::warn(format!(
+            "{file}: {} row{} with a blank cell in a column used skipped (line{} {}{})",
+            format.skipped_rows,
+            if format.skipped_rows == 1 { "" } else { "s" },
+            if format.skipped_rows == 1 { "" } else { "s" },
+            shown.join(", "),
+            if format.skipped_rows > shown.len() {
+                ", …"
+            } else {
+                ""
+            }
+        ));
+    }
+    for f in &used {
+        let others: Vec<String> = headers
+            .iter()
+            .enumerate()
+            .filter(|&(i, h)| i != f.index && Role::of(&split_header(h).0) == Some(f.role))
+            .map(|(i, h)| format!("{} ('{}')", i + 1, h.trim().trim_matches('"')))
+            .collect();
+        if !others.is_empty() && f.index != MADE_COLUMN {
+            crate::output::warn(format!(
+                "{file}: column {} ('{}') is read as the {}; column{} {} of the same kind {} not",
+                f.index + 1,
+                f.header,
+                f.role.name(),
+                if others.len() == 1 { "" } else { "s" },
+                others.join(", "),
+                if others.len() == 1 { "is" } else { "are" }
+            ));
+        }
     }
     Ok((file, roles, names, format))
 }

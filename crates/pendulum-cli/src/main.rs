@@ -101,14 +101,15 @@ fn fail(error: &CliError) -> ExitCode {
 fn print(out: &Output) -> ExitCode {
     // With --quiet the summary beside data on standard output is left
     // out, but never its warnings.
+    let stderr = format!("{}{}", crate::output::take_warnings(), out.stderr);
     let stderr: String = if work::quiet() {
-        out.stderr
+        stderr
             .lines()
             .filter(|l| l.to_lowercase().contains("warning"))
             .map(|l| format!("{l}\n"))
             .collect()
     } else {
-        out.stderr.clone()
+        stderr
     };
     if !stderr.is_empty() {
         let _ = std::io::stderr().lock().write_all(stderr.as_bytes());

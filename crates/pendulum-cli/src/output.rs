@@ -11,6 +11,27 @@ use crate::error::CliError;
 use serde::Serialize;
 use serde_value::Value;
 
+/// Warnings from the parts a command shares (the file reader), printed on
+/// standard error after the command's own output is built.
+static WARNINGS: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+
+/// Adds a warning to be printed on standard error as `warning: …`.
+pub fn warn(message: String) {
+    if let Ok(mut w) = WARNINGS.lock() {
+        if !w.contains(&message) {
+            w.push(message);
+        }
+    }
+}
+
+/// The warnings added so far, as lines, emptied.
+pub fn take_warnings() -> String {
+    WARNINGS
+        .lock()
+        .map(|mut w| w.drain(..).map(|m| format!("warning: {m}\n")).collect())
+        .unwrap_or_default()
+}
+
 /// What a command prints, and its exit status.
 #[derive(Debug, Default)]
 pub struct Output {

@@ -335,6 +335,7 @@ fn simulate<'py>(
         tolerance,
         sample_interval: None,
         force,
+        elastic_share: None,
     })
     .map_err(refused)?;
     let mut turns = Turns {
@@ -964,6 +965,7 @@ fn period_table(
         g,
         amplitudes,
         series_terms,
+        elastic_share: None,
     };
     match table(&input) {
         Ok(rows) if matches!(amplitudes, Amplitudes::One(_)) => answer(Ok(rows[0])),

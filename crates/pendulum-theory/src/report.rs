@@ -118,6 +118,10 @@ pub struct Report {
     pub rundown: Rundown,
     /// The design's datasheet, with a design.
     pub datasheet: Option<Datasheet>,
+    /// What to know before trusting the report: a design on a suspension
+    /// spring whose run-down and figures swing the rigid pendulum of its
+    /// equivalent length ([`crate::suspension::rigid_swing_warning`]).
+    pub warnings: Vec<String>,
 }
 
 /// Collects the run-down's turning points; stops when `proceed` says so.
@@ -166,6 +170,13 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
         (None, length) => (length.unwrap_or(DEFAULT_LENGTH_M), None, None),
     };
     let length_field = if sheet.is_some() { "design" } else { "length" };
+    // A design's suspension spring: the period is its own, the run-down a
+    // rigid pendulum's (with a warning when that matters).
+    let share = input
+        .design
+        .as_ref()
+        .and_then(|d| d.pendulum.spring_effect())
+        .map_or(0.0, |e| e.elastic_share);
     let amplitude = input
         .amplitude
         .unwrap_or(DEFAULT_AMPLITUDE_DEG.to_radians());
@@ -174,6 +185,7 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
         g,
         amplitudes: Amplitudes::One(amplitude),
         series_terms: None,
+        elastic_share: (share > 0.0).then_some(share),
     })
     .map_err(|r| rename(r, "length", length_field))?
     .remove(0);
@@ -217,6 +229,9 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
         damped,
         rundown,
         datasheet: sheet,
+        warnings: crate::suspension::rigid_swing_warning(share, amplitude)
+            .into_iter()
+            .collect(),
     })
 }
 

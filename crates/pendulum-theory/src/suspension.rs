@@ -306,3 +306,31 @@ pub fn effect(strip: &Strip, body: &Body, g: f64) -> Result<SpringEffect, Refusa
         second_mode_hz: high.map(|w2| w2.sqrt() / (2.0 * std::f64::consts::PI)),
     })
 }
+
+/// What an analysis that swings a design hanging from a suspension spring
+/// as a rigid pendulum of its equivalent length (the same small-swing
+/// period; `simulate`, `amplitude`, `fit`) leaves out at semi-arc
+/// `amplitude` rad: the spring shrinks the circular error by its elastic
+/// share `share` ([`period_ratio`]). `None` when the two circular errors
+/// differ by under 1e-3 s/day (a rigid pivot, a vanishing swing, a
+/// regulator's spring at a degree), else the warning with both figures.
+pub fn rigid_swing_warning(share: f64, amplitude: f64) -> Option<String> {
+    if !(share > 0.0 && share < 1.0 && amplitude.is_finite() && amplitude > 0.0) {
+        return None;
+    }
+    let day = crate::period::SECONDS_PER_DAY;
+    let rigid = day * (1.0 - 1.0 / period_ratio(amplitude, 0.0));
+    let spring = day * (1.0 - 1.0 / period_ratio(amplitude, share));
+    ((rigid - spring).abs() >= 1e-3).then(|| {
+        format!(
+            "the design hangs from a suspension spring (elastic share {}): this takes it as a rigid \
+             pendulum of its equivalent length, whose circular error at {}° is {} s/day \
+             where the spring's is {} s/day (`period --design` and `clock --design` take the \
+             spring's)",
+            format_significant(share, 3),
+            format_significant(amplitude.to_degrees(), 4),
+            format_significant(rigid, 4),
+            format_significant(spring, 4)
+        )
+    })
+}

@@ -269,3 +269,51 @@ fn a_shortt_tank_at_27_hpa() {
     let (q_tank, q_air) = (tank.q_gas.unwrap(), air.q_gas.unwrap());
     assert!(q_tank > 3.0 * q_air, "{q_tank} {q_air}");
 }
+
+/// A tank's whole barometric coefficient (buoyancy and the carried gas)
+/// against Stokes's sphere, computed here: a 100 mm brass sphere a metre
+/// down on a massless rod, in nitrogen at 27 hPa and 20 °C (a Shortt tank's
+/// pressure). Stokes's oscillating sphere (1851 §II; Landau and Lifshitz
+/// §24 problem 5) carries `(2π/3) ρ a³ (1 + 9δ/2a)` of gas, `δ = sqrt(2η
+/// / ρω)`; at 27 hPa the boundary layer is 0.4 of the radius, so the
+/// carried gas is 2.7 times the ideal fluid's and its share of the
+/// coefficient falls as the square root of the pressure's. The rate
+/// against a vacuum is `86400 (sqrt(ω²/ω₀²) - 1)` with `ω²/ω₀² = (1 -
+/// ρV/m) I/(I + k ρ V d²)`; the coefficient its central difference at
+/// ±1%. Independent inputs: the ideal gas `ρ = pM/RT` (nitrogen's second
+/// virial coefficient, -4.5 cm³/mol at 20 °C, moves it 5e-5 at 27 hPa) and
+/// nitrogen's viscosity 17.6 µPa s at 20 °C (Lemmon and Jacobsen, Int. J.
+/// Thermophys. 25 (2004) 21, table; the crate's Sutherland law must agree
+/// within 1%, which moves the boundary layer's term by 0.5% of its 0.6
+/// share: 3e-3). The gas's slip at the wall (mean free path 2.5 µm over
+/// the 19 mm boundary layer) is 1e-4. So within 5e-3.
+#[test]
+fn a_tank_against_stokes_sphere() {
+    let pendulum = sphere_bob();
+    let (a, d, g) = (0.05_f64, 1.0_f64, 9.81);
+    let volume = 4.0 / 3.0 * PI * a.powi(3);
+    let m = pendulum.parts()[1].mass();
+    let inertia = m * (d * d + 0.4 * a * a);
+    let omega = (g / pendulum.properties().equivalent_length).sqrt();
+    let eta = 17.6e-6;
+    let rate = |p: f64| {
+        let rho = p * 28.0134e-3 / (8.314_462 * 293.15);
+        let delta = (2.0 * eta / (rho * omega)).sqrt();
+        let k = 0.5 * (1.0 + 4.5 * delta / a);
+        let ratio = (1.0 - rho * volume / m) * inertia / (inertia + k * rho * volume * d * d);
+        86_400.0 * (ratio.sqrt() - 1.0)
+    };
+    let p = 2700.0;
+    let stokes = (rate(1.01 * p) - rate(0.99 * p)) / (0.02 * p) * 100.0;
+    let buoyancy_only = -43_200.0 * volume / m * 28.0134e-3 / (8.314_462 * 293.15) * 100.0;
+    let gas = GasState::new(Gas::Nitrogen, p, 20.0, 0.0).unwrap();
+    let got = pendulum.pressure_coefficient(&gas, g);
+    eprintln!(
+        "27 hPa N2: {got:.6e} s/day per hPa; Stokes {stokes:.6e}; buoyancy alone {buoyancy_only:.6e}; viscosity {:.4e}",
+        gas.viscosity()
+    );
+    assert!((gas.viscosity() / eta - 1.0).abs() < 0.01);
+    assert!((got / stokes - 1.0).abs() < 5e-3, "{got} against {stokes}");
+    // The carried gas is no small correction in the tank.
+    assert!(stokes / buoyancy_only > 1.2, "{stokes} {buoyancy_only}");
+}

@@ -499,3 +499,69 @@ fn a_clock_on_a_spring_keeps_the_smaller_circular_error() {
         run.final_rate_s_per_day
     );
 }
+
+/// The period table of a pendulum on a spring (`period --design` of a
+/// design hanging from one): each row's period ratio is the integrated
+/// equation of motion's `θ'' = -ω²[(1 - ε) sin θ + ε θ]`
+/// (`quarter_period_integrated`, within 1e-11), its circular error `1 -
+/// T0/T` from it, the slope per degree the derivative of that (a central
+/// difference of the integrated periods at ±0.01°, within 1e-5: the
+/// difference's own truncation); the rows have no power series (the
+/// seed's is a rigid pendulum's) and say their share. A share of 1 or
+/// more, or not a number, is refused by name; none is the rigid table.
+#[test]
+fn the_period_table_on_a_spring() {
+    use pendulum_theory::period::table::{table, Amplitudes, PeriodInput};
+    let input = |deg: f64, share: Option<f64>| PeriodInput {
+        length: 0.994,
+        g: Some(9.81),
+        amplitudes: Amplitudes::One(deg.to_radians()),
+        series_terms: None,
+        elastic_share: share,
+    };
+    let integrated = |deg: f64, e: f64| {
+        quarter_period_integrated(deg.to_radians(), e) / std::f64::consts::FRAC_PI_2
+    };
+    for (deg, e) in [(3.0, 0.3), (20.0, 0.05), (45.0, 0.8)] {
+        let row = table(&input(deg, Some(e))).unwrap().remove(0);
+        let ratio = integrated(deg, e);
+        close(row.period_ratio, ratio, 1e-11);
+        close(row.period_s, row.small_angle_period_s * ratio, 1e-11);
+        // The integration's 1e-11 of the period, relative to the error.
+        close(
+            row.circular_error,
+            1.0 - 1.0 / ratio,
+            1e-11 / row.circular_error,
+        );
+        let h = 0.01;
+        let slope = ((1.0 - 1.0 / integrated(deg + h, e)) - (1.0 - 1.0 / integrated(deg - h, e)))
+            / (2.0 * h)
+            * 86_400.0;
+        close(row.circular_error_s_per_day_per_deg, slope, 1e-5);
+        assert!(row.series.is_none());
+        assert_eq!(row.elastic_share, Some(e));
+    }
+    let rigid = table(&input(10.0, None)).unwrap().remove(0);
+    let zero = table(&input(10.0, Some(0.0))).unwrap().remove(0);
+    assert_eq!(rigid, zero);
+    assert!(rigid.series.is_some());
+    for bad in [1.0, 1.5, -0.1, f64::NAN] {
+        let refusal = table(&input(10.0, Some(bad))).unwrap_err();
+        assert!(refusal.to_string().contains("elastic_share"), "{refusal}");
+    }
+}
+
+/// What swings a design on a spring as a rigid pendulum warns with both
+/// circular errors once they differ by a thousandth of a second a day,
+/// and not for a rigid pivot or a swing too small to matter.
+#[test]
+fn a_rigid_swing_of_a_spring_design_is_warned() {
+    use pendulum_theory::suspension::rigid_swing_warning;
+    let w = rigid_swing_warning(0.863, 10f64.to_radians()).unwrap();
+    assert!(w.contains("0.863") && w.contains("10°"), "{w}");
+    assert!(rigid_swing_warning(0.0, 0.5).is_none());
+    // A regulator's spring (share 8.8e-4) at 0.5°: 0.41 s/day of circular
+    // error, 3.6e-4 s/day of it the spring's: no warning; at 3°: 0.013.
+    assert!(rigid_swing_warning(8.8e-4, 0.5f64.to_radians()).is_none());
+    assert!(rigid_swing_warning(8.8e-4, 3f64.to_radians()).is_some());
+}

@@ -17,20 +17,30 @@ struct AmplitudeJson<'a> {
 
 pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
     let gravity = common::gravity(&args.gravity)?;
-    let pendulum = common::pendulum_of(
+    let common::Reduced {
+        pendulum,
+        elastic_share,
+    } = common::reduced(
         args.pendulum.length,
         args.pendulum.design.as_deref(),
         &gravity,
     )?;
     let period = args.period.0;
     let uncertainty = args.period_uncertainty.map(|t| t.0);
-    let r = amplitude(
+    let mut r = amplitude(
         pendulum.length_m(),
         Some(pendulum.g_m_s2()),
         period,
         uncertainty,
     )
     .map_err(|e| common::refused(&e))?;
+    // A design on a suspension spring: the amplitude is the rigid
+    // pendulum's of the same small-swing period.
+    r.warnings
+        .extend(pendulum_theory::suspension::rigid_swing_warning(
+            elastic_share,
+            r.amplitude_rad,
+        ));
     let result = AmplitudeJson {
         result: &r,
         g_source: gravity.g_source,
@@ -89,13 +99,20 @@ pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
         )
         .row("Length", format!("{} m", num(r.length_m, 10)))
         .row("Gravity", gravity.describe());
+    // The first warning is the precision's row; the rest follow.
+    for w in r.warnings.iter().skip(usize::from(precision_warned(&r))) {
+        s.row("WARNING", w.clone());
+    }
     Ok(s.render())
 }
 
 /// How much of the amplitude the period's last bit already decides (the
 /// library's warning when that is much).
 fn precision_note(r: &AmplitudeResult) -> String {
-    match (r.precision_relative, r.warnings.first()) {
+    match (
+        r.precision_relative,
+        r.warnings.first().filter(|_| precision_warned(r)),
+    ) {
         (_, Some(w)) => format!("warning: {w}"),
         (Some(relative), None) => format!(
             "the amplitude is determined to {} relative by a double-precision period",
@@ -106,4 +123,10 @@ fn precision_note(r: &AmplitudeResult) -> String {
                 .into()
         }
     }
+}
+
+/// Whether the library warned of the precision (its first warning then).
+fn precision_warned(r: &AmplitudeResult) -> bool {
+    r.precision_relative
+        .is_some_and(|p| p > pendulum_theory::period::inverse::PRECISION_WARNING)
 }

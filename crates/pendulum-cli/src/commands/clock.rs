@@ -68,6 +68,7 @@ fn read_schedule(path: &Path) -> Result<(Table, Option<Schedule>, Option<Weather
     let options = ReadOptions {
         absolute_time: true,
         no_columns_flag: true,
+        refuse_blank: true,
         ..ReadOptions::default()
     };
     let table = read_table(path, &options, &choose).map_err(flag)?;

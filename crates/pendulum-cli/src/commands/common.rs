@@ -70,24 +70,49 @@ pub fn resolve(
 }
 
 /// The pendulum of `--length`, or of `--design` (its equivalent simple
-/// length, `I / (m d)`: the same equation of motion).
+/// length, `I / (m d)`: the same small-swing equation of motion), with the
+/// elastic share of a design's suspension spring (0 for a rigid pivot).
+pub struct Reduced {
+    /// The simple pendulum of the same small-swing period.
+    pub pendulum: Pendulum,
+    /// The suspension spring's share of the restoring torque (0: none).
+    pub elastic_share: f64,
+}
+
+/// The pendulum of `--length` or `--design` with its spring's share.
+pub fn reduced(
+    length: Option<Length>,
+    design: Option<&std::path::Path>,
+    gravity: &ResolvedGravity,
+) -> Result<Reduced, CliError> {
+    match (length, design) {
+        (_, Some(path)) => {
+            let design = crate::design::read(path)?;
+            let length = design.properties().equivalent_length;
+            let pendulum = Pendulum::new(length, gravity.g_m_s2).map_err(|e| match e.quantity {
+                Quantity::Gravity => CliError::input("--g", &e),
+                _ => CliError::input("--design", &e),
+            })?;
+            Ok(Reduced {
+                pendulum,
+                elastic_share: design.spring_effect().map_or(0.0, |e| e.elastic_share),
+            })
+        }
+        (Some(length), None) => Ok(Reduced {
+            pendulum: pendulum(length, gravity)?,
+            elastic_share: 0.0,
+        }),
+        (None, None) => Err(CliError::flag("--length", "give --length or --design")),
+    }
+}
+
+/// The pendulum of `--length` or `--design` (see [`reduced`]).
 pub fn pendulum_of(
     length: Option<Length>,
     design: Option<&std::path::Path>,
     gravity: &ResolvedGravity,
 ) -> Result<Pendulum, CliError> {
-    match (length, design) {
-        (_, Some(path)) => {
-            let design = crate::design::read(path)?;
-            let length = design.properties().equivalent_length;
-            Pendulum::new(length, gravity.g_m_s2).map_err(|e| match e.quantity {
-                Quantity::Gravity => CliError::input("--g", &e),
-                _ => CliError::input("--design", &e),
-            })
-        }
-        (Some(length), None) => pendulum(length, gravity),
-        (None, None) => Err(CliError::flag("--length", "give --length or --design")),
-    }
+    reduced(length, design, gravity).map(|r| r.pendulum)
 }
 
 /// The pendulum of `--length`.
@@ -152,12 +177,17 @@ pub struct Swing {
     pub damping: Option<Damping>,
     /// The dry friction angle (0 if not given), rad.
     pub friction_angle: f64,
+    /// A design's suspension spring's elastic share (0: none).
+    pub elastic_share: f64,
 }
 
 /// Reads the pendulum, its release and its losses.
 pub fn swing(args: &SwingArgs) -> Result<Swing, CliError> {
     let gravity = gravity(&args.gravity)?;
-    let pendulum = pendulum_of(
+    let Reduced {
+        pendulum,
+        elastic_share,
+    } = reduced(
         args.pendulum.length,
         args.pendulum.design.as_deref(),
         &gravity,
@@ -171,6 +201,7 @@ pub fn swing(args: &SwingArgs) -> Result<Swing, CliError> {
         amplitude,
         damping,
         friction_angle,
+        elastic_share,
     })
 }
 

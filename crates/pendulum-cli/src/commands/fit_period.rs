@@ -67,6 +67,7 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
         run: None,
         tick_rate: None,
         no_columns_flag: false,
+        refuse_blank: false,
     };
     let table = read_table(&args.file, &options, &choose)?;
     let file = table.file.clone();

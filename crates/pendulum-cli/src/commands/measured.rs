@@ -20,6 +20,7 @@ pub fn read_options(args: &MeasurementArgs) -> Result<ReadOptions, CliError> {
         run: run(args.run)?,
         tick_rate: None,
         no_columns_flag: false,
+        refuse_blank: false,
     })
 }
 

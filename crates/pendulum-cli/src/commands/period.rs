@@ -35,9 +35,9 @@ struct PeriodCsv {
     circular_error: f64,
     circular_error_s_per_day: f64,
     circular_error_s_per_day_per_deg: f64,
-    series_terms: u32,
-    series_period_s: f64,
-    series_relative_error: f64,
+    series_terms: Option<u32>,
+    series_period_s: Option<f64>,
+    series_relative_error: Option<f64>,
 }
 
 pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
@@ -47,7 +47,10 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
     let gravity = common::gravity(&args.gravity)?;
-    let pendulum = common::pendulum_of(
+    let common::Reduced {
+        pendulum,
+        elastic_share,
+    } = common::reduced(
         args.pendulum.length,
         args.pendulum.design.as_deref(),
         &gravity,
@@ -73,6 +76,7 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
         g: Some(pendulum.g_m_s2()),
         amplitudes,
         series_terms: args.series_terms.map(i64::from),
+        elastic_share: (elastic_share > 0.0).then_some(elastic_share),
     };
     let rows = table(&input).map_err(|e| common::refused(&e))?;
     if let Some(target) = &plot {
@@ -83,7 +87,7 @@ pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
         } else {
             (0.0, (2.0 * first).clamp(10.0, 170.0), Some(first))
         };
-        render(target, &figure(&pendulum, from, to, working))?;
+        render(target, &figure(&pendulum, elastic_share, from, to, working))?;
     }
     let is_table = matches!(amplitudes, Amplitudes::Range { .. });
     if args.format.csv {
@@ -128,9 +132,9 @@ fn csv_row(a: &PeriodRow) -> PeriodCsv {
         circular_error: a.circular_error,
         circular_error_s_per_day: a.circular_error_s_per_day,
         circular_error_s_per_day_per_deg: a.circular_error_s_per_day_per_deg,
-        series_terms: a.series.terms,
-        series_period_s: a.series.period_s,
-        series_relative_error: a.series.relative_error,
+        series_terms: a.series.map(|s| s.terms),
+        series_period_s: a.series.map(|s| s.period_s),
+        series_relative_error: a.series.map(|s| s.relative_error),
     }
 }
 
@@ -163,15 +167,25 @@ fn text_summary(a: &PeriodRow, gravity: &ResolvedGravity) -> String {
                 num(a.circular_error_s_per_day, 6),
                 num(a.circular_error_s_per_day_per_deg, 6)
             ),
-        )
-        .row(
-            &format!("Series, {} terms", a.series.terms),
+        );
+    match (a.series, a.elastic_share) {
+        (Some(series), _) => s.row(
+            &format!("Series, {} terms", series.terms),
             format!(
                 "{} s  (relative error {})",
-                num(a.series.period_s, 12),
-                num(a.series.relative_error, 3)
+                num(series.period_s, 12),
+                num(series.relative_error, 3)
             ),
-        );
+        ),
+        (None, share) => s.row(
+            "Suspension spring",
+            format!(
+                "elastic share {}: the period of θ'' = −ω²[(1 − ε) sin θ + ε θ] (no power \
+                 series: the book's is a rigid pendulum's)",
+                share.map_or("?".to_string(), |e| num(e, 4))
+            ),
+        ),
+    };
     s.render()
 }
 
@@ -181,8 +195,10 @@ fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodRow]
         num(pendulum.length_m(), 10),
         gravity.describe()
     );
-    let terms = rows.first().map_or(0, |a| a.series.terms);
-    let series_header = format!("series({terms}) rel. err");
+    let series_header = match rows.first().and_then(|a| a.series) {
+        Some(series) => format!("series({}) rel. err", series.terms),
+        None => "series (rigid only)".to_string(),
+    };
     let header = [
         "amplitude °",
         "period s",
@@ -202,11 +218,18 @@ fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodRow]
                 num(a.beats_per_hour, 8),
                 num(a.circular_error_s_per_day, 6),
                 num(a.circular_error_s_per_day_per_deg, 6),
-                num(a.series.relative_error, 3),
+                a.series
+                    .map_or("—".to_string(), |s| num(s.relative_error, 3)),
             ]
         })
         .collect();
     out.push_str(&output::table(&header, &cells));
+    if let Some(e) = rows.first().and_then(|a| a.elastic_share) {
+        out.push_str(&format!(
+            "On a suspension spring of elastic share {}: θ'' = −ω²[(1 − ε) sin θ + ε θ]\n",
+            num(e, 4)
+        ));
+    }
     out
 }
 
@@ -214,8 +237,17 @@ fn text_table(pendulum: &Pendulum, gravity: &ResolvedGravity, rows: &[PeriodRow]
 /// `working` amplitude (degrees) marked: T/T0 exact; the relative error of
 /// the power series with 1 to 5 terms against it, on a log axis (errors
 /// below 1e-15, under the exact value's own rounding, are not drawn); the
-/// circular error in s/day.
-pub fn figure(pendulum: &Pendulum, from_deg: f64, to_deg: f64, working: Option<f64>) -> Figure {
+/// circular error in s/day. On a suspension spring of elastic share
+/// `share` (0: a rigid pivot) the period is the spring's
+/// ([`pendulum_theory::suspension::period_ratio`]) and there is no series
+/// panel (the series is a rigid pendulum's).
+pub fn figure(
+    pendulum: &Pendulum,
+    share: f64,
+    from_deg: f64,
+    to_deg: f64,
+    working: Option<f64>,
+) -> Figure {
     let grid: Vec<Amplitude> = (0..=400)
         .filter_map(|i| {
             Amplitude::from_degrees(from_deg + (to_deg - from_deg) * f64::from(i) / 400.0).ok()
@@ -251,45 +283,62 @@ pub fn figure(pendulum: &Pendulum, from_deg: f64, to_deg: f64, working: Option<f
         Some(a) => panel.mark_x(a, ""),
         None => panel,
     };
-    Figure {
-        panels: vec![
-            mark(
-                Panel::new(
-                    format!(
-                        "Period against amplitude, l = {} m",
-                        num(pendulum.length_m(), 6)
-                    ),
-                    "amplitude (°)",
-                    "T / T₀",
-                    vec![Series::line(
-                        "exact: 2K(sin²(A/2))/π",
-                        curve(&|a| period_ratio(a)),
-                    )],
-                ),
-                true,
+    let ratio = |a: Amplitude| {
+        if share > 0.0 {
+            pendulum_theory::suspension::period_ratio(a.radians(), share)
+        } else {
+            period_ratio(a)
+        }
+    };
+    let exact_label = if share > 0.0 {
+        format!(
+            "exact on the spring (ε = {}): θ'' = −ω²[(1 − ε) sin θ + ε θ]",
+            num(share, 3)
+        )
+    } else {
+        "exact: 2K(sin²(A/2))/π".to_string()
+    };
+    let mut panels = vec![mark(
+        Panel::new(
+            format!(
+                "Period against amplitude, l = {} m",
+                num(pendulum.length_m(), 6)
             ),
-            mark(
-                Panel::new(
-                    "The power series in sin²(A/2): its error against the exact period",
-                    "amplitude (°)",
-                    "|T_series / T − 1|",
-                    errors,
-                )
-                .log_y(),
-                false,
-            ),
-            mark(
-                Panel::new(
-                    "Circular error: what the clock loses against a vanishing swing",
-                    "amplitude (°)",
-                    "circular error (s/day)",
-                    vec![Series::line(
-                        "loss per day, 86400 s × (1 − T₀/T)",
-                        curve(&|a| day * circular_error(a)),
-                    )],
-                ),
-                false,
-            ),
-        ],
+            "amplitude (°)",
+            "T / T₀",
+            vec![Series::line(exact_label, curve(&|a| ratio(a)))],
+        ),
+        true,
+    )];
+    if share == 0.0 {
+        panels.push(mark(
+            Panel::new(
+                "The power series in sin²(A/2): its error against the exact period",
+                "amplitude (°)",
+                "|T_series / T − 1|",
+                errors,
+            )
+            .log_y(),
+            false,
+        ));
     }
+    panels.push(mark(
+        Panel::new(
+            "Circular error: what the clock loses against a vanishing swing",
+            "amplitude (°)",
+            "circular error (s/day)",
+            vec![Series::line(
+                "loss per day, 86400 s × (1 − T₀/T)",
+                curve(&|a| {
+                    if share > 0.0 {
+                        day * (1.0 - 1.0 / ratio(a))
+                    } else {
+                        day * circular_error(a)
+                    }
+                }),
+            )],
+        ),
+        false,
+    ));
+    Figure { panels }
 }

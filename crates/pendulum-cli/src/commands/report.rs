@@ -70,7 +70,13 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
     write_figure(
         &folder,
         "period.svg",
-        &period_figure(&pendulum, 0.0, (2.0 * a_deg).clamp(6.0, 170.0), Some(a_deg)),
+        &period_figure(
+            &pendulum,
+            r.period.elastic_share.unwrap_or(0.0),
+            0.0,
+            (2.0 * a_deg).clamp(6.0, 170.0),
+            Some(a_deg),
+        ),
     )?;
     let decay_span = r.damped.decay_time_s.map_or(
         UNDAMPED_RUNDOWN_PERIODS * pendulum.small_angle_period(),
@@ -152,7 +158,11 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
         Row(
             "Period at that amplitude",
             format!("{} s", num(p.period_s, 12)),
-            "exact: 4 √(l/g) K(sin²(A₀/2))",
+            if p.elastic_share.is_some() {
+                "exact, on the suspension spring: θ'' = −ω²[(1 − ε) sin θ + ε θ]"
+            } else {
+                "exact: 4 √(l/g) K(sin²(A₀/2))"
+            },
         ),
         Row(
             "Small-angle period",
@@ -299,6 +309,9 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
         },
         "circular error falls as the swing shrinks",
     ));
+    for w in &r.warnings {
+        rows.push(Row("Warning", w.clone(), ""));
+    }
     rows
 }
 

@@ -103,6 +103,7 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         tolerance,
         sample_interval,
         force: args.force,
+        elastic_share: Some(swing.elastic_share),
     };
     // A drag law given by name is said of `--drag NAME` (the quadratic
     // drag has its own flag too).

@@ -468,7 +468,8 @@ fn simulate_by_the_averaged_method() {
 /// of much of Europe (semicolons, decimal commas, hours, German names)
 /// gives the run the plain CSV gives; pressures in inHg the run in hPa
 /// gives; times are the run's own (a file that starts on day 1 holds its
-/// first row until then); a unit of the wrong kind is refused naming it.
+/// first row until then); temperatures in K and °F are converted; a unit of
+/// the wrong kind, a blank cell or a row too wide is refused naming it.
 #[test]
 fn drive_files_as_people_write_them() {
     let design = format!(
@@ -504,8 +505,18 @@ fn drive_files_as_people_write_them() {
     let late = run("late.csv", "time_s,temperature_c\n86400,25\n");
     let early = run("early.csv", "time_s,temperature_c\n0,25\n86400,25\n");
     assert_eq!(late, early);
-    let bad = dir.path().join("fahrenheit.csv");
-    std::fs::write(&bad, "time_s,temperature (F)\n0,68\n").unwrap();
+    // Kelvin and Fahrenheit are temperatures too: 25 °C is 298.15 K and
+    // 77 °F (the same run to rounding).
+    let kelvin = run("kelvin.csv", "time_s,temperature (K)\n86400,298.15\n");
+    let fahrenheit = run("fahrenheit.csv", "time_s,temperature (°F)\n86400,77\n");
+    for other in [kelvin, fahrenheit] {
+        assert!(
+            (other - early).abs() <= 1e-9 * early.abs().max(1e-3),
+            "{other} {early}"
+        );
+    }
+    let bad = dir.path().join("wrong-unit.csv");
+    std::fs::write(&bad, "time_s,temperature (hPa)\n0,68\n").unwrap();
     let args = [
         "clock",
         "--design",
@@ -520,7 +531,33 @@ fn drive_files_as_people_write_them() {
         &[&args[..], &[bad.to_str().unwrap()]].concat(),
         "--drive-file",
     );
-    assert!(e.contains("'f' is not a unit of temperature"), "{e}");
+    assert!(e.contains("'hpa' is not a unit of temperature"), "{e}");
+    // A blank cell in a schedule is refused by its line and column (its
+    // row was skipped without a word, taking its other settings with it).
+    let blank = dir.path().join("blank.csv");
+    std::fs::write(
+        &blank,
+        "time_s,humidity_percent,temperature_c\n0,50,20\n86400,60,\n",
+    )
+    .unwrap();
+    let e = refuses(
+        &[&args[..], &[blank.to_str().unwrap()]].concat(),
+        "--drive-file",
+    );
+    assert!(e.contains("line 3, column temperature_c: empty"), "{e}");
+    // A row with more cells than the rest is refused by its line (a short
+    // file's odd row was taken for the data and the rows above for
+    // settings).
+    let wide = dir.path().join("wide.csv");
+    std::fs::write(&wide, "time_s,humidity_percent\n0,50\n86400,60,7\n").unwrap();
+    let e = refuses(
+        &[&args[..], &[wide.to_str().unwrap()]].concat(),
+        "--drive-file",
+    );
+    assert!(
+        e.contains("line 3 holds 3 cells where the rows before it hold 2"),
+        "{e}"
+    );
 }
 
 /// A Shortt-like tank whose nitrogen leaks from 27 to 60 hPa: the gas damps

@@ -305,3 +305,50 @@ fn times_out_of_order_are_quoted_as_written() {
         "{message}"
     );
 }
+
+/// Nothing the reader leaves out goes unsaid: rows skipped for a blank
+/// cell are a warning naming how many and where (the fit commands also
+/// count them in their summary), and a second column of a kind, not read,
+/// is named; both survive --quiet. A file without them warns of nothing.
+#[test]
+fn what_the_reader_leaves_out_is_a_warning() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("time_s,frequency,frequency\n");
+    for i in 0..64 {
+        if i == 5 {
+            text.push_str("5,\n");
+        } else {
+            text.push_str(&format!("{i},{},{}\n", 1e-9 * ((i * 7) % 5) as f64, i));
+        }
+    }
+    let path = write(dir.path(), "gappy.csv", &text);
+    let out = assert_cmd::Command::cargo_bin("pendulum")
+        .unwrap()
+        .args(["--quiet", "stability", &path])
+        .assert()
+        .success()
+        .get_output()
+        .clone();
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        stderr.contains("1 row with a blank cell in a column used skipped (line 7)"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("column 2 ('frequency') is read as the rate; column 3 ('frequency')"),
+        "{stderr}"
+    );
+    let mut plain = String::from("time_s,frequency\n");
+    for i in 0..64 {
+        plain.push_str(&format!("{i},{}\n", 1e-9 * ((i * 7) % 5) as f64));
+    }
+    let clean = write(dir.path(), "clean.csv", &plain);
+    let out = assert_cmd::Command::cargo_bin("pendulum")
+        .unwrap()
+        .args(["stability", &clean])
+        .assert()
+        .success()
+        .get_output()
+        .clone();
+    assert!(!String::from_utf8(out.stderr).unwrap().contains("warning"));
+}

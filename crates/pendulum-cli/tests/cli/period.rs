@@ -254,3 +254,77 @@ fn bad_input_is_one_line_with_status_two() {
         "--height",
     );
 }
+
+/// A design on a stiff suspension spring (`examples/invar-spring.toml`
+/// with a spring 3 mm thick: an elastic share of 0.86): `period --design`
+/// takes the spring's circular error, which at 2° is `1 - ε` of the rigid
+/// pendulum's of the same equivalent length to the order `A²` (1e-3 here),
+/// its JSON has the design's share and no series; `simulate --design` and
+/// `amplitude --design`, which swing the rigid pendulum, warn with both
+/// figures.
+#[test]
+fn a_design_on_a_spring() {
+    let dir = tempfile::tempdir().unwrap();
+    let example = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/invar-spring.toml"),
+    )
+    .unwrap();
+    assert!(example.contains("thickness = \"0.1 mm\""), "{example}");
+    let stiff = dir.path().join("stiff.toml");
+    std::fs::write(
+        &stiff,
+        example.replace("thickness = \"0.1 mm\"", "thickness = \"3 mm\""),
+    )
+    .unwrap();
+    let design = stiff.to_str().unwrap();
+    let sheet = json(&["design", design]);
+    let share = sheet["spring"]["elastic_share"].as_f64().unwrap();
+    let length = f(&sheet, "equivalent_length_m").to_string();
+    assert!((0.5..0.95).contains(&share), "{share}");
+    let on_spring = json(&["period", "--design", design, "--amplitude", "2deg"]);
+    let rigid = json(&["period", "--length", &length, "--amplitude", "2deg"]);
+    let (ours, theirs) = (
+        f(&on_spring, "circular_error_s_per_day"),
+        f(&rigid, "circular_error_s_per_day"),
+    );
+    assert!(
+        (ours / ((1.0 - share) * theirs) - 1.0).abs() < 1e-3,
+        "{ours} {theirs}"
+    );
+    assert_eq!(f(&on_spring, "elastic_share"), share);
+    assert!(on_spring.get("series").is_none(), "{on_spring}");
+    assert!(rigid.get("elastic_share").is_none());
+    let swing = |design: &str| {
+        json(&[
+            "simulate",
+            "--design",
+            design,
+            "--amplitude",
+            "10deg",
+            "--q",
+            "1e9",
+            "--duration",
+            "6s",
+        ])
+    };
+    let warned = swing(design)["warnings"].to_string();
+    assert!(warned.contains("suspension spring"), "{warned}");
+    let implied = json(&[
+        "amplitude",
+        "--design",
+        design,
+        "--period",
+        &(f(&on_spring, "period_s")).to_string(),
+    ]);
+    assert!(
+        implied["warnings"]
+            .to_string()
+            .contains("suspension spring"),
+        "{implied}"
+    );
+    // A rigid design is not warned.
+    let plain = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/seconds-steel-brass.toml");
+    let run = swing(plain.to_str().unwrap());
+    assert_eq!(run["warnings"].as_array().map(Vec::len), Some(0), "{run}");
+}

@@ -150,9 +150,10 @@ pub struct PartState {
     pub moisture: f64,
     /// Its moisture content at the reference, %.
     pub reference_moisture: f64,
-    /// The temperature's gradient along it, K/m, warmer upwards (of the
-    /// rod: what it carries at a point along it moves by its expansion
-    /// down to that point; a part's own length needs only its mean).
+    /// The temperature's gradient along it, K/m, warmer upwards: its
+    /// centre of mass moves with the uneven growth along it, and for the
+    /// rod what it carries at a point along it moves by its expansion down
+    /// to that point (a part's own length needs only its mean).
     pub gradient: f64,
 }
 
@@ -805,17 +806,79 @@ impl CompoundPendulum {
                 self.parts[r].shape.height(),
             )
         });
-        let centres = resolve(&parts, Some((rod, &factors, bend))).map_err(|e| DesignError {
-            message: format!(
-                "{} when {} by {:.3} °C (a design must hold from -{TEMPERATURE_SPAN_K} to \
+        let mut centres =
+            resolve(&parts, Some((rod, &factors, bend))).map_err(|e| DesignError {
+                message: format!(
+                    "{} when {} by {:.3} °C (a design must hold from -{TEMPERATURE_SPAN_K} to \
                  +{TEMPERATURE_SPAN_K} °C about its reference)",
-                e.message,
-                if delta > 0.0 { "warmed" } else { "cooled" },
-                delta.abs()
-            ),
-            ..e
-        })?;
+                    e.message,
+                    if delta > 0.0 { "warmed" } else { "cooled" },
+                    delta.abs()
+                ),
+                ..e
+            })?;
+        // In a gradient a part grows more at its warmer end: the
+        // displacement `α ∫ T dz` from the point it is held at is quadratic
+        // along it, so besides its growth at its mean temperature its
+        // centre of mass moves by `α G (o² - v)/2` (down), `o` the offset
+        // of the held point from its centre and `v` its mass's variance of
+        // height, and its ends by `α G (o² - h²/4)/2`, which moves what
+        // rests on them or is held by them (nothing for a part held at an
+        // end; the rod's own points are its bend above). Its inertia about
+        // its centre changes only at second order.
+        let shifts: Vec<(f64, f64)> = (0..self.parts.len())
+            .map(|i| {
+                let g = state(i).gradient;
+                if g == 0.0 {
+                    return (0.0, 0.0);
+                }
+                let (offset, variance, alpha) = self.gradient_lever(i, rod);
+                let half = 0.5 * self.parts[i].shape.height();
+                (
+                    0.5 * alpha * g * (offset * offset - variance),
+                    0.5 * alpha * g * (offset * offset - half * half),
+                )
+            })
+            .collect();
+        if shifts.iter().any(|&(c, e)| c != 0.0 || e != 0.0) {
+            for (i, c) in centres.iter_mut().enumerate() {
+                *c += shifts[i].0;
+                // Down the chain of supports (resolved: no circles).
+                let mut held_by = self.parts[i].placement.support();
+                for _ in 0..self.parts.len() {
+                    let Some(j) = held_by else { break };
+                    *c += shifts[j].1;
+                    held_by = self.parts[j].placement.support();
+                }
+            }
+        }
         Ok(Self { parts, centres })
+    }
+
+    /// For part `i` in a gradient (see [`CompoundPendulum::at_part_states`]):
+    /// the offset of the point it is held at from its centre, m (its top
+    /// for the rod and a suspension spring, which hang from above; its
+    /// bottom for a part resting on another; the point given for a part
+    /// held; its centre for a part placed by its centre, which the rod
+    /// carries there), its mass's variance of height about its centre, m²
+    /// ([`Shape::vertical_variance`]), and its growth in height per K (a
+    /// liquid's volume's less its jar's width's).
+    fn gradient_lever(&self, i: usize, rod: Option<usize>) -> (f64, f64, f64) {
+        let p = &self.parts[i];
+        let half = 0.5 * p.shape.height();
+        let offset = match p.placement {
+            _ if p.shape.is_spring() || rod == Some(i) => half,
+            Placement::Centre(_) => 0.0,
+            Placement::RestsOn(_) => half,
+            Placement::Held { height, .. } => half - height,
+        };
+        let alpha = match (p.material.liquid, &p.placement) {
+            (true, Placement::RestsOn(jar)) => {
+                p.material.expansion - 2.0 * self.parts[*jar].material.expansion
+            }
+            _ => p.material.expansion,
+        };
+        (offset, p.shape.vertical_variance(), alpha)
     }
 
     /// The index of the rod: the first upright cylinder hanging from the
@@ -865,10 +928,12 @@ impl CompoundPendulum {
     /// The rate change per K/m of vertical temperature gradient (warmer
     /// upwards) at a constant temperature at the thermometer
     /// ([`CompoundPendulum::heights_above_thermometer`]), s/day: each part
-    /// at the temperature of its centre (exact for a part's length in a
-    /// linear gradient) and what the rod carries moved by the rod's
-    /// expansion down to it, by a central difference of ±0.5 K/m on the exact
-    /// model (error of order α², 1e-10 relative).
+    /// grows by the temperature along it (its length as at the temperature
+    /// of its centre, its centre of mass moved towards its colder end when
+    /// it hangs, its warmer end when it stands; see
+    /// [`CompoundPendulum::at_part_states`]) and what the rod carries is
+    /// moved by the rod's expansion down to it, by a central difference of
+    /// ±0.5 K/m on the exact model (error of order α², 1e-10 relative).
     pub fn gradient_coefficient(&self) -> f64 {
         let heights = self.heights_above_thermometer();
         let l = |g: f64| {

@@ -146,6 +146,22 @@ impl Shape {
         }
     }
 
+    /// The variance of its mass's height about its centre, m²: the part
+    /// of [`Shape::inertia_per_mass`] that comes from its vertical extent
+    /// (an upright cylinder or a spring `L²/12`; a disc in the plane of
+    /// swing `R²/4`, a ring `(R² + r²)/4`, the paraboloidal lens `R²/6`,
+    /// half their inertia about their axis; a sphere `R²/5`; a point 0).
+    pub fn vertical_variance(&self) -> f64 {
+        match *self {
+            Shape::Cylinder { length, .. } | Shape::Spring { length, .. } => length * length / 12.0,
+            Shape::Disc { diameter, .. } => diameter * diameter / 16.0,
+            Shape::Lens { diameter, .. } => diameter * diameter / 24.0,
+            Shape::Sphere { diameter } => 0.05 * diameter * diameter,
+            Shape::Ring { outer, inner, .. } => (outer * outer + inner * inner) / 16.0,
+            Shape::Point => 0.0,
+        }
+    }
+
     /// The same shape with every dimension multiplied by `factor` (thermal
     /// expansion).
     pub fn scaled(&self, factor: f64) -> Self {

@@ -48,6 +48,11 @@ pub struct PeriodInput {
     pub amplitudes: Amplitudes,
     /// Terms of the series (default [`DEFAULT_SERIES_TERMS`]).
     pub series_terms: Option<i64>,
+    /// The elastic share of the restoring torque of a pendulum hanging from
+    /// a suspension spring (0 to 1; none or 0: a rigid pivot): its period
+    /// at each amplitude is [`crate::suspension::period_ratio`]'s, and the
+    /// rows have no power series (the seed's is a rigid pendulum's).
+    pub elastic_share: Option<f64>,
 }
 
 /// The series' estimate of one row.
@@ -88,8 +93,12 @@ pub struct PeriodRow {
     pub circular_error_s_per_day: f64,
     /// Its change per degree of amplitude.
     pub circular_error_s_per_day_per_deg: f64,
-    /// The power series.
-    pub series: SeriesRow,
+    /// The power series (none on a suspension spring).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub series: Option<SeriesRow>,
+    /// The elastic share of a suspension spring (none: a rigid pivot).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub elastic_share: Option<f64>,
 }
 
 impl From<&PeriodAnalysis> for PeriodRow {
@@ -106,12 +115,13 @@ impl From<&PeriodAnalysis> for PeriodRow {
             circular_error: a.circular_error,
             circular_error_s_per_day: a.circular_error_s_per_day(),
             circular_error_s_per_day_per_deg: a.circular_error_s_per_day_per_deg(),
-            series: SeriesRow {
+            series: Some(SeriesRow {
                 terms: a.series.terms,
                 period_s: a.series_period_s(),
                 relative_error: a.series.relative_error,
                 truncation_bound: a.series.truncation_bound,
-            },
+            }),
+            elastic_share: None,
         }
     }
 }
@@ -281,17 +291,67 @@ pub fn table(input: &PeriodInput) -> Result<Vec<PeriodRow>, Refusal> {
     }
     // Beyond u32 the series refuses it as above its maximum.
     let terms = u32::try_from(terms).unwrap_or(u32::MAX);
+    let share = match input.elastic_share {
+        None => 0.0,
+        Some(e) => {
+            let e = require_finite("elastic_share", e)?;
+            if !(0.0..1.0).contains(&e) {
+                return Err(Refusal::field(
+                    "elastic_share",
+                    format!(
+                        "must lie from 0 to below 1 (the spring's share of the restoring \
+                         torque), got {}",
+                        crate::error::format_significant(e, 6)
+                    ),
+                ));
+            }
+            e
+        }
+    };
     grid(input.amplitudes)?
         .into_iter()
         .map(|(a, degrees)| {
-            PeriodAnalysis::new(pendulum, a, terms)
+            let row = PeriodAnalysis::new(pendulum, a, terms)
                 .map(|p| PeriodRow {
                     amplitude_deg: degrees,
                     ..PeriodRow::from(&p)
                 })
-                .map_err(|e| Refusal::input("series_terms", &e))
+                .map_err(|e| Refusal::input("series_terms", &e))?;
+            Ok(if share > 0.0 {
+                on_spring(row, share)
+            } else {
+                row
+            })
         })
         .collect()
+}
+
+/// A rigid pendulum's row `row` for the same pendulum on a suspension
+/// spring of elastic share `share`: the period ratio is
+/// [`crate::suspension::period_ratio`]'s, the circular error `1 - 1/ratio`
+/// and its slope per degree a central difference of ±1e-4 of the amplitude
+/// (its truncation `1e-8` relative, rounding `1e-12`: the slope to 8
+/// digits); no series.
+fn on_spring(row: PeriodRow, share: f64) -> PeriodRow {
+    use crate::suspension::period_ratio;
+    let a = row.amplitude_rad;
+    let ratio = period_ratio(a, share);
+    let error = |r: f64| 1.0 - 1.0 / r;
+    let h = 1e-4 * a;
+    let slope = (error(period_ratio(a + h, share)) - error(period_ratio(a - h, share))) / (2.0 * h);
+    let day = super::SECONDS_PER_DAY;
+    let period = row.small_angle_period_s * ratio;
+    PeriodRow {
+        period_s: period,
+        period_ratio: ratio,
+        beats_per_hour: 7200.0 / period,
+        circular_error: error(ratio),
+        circular_error_s_per_day: day * error(ratio),
+        circular_error_s_per_day_per_deg: day * slope * std::f64::consts::PI / 180.0,
+        series: None,
+        elastic_share: Some(share),
+        ..row
+    }
 }
 
 #[cfg(test)]

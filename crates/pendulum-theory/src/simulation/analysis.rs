@@ -66,6 +66,12 @@ pub struct SimulationInput {
     /// Runs estimated beyond [`crate::analysis::FORCE_SECONDS`] (or longer
     /// than [`MAX_DURATION_S`]) anyway.
     pub force: bool,
+    /// The elastic share of a suspension spring when the pendulum is a
+    /// design hanging from one (none: a rigid pivot). The run swings the
+    /// rigid pendulum of the same small-swing period and warns when its
+    /// circular error differs from the spring's
+    /// ([`crate::suspension::rigid_swing_warning`]).
+    pub elastic_share: Option<f64>,
 }
 
 /// What a person must know about a run's numerics.
@@ -92,6 +98,15 @@ pub enum SimulationWarning {
     StepTooSmall {
         /// When, s.
         time: f64,
+    },
+    /// A design on a suspension spring of elastic share `share` swung as
+    /// a rigid pendulum from `amplitude` rad, whose circular error the
+    /// spring would shrink (see [`crate::suspension::rigid_swing_warning`]).
+    RigidOnSpring {
+        /// The spring's elastic share.
+        share: f64,
+        /// The release amplitude, rad.
+        amplitude: f64,
     },
 }
 
@@ -130,6 +145,9 @@ impl fmt::Display for SimulationWarning {
                 f,
                 "the step size fell to nothing at {} s; the run was stopped there",
                 format_significant(time, 8)
+            ),
+            SimulationWarning::RigidOnSpring { share, amplitude } => f.write_str(
+                &crate::suspension::rigid_swing_warning(share, amplitude).unwrap_or_default(),
             ),
         }
     }
@@ -206,6 +224,8 @@ pub struct Prepared {
     pub work: WorkEstimate,
     /// The input the damping was given as.
     pub damping_field: &'static str,
+    /// A suspension spring's elastic share (0: a rigid pivot).
+    pub elastic_share: f64,
 }
 
 /// The viscous damping given as the input `field` (`zeta`, `q` or
@@ -351,12 +371,26 @@ pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
         work.seconds,
         input.force,
     )?;
+    let elastic_share = match input.elastic_share {
+        None => 0.0,
+        Some(e) if e.is_finite() && (0.0..1.0).contains(&e) => e,
+        Some(e) => {
+            return Err(Refusal::field(
+                "elastic_share",
+                format!(
+                    "must lie from 0 to below 1, got {}",
+                    crate::error::format_significant(e, 6)
+                ),
+            ))
+        }
+    };
     Ok(Prepared {
         model,
         amplitude,
         options,
         work,
         damping_field,
+        elastic_share,
     })
 }
 
@@ -425,6 +459,13 @@ impl Prepared {
                 time: outcome.final_time,
             }),
             _ => {}
+        }
+        let release = self.amplitude.radians();
+        if crate::suspension::rigid_swing_warning(self.elastic_share, release).is_some() {
+            warnings.push(SimulationWarning::RigidOnSpring {
+                share: self.elastic_share,
+                amplitude: release,
+            });
         }
         let p = &self.model.pendulum;
         Ok(Simulation {

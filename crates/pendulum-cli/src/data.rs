@@ -705,6 +705,9 @@ fn is_numeric(cells: &[&str], decimal_comma: bool) -> bool {
     for c in cells {
         match cell_value(c, decimal_comma) {
             None if is_label(c) => labels += 1,
+            // A number too large for a double (`1e400`) is still a number:
+            // its row is data, refused by its line and column.
+            None if overflows(c, decimal_comma) => numbers += 1,
             None => return false,
             Some(Some(_)) => numbers += 1,
             Some(None) => {}
@@ -713,6 +716,20 @@ fn is_numeric(cells: &[&str], decimal_comma: bool) -> bool {
     // A row may carry short labels (a photogate's `U`/`D`) beside at
     // least as many numbers; a header of names has no number.
     numbers > 0 && labels <= numbers
+}
+
+/// Whether `cell` is written as a number (digits and an exponent, not the
+/// words `inf` or `nan`) that is beyond double precision.
+fn overflows(cell: &str, decimal_comma: bool) -> bool {
+    let c = cell.trim().trim_matches('"');
+    let c = if decimal_comma {
+        c.replace(',', ".")
+    } else {
+        c.to_string()
+    };
+    c.chars().any(|ch| ch.is_ascii_digit())
+        && !c.to_ascii_lowercase().contains(['i', 'n'])
+        && c.parse::<f64>().is_ok_and(|v| v.is_infinite())
 }
 
 /// A short label in a row of numbers: one to four letters or digits,
@@ -931,6 +948,9 @@ fn unit_of(unit: &str) -> Option<(Kind, f64)> {
         "mrad" | "milliradian" | "milliradians" => (Kind::Angle, 1e-3),
         "m" | "cm" | "mm" | "px" | "pixels" | "pixel" | "in" => (Kind::Length, 1.0),
         "c" | "°c" | "degc" | "celsius" => (Kind::Temperature, 1.0),
+        // Kelvin and Fahrenheit (their offsets are applied where the
+        // column is found).
+        "k" | "kelvin" | "f" | "°f" | "degf" | "fahrenheit" => (Kind::Temperature, 1.0),
         "hpa" | "mbar" => (Kind::Pressure, 100.0),
         "pa" => (Kind::Pressure, 1.0),
         "kpa" => (Kind::Pressure, 1000.0),

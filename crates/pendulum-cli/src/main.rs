@@ -91,8 +91,20 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
 }
 
 fn fail(error: &CliError) -> ExitCode {
+    // What the reader left out before the refusal goes on its one line:
+    // it may be why (every row skipped for a blank cell).
+    let notes = output::take_warnings();
+    let notes: Vec<&str> = notes
+        .lines()
+        .map(|l| l.trim_start_matches("warning: "))
+        .collect();
+    let also = if notes.is_empty() {
+        String::new()
+    } else {
+        format!(" (and: {})", notes.join("; "))
+    };
     // (Written, not `eprintln!`, which panics on a closed standard error.)
-    let _ = writeln!(std::io::stderr().lock(), "error: {error}");
+    let _ = writeln!(std::io::stderr().lock(), "error: {error}{also}");
     ExitCode::from(error.status())
 }
 

@@ -238,6 +238,8 @@ pub enum UnitError {
         /// What was wanted.
         wanted: Dimension,
     },
+    /// A ratio in a unit other than % where only % is meaningful.
+    NotPercent(String),
     /// A unit of another kind of quantity.
     WrongDimension {
         /// The whole text.
@@ -252,7 +254,11 @@ pub enum UnitError {
 impl fmt::Display for UnitError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            UnitError::Empty => write!(f, "is empty; give a number with a unit, like 0.994m"),
+            UnitError::Empty => write!(f, "is empty; give a number (with its unit where one is wanted)"),
+            UnitError::NotPercent(text) => write!(
+                f,
+                "'{text}' is not a percentage; give it in % (60% or a bare 60)"
+            ),
             UnitError::NotANumber(text) => write!(
                 f,
                 "'{text}' is not a number; give a finite number (with a unit where one is wanted, like 0.994m or 3deg)"
@@ -567,9 +573,21 @@ quantity_type!(
     |t| parse_in(t, Dimension::Ratio, "ppm")
 );
 quantity_type!(
-    /// A percentage (`60%`; a bare number is percent).
+    /// A percentage (`60%`; a bare number is percent): only in % (a
+    /// humidity in s/day or ppm is a mistake, not a conversion).
     Percent,
-    |t| parse_in(t, Dimension::Ratio, "%")
+    |t| {
+        let value = parse_in(t, Dimension::Ratio, "%").map_err(|e| match e {
+            UnitError::WrongDimension { .. } | UnitError::UnknownUnit { .. } => {
+                UnitError::NotPercent(t.trim().to_string())
+            }
+            other => other,
+        })?;
+        match split_quantity(t, Dimension::Ratio)?.2 {
+            Some(u) if !u.names.contains(&"%") => Err(UnitError::NotPercent(t.trim().to_string())),
+            _ => Ok(value),
+        }
+    }
 );
 quantity_type!(
     /// A fraction (`0.05`, `5%`).

@@ -1011,6 +1011,7 @@ fn amplitude(
         g,
         period,
         period_uncertainty,
+        None,
     ))
 }
 

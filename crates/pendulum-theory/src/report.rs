@@ -164,7 +164,11 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
         }
         (Some(design), None) => {
             let sheet = datasheet(design, g, &Air::default())?;
-            let effective = design.pendulum.properties().effective_mass();
+            let effective = design
+                .pendulum
+                .in_gravity(g.unwrap_or(crate::pendulum::STANDARD_GRAVITY))
+                .properties()
+                .effective_mass();
             (sheet.equivalent_length_m, Some(sheet), Some(effective))
         }
         (None, length) => (length.unwrap_or(DEFAULT_LENGTH_M), None, None),
@@ -175,7 +179,11 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
     let share = input
         .design
         .as_ref()
-        .and_then(|d| d.pendulum.spring_effect())
+        .and_then(|d| {
+            d.pendulum
+                .in_gravity(g.unwrap_or(crate::pendulum::STANDARD_GRAVITY))
+                .spring_effect()
+        })
         .map_or(0.0, |e| e.elastic_share);
     let amplitude = input
         .amplitude
@@ -205,6 +213,12 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
         force: false,
     })
     .map_err(|r| rename(r, "length", length_field))?;
+    // On a suspension spring the exact period is the spring's (the damped
+    // analysis is a rigid pendulum's of the same small-swing period).
+    let mut damped = damped;
+    if share > 0.0 {
+        damped.exact_period_s = period.period_s;
+    }
     let zeta = damped.zeta;
     if !(zeta == 0.0 || ZETA_RANGE.contains(&zeta)) {
         let field = crate::damped::analysis::DAMPING_FIELDS

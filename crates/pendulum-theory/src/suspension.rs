@@ -115,6 +115,10 @@ pub fn period_ratio(amplitude: f64, elastic_share: f64) -> f64 {
 
 use crate::error::format_significant;
 
+/// Seconds in a day (the period module builds on this one, so the
+/// constant is not taken from it).
+const SECONDS_PER_DAY: f64 = 86_400.0;
+
 /// A flat suspension strip (or several side by side: give their summed
 /// width).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -301,7 +305,7 @@ pub fn effect(strip: &Strip, body: &Body, g: f64) -> Result<SpringEffect, Refusa
         effective_pivot: strip.length - x_per_theta,
         omega,
         rigid_omega,
-        rate: crate::period::SECONDS_PER_DAY * (omega / rigid_omega - 1.0),
+        rate: SECONDS_PER_DAY * (omega / rigid_omega - 1.0),
         elastic_share: share,
         second_mode_hz: high.map(|w2| w2.sqrt() / (2.0 * std::f64::consts::PI)),
     })
@@ -318,14 +322,14 @@ pub fn rigid_swing_warning(share: f64, amplitude: f64) -> Option<String> {
     if !(share > 0.0 && share < 1.0 && amplitude.is_finite() && amplitude > 0.0) {
         return None;
     }
-    let day = crate::period::SECONDS_PER_DAY;
+    let day = SECONDS_PER_DAY;
     let rigid = day * (1.0 - 1.0 / period_ratio(amplitude, 0.0));
     let spring = day * (1.0 - 1.0 / period_ratio(amplitude, share));
     ((rigid - spring).abs() >= 1e-3).then(|| {
         format!(
             "the design hangs from a suspension spring (elastic share {}): this takes it as a rigid \
              pendulum of its equivalent length, whose circular error at {}° is {} s/day \
-             where the spring's is {} s/day (`period --design` and `clock --design` take the \
+             where the spring's is {} s/day (`period`, `amplitude` and `clock` with `--design` take the \
              spring's)",
             format_significant(share, 3),
             format_significant(amplitude.to_degrees(), 4),

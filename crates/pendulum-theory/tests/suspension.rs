@@ -236,7 +236,8 @@ fn spring_part(thickness: f64, material: &str, centre: f64) -> pendulum_theory::
 }
 
 /// Through the design: a point mass at the bottom of a massless spring
-/// has the equivalent length `L - λ tanh(L/λ)` of the closed form above.
+/// has the equivalent length `L - λ tanh(L/λ)` of the closed form above,
+/// `λ = sqrt(EI / M g)` in the gravity it hangs in.
 /// A spring not hanging from the pivot, or of a material without its
 /// modulus's temperature coefficient, is refused by field.
 #[test]
@@ -256,6 +257,23 @@ fn a_design_hanging_from_a_spring() {
         0.015 - lambda * (0.015 / lambda).tanh(),
         1e-12,
     );
+    // In the Moon's gravity the tension is a sixth: the bending length
+    // grows by sqrt(6) and the spring's share with it (a new user's find:
+    // the design's spring was always taken in standard gravity).
+    let moon: f64 = 1.62;
+    let lambda = (2e11 * 0.012 * 1e-12 / 12.0 / (8.0 * moon)).sqrt();
+    let there = design.in_gravity(moon);
+    close(
+        there.properties().equivalent_length,
+        0.015 - lambda * (0.015 / lambda).tanh(),
+        1e-12,
+    );
+    assert!(
+        there.spring_effect().unwrap().elastic_share
+            > 2.0 * design.spring_effect().unwrap().elastic_share
+    );
+    // Derived designs keep it.
+    assert_eq!(there.at_temperature(1.0).unwrap().gravity(), moon);
     let bob = || {
         part(
             "bob",
@@ -564,4 +582,42 @@ fn a_rigid_swing_of_a_spring_design_is_warned() {
     // error, 3.6e-4 s/day of it the spring's: no warning; at 3°: 0.013.
     assert!(rigid_swing_warning(8.8e-4, 0.5f64.to_radians()).is_none());
     assert!(rigid_swing_warning(8.8e-4, 3f64.to_radians()).is_some());
+}
+
+/// The amplitude a period implies on a spring (`amplitude --design`):
+/// [`pendulum_theory::period::inverse::amplitude_on_spring`] gives back the
+/// amplitude whose period [`pendulum_theory::suspension::period_ratio`]
+/// gives, within 1e-9 (its conditioning at 0.5° is 1/(2 × the circular
+/// error's part of the period), 8,000 for share 0.3: the bisection's 1e-15
+/// of the amplitude, and 1e-16 of the period times that); its conditioning
+/// is `d ln A / d ln T` of the same function (a difference of ±1e-5 of the
+/// amplitude, within 1e-3); a period below T0 or beyond the spring's at
+/// 180° is refused by name, and T0 itself is a vanishing swing.
+#[test]
+fn the_amplitude_a_period_implies_on_a_spring() {
+    use pendulum_theory::period::inverse::amplitude_on_spring;
+    use pendulum_theory::suspension::period_ratio;
+    let t0 = 2.0;
+    for e in [0.001, 0.3, 0.9] {
+        for deg in [0.5, 5.0, 45.0, 120.0, 170.0] {
+            let a = f64::to_radians(deg);
+            let period = t0 * period_ratio(a, e);
+            let (got, kappa) = amplitude_on_spring(t0, period, e).unwrap();
+            let tol = 1e-9f64.max(2e-16 * kappa);
+            assert!((got / a - 1.0).abs() < tol, "{e} {deg}: {got} against {a}");
+            let h = 1e-5 * a;
+            let slope = (period_ratio(a + h, e).ln() - period_ratio(a - h, e).ln())
+                / ((a + h).ln() - (a - h).ln());
+            assert!(
+                (kappa * slope - 1.0).abs() < 1e-3,
+                "{e} {deg}: {kappa} {slope}"
+            );
+        }
+        let most = t0 * period_ratio(std::f64::consts::PI.next_down(), e);
+        let refused = amplitude_on_spring(t0, 1.001 * most, e).unwrap_err();
+        assert!(refused.to_string().contains("180°"), "{refused}");
+        let refused = amplitude_on_spring(t0, 0.999 * t0, e).unwrap_err();
+        assert!(refused.to_string().contains("small-angle"), "{refused}");
+        assert_eq!(amplitude_on_spring(t0, t0, e).unwrap().0, 0.0);
+    }
 }

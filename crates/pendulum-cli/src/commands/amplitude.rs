@@ -27,20 +27,14 @@ pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
     )?;
     let period = args.period.0;
     let uncertainty = args.period_uncertainty.map(|t| t.0);
-    let mut r = amplitude(
+    let r = amplitude(
         pendulum.length_m(),
         Some(pendulum.g_m_s2()),
         period,
         uncertainty,
+        (elastic_share > 0.0).then_some(elastic_share),
     )
     .map_err(|e| common::refused(&e))?;
-    // A design on a suspension spring: the amplitude is the rigid
-    // pendulum's of the same small-swing period.
-    r.warnings
-        .extend(pendulum_theory::suspension::rigid_swing_warning(
-            elastic_share,
-            r.amplitude_rad,
-        ));
     let result = AmplitudeJson {
         result: &r,
         g_source: gravity.g_source,

@@ -87,7 +87,7 @@ pub fn reduced(
 ) -> Result<Reduced, CliError> {
     match (length, design) {
         (_, Some(path)) => {
-            let design = crate::design::read(path)?;
+            let design = crate::design::read(path)?.in_gravity(gravity.g_m_s2);
             let length = design.properties().equivalent_length;
             let pendulum = Pendulum::new(length, gravity.g_m_s2).map_err(|e| match e.quantity {
                 Quantity::Gravity => CliError::input("--g", &e),

@@ -38,6 +38,7 @@ struct PeriodCsv {
     series_terms: Option<u32>,
     series_period_s: Option<f64>,
     series_relative_error: Option<f64>,
+    elastic_share: f64,
 }
 
 pub fn run(args: &PeriodArgs) -> Result<String, CliError> {
@@ -135,6 +136,8 @@ fn csv_row(a: &PeriodRow) -> PeriodCsv {
         series_terms: a.series.map(|s| s.terms),
         series_period_s: a.series.map(|s| s.period_s),
         series_relative_error: a.series.map(|s| s.relative_error),
+        // A rigid pivot's share is 0 (the JSON leaves the key out).
+        elastic_share: a.elastic_share.unwrap_or(0.0),
     }
 }
 

@@ -261,7 +261,7 @@ fn bad_input_is_one_line_with_status_two() {
 /// pendulum's of the same equivalent length to the order `A²` (1e-3 here),
 /// its JSON has the design's share and no series; `simulate --design` and
 /// `amplitude --design`, which swing the rigid pendulum, warn with both
-/// figures.
+/// figures; `amplitude --design` inverts the spring's period.
 #[test]
 fn a_design_on_a_spring() {
     let dir = tempfile::tempdir().unwrap();
@@ -309,19 +309,18 @@ fn a_design_on_a_spring() {
     };
     let warned = swing(design)["warnings"].to_string();
     assert!(warned.contains("suspension spring"), "{warned}");
+    // The amplitude a period implies on the spring is the spring's: the
+    // period at 2° gives back 2° (within the period's 1e-12 printed digits
+    // times its conditioning, 1e4 at 2°).
     let implied = json(&[
         "amplitude",
         "--design",
         design,
         "--period",
-        &(f(&on_spring, "period_s")).to_string(),
+        &format!("{}s", f(&on_spring, "period_s")),
     ]);
-    assert!(
-        implied["warnings"]
-            .to_string()
-            .contains("suspension spring"),
-        "{implied}"
-    );
+    let back = f(&implied, "amplitude_deg");
+    assert!((back / 2.0 - 1.0).abs() < 1e-6, "{implied}");
     // A rigid design is not warned.
     let plain = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../examples/seconds-steel-brass.toml");

@@ -399,7 +399,10 @@ pub fn build(input: &ClockInput) -> Result<Built, Refusal> {
     let g = require_finite("g", input.g.unwrap_or(STANDARD_GRAVITY))?;
     let (length, field, design) = match &input.pendulum {
         ClockPendulum::Length(l) => (require_finite("length", *l)?, "length", None),
-        ClockPendulum::Design(d) => (d.properties().equivalent_length, "design", Some(d.clone())),
+        ClockPendulum::Design(d) => {
+            let d = d.in_gravity(g);
+            (d.properties().equivalent_length, "design", Some(d))
+        }
     };
     let pendulum = Pendulum::new(length, g).map_err(|e| match e.quantity {
         crate::error::Quantity::Gravity => Refusal::input("g", &e),

@@ -481,13 +481,12 @@ fn sized(
             let rod_diameter = rod_diameter(design)?;
             let (compensated, length) = design
                 .with_tube_in_tube(bob, inner.clone(), outer.clone(), rod_diameter, TUBE_WALL_M)
-                .ok_or_else(|| {
-                    Refusal::field(
-                        "compensator",
-                        format!(
-                            "no {} tube inside a {} tube up to 1.5 m cancels this design's coefficient (the '{}' must rest on a nut placed on the rod, and the inner tube expand more than the outer and the rod)",
-                            inner.name, outer.name, part
-                        ),
+                .map_err(|why| {
+                    no_tube(
+                        why,
+                        &format!("{} tube inside a {} tube", inner.name, outer.name),
+                        part,
+                        "the inner tube must expand more than the outer and the rod together",
                     )
                 })?;
             let tube = |name: &str| {
@@ -583,13 +582,13 @@ fn sized(
             }
             let (compensated, length) = design
                 .with_compensating_tube(bob, material.clone(), diameter, bore)
-                .ok_or_else(|| {
-                    Refusal::field(
-                        "compensator",
-                        format!(
-                            "no {} tube up to 1.5 m cancels this design's coefficient (the '{}' must rest on a nut placed on the rod, and the tube must expand more than the rod)",
-                            material.name, part
-                        ),
+                .map_err(|why| {
+                    no_tube(
+                        why,
+                        &format!("{} tube", material.name),
+                        part,
+                        "the tube must expand more than the rod, by enough to lift the bob over \
+                         its length: zinc (30e-6/K) or a tube inside a tube",
                     )
                 })?;
             result.compensator = Some(material.name);
@@ -600,4 +599,38 @@ fn sized(
         }
     };
     Ok(compensated)
+}
+
+/// The refusal of a tube compensator (`what`: "zinc tube") under the part
+/// `part`, by the reason it could not be sized; `need` says what a tube
+/// must do.
+fn no_tube(why: super::compensator::NoCompensation, what: &str, part: &str, need: &str) -> Refusal {
+    use super::compensator::NoCompensation as Why;
+    let message = match why {
+        Why::NotCarried => format!(
+            "the '{part}' does not rest on or hang from another part: a {what} goes between \
+             it and the nut it rests on"
+        ),
+        Why::SupportNotOnRod => format!(
+            "what the '{part}' rests on is not placed on the rod by its centre (a nut): a \
+             {what} stands on a nut on the rod"
+        ),
+        Why::NoRod => format!("the design has no rod hanging from the pivot for a {what}"),
+        Why::SameSign {
+            smallest,
+            largest,
+            size,
+        } => format!(
+            "no {what} from 0.1 mm to {} m long cancels this design's coefficient: it goes \
+             from {} to {} s/day per °C over those lengths ({need})",
+            format_significant(size, 3),
+            format_significant(smallest, 3),
+            format_significant(largest, 3)
+        ),
+        Why::Unbuildable => format!(
+            "a {what} long enough would reach the pivot (or the design could not be made \
+             with it)"
+        ),
+    };
+    Refusal::field("compensator", message)
 }

@@ -29,21 +29,26 @@ impl CompoundPendulum {
     /// from the nut as much as the rod and the bob's own expansion carry
     /// the centre of oscillation down. Found by bisection between 0.1 mm
     /// and 1.5 m on the exact model's coefficient. Returns the design and
-    /// the tube's length, m; `None` when no length in that range does it
-    /// (a compensator that expands less than the rod).
+    /// the tube's length, m; why not when no length in that range does it
+    /// (a compensator that expands too little more than the rod).
     pub fn with_compensating_tube(
         &self,
         bob: usize,
         material: Material,
         diameter: f64,
         bore: f64,
-    ) -> Option<(Self, f64)> {
-        let held = self.parts.get(bob)?.placement.clone();
-        let nut = held.support()?;
+    ) -> Result<(Self, f64), NoCompensation> {
+        let held = self
+            .parts
+            .get(bob)
+            .ok_or(NoCompensation::NotCarried)?
+            .placement
+            .clone();
+        let nut = held.support().ok_or(NoCompensation::NotCarried)?;
         let Placement::Centre(nut_centre) = self.parts[nut].placement else {
-            return None;
+            return Err(NoCompensation::SupportNotOnRod);
         };
-        let rod = self.rod()?;
+        let rod = self.rod().ok_or(NoCompensation::NoRod)?;
         let build = |length: f64| -> Option<Self> {
             let mut parts = self.parts.clone();
             if let Shape::Cylinder {
@@ -79,7 +84,7 @@ impl CompoundPendulum {
             Self::new(parts).ok()
         };
         let length = zero_coefficient(build, 1e-4, 1.5)?;
-        Some((build(length)?, length))
+        Ok((build(length).ok_or(NoCompensation::Unbuildable)?, length))
     }
 
     /// The same pendulum with the classical compensator of a tube inside a
@@ -98,7 +103,7 @@ impl CompoundPendulum {
     /// `wall`. The length is found by bisection between 0.1 mm and 1.5 m
     /// (or the longest tube that stays below the pivot) on the exact
     /// model's coefficient. Returns the design and the
-    /// length, m; `None` when no length in that range does it.
+    /// length, m; why not when no length in that range does it.
     pub fn with_tube_in_tube(
         &self,
         bob: usize,
@@ -106,9 +111,14 @@ impl CompoundPendulum {
         outer: Material,
         rod_diameter: f64,
         wall: f64,
-    ) -> Option<(Self, f64)> {
-        let held = self.parts.get(bob)?.placement.clone();
-        let nut = held.support()?;
+    ) -> Result<(Self, f64), NoCompensation> {
+        let held = self
+            .parts
+            .get(bob)
+            .ok_or(NoCompensation::NotCarried)?
+            .placement
+            .clone();
+        let nut = held.support().ok_or(NoCompensation::NotCarried)?;
         let clearance = super::compensate::TUBE_CLEARANCE_M;
         let inner_bore = rod_diameter + clearance;
         let inner_diameter = inner_bore + 2.0 * wall;
@@ -188,7 +198,7 @@ impl CompoundPendulum {
             high *= 0.98;
         }
         let length = zero_coefficient(build, 1e-4, high)?;
-        Some((build(length)?, length))
+        Ok((build(length).ok_or(NoCompensation::Unbuildable)?, length))
     }
 }
 
@@ -248,7 +258,7 @@ impl CompoundPendulum {
             parts[rod].material = gridiron(length, brass_length, diameter, steel, brass);
             Self::new(parts).ok()
         };
-        let b = zero_coefficient(build, 0.0, 3.0 * length)?;
+        let b = zero_coefficient(build, 0.0, 3.0 * length).ok()?;
         Some((build(b)?, b))
     }
 }
@@ -336,7 +346,7 @@ impl CompoundPendulum {
             parts.push(mercury_part);
             Self::new(parts).ok()
         };
-        let height = zero_coefficient(build, 1e-3, 0.5)?;
+        let height = zero_coefficient(build, 1e-3, 0.5).ok()?;
         Some((build(height)?, height))
     }
 }
@@ -380,19 +390,51 @@ impl CompoundPendulum {
     }
 }
 
+/// Why no compensator of a kind cancels a design's temperature coefficient.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum NoCompensation {
+    /// The part to carry does not rest on (or hang from) another part.
+    NotCarried,
+    /// What it rests on is not placed on the rod by its centre (a nut).
+    SupportNotOnRod,
+    /// The design has no rod hanging from the pivot.
+    NoRod,
+    /// The coefficient keeps its sign over the sizes tried: its values at
+    /// the smallest and the largest, s/day per °C, and the largest size, m.
+    SameSign {
+        /// At the smallest size.
+        smallest: f64,
+        /// At the largest size.
+        largest: f64,
+        /// The largest size, m.
+        size: f64,
+    },
+    /// A trial design could not be made (it would reach the pivot).
+    Unbuildable,
+}
+
 /// The size in `[low, high]` at which the design `build` makes has no
 /// first-order temperature coefficient, by bisection (80 halvings, to the
-/// last bit); `None` when the coefficient keeps its sign over the range.
+/// last bit); why not when the coefficient keeps its sign over the range.
 fn zero_coefficient(
     build: impl Fn(f64) -> Option<CompoundPendulum>,
     low: f64,
     high: f64,
-) -> Option<f64> {
-    let coefficient = |x: f64| build(x).map(|p| p.temperature_coefficient());
+) -> Result<f64, NoCompensation> {
+    let coefficient = |x: f64| {
+        build(x)
+            .map(|p| p.temperature_coefficient())
+            .ok_or(NoCompensation::Unbuildable)
+    };
     let (mut low, mut high) = (low, high);
     let f_low = coefficient(low)?;
-    if f_low.signum() == coefficient(high)?.signum() {
-        return None;
+    let f_high = coefficient(high)?;
+    if f_low.signum() == f_high.signum() {
+        return Err(NoCompensation::SameSign {
+            smallest: f_low,
+            largest: f_high,
+            size: high,
+        });
     }
     for _ in 0..80 {
         let middle = 0.5 * (low + high);
@@ -402,5 +444,5 @@ fn zero_coefficient(
             high = middle;
         }
     }
-    Some(0.5 * (low + high))
+    Ok(0.5 * (low + high))
 }

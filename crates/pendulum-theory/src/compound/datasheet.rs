@@ -155,7 +155,7 @@ pub struct Datasheet {
     pub gradient_coefficient_s_per_day_per_k_per_m: f64,
     /// The rate change per percentage point of relative humidity once the
     /// parts that take up water (wood) have settled, s/day (none when no
-    /// part takes up water).
+    /// part takes up water, or in a gas other than air, which is dry).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub humidity_coefficient_s_per_day_per_percent: Option<f64>,
     /// The moisture content wood settles at in the air as given, % (none
@@ -234,12 +234,13 @@ pub struct Datasheet {
     pub spring: Option<SpringSheet>,
     /// What to check before trusting the sheet.
     pub warnings: Vec<String>,
-    /// The air as taken: pressure, Pa.
-    #[serde(skip)]
+    /// The gas as taken: pressure, Pa.
     pub pressure_pa: f64,
     /// Relative humidity, 0 to 1.
     #[serde(skip)]
     pub humidity: f64,
+    /// Relative humidity, % (0 in a gas other than air).
+    pub humidity_percent: f64,
 }
 
 /// A spring that gives more than this share of the restoring torque is
@@ -297,8 +298,10 @@ fn within(
 fn shown_got(v: f64, unit: &str) -> String {
     if v.is_finite() {
         format!(", got {}{unit}", format_significant(v, 6))
+    } else if v.is_nan() {
+        ", got a value that is not a number".to_string()
     } else {
-        String::new()
+        ", got an infinite value".to_string()
     }
 }
 
@@ -334,6 +337,11 @@ fn cancelling_arc(net: &dyn Fn(f64) -> f64) -> Option<f64> {
     }
     None
 }
+
+/// The lengthening of the period by the damping, `1/(8Q²)` of a day, s,
+/// beyond which a datasheet warns that its rates leave it out (Q below
+/// 330).
+pub const LOW_Q_SHIFT_S_PER_DAY: f64 = 0.1;
 
 /// The datasheet of `design` under `g` (default standard gravity) in
 /// `air`.
@@ -374,14 +382,14 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
             return Err(Refusal::field(
                 "amplitude",
                 format!(
-                    "must lie between 0 and 60 degrees (a semi-arc){}",
+                    "must be more than 0 and at most 60 degrees (a semi-arc){}",
                     shown_got(a.to_degrees(), "°")
                 ),
             ));
         }
     }
     let g = crate::analysis::require_finite("g", g.unwrap_or(STANDARD_GRAVITY))?;
-    let pendulum = &design.pendulum;
+    let pendulum = &design.pendulum.in_gravity(g);
     let props = pendulum.properties();
     let period = Pendulum::new(props.equivalent_length, g)
         .map_err(|e| match e.quantity {
@@ -431,19 +439,18 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
     };
     // The rate (gas and circular error) at pressure `pp` of a clock whose
     // drive keeps semi-arc `a` at the sheet's pressure; None past 60°.
-    let drive = |a: f64| in_gas.loss_per_cycle(a, pivot);
     let at = |pp: f64, a: f64| {
         if pp == p {
             // Here the arc is the one given (not a root found again).
             return (in_gas.clone(), Some(a));
         }
         let there = pendulum.in_gas(&gas.at_pressure(pp), g);
-        let energy = drive(a);
-        if energy.is_nan() || energy <= 0.0 {
+        let loss = in_gas.loss_over_arc_squared(a, pivot);
+        if loss.is_nan() || loss <= 0.0 {
             // Nothing damps it: nothing changes its arc.
             return (there, Some(a));
         }
-        let arc = there.arc_for_drive(energy, pivot);
+        let arc = there.arc_for_loss_of(&in_gas, a, pivot);
         (there, (arc <= MAX_SEMI_ARC_RAD).then_some(arc))
     };
     let net_per_hpa = |a: f64| {
@@ -536,7 +543,10 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         temperature_coefficient_s_per_day_per_c: pendulum.temperature_coefficient(),
         temperature_rate_s_per_day: rate_of_length_ratio(warmer / props.equivalent_length),
         gradient_coefficient_s_per_day_per_k_per_m: pendulum.gradient_coefficient(),
-        humidity_coefficient_s_per_day_per_percent: pendulum.humidity_coefficient(h, t),
+        // Only air carries a humidity: a dry tank's gas has none to vary.
+        humidity_coefficient_s_per_day_per_percent: (kind == Gas::Air)
+            .then(|| pendulum.humidity_coefficient(h, t))
+            .flatten(),
         wood_moisture_percent: takes_water
             .then(|| crate::moisture::equilibrium_moisture_content(h, t)),
         temperature_c: t,
@@ -604,6 +614,26 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
                     )
                 })
             }))
+            .chain(
+                q.filter(|&q| DAY / (8.0 * q * q) >= LOW_Q_SHIFT_S_PER_DAY)
+                    .map(|q| {
+                        format!(
+                    "Q {} is far below a clock pendulum's: the damping itself lengthens the \
+                     period by 1/(8Q²), {} s/day, which the rates here leave out",
+                    crate::error::format_significant(q, 3),
+                    crate::error::format_significant(DAY / (8.0 * q * q), 3)
+                )
+                    }),
+            )
+            .chain(air.humidity.filter(|&h| h > 0.0 && h <= 0.01).map(|h| {
+                format!(
+                    "the humidity is {} %: it is read in per cent (air that dry is \
+                             rare indoors); if it is a fraction of 1, give it times 100 \
+                             ({} %)",
+                    crate::error::format_significant(100.0 * h, 3),
+                    crate::error::format_significant(1e4 * h, 3)
+                )
+            }))
             .chain(across_grain.map(|name| {
                 format!(
                     "'{name}' takes up water but is not a rod (a cylinder five times as long \
@@ -615,5 +645,6 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
             .collect(),
         pressure_pa: p,
         humidity: h,
+        humidity_percent: 100.0 * h,
     })
 }

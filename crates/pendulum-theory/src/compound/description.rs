@@ -365,18 +365,48 @@ pub fn design(value: &Value, quantity: QuantityParser) -> Result<Design, Refusal
                 )
             })?,
             Some(Value::Object(m)) => {
+                const MATERIAL_FIELDS: [&str; 7] = [
+                    "name",
+                    "density",
+                    "expansion",
+                    "liquid",
+                    "modulus",
+                    "modulus_coefficient",
+                    "moisture_expansion",
+                ];
+                if let Some(key) = m.keys().find(|k| !MATERIAL_FIELDS.contains(&k.as_str())) {
+                    return Err(bad(
+                        "material",
+                        format!(
+                            "unknown field '{key}' (a material has {})",
+                            MATERIAL_FIELDS.join(", ")
+                        ),
+                    ));
+                }
                 let number = |key: &str| -> Result<f64, Refusal> {
                     m.get(key)
                         .and_then(Value::as_f64)
                         .ok_or_else(|| bad("material", format!("needs a number '{key}'")))
                 };
+                let density = number("density")?;
+                if density.is_finite() && density > 0.0 && density < super::MIN_DENSITY {
+                    return Err(bad(
+                        "material",
+                        format!(
+                            "density must be at least {} kg/m³ (an aerogel, the lightest \
+                             solid, is about 1; water 1000), got {}",
+                            super::MIN_DENSITY,
+                            crate::error::format_significant(density, 6)
+                        ),
+                    ));
+                }
                 Material {
                     name: m
                         .get("name")
                         .and_then(|n| n.as_str())
                         .unwrap_or("user-defined")
                         .to_string(),
-                    density: number("density")?,
+                    density,
                     expansion: number("expansion")?,
                     liquid: match m.get("liquid") {
                         None => false,

@@ -311,26 +311,40 @@ impl InGas {
     /// and the pivot's (`pivot_damping`, N m s) `π ω a² c`, and the form
     /// drag's `(8/3) ω² a³ D` (see the module notes).
     pub fn loss_per_cycle(&self, a: f64, pivot_damping: f64) -> f64 {
-        PI * self.omega * a * a * (self.damping + pivot_damping)
-            + 8.0 / 3.0 * self.omega.powi(2) * a.powi(3) * self.form_drag
+        a * a * self.loss_over_arc_squared(a, pivot_damping)
     }
 
-    /// The Q at semi-arc `a`: `2π E / loss`, `E = ½ I ω² a²`.
+    /// [`InGas::loss_per_cycle`] over `a²`, J/rad²: `π ω c + (8/3) ω² a D`,
+    /// finite at any arc however small (the loss itself underflows below
+    /// 1e-150 rad).
+    pub fn loss_over_arc_squared(&self, a: f64, pivot_damping: f64) -> f64 {
+        PI * self.omega * (self.damping + pivot_damping)
+            + 8.0 / 3.0 * self.omega.powi(2) * a * self.form_drag
+    }
+
+    /// The Q at semi-arc `a`: `2π E / loss`, `E = ½ I ω² a²` (with the
+    /// arc divided out, so that it holds at any arc).
     pub fn q_at(&self, a: f64, pivot_damping: f64) -> f64 {
-        PI * self.inertia * (self.omega * a).powi(2) / self.loss_per_cycle(a, pivot_damping)
+        PI * self.inertia * self.omega.powi(2) / self.loss_over_arc_squared(a, pivot_damping)
     }
 
-    /// The semi-arc, rad, at which the loss per cycle equals `energy` J
-    /// (a drive giving that much each cycle): the loss grows with the arc,
-    /// so bisection on it, to 1e-12 relative.
-    pub fn arc_for_drive(&self, energy: f64, pivot_damping: f64) -> f64 {
+    /// The semi-arc, rad, at which this design loses per cycle what
+    /// `reference` loses at semi-arc `a` (a drive giving that much each
+    /// cycle, the pivot's damping `pivot_damping` N m s in both): the loss
+    /// grows with the arc, so bisection on the arc's ratio to `a`, with
+    /// the arc divided out of both losses (the answer holds from 1e-300
+    /// rad to 60°), to 1e-12 relative.
+    pub fn arc_for_loss_of(&self, reference: &InGas, a: f64, pivot_damping: f64) -> f64 {
+        let target = reference.loss_over_arc_squared(a, pivot_damping);
+        // Loss at arc `x a` over `a²`.
+        let loss = |x: f64| x * x * self.loss_over_arc_squared(x * a, pivot_damping);
         let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
-        while self.loss_per_cycle(hi, pivot_damping) < energy && hi < 1e6 {
+        while loss(hi) < target && hi < 1e12 {
             hi *= 2.0;
         }
         for _ in 0..200 {
             let mid = 0.5 * (lo + hi);
-            if self.loss_per_cycle(mid, pivot_damping) < energy {
+            if loss(mid) < target {
                 lo = mid;
             } else {
                 hi = mid;
@@ -339,6 +353,6 @@ impl InGas {
                 break;
             }
         }
-        0.5 * (lo + hi)
+        0.5 * (lo + hi) * a
     }
 }

@@ -174,6 +174,11 @@ pub struct DesignError {
 /// its envelope (a gridiron's rods spread over its drop reach 10^5).
 pub const MAX_DENSITY: f64 = 1e6;
 
+/// The smallest density a design file's material may have, kg/m³: the
+/// lightest solids, silica aerogels, reach about 1 (a lighter part is a
+/// unit slip; the library's own idealisations may go lower).
+pub const MIN_DENSITY: f64 = 1.0;
+
 /// A number from a design for a message: its digits, or words for NaN
 /// and infinity (which a TOML file can hold: `nan`, `inf`).
 fn shown(v: f64) -> String {
@@ -189,6 +194,11 @@ fn shown(v: f64) -> String {
 /// The largest thermal expansion a material may have, 1/K, either sign
 /// (solids are 1e-6 to 3e-5; liquids' volume expansion up to about 1.5e-3).
 pub const MAX_EXPANSION: f64 = 2e-3;
+
+/// The most negative thermal expansion a material may have, 1/K: the
+/// solids that shrink as they warm do so by at most about 1e-5 (zirconium
+/// tungstate -9e-6, carbon fibre along its length -1e-6).
+pub const MIN_EXPANSION: f64 = -5e-5;
 
 /// The largest growth per percentage point of moisture content a material
 /// may have, 1/% (wood along the grain 5e-5, across it up to 3e-3).
@@ -208,6 +218,9 @@ pub struct CompoundPendulum {
     parts: Vec<Part>,
     /// Each part's centre below the pivot, m.
     centres: Vec<f64>,
+    /// The gravity it hangs in, m/s² (standard gravity unless given): a
+    /// suspension spring's share of the restoring torque depends on it.
+    gravity: f64,
 }
 
 /// The summed properties of a pendulum.
@@ -336,7 +349,7 @@ fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> 
             return Err((
                 "modulus",
                 format!(
-                    "must lie between 0 and 1.2e12 Pa (diamond's), got {}",
+                    "must be more than 0 and at most 1.2e12 Pa (diamond's), got {}",
                     shown(e)
                 ),
             ))
@@ -362,6 +375,12 @@ fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> 
                 "must lie within ±{MAX_MODULUS_COEFFICIENT:e} per K (steel's is -2.5e-4), got {}",
                 shown(b)
             ),
+        )),
+        None if m.name == "user-defined" => Err((
+            "modulus_coefficient",
+            "missing: the material given needs the temperature coefficient of its modulus \
+             too, modulus_coefficient = … ((1/E) dE/dT, 1/K; steel's is -2.5e-4)"
+                .to_string(),
         )),
         None => Err((
             "modulus_coefficient",
@@ -449,8 +468,9 @@ impl CompoundPendulum {
                     return Err(fail(
                         "density",
                         format!(
-                            "must lie between 0 and {MAX_DENSITY:e} kg/m³ (osmium, the densest \
-                             metal: 22,590), got {}",
+                            "must be more than 0 and at most {MAX_DENSITY:e} kg/m³ (osmium, the \
+                             densest metal, is 22,590; an assembly taken as one part may be \
+                             denser over its envelope), got {}",
                             shown(d)
                         ),
                     ));
@@ -474,12 +494,13 @@ impl CompoundPendulum {
                 }
             }
             let alpha = p.material.expansion;
-            if !(-MAX_EXPANSION..=MAX_EXPANSION).contains(&alpha) {
+            if !(MIN_EXPANSION..=MAX_EXPANSION).contains(&alpha) {
                 return Err(fail(
                     "expansion",
                     format!(
-                        "must be between -{MAX_EXPANSION:e} and {MAX_EXPANSION:e} per K \
-                         (steel 1.2e-5, mercury's volume 1.8e-4), got {}",
+                        "must be between {MIN_EXPANSION:e} and {MAX_EXPANSION:e} per K \
+                         (steel 1.2e-5, mercury's volume 1.8e-4; zirconium tungstate, which \
+                         shrinks as it warms, -9e-6), got {}",
                         shown(alpha)
                     ),
                 ));
@@ -542,7 +563,11 @@ impl CompoundPendulum {
             }
         }
         let centres = resolve(&parts, None)?;
-        let pendulum = Self { parts, centres };
+        let pendulum = Self {
+            parts,
+            centres,
+            gravity: crate::pendulum::STANDARD_GRAVITY,
+        };
         // Every size is linear in the temperature, so a design valid at both
         // ends of the span is valid everywhere in it: the commands that warm
         // or cool it (datasheets, coefficients, long runs with weather) can
@@ -600,6 +625,24 @@ impl CompoundPendulum {
         &self.parts
     }
 
+    /// The same design in gravity `g`, m/s² (a positive finite value;
+    /// anything else leaves it as it was, for the caller's own check of g
+    /// to refuse). Only a suspension spring feels it: the spring's
+    /// stiffness does not scale with g as gravity's does, so its share,
+    /// its gain and the equivalent length change with it.
+    pub fn in_gravity(&self, g: f64) -> Self {
+        let mut out = self.clone();
+        if g.is_finite() && g > 0.0 {
+            out.gravity = g;
+        }
+        out
+    }
+
+    /// The gravity it hangs in, m/s².
+    pub fn gravity(&self) -> f64 {
+        self.gravity
+    }
+
     /// Each part's centre below the pivot, m.
     pub fn centres(&self) -> &[f64] {
         &self.centres
@@ -623,10 +666,9 @@ impl CompoundPendulum {
 
     /// The suspension spring's effect ([`crate::suspension::effect`]) on
     /// the rest of the design, taken as a rigid body hanging from its
-    /// bottom, in standard gravity (the tension is the weight: in another
-    /// gravity the bending length moves by half its fractional change, a
-    /// spring's gain of 50 s/day by 0.07 s/day between equator and pole);
-    /// `None` without a spring.
+    /// bottom, in the design's gravity ([`CompoundPendulum::in_gravity`]:
+    /// the tension is the weight, and the spring's stiffness against
+    /// gravity's sets its share); `None` without a spring.
     pub fn spring_effect(&self) -> Option<crate::suspension::SpringEffect> {
         let i = spring_index(&self.parts)?;
         let Shape::Spring {
@@ -658,7 +700,7 @@ impl CompoundPendulum {
             thickness,
             modulus: self.parts[i].material.modulus?,
         };
-        crate::suspension::effect(&strip, &body, crate::pendulum::STANDARD_GRAVITY).ok()
+        crate::suspension::effect(&strip, &body, self.gravity).ok()
     }
 
     /// The same design with its spring's modulus unchanged by temperature
@@ -745,10 +787,12 @@ impl CompoundPendulum {
             .enumerate()
             .map(|(i, p)| {
                 let s = state(i);
-                // A liquid keeps its jar's width and rises with its volume.
+                // A liquid keeps its jar's width and rises with its volume;
+                // the jar's wall beside it is at its temperature (not the
+                // bottom's, lower down in a gradient).
                 let mut material = p.material.clone();
                 if let (true, Placement::RestsOn(jar)) = (p.material.liquid, &p.placement) {
-                    let width = 1.0 + self.parts[*jar].material.expansion * state(*jar).temperature;
+                    let width = 1.0 + self.parts[*jar].material.expansion * s.temperature;
                     let volume = 1.0 + p.material.expansion * s.temperature;
                     material.density /= volume;
                     return Part {
@@ -852,7 +896,11 @@ impl CompoundPendulum {
                 }
             }
         }
-        Ok(Self { parts, centres })
+        Ok(Self {
+            parts,
+            centres,
+            gravity: self.gravity,
+        })
     }
 
     /// For part `i` in a gradient (see [`CompoundPendulum::at_part_states`]):
@@ -1164,7 +1212,15 @@ impl CompoundPendulum {
         };
         parts[index].placement = Placement::Centre(c + shift);
         let centres = resolve(&parts, None).ok()?;
-        Some(Self { parts, centres }.properties().equivalent_length)
+        Some(
+            Self {
+                parts,
+                centres,
+                gravity: self.gravity,
+            }
+            .properties()
+            .equivalent_length,
+        )
     }
 
     /// The rate change, s/day per metre, of moving part `index` (and what

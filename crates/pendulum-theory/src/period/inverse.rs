@@ -111,16 +111,49 @@ pub struct AmplitudeResult {
 }
 
 /// The amplitude a pendulum of `length` m under `g` swings at to keep
-/// `period` s, with the interval of `period ± uncertainty` if given.
+/// `period` s, with the interval of `period ± uncertainty` if given. On a
+/// suspension spring of elastic share `elastic_share` (none or 0: a rigid
+/// pivot) the period is [`crate::suspension::period_ratio`]'s, inverted by
+/// [`amplitude_on_spring`].
 pub fn amplitude(
     length: f64,
     g: Option<f64>,
     period: f64,
     uncertainty: Option<f64>,
+    elastic_share: Option<f64>,
 ) -> Result<AmplitudeResult, Refusal> {
     let pendulum = pendulum(length, g, "length")?;
-    let solve =
-        |t: f64| amplitude_for_period(&pendulum, t).map_err(|e| Refusal::input("period", &e));
+    let share = match elastic_share {
+        None => 0.0,
+        Some(e) if e.is_finite() && (0.0..1.0).contains(&e) => e,
+        Some(e) => {
+            return Err(Refusal::field(
+                "elastic_share",
+                format!(
+                    "must lie from 0 to below 1, got {}",
+                    format_significant(e, 6)
+                ),
+            ))
+        }
+    };
+    let solve = |t: f64| -> Result<Estimate, Refusal> {
+        if share > 0.0 {
+            let p = require_finite("period", t)?;
+            let (radians, condition_number) =
+                amplitude_on_spring(pendulum.small_angle_period(), p, share)?;
+            Ok(Estimate {
+                radians,
+                condition_number,
+            })
+        } else {
+            amplitude_for_period(&pendulum, t)
+                .map(|e| Estimate {
+                    radians: e.amplitude.radians(),
+                    condition_number: e.condition_number,
+                })
+                .map_err(|e| Refusal::input("period", &e))
+        }
+    };
     let estimate = solve(period)?;
     let interval = match uncertainty {
         Some(dt) => {
@@ -131,14 +164,14 @@ pub fn amplitude(
                 ));
             }
             let t0 = pendulum.small_angle_period();
-            let high = solve(period + dt)?.amplitude.radians();
+            let high = solve(period + dt)?.radians;
             let clipped = period - dt <= t0;
-            let low = solve((period - dt).max(t0))?.amplitude.radians();
+            let low = solve((period - dt).max(t0))?.radians;
             Some((low, high, clipped))
         }
         None => None,
     };
-    let a = estimate.amplitude;
+    let a = Amplitude::from_radians(estimate.radians).map_err(|e| Refusal::input("period", &e))?;
     let relative = estimate.condition_number * f64::EPSILON;
     let mut warnings = Vec::new();
     if relative.is_finite() && relative > PRECISION_WARNING {
@@ -163,4 +196,73 @@ pub fn amplitude(
         precision_relative: finite(relative),
         warnings,
     })
+}
+
+/// An amplitude and its conditioning `|d ln A / d ln T|`.
+struct Estimate {
+    radians: f64,
+    condition_number: f64,
+}
+
+/// The amplitude, rad, at which a pendulum on a suspension spring of
+/// elastic share `share` (0 to below 1) and small-swing period `t0` s
+/// keeps `period` s, and its conditioning `|d ln A / d ln T|`: bisection
+/// on [`crate::suspension::period_ratio`], which grows with the amplitude,
+/// over `[0, π)` to 1e-15 relative (`period_ratio - 1` against `(T - T0)
+/// / T0`, so that small swings keep their digits; the conditioning by a
+/// central difference of ±1e-4 of the amplitude). Refused below `t0`, and
+/// above the period at 180° (the model's end: a spring's pendulum has a
+/// finite period there).
+pub fn amplitude_on_spring(t0: f64, period: f64, share: f64) -> Result<(f64, f64), Refusal> {
+    use crate::suspension::period_ratio;
+    if period.is_nan() || period <= 0.0 {
+        return Err(Refusal::field(
+            "period",
+            format!("must be positive, got {} s", format_significant(period, 6)),
+        ));
+    }
+    if period < t0 {
+        return Err(Refusal::field(
+            "period",
+            format!(
+                "is below the small-angle period T0 = {} s, which no swing can keep, got {} s",
+                format_significant(t0, 12),
+                format_significant(period, 12)
+            ),
+        ));
+    }
+    let excess = (period - t0) / t0;
+    let top = std::f64::consts::PI.next_down();
+    let longest = period_ratio(top, share);
+    if excess > longest - 1.0 {
+        return Err(Refusal::field(
+            "period",
+            format!(
+                "is longer than this pendulum keeps on its suspension spring at any swing below \
+                 180° (at most {} s), got {} s",
+                format_significant(t0 * longest, 8),
+                format_significant(period, 8)
+            ),
+        ));
+    }
+    if excess == 0.0 {
+        return Ok((0.0, f64::INFINITY));
+    }
+    let (mut low, mut high) = (0.0_f64, top);
+    for _ in 0..200 {
+        let mid = 0.5 * (low + high);
+        if period_ratio(mid, share) - 1.0 < excess {
+            low = mid;
+        } else {
+            high = mid;
+        }
+        if high - low <= 1e-15 * high {
+            break;
+        }
+    }
+    let a = 0.5 * (low + high);
+    let h = 1e-4 * a;
+    let slope = (period_ratio((a + h).min(top), share) - period_ratio(a - h, share))
+        / ((a + h).min(top) - (a - h));
+    Ok((a, (1.0 + excess) / (a * slope)))
 }

@@ -338,7 +338,12 @@ fn on_spring(row: PeriodRow, share: f64) -> PeriodRow {
     let ratio = period_ratio(a, share);
     let error = |r: f64| 1.0 - 1.0 / r;
     let h = 1e-4 * a;
-    let slope = (error(period_ratio(a + h, share)) - error(period_ratio(a - h, share))) / (2.0 * h);
+    // At rest the circular error is flat.
+    let slope = if a == 0.0 {
+        0.0
+    } else {
+        (error(period_ratio(a + h, share)) - error(period_ratio(a - h, share))) / (2.0 * h)
+    };
     let day = super::SECONDS_PER_DAY;
     let period = row.small_angle_period_s * ratio;
     PeriodRow {

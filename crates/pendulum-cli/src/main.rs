@@ -94,10 +94,6 @@ fn fail(error: &CliError) -> ExitCode {
     // What the reader left out before the refusal goes on its one line:
     // it may be why (every row skipped for a blank cell).
     let notes = output::take_warnings();
-    let notes: Vec<&str> = notes
-        .lines()
-        .map(|l| l.trim_start_matches("warning: "))
-        .collect();
     let also = if notes.is_empty() {
         String::new()
     } else {
@@ -113,7 +109,11 @@ fn fail(error: &CliError) -> ExitCode {
 fn print(out: &Output) -> ExitCode {
     // With --quiet the summary beside data on standard output is left
     // out, but never its warnings.
-    let stderr = format!("{}{}", crate::output::take_warnings(), out.stderr);
+    let mut stderr: String = output::take_warnings()
+        .iter()
+        .map(|w| format!("warning: {w}\n"))
+        .collect();
+    stderr.push_str(&out.stderr);
     let stderr: String = if work::quiet() {
         stderr
             .lines()

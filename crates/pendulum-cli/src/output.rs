@@ -24,11 +24,11 @@ pub fn warn(message: String) {
     }
 }
 
-/// The warnings added so far, as lines, emptied.
-pub fn take_warnings() -> String {
+/// The warnings added so far, emptied.
+pub fn take_warnings() -> Vec<String> {
     WARNINGS
         .lock()
-        .map(|mut w| w.drain(..).map(|m| format!("warning: {m}\n")).collect())
+        .map(|mut w| w.drain(..).collect())
         .unwrap_or_default()
 }
 

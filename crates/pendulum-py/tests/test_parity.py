@@ -1230,6 +1230,19 @@ DESIGN = {
                              {**ROD, "centre": 0.515}, {**BOB, "centre": 0.965}], {}),
     "spring_of_brass": ([{**SPRING, "material": "brass"}, {**ROD, "centre": 0.515}, BOB], {}),
     "spring_placed_low": ([{**SPRING, "centre": 0.05}, ROD, BOB], {}),
+    # This session's: the spring in another gravity, a humidity given as a
+    # fraction (warned), a dry tank's wood (no humidity coefficient), a
+    # material's unknown key and a lighter-than-aerogel density (refused),
+    # a pivot's Q far below a clock's (warned), an arc far below any.
+    "spring_on_the_moon": ([SPRING, {**ROD, "centre": 0.515}, {**BOB, "centre": 0.965}],
+                           {"g": 1.62}),
+    "humidity_as_fraction": ([ROD, BOB], {"humidity": 0.6}),
+    "material_typo": ([ROD, {**BOB, "material": {"density": 8500, "expansion": 19e-6,
+                                                 "moduls": 3}}], {}),
+    "material_too_light": ([ROD, {**BOB, "material": {"density": 0.5,
+                                                      "expansion": 19e-6}}], {}),
+    "pivot_q_of_one": ([ROD, BOB], {"pivot_q": 1.0, "amplitude": 0.035}),
+    "tiny_arc": ([ROD, BOB], {"amplitude": 1e-200}),
 }
 DESIGN_FLAGS = {"g": ("--g", 1.0), "pressure": ("--pressure", 0.01),
                 "temperature": ("--temperature", 1.0), "humidity": ("--humidity", 1.0),

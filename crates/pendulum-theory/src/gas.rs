@@ -35,6 +35,15 @@ use crate::air::{cipm_density, dry_air_molar_mass, vapour_fraction, TEMPERATURE_
 use crate::analysis::Refusal;
 use crate::error::format_significant;
 
+/// The warning for a humidity that looks like a fraction of 1 given for a
+/// percentage: `what` ("the humidity is 0.6 %") and the likely fix.
+pub fn per_cent_warning(what: &str) -> String {
+    format!(
+        "{what}: it is read in per cent (air that dry is rare indoors); if it is a fraction \
+         of 1, multiply it by 100"
+    )
+}
+
 /// The molar gas constant, J/(mol K) (CODATA 2018, exact).
 const R: f64 = 8.314_462_618;
 

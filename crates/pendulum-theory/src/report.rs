@@ -164,27 +164,22 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
         }
         (Some(design), None) => {
             let sheet = datasheet(design, g, &Air::default())?;
-            let effective = design
-                .pendulum
-                .in_gravity(g.unwrap_or(crate::pendulum::STANDARD_GRAVITY))
-                .properties()
-                .effective_mass();
+            // The effective mass `I / l²` (Properties::effective_mass) of
+            // the design in this gravity, as the sheet gives them.
+            let effective =
+                sheet.inertia_kg_m2 / (sheet.equivalent_length_m * sheet.equivalent_length_m);
             (sheet.equivalent_length_m, Some(sheet), Some(effective))
         }
         (None, length) => (length.unwrap_or(DEFAULT_LENGTH_M), None, None),
     };
     let length_field = if sheet.is_some() { "design" } else { "length" };
-    // A design's suspension spring: the period is its own, the run-down a
-    // rigid pendulum's (with a warning when that matters).
-    let share = input
-        .design
+    // A design's suspension spring (the datasheet's, in this gravity): the
+    // period is its own, the run-down a rigid pendulum's (with a warning
+    // when that matters).
+    let share = sheet
         .as_ref()
-        .and_then(|d| {
-            d.pendulum
-                .in_gravity(g.unwrap_or(crate::pendulum::STANDARD_GRAVITY))
-                .spring_effect()
-        })
-        .map_or(0.0, |e| e.elastic_share);
+        .and_then(|s| s.spring.as_ref())
+        .map_or(0.0, |s| s.elastic_share);
     let amplitude = input
         .amplitude
         .unwrap_or(DEFAULT_AMPLITUDE_DEG.to_radians());

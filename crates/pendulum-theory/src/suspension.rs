@@ -338,3 +338,22 @@ pub fn rigid_swing_warning(share: f64, amplitude: f64) -> Option<String> {
         )
     })
 }
+
+/// A given elastic share checked (none: a rigid pivot, 0): finite, from 0
+/// to below 1 (a share of 1 would leave gravity nothing to do), refused by
+/// the input's name `elastic_share`.
+pub fn elastic_share(given: Option<f64>) -> Result<f64, Refusal> {
+    let Some(e) = given else { return Ok(0.0) };
+    let e = require_finite("elastic_share", e)?;
+    if (0.0..1.0).contains(&e) {
+        Ok(e)
+    } else {
+        Err(Refusal::field(
+            "elastic_share",
+            format!(
+                "must lie from 0 to below 1 (the spring's share of the restoring torque), got {}",
+                format_significant(e, 6)
+            ),
+        ))
+    }
+}

@@ -93,20 +93,13 @@ pub fn run(args: &AmplitudeArgs) -> Result<String, CliError> {
         )
         .row("Length", format!("{} m", num(r.length_m, 10)))
         .row("Gravity", gravity.describe());
-    // The first warning is the precision's row; the rest follow.
-    for w in r.warnings.iter().skip(usize::from(precision_warned(&r))) {
-        s.row("WARNING", w.clone());
-    }
     Ok(s.render())
 }
 
 /// How much of the amplitude the period's last bit already decides (the
 /// library's warning when that is much).
 fn precision_note(r: &AmplitudeResult) -> String {
-    match (
-        r.precision_relative,
-        r.warnings.first().filter(|_| precision_warned(r)),
-    ) {
+    match (r.precision_relative, r.warnings.first()) {
         (_, Some(w)) => format!("warning: {w}"),
         (Some(relative), None) => format!(
             "the amplitude is determined to {} relative by a double-precision period",
@@ -117,10 +110,4 @@ fn precision_note(r: &AmplitudeResult) -> String {
                 .into()
         }
     }
-}
-
-/// Whether the library warned of the precision (its first warning then).
-fn precision_warned(r: &AmplitudeResult) -> bool {
-    r.precision_relative
-        .is_some_and(|p| p > pendulum_theory::period::inverse::PRECISION_WARNING)
 }

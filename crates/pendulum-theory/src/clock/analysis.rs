@@ -834,11 +834,9 @@ fn weather_effect(
     let mut warnings = Vec::new();
     if let Some(h) = &w.humidity_percent {
         if h.iter().all(|&v| v <= 1.0) && h.iter().any(|&v| v > 0.0) {
-            warnings.push(
-                "the humidity never passes 1 %: it is read in per cent (air that dry is \
-                 rare indoors); if it is a fraction of 1, multiply it by 100"
-                    .to_string(),
-            );
+            warnings.push(crate::gas::per_cent_warning(
+                "the humidity never passes 1 %",
+            ));
         }
     }
     // The losses that are not the gas's, as a Q.

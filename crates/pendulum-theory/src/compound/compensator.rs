@@ -20,6 +20,24 @@
 use super::{CompoundPendulum, Material, Part, Placement, Shape};
 
 impl CompoundPendulum {
+    /// A design of `parts` in this one's gravity, if they make one.
+    fn remade(&self, parts: Vec<Part>) -> Option<Self> {
+        Self::new(parts).ok().map(|p| p.in_gravity(self.gravity))
+    }
+
+    /// How part `bob` is placed and the index of the part it rests on (or
+    /// hangs from): what a tube is put between.
+    fn held_on(&self, bob: usize) -> Result<(Placement, usize), NoCompensation> {
+        let held = self
+            .parts
+            .get(bob)
+            .ok_or(NoCompensation::NotCarried)?
+            .placement
+            .clone();
+        let on = held.support().ok_or(NoCompensation::NotCarried)?;
+        Ok((held, on))
+    }
+
     /// The same pendulum with a compensating tube of `material` (outer
     /// diameter `diameter`, bore `bore`, m) put under the part `bob`, which
     /// must rest on a part placed on the rod (its nut); the rod is made
@@ -38,13 +56,7 @@ impl CompoundPendulum {
         diameter: f64,
         bore: f64,
     ) -> Result<(Self, f64), NoCompensation> {
-        let held = self
-            .parts
-            .get(bob)
-            .ok_or(NoCompensation::NotCarried)?
-            .placement
-            .clone();
-        let nut = held.support().ok_or(NoCompensation::NotCarried)?;
+        let (held, nut) = self.held_on(bob)?;
         let Placement::Centre(nut_centre) = self.parts[nut].placement else {
             return Err(NoCompensation::SupportNotOnRod);
         };
@@ -81,10 +93,9 @@ impl CompoundPendulum {
             });
             let tube = parts.len() - 1;
             parts[bob].placement = held.carried_by(tube);
-            Self::new(parts).ok()
+            self.remade(parts)
         };
-        let length = zero_coefficient(build, 1e-4, 1.5)?;
-        Ok((build(length).ok_or(NoCompensation::Unbuildable)?, length))
+        sized(build, 1e-4, 1.5)
     }
 
     /// The same pendulum with the classical compensator of a tube inside a
@@ -112,13 +123,7 @@ impl CompoundPendulum {
         rod_diameter: f64,
         wall: f64,
     ) -> Result<(Self, f64), NoCompensation> {
-        let held = self
-            .parts
-            .get(bob)
-            .ok_or(NoCompensation::NotCarried)?
-            .placement
-            .clone();
-        let nut = held.support().ok_or(NoCompensation::NotCarried)?;
+        let (held, nut) = self.held_on(bob)?;
         let clearance = super::compensate::TUBE_CLEARANCE_M;
         let inner_bore = rod_diameter + clearance;
         let inner_diameter = inner_bore + 2.0 * wall;
@@ -188,7 +193,7 @@ impl CompoundPendulum {
                     height: 0.0,
                 },
             };
-            Self::new(parts).ok()
+            self.remade(parts)
         };
         // The inner tube stands on the nut and must stay below the pivot
         // (warmed by the design's whole span too): the longest that does.
@@ -197,8 +202,7 @@ impl CompoundPendulum {
         while build(high).is_none() && high > 1e-3 {
             high *= 0.98;
         }
-        let length = zero_coefficient(build, 1e-4, high)?;
-        Ok((build(length).ok_or(NoCompensation::Unbuildable)?, length))
+        sized(build, 1e-4, high)
     }
 }
 
@@ -256,10 +260,9 @@ impl CompoundPendulum {
         let build = |brass_length: f64| -> Option<Self> {
             let mut parts = self.parts.clone();
             parts[rod].material = gridiron(length, brass_length, diameter, steel, brass);
-            Self::new(parts).ok()
+            self.remade(parts)
         };
-        let b = zero_coefficient(build, 0.0, 3.0 * length).ok()?;
-        Some((build(b)?, b))
+        sized(build, 0.0, 3.0 * length).ok()
     }
 }
 
@@ -344,10 +347,9 @@ impl CompoundPendulum {
             };
             parts.push(wall_part);
             parts.push(mercury_part);
-            Self::new(parts).ok()
+            self.remade(parts)
         };
-        let height = zero_coefficient(build, 1e-3, 0.5).ok()?;
-        Some((build(height)?, height))
+        sized(build, 1e-3, 0.5).ok()
     }
 }
 
@@ -386,7 +388,7 @@ impl CompoundPendulum {
                 }
             }
         }
-        Self::new(parts).ok()
+        self.remade(parts)
     }
 }
 
@@ -411,6 +413,17 @@ pub enum NoCompensation {
     },
     /// A trial design could not be made (it would reach the pivot).
     Unbuildable,
+}
+
+/// The design `build` makes at the size [`zero_coefficient`] finds, with
+/// that size.
+fn sized(
+    build: impl Fn(f64) -> Option<CompoundPendulum>,
+    low: f64,
+    high: f64,
+) -> Result<(CompoundPendulum, f64), NoCompensation> {
+    let size = zero_coefficient(&build, low, high)?;
+    Ok((build(size).ok_or(NoCompensation::Unbuildable)?, size))
 }
 
 /// The size in `[low, high]` at which the design `build` makes has no

@@ -236,11 +236,10 @@ pub struct Datasheet {
     pub warnings: Vec<String>,
     /// The gas as taken: pressure, Pa.
     pub pressure_pa: f64,
-    /// Relative humidity, 0 to 1.
-    #[serde(skip)]
+    /// Relative humidity, 0 to 1 (in the JSON `humidity_percent`, %; 0 in
+    /// a gas other than air).
+    #[serde(rename = "humidity_percent", serialize_with = "as_percent")]
     pub humidity: f64,
-    /// Relative humidity, % (0 in a gas other than air).
-    pub humidity_percent: f64,
 }
 
 /// A spring that gives more than this share of the restoring torque is
@@ -307,6 +306,11 @@ fn shown_got(v: f64, unit: &str) -> String {
 
 /// Seconds in a day.
 const DAY: f64 = 86_400.0;
+
+/// A fraction serialised as per cent.
+fn as_percent<S: serde::Serializer>(fraction: &f64, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_f64(100.0 * fraction)
+}
 
 /// The semi-arc, rad, at which `net(a)` (the barometric coefficient with
 /// the arc's change) is zero: scanned from 0.01° to 60° in steps of 5%,
@@ -615,24 +619,23 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
                 })
             }))
             .chain(
-                q.filter(|&q| DAY / (8.0 * q * q) >= LOW_Q_SHIFT_S_PER_DAY)
-                    .map(|q| {
+                q.map(|q| (q, DAY / (8.0 * q * q)))
+                    .filter(|&(_, shift)| shift >= LOW_Q_SHIFT_S_PER_DAY)
+                    .map(|(q, shift)| {
                         format!(
-                    "Q {} is far below a clock pendulum's: the damping itself lengthens the \
-                     period by 1/(8Q²), {} s/day, which the rates here leave out",
-                    crate::error::format_significant(q, 3),
-                    crate::error::format_significant(DAY / (8.0 * q * q), 3)
-                )
+                            "Q {} is far below a clock pendulum's: the damping itself \
+                             lengthens the period by 1/(8Q²), {} s/day, which the rates here \
+                             leave out",
+                            crate::error::format_significant(q, 3),
+                            crate::error::format_significant(shift, 3)
+                        )
                     }),
             )
             .chain(air.humidity.filter(|&h| h > 0.0 && h <= 0.01).map(|h| {
-                format!(
-                    "the humidity is {} %: it is read in per cent (air that dry is \
-                             rare indoors); if it is a fraction of 1, give it times 100 \
-                             ({} %)",
-                    crate::error::format_significant(100.0 * h, 3),
-                    crate::error::format_significant(1e4 * h, 3)
-                )
+                crate::gas::per_cent_warning(&format!(
+                    "the humidity is {} %",
+                    crate::error::format_significant(100.0 * h, 3)
+                ))
             }))
             .chain(across_grain.map(|name| {
                 format!(
@@ -645,6 +648,5 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
             .collect(),
         pressure_pa: p,
         humidity: h,
-        humidity_percent: 100.0 * h,
     })
 }

@@ -123,19 +123,7 @@ pub fn amplitude(
     elastic_share: Option<f64>,
 ) -> Result<AmplitudeResult, Refusal> {
     let pendulum = pendulum(length, g, "length")?;
-    let share = match elastic_share {
-        None => 0.0,
-        Some(e) if e.is_finite() && (0.0..1.0).contains(&e) => e,
-        Some(e) => {
-            return Err(Refusal::field(
-                "elastic_share",
-                format!(
-                    "must lie from 0 to below 1, got {}",
-                    format_significant(e, 6)
-                ),
-            ))
-        }
-    };
+    let share = crate::suspension::elastic_share(elastic_share)?;
     let solve = |t: f64| -> Result<Estimate, Refusal> {
         if share > 0.0 {
             let p = require_finite("period", t)?;

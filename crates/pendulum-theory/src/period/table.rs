@@ -291,23 +291,7 @@ pub fn table(input: &PeriodInput) -> Result<Vec<PeriodRow>, Refusal> {
     }
     // Beyond u32 the series refuses it as above its maximum.
     let terms = u32::try_from(terms).unwrap_or(u32::MAX);
-    let share = match input.elastic_share {
-        None => 0.0,
-        Some(e) => {
-            let e = require_finite("elastic_share", e)?;
-            if !(0.0..1.0).contains(&e) {
-                return Err(Refusal::field(
-                    "elastic_share",
-                    format!(
-                        "must lie from 0 to below 1 (the spring's share of the restoring \
-                         torque), got {}",
-                        crate::error::format_significant(e, 6)
-                    ),
-                ));
-            }
-            e
-        }
-    };
+    let share = crate::suspension::elastic_share(input.elastic_share)?;
     grid(input.amplitudes)?
         .into_iter()
         .map(|(a, degrees)| {

@@ -371,19 +371,7 @@ pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
         work.seconds,
         input.force,
     )?;
-    let elastic_share = match input.elastic_share {
-        None => 0.0,
-        Some(e) if e.is_finite() && (0.0..1.0).contains(&e) => e,
-        Some(e) => {
-            return Err(Refusal::field(
-                "elastic_share",
-                format!(
-                    "must lie from 0 to below 1, got {}",
-                    crate::error::format_significant(e, 6)
-                ),
-            ))
-        }
-    };
+    let elastic_share = crate::suspension::elastic_share(input.elastic_share)?;
     Ok(Prepared {
         model,
         amplitude,

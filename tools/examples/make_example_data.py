@@ -175,21 +175,32 @@ def clock_log(path, events_path):
                            "2026-01-01T00:00Z", "--to", "2026-03-02T00:00Z", "--every", "10min",
                            "--csv", "--force"], capture_output=True, text=True, check=True).stdout
     tidal = [float(line.split(",")[2]) for line in tide.splitlines()[1:]]
-    x, lag, pressure = 0.0, 18.0, 1013.0
+    x, pressure = 0.0, 1013.0
+    tau = 3 * 3600.0
     start = 1767225600  # 2026-01-01T00:00:00Z
+
+    def air(day):
+        return 18.0 + 1.5 * math.sin(2 * math.pi * (day - 0.4)) + 1.0 * math.sin(2 * math.pi * day / 7.0)
+
+    lag = air(0.0)
     with open(path, "w") as f:
         f.write("time,offset_s,temperature_c,pressure_hpa,humidity_percent\n")
         for i in range(rows):
             t = i * step
             day = t / 86400.0
-            temperature = 18.0 + 1.5 * math.sin(2 * math.pi * (day - 0.4)) + 1.0 * math.sin(2 * math.pi * day / 7.0)
-            before = lag
-            lag += (1.0 - math.exp(-step / (3 * 3600.0))) * (temperature - lag)
+            temperature = air(day)
+            # The compensator's temperature: the exact first-order lag of
+            # the air, linear between rows; its mean over the 10 minutes
+            # to this row.
+            a = air((t - step) / 86400.0)
+            s_tau = (temperature - a) / step * tau
+            start_lag = lag - a + s_tau
+            lagged_mean = 0.5 * (a + temperature) - s_tau + start_lag * tau / step * (1.0 - math.exp(-step / tau))
+            lag = temperature - s_tau + start_lag * math.exp(-step / tau)
             pressure += -0.002 * (pressure - 1013.0) + 0.4 * rng.gauss(0, 1)
             humidity = 50.0 + 10.0 * math.sin(2 * math.pi * day / 11.0)
-            # The rate over the 10 minutes to this row: the lagged
-            # temperature at their middle.
-            rate = (0.5 + 0.01 * (day - 30.0) - 0.3 * (0.5 * (lag + before) - 18.0) - 0.012 * (pressure - 1013.0)
+            # The rate over the 10 minutes to this row.
+            rate = (0.5 + 0.01 * (day - 30.0) - 0.3 * (lagged_mean - 18.0) - 0.012 * (pressure - 1013.0)
                     - 0.002 * (humidity - 50.0) + tidal[i] + (0.3 if day >= 20.0 else 0.0))
             rate += 0.02 * math.sqrt(3600.0 / step) * rng.gauss(0, 1)
             if i > 0:

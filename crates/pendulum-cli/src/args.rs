@@ -214,6 +214,12 @@ pub struct StabilityArgs {
     /// Every averaging time τ0, 2τ0, 3τ0, … instead of octaves.
     #[arg(long)]
     pub all_taus: bool,
+    /// Jumps and glitches found (a missed pulse, the reference slipping):
+    /// keep them and be warned of them with how much they raise the
+    /// shortest τ's deviation, or remove them (a glitch becomes a gap, a
+    /// jump is taken back: Stable32's practice).
+    #[arg(long, value_enum, default_value = "keep")]
+    pub outliers: OutliersArg,
     /// Names of the columns of a file without a header, in order (e.g. time_s,offset_s).
     #[arg(long, value_name = "NAMES")]
     pub columns: Option<String>,
@@ -229,6 +235,15 @@ pub struct StabilityArgs {
     /// Print the rows as CSV.
     #[arg(long)]
     pub csv: bool,
+}
+
+/// What `stability --outliers` does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum OutliersArg {
+    /// Keep them, and warn.
+    Keep,
+    /// Take them out, and say so.
+    Remove,
 }
 
 /// What a log's values are.

@@ -89,6 +89,12 @@ pub enum Role {
     Gradient,
 }
 
+/// The role a column named `name` has (`temperature`, `pressure`): how
+/// a command finds the columns a library table names.
+pub fn role_named(name: &str) -> Option<Role> {
+    Role::of(name)
+}
+
 /// A role's name for messages ("offset", "half period").
 pub fn role_name(role: Role) -> &'static str {
     role.name()

@@ -401,7 +401,7 @@ fn answer<T: serde::Serialize>(result: Result<T, Refusal>) -> PyResult<String> {
 
 /// The stability analysis (the CLI's `stability`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (data, tau0, kind, all_taus, force))]
+#[pyo3(signature = (data, tau0, kind, all_taus, force, outliers))]
 fn stability(
     py: Python<'_>,
     data: In<'_>,
@@ -409,8 +409,9 @@ fn stability(
     kind: &str,
     all_taus: bool,
     force: bool,
+    outliers: &str,
 ) -> PyResult<String> {
-    use pendulum_theory::stability::{stability, DataKind, StabilityInput, Taus};
+    use pendulum_theory::stability::{stability, DataKind, Outliers, StabilityInput, Taus};
     let kind = match kind {
         "phase" => DataKind::Phase,
         "frequency" => DataKind::Frequency,
@@ -426,6 +427,15 @@ fn stability(
         tau0_s: tau0,
         taus: if all_taus { Taus::All } else { Taus::Octave },
         force,
+        outliers: match outliers {
+            "keep" => Outliers::Keep,
+            "remove" => Outliers::Remove,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "outliers: must be 'keep' or 'remove', got '{other}'"
+                )))
+            }
+        },
     };
     answer(py.detach(|| stability(&input)))
 }
@@ -482,7 +492,7 @@ fn clock_log(
     pinions: Option<Vec<i64>>,
     arbor_turns_per_hour: Option<f64>,
 ) -> PyResult<String> {
-    use pendulum_theory::clock_log::{analyse, LogInput, LogKind, TrainInput};
+    use pendulum_theory::clock_log::{analyse, LogColumn, LogInput, LogKind, TrainInput};
     use pendulum_theory::tide::Station;
     let kind = match kind {
         "offset" => LogKind::Offset,
@@ -512,10 +522,22 @@ fn clock_log(
         epoch_unix_s: epoch,
         kind: Some(kind),
         values: values(&values_, "values")?.to_vec(),
-        temperature_c: owned(&temperature, "temperature")?,
-        pressure_hpa: owned(&pressure, "pressure")?,
-        humidity_percent: owned(&humidity, "humidity")?,
-        amplitude_deg: owned(&amplitude, "amplitude")?,
+        // The keywords' units (°C, hPa, %, degrees) to the library's SI.
+        columns: [
+            ("temperature", owned(&temperature, "temperature")?, 1.0),
+            ("pressure", owned(&pressure, "pressure")?, 100.0),
+            ("humidity", owned(&humidity, "humidity")?, 1.0),
+            (
+                "amplitude",
+                owned(&amplitude, "amplitude")?,
+                1f64.to_radians(),
+            ),
+        ]
+        .into_iter()
+        .filter_map(|(name, v, scale)| {
+            v.map(|v| LogColumn::new(name, v.iter().map(|x| x * scale).collect()))
+        })
+        .collect(),
         pulse_width_s: owned(&pulse_width, "pulse_width")?,
         flag_width_m: flag_width,
         gate_radius_m: gate_radius,

@@ -1667,8 +1667,9 @@ def test_clock_log(name, tmp_path):
         columns.append(kw["temperature"])
         weather["temperature"] = kw["temperature"]
     if "pressure_pa" in kw:
-        header.append("pressure_pa")
-        columns.append(kw["pressure_pa"])
+        # Both take hPa (the file's column and the keyword) to Pa alike.
+        header.append("pressure_hpa")
+        columns.append(kw["pressure_pa"] * 0.01)
         weather["pressure"] = kw["pressure_pa"] * 0.01
     path = tmp_path / "log.csv"
     write_csv(path, header, columns)

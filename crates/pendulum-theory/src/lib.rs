@@ -70,6 +70,8 @@ pub mod report;
 pub mod simulation;
 pub mod stability;
 pub mod suspension;
+#[cfg(test)]
+mod test_noise;
 pub mod tide;
 pub mod train;
 

@@ -353,3 +353,184 @@ fn the_noise_type_is_named_right_at_nine_taus_in_ten() {
         "{right} of {tried} right; wrong (alpha, seed, m, named): {wrong:?}"
     );
 }
+
+/// The whole analysis of `data` (phase unless `frequency`).
+fn analysed(
+    data: Vec<f64>,
+    tau0: f64,
+    frequency: bool,
+    outliers: pendulum_theory::stability::Outliers,
+) -> pendulum_theory::stability::Stability {
+    use pendulum_theory::stability::{stability, DataKind, StabilityInput, Taus};
+    stability(&StabilityInput {
+        data,
+        kind: if frequency {
+            DataKind::Frequency
+        } else {
+            DataKind::Phase
+        },
+        tau0_s: tau0,
+        taus: Taus::Octave,
+        force: true,
+        outliers,
+    })
+    .unwrap()
+}
+
+/// allantools' four noises and Riley's 1,000 points carry no jump, no
+/// glitch and no periodic signal: no warning of either (a warning on a
+/// right answer teaches users to ignore it).
+#[test]
+fn clean_series_raise_no_accident_and_no_periodic_warning() {
+    use pendulum_theory::stability::{Outliers, StabilityWarning};
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/stability");
+    let mut series: Vec<(String, Vec<f64>, bool)> =
+        ["white_pm", "white_fm", "flicker_fm", "random_walk_fm"]
+            .iter()
+            .map(|noise| {
+                let x: Vec<f64> = std::fs::read_to_string(dir.join(format!("{noise}.csv")))
+                    .unwrap()
+                    .lines()
+                    .skip(1)
+                    .map(|l| l.parse().unwrap())
+                    .collect();
+                (noise.to_string(), x, false)
+            })
+            .collect();
+    series.push(("nbs14 1000".into(), nbs14_1000(), true));
+    for alpha in [2, 0, -1, -2] {
+        for seed in 1..=5 {
+            series.push((
+                format!("power law {alpha} seed {seed}"),
+                power_law(alpha, 4096, seed),
+                false,
+            ));
+        }
+    }
+    for (name, data, frequency) in series {
+        let s = analysed(data, 1.0, frequency, Outliers::Keep);
+        for w in &s.warnings {
+            assert!(
+                !matches!(
+                    w,
+                    StabilityWarning::Accidents { .. } | StabilityWarning::Periodic { .. }
+                ),
+                "{name}: {w:?}"
+            );
+        }
+    }
+}
+
+/// Seeded standard normals (xorshift and Box–Muller).
+fn gaussian(n: usize, seed: u64) -> Vec<f64> {
+    let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+    let mut uniform = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    };
+    (0..n)
+        .map(|_| {
+            let (u, v) = (uniform(), uniform());
+            (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+        })
+        .collect()
+}
+
+/// White frequency noise every 10 s for 10 days (a clock against GPS).
+fn month_of_offsets(seed: u64) -> Vec<f64> {
+    let y = gaussian(86_400, seed);
+    let mut x = 0.0;
+    y.iter()
+        .map(|v| {
+            x += 1e-7 * v * 10.0;
+            x
+        })
+        .collect()
+}
+
+/// One 1 s glitch (a missed pulse) in 30 days of offsets raised ADEV at
+/// 600 s 49 times with no word, the short τ read as white phase noise:
+/// now it is warned with its time and how much it raises the shortest
+/// τ's ADEV, and `--outliers remove` gives the clean series' deviations.
+#[test]
+fn a_missed_pulse_is_warned_and_removed() {
+    use pendulum_theory::stability::{Noise, Outliers, StabilityWarning};
+    let clean = month_of_offsets(3);
+    let mut glitched = clean.clone();
+    glitched[50_000] += 1.0;
+    let kept = analysed(glitched.clone(), 10.0, false, Outliers::Keep);
+    let w = kept
+        .warnings
+        .iter()
+        .find_map(|w| match w {
+            StabilityWarning::Accidents {
+                glitches,
+                first_time_s,
+                largest,
+                adev_factor,
+                removed,
+                ..
+            } => Some((*glitches, *first_time_s, *largest, *adev_factor, *removed)),
+            _ => None,
+        })
+        .expect("the glitch is warned of");
+    assert_eq!(w.0, 1);
+    assert_eq!(w.1, 5e5);
+    assert!((w.2 - 1.0).abs() < 1e-3);
+    assert!(w.3 > 10.0, "ADEV raised only {} times", w.3);
+    assert!(!w.4);
+    let removed = analysed(glitched, 10.0, false, Outliers::Remove);
+    let reference = analysed(clean, 10.0, false, Outliers::Keep);
+    for (r, c) in removed.rows.iter().zip(&reference.rows).take(8) {
+        let (a, b) = (r.adev.unwrap(), c.adev.unwrap());
+        assert!(
+            (a / b - 1.0).abs() < 0.01,
+            "τ = {}: {a} against {b}",
+            r.tau_s
+        );
+        assert_eq!(r.noise, Some(Noise::WhiteFrequency), "τ = {}", r.tau_s);
+    }
+}
+
+/// A daily cycle of the rate (a room's temperature) over white frequency
+/// noise: the rows it dominates are named as the signal's, without a
+/// noise type that changes row to row; every row without an interval
+/// says why.
+#[test]
+fn a_daily_cycle_is_named_not_read_as_noise() {
+    use pendulum_theory::stability::{Outliers, StabilityWarning};
+    let tau0 = 600.0;
+    let n = 60 * 144;
+    let e = gaussian(n, 8);
+    let y: Vec<f64> = (0..n)
+        .map(|i| 3e-6 * (std::f64::consts::TAU * i as f64 * tau0 / 86_400.0).sin() + 3e-7 * e[i])
+        .collect();
+    let s = analysed(y, tau0, true, Outliers::Keep);
+    let signal = s.periodic.as_ref().expect("the cycle is found");
+    assert!((signal.period_s / 86_400.0 - 1.0).abs() < 0.01);
+    assert!(s
+        .warnings
+        .iter()
+        .any(|w| matches!(w, StabilityWarning::Periodic { .. })));
+    let periodic: Vec<f64> = s
+        .rows
+        .iter()
+        .filter(|r| r.periodic)
+        .map(|r| r.tau_s)
+        .collect();
+    assert!(periodic.contains(&(32.0 * tau0)), "{periodic:?}");
+    for r in &s.rows {
+        if r.periodic {
+            assert_eq!(r.noise, None);
+        }
+        if r.adev_low.is_none() && r.adev.is_some() {
+            assert!(
+                r.no_interval_reason.is_some(),
+                "τ = {} has no interval and no reason",
+                r.tau_s
+            );
+        }
+    }
+}

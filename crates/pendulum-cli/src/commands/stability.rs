@@ -8,8 +8,8 @@ use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use pendulum_theory::analysis::Refusal;
 use pendulum_theory::stability::{
-    grid, stability, DataKind, Gridded, Stability, StabilityInput, StabilityRow, StabilityWarning,
-    Taus,
+    grid, stability, DataKind, Gridded, Outliers, Stability, StabilityInput, StabilityRow,
+    StabilityWarning, Taus,
 };
 use serde::Serialize;
 
@@ -147,6 +147,10 @@ pub fn run(args: &StabilityArgs) -> Result<String, CliError> {
             Taus::Octave
         },
         force: args.force,
+        outliers: match args.outliers {
+            crate::args::OutliersArg::Keep => Outliers::Keep,
+            crate::args::OutliersArg::Remove => Outliers::Remove,
+        },
     })
     .map_err(|r| refused(&r))?;
     if let Some(target) = &plot {
@@ -220,6 +224,7 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
                 match r.noise {
                     Some(n) if r.noise_carried => format!("{} (from shorter τ)", n.name()),
                     Some(n) => n.name().to_string(),
+                    None if r.periodic => "periodic signal".into(),
                     None => "–".into(),
                 },
             ]
@@ -238,10 +243,15 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
         &rows,
     ));
     out.push('\n');
-    let mut seen = Vec::new();
+    // The noises in words, each where it starts; the rows a periodic
+    // signal makes are said apart.
+    let mut previous = None;
     for r in &s.rows {
-        if let Some(n) = r.noise.filter(|n| !seen.contains(n)) {
-            seen.push(n);
+        if r.periodic {
+            previous = None;
+            continue;
+        }
+        if let Some(n) = r.noise.filter(|&n| Some(n) != previous) {
             out.push_str(&format!(
                 "From τ = {} s: {}: {}.\n",
                 num(r.tau_s, 4),
@@ -249,6 +259,21 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
                 n.meaning()
             ));
         }
+        previous = r.noise;
+    }
+    let reasons: Vec<String> = s
+        .rows
+        .iter()
+        .filter_map(|r| {
+            Some(format!(
+                "τ = {} s: {}",
+                num(r.tau_s, 4),
+                r.no_interval_reason?
+            ))
+        })
+        .collect();
+    if !reasons.is_empty() {
+        out.push_str(&format!("No interval at {}.\n", reasons.join("; ")));
     }
     if let Some(b) = &s.best {
         out.push_str(&format!(
@@ -269,6 +294,54 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
                 "warning: {missing} of {of} samples missing (gaps): the terms that touch them are left out\n"
             ),
             StabilityWarning::NoNoiseType => "warning: too few points to tell the noise at any τ (30 needed): no intervals\n".to_string(),
+            StabilityWarning::Accidents {
+                glitches,
+                jumps,
+                first_time_s,
+                largest,
+                adev_factor,
+                removed,
+            } => {
+                let unit = match s.kind {
+                    DataKind::Phase => " s",
+                    DataKind::Frequency => " (fractional frequency)",
+                };
+                let counted = |n: usize, one: &str, many: &str| match n {
+                    0 => None,
+                    1 => Some(format!("1 {one}")),
+                    _ => Some(format!("{n} {many}")),
+                };
+                let counts: Vec<String> = [
+                    counted(*glitches, "glitch", "glitches"),
+                    counted(*jumps, "jump", "jumps"),
+                ]
+                .into_iter()
+                .flatten()
+                .collect();
+                let what = format!(
+                    "{} (the first at {} s from the start, the largest {}{unit})",
+                    counts.join(" and "),
+                    num(*first_time_s, 8),
+                    num(*largest, 3)
+                );
+                if *removed {
+                    format!("warning: {what} taken out (--outliers remove): with them ADEV at τ = {} s was {} times as large\n", num(s.tau0_s, 4), num(*adev_factor, 3))
+                } else {
+                    format!("warning: ADEV and the noise types: {what} raise ADEV at τ = {} s {} times, and the noise types read from it; --outliers remove takes them out (`pendulum log` does)\n", num(s.tau0_s, 4), num(*adev_factor, 3))
+                }
+            }
+            StabilityWarning::Periodic {
+                period_s,
+                amplitude_s_per_day,
+                from_tau_s,
+                to_tau_s,
+            } => format!(
+                "warning: ADEV from τ = {} to {} s is a periodic signal's (period {} h, {} s/day), not noise: no noise type or interval there; `pendulum log` models a daily cycle with the room's temperature\n",
+                num(*from_tau_s, 4),
+                num(*to_tau_s, 4),
+                num(period_s / 3600.0, 4),
+                num(*amplitude_s_per_day, 3)
+            ),
         });
     }
     out

@@ -53,7 +53,7 @@ pub(crate) fn instant(text: &str, flag: &str) -> Result<f64, CliError> {
 
 /// Unix seconds as `2026-01-01T06:00:00Z` (to the millisecond when not
 /// whole).
-fn iso(t: f64) -> String {
+pub(crate) fn iso(t: f64) -> String {
     let ms = (t * 1e3).round() as i64;
     match jiff::Timestamp::from_millisecond(ms) {
         Ok(ts) if ms % 1000 == 0 => ts.strftime("%Y-%m-%dT%H:%M:%SZ").to_string(),

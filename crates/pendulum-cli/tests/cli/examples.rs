@@ -587,8 +587,10 @@ fn examples() -> Vec<(&'static str, Check)> {
             |r| {
                 // The generator's daily temperature swing of 1.5 °C, through
                 // the compensator's 3 h lag (|H| = 1/√(1 + (2π·3/24)²)) at
-                // -0.3 s/day per °C: a daily line of 0.354 s/day, which 60
-                // days cannot part from K1.
+                // -0.3 s/day per °C, gives the rate a daily line of 0.354
+                // s/day; the spectrum is of what the weather terms leave,
+                // so the line left is the body tide's (K1 0.003 s/day in
+                // the generator), not the room's.
                 let day = r.line("day ");
                 let amplitude: f64 = day
                     .split_whitespace()
@@ -596,9 +598,9 @@ fn examples() -> Vec<(&'static str, Check)> {
                     .unwrap()
                     .parse()
                     .unwrap();
-                let truth = 0.3 * 1.5 / (1.0 + (std::f64::consts::TAU * 3.0 / 24.0).powi(2)).sqrt();
-                assert!((amplitude / truth - 1.0).abs() < 0.05, "{amplitude} against {truth}");
-                assert!(day.contains("blended with K1"), "{day}");
+                let room = 0.3 * 1.5 / (1.0 + (std::f64::consts::TAU * 3.0 / 24.0).powi(2)).sqrt();
+                assert!(amplitude < 0.03 * room, "{amplitude} against the room's {room}");
+                assert!(r.line("K1 ").contains("seen"), "{}", r.line("K1 "));
                 for name in ["rate", "weather", "stability", "spectrum"] {
                     r.svg(&format!("clock-{name}.svg"));
                 }

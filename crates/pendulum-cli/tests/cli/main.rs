@@ -17,6 +17,7 @@ mod hardening;
 mod layouts;
 mod listen;
 mod listen_live;
+mod log;
 mod period;
 mod plot;
 mod simulate;

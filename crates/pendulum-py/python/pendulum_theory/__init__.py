@@ -703,17 +703,21 @@ def compensate(parts, compensator=None, *, part=None, jar_material=None, jar_dia
         _number(jar_diameter), _number(jar_wall), _number(tube_diameter), _number(tube_bore)))
 
 
-def stability(data, tau0, *, kind="phase", all_taus=False, force=False):
+def stability(data, tau0, *, kind="phase", all_taus=False, force=False, outliers="keep"):
     """The frequency stability of a series sampled every ``tau0`` s: phase
     (time error, s) or fractional frequency (``kind="frequency"``); NaN
     marks a gap. The CLI's ``stability``, the same library call: the
     overlapping Allan, modified Allan, time and overlapping Hadamard
     deviations at octave averaging times (every one with ``all_taus``),
     each with its 68% interval (Greenhall's EDF) and the noise type
-    (lag-1 autocorrelation), after NIST SP 1065. Returns a dict (kind,
-    tau0_s, phase_points, rows, best, warnings)."""
+    (lag-1 autocorrelation), after NIST SP 1065. Jumps and glitches (a
+    missed pulse) are warned of with how much they raise the shortest τ's
+    deviation; ``outliers="remove"`` takes them out. A periodic signal
+    that dominates some τ is named (``periodic``), its rows without a
+    noise type. Returns a dict (kind, tau0_s, phase_points, rows, best,
+    warnings, periodic)."""
     return _json.loads(_native.stability(_array(data), float(tau0), str(kind), bool(all_taus),
-                                         bool(force)))
+                                         bool(force), str(outliers)))
 
 
 def tide(latitude, longitude, time, *, height=0.0):

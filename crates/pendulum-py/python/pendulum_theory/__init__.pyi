@@ -230,7 +230,13 @@ def report(
 ) -> Dict[str, Any]: ...
 
 def stability(
-    data: npt.ArrayLike, tau0: float, *, kind: str = ..., all_taus: bool = ..., force: bool = ...
+    data: npt.ArrayLike,
+    tau0: float,
+    *,
+    kind: str = ...,
+    all_taus: bool = ...,
+    force: bool = ...,
+    outliers: str = ...,
 ) -> dict[str, Any]: ...
 def tide(
     latitude: float, longitude: float, time: npt.ArrayLike, *, height: float = ...

@@ -5,6 +5,8 @@
 use super::deviations::{mdev, oadev, ohdev, phase_from_frequency};
 use super::edf::{greenhall, Estimator, MDEV, OADEV, OHDEV};
 use super::noise::{identify_pooled, Noise};
+use super::outliers::{find_accidents, remove_accidents, AccidentKind};
+use super::periodic::{find_periodic, PeriodicSignal};
 use crate::analysis::{judge_work, require_finite, Refusal};
 use crate::error::format_significant;
 use serde::Serialize;
@@ -42,6 +44,22 @@ pub struct StabilityInput {
     pub taus: Taus,
     /// Run even when the work estimate is long.
     pub force: bool,
+    /// What to do with jumps and glitches found
+    /// ([`super::outliers`]): keep them (and warn, with how much they
+    /// raise the shortest τ's deviation) or take them out (Stable32's
+    /// practice: a glitch becomes a gap, a jump is taken back).
+    pub outliers: Outliers,
+}
+
+/// What to do with jumps and glitches.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Outliers {
+    /// Keep them, and warn.
+    #[default]
+    Keep,
+    /// Take them out, and say so.
+    Remove,
 }
 
 /// One averaging time.
@@ -85,6 +103,11 @@ pub struct StabilityRow {
     pub noise_carried: bool,
     /// The equivalent degrees of freedom behind the Allan interval.
     pub adev_edf: Option<f64>,
+    /// The row is a periodic signal's more than noise (its Allan variance
+    /// more than half the row's): no noise type, no interval.
+    pub periodic: bool,
+    /// Why the row has no interval, when it has none.
+    pub no_interval_reason: Option<&'static str>,
 }
 
 /// The averaging time at which the clock is steadiest.
@@ -114,6 +137,34 @@ pub enum StabilityWarning {
     },
     /// The noise could not be identified at any τ: no intervals.
     NoNoiseType,
+    /// Jumps and glitches of the series (a missed pulse, the reference
+    /// slipping): found, and kept or taken out.
+    Accidents {
+        /// Glitches (samples read wrong, then right).
+        glitches: usize,
+        /// Jumps (steps of the phase that stay).
+        jumps: usize,
+        /// The first one's time, s from the first sample.
+        first_time_s: f64,
+        /// The largest, s of phase (frequency data: fractional frequency).
+        largest: f64,
+        /// The Allan deviation at the shortest τ with them over without.
+        adev_factor: f64,
+        /// Taken out (`--outliers remove`), or kept.
+        removed: bool,
+    },
+    /// A periodic signal dominates some averaging times: their rows are
+    /// the signal's, not noise.
+    Periodic {
+        /// Its period, s.
+        period_s: f64,
+        /// Its amplitude, s/day.
+        amplitude_s_per_day: f64,
+        /// The shortest and longest τ it dominates, s.
+        from_tau_s: f64,
+        /// The longest.
+        to_tau_s: f64,
+    },
 }
 
 /// The stability of a series.
@@ -132,6 +183,8 @@ pub struct Stability {
     pub best: Option<Best>,
     /// What to be careful of.
     pub warnings: Vec<StabilityWarning>,
+    /// A periodic signal in the series, when one stands out.
+    pub periodic: Option<PeriodicSignal>,
 }
 
 /// The `1σ` (68.27%) interval of a deviation `dev` with `edf` degrees of
@@ -147,6 +200,75 @@ pub fn interval(dev: f64, edf: f64) -> Option<(f64, f64)> {
 
 /// `erf(1/√2)`, the probability within one standard deviation.
 const ONE_SIGMA: f64 = 0.682_689_492_137_085_9;
+
+/// The series' jumps and glitches, kept or taken out as `input` says,
+/// and the warning that names them with how much they raise the Allan
+/// deviation at the shortest τ.
+fn accidents(input: &StabilityInput, tau0: f64) -> (Vec<f64>, Option<StabilityWarning>) {
+    let data = &input.data;
+    let times: Vec<f64> = (0..data.len()).map(|i| i as f64 * tau0).collect();
+    let (found, mut cleaned) = match input.kind {
+        DataKind::Phase => {
+            let found = find_accidents(&times, data);
+            let mut cleaned = data.clone();
+            remove_accidents(&mut cleaned, &found);
+            (found, cleaned)
+        }
+        DataKind::Frequency => {
+            // An outlying rate is a glitch of one sample.
+            let found: Vec<_> = super::outliers::frequency_outliers(data)
+                .into_iter()
+                .map(|(i, d)| super::outliers::Accident {
+                    kind: AccidentKind::Glitch,
+                    time_s: times[i],
+                    first_sample: i,
+                    samples: 1,
+                    size_s: d,
+                    sigmas: 0.0,
+                })
+                .collect();
+            let mut cleaned = data.clone();
+            for a in &found {
+                cleaned[a.first_sample] = f64::NAN;
+            }
+            (found, cleaned)
+        }
+    };
+    if found.is_empty() {
+        return (cleaned, None);
+    }
+    let phase = |d: &[f64]| match input.kind {
+        DataKind::Phase => d.to_vec(),
+        DataKind::Frequency => phase_from_frequency(d, tau0),
+    };
+    let with = oadev(&phase(data), tau0, 1);
+    let without = oadev(&phase(&cleaned), tau0, 1);
+    let factor = match (with, without) {
+        (Some(a), Some(b)) if b > 0.0 => a / b,
+        _ => 1.0,
+    };
+    let warning = StabilityWarning::Accidents {
+        glitches: found
+            .iter()
+            .filter(|a| a.kind == AccidentKind::Glitch)
+            .count(),
+        jumps: found
+            .iter()
+            .filter(|a| a.kind == AccidentKind::Jump)
+            .count(),
+        first_time_s: found[0].time_s,
+        largest: found
+            .iter()
+            .map(|a| a.size_s)
+            .fold(0.0, |a: f64, b| if b.abs() > a.abs() { b } else { a }),
+        adev_factor: factor,
+        removed: input.outliers == Outliers::Remove,
+    };
+    if input.outliers == Outliers::Keep {
+        cleaned = data.clone();
+    }
+    (cleaned, Some(warning))
+}
 
 /// The samples' spacing checked: from a microsecond (a photogate's
 /// timer) to a year (a clock checked once a year); the refusal names
@@ -197,10 +319,17 @@ pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
             "a stability needs at least 3 samples, got {finite}"
         )));
     }
+    let (data, accident) = accidents(input, tau0);
     let phase = match input.kind {
-        DataKind::Phase => input.data.clone(),
-        DataKind::Frequency => phase_from_frequency(&input.data, tau0),
+        DataKind::Phase => data.clone(),
+        DataKind::Frequency => phase_from_frequency(&data, tau0),
     };
+    // The periodic signal, read from the frequency.
+    let frequency: Vec<f64> = match input.kind {
+        DataKind::Frequency => data.clone(),
+        DataKind::Phase => data.windows(2).map(|w| (w[1] - w[0]) / tau0).collect(),
+    };
+    let signal = find_periodic(&frequency, tau0);
     let n = phase.len();
     let factors: Vec<usize> = match input.taus {
         Taus::Octave => std::iter::successors(Some(1usize), |m| m.checked_mul(2))
@@ -220,12 +349,28 @@ pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
     let mut previous: Option<Noise> = None;
     let mut rows = Vec::with_capacity(factors.len());
     for &m in &factors {
-        let identified = identify_pooled(&input.data, m, is_phase, 2);
-        let carried = identified.is_none() && previous.is_some();
-        let noise = identified.or(previous);
-        previous = noise;
+        let a = oadev(&phase, tau0, m);
+        let tau = m as f64 * tau0;
+        let periodic = match (&signal, a) {
+            (Some(sig), Some(a)) => sig.allan_variance(tau) > 0.5 * a * a,
+            _ => false,
+        };
+        let identified = if periodic {
+            None
+        } else {
+            identify_pooled(&data, m, is_phase, 2)
+        };
+        let carried = identified.is_none() && previous.is_some() && !periodic;
+        let noise = if periodic {
+            None
+        } else {
+            identified.or(previous)
+        };
+        if !periodic {
+            previous = noise;
+        }
         let hadamard_noise = if identified.is_some() {
-            identify_pooled(&input.data, m, is_phase, 3)
+            identify_pooled(&data, m, is_phase, 3)
         } else {
             noise
         };
@@ -233,13 +378,19 @@ pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
             let edf = greenhall(noise?.alpha(), est, m, n)?;
             Some((edf, interval(dev?, edf)?))
         };
-        let a = oadev(&phase, tau0, m);
         let md = mdev(&phase, tau0, m);
         let h = ohdev(&phase, tau0, m);
         let a_ci = ci(a, OADEV, noise);
         let md_ci = ci(md, MDEV, noise);
         let h_ci = ci(h, OHDEV, hadamard_noise);
-        let tau = m as f64 * tau0;
+        let no_interval_reason = match (a_ci, periodic, noise) {
+            (Some(_), _, _) => None,
+            (None, true, _) => Some("a periodic signal, not noise, makes this deviation"),
+            (None, false, None) => Some("too few points to tell the noise (30 needed)"),
+            (None, false, Some(_)) => {
+                Some("too few points for the equivalent degrees of freedom at this τ")
+            }
+        };
         rows.push(StabilityRow {
             tau_s: tau,
             averaging_factor: m,
@@ -258,6 +409,8 @@ pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
             noise_alpha: noise.map(Noise::alpha),
             noise_carried: carried,
             adev_edf: a_ci.map(|c| c.0),
+            periodic,
+            no_interval_reason,
         });
     }
     // Rows past the last computable deviation say nothing.
@@ -283,7 +436,23 @@ pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
             of: input.data.len(),
         });
     }
-    if rows.iter().all(|r| r.noise.is_none()) {
+    if let Some(a) = accident {
+        warnings.push(a);
+    }
+    let dominated: Vec<f64> = rows
+        .iter()
+        .filter(|r| r.periodic)
+        .map(|r| r.tau_s)
+        .collect();
+    if let (Some(sig), Some(&from), Some(&to)) = (&signal, dominated.first(), dominated.last()) {
+        warnings.push(StabilityWarning::Periodic {
+            period_s: sig.period_s,
+            amplitude_s_per_day: sig.amplitude_s_per_day,
+            from_tau_s: from,
+            to_tau_s: to,
+        });
+    }
+    if rows.iter().all(|r| r.noise.is_none()) && dominated.is_empty() {
         warnings.push(StabilityWarning::NoNoiseType);
     }
     Ok(Stability {
@@ -293,6 +462,7 @@ pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
         rows,
         best,
         warnings,
+        periodic: signal.filter(|_| !dominated.is_empty()),
     })
 }
 

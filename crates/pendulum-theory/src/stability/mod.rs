@@ -16,17 +16,23 @@
 //! * [`deviations`]: the estimators.
 //! * [`edf`]: Greenhall's equivalent degrees of freedom.
 //! * [`noise`]: the lag-1 autocorrelation noise identification.
+//! * [`outliers`]: jumps and glitches of a time-error series.
+//! * [`periodic`]: a periodic signal that dominates some averaging times.
 //! * [`stability()`]: the one call: every τ, intervals, noise, a reading.
 
 pub mod deviations;
 pub mod edf;
 pub mod noise;
+pub mod outliers;
+pub mod periodic;
 
 mod analysis;
 
 pub use analysis::{
-    grid, interval, stability, Best, DataKind, Gridded, Stability, StabilityInput, StabilityRow,
-    StabilityWarning, Taus,
+    grid, interval, stability, Best, DataKind, Gridded, Outliers, Stability, StabilityInput,
+    StabilityRow, StabilityWarning, Taus,
 };
 pub use deviations::{adev, hdev, mdev, oadev, ohdev, phase_from_frequency, tdev};
 pub use noise::Noise;
+pub use outliers::{find_accidents, remove_accidents, Accident, AccidentKind};
+pub use periodic::{find_periodic, PeriodicSignal};

@@ -79,4 +79,5 @@ pub fn check_all(results: &[(&Worst, f64)]) {
         .collect();
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+pub mod logs;
 pub mod records;

@@ -6,7 +6,7 @@
 use crate::error::CliError;
 use crate::output::num;
 use crate::plot::{render, thin, Figure, Panel, Series, Target, TIME_AXIS};
-use pendulum_theory::clock_log::LogResult;
+use pendulum_theory::clock_log::{LogResult, ModelTerm, Source};
 use pendulum_theory::stability::StabilityRow;
 use std::path::{Path, PathBuf};
 
@@ -101,14 +101,12 @@ pub fn p_text(p: f64) -> String {
     }
 }
 
-/// The weather's axis label.
-fn weather_label(name: &str) -> &'static str {
-    match name {
-        "temperature" => "temperature (°C)",
-        "pressure" => "pressure (hPa)",
-        "humidity" => "relative humidity (%)",
-        "amplitude" => "amplitude (°)",
-        _ => "tidal rate (s/day)",
+/// A term's axis label: its name and its variable's unit, from the
+/// library's table of terms.
+fn weather_label(term: &ModelTerm) -> String {
+    match term.source {
+        Source::Tide => "tidal rate (s/day)".to_string(),
+        _ => format!("{} ({})", term.name, term.variable_unit),
     }
 }
 
@@ -121,7 +119,7 @@ fn rate(r: &LogResult) -> Figure {
     let mut panels = vec![
         Panel::new(
             format!(
-                "The clock's rate in bins of {} s, and the model",
+                "The clock's rate in bins of {} s, and the model with the wander it found",
                 num(r.bin_s, 4)
             ),
             TIME_AXIS,
@@ -138,7 +136,7 @@ fn rate(r: &LogResult) -> Figure {
             vec![Series::dots("residual", at(3))],
         ),
     ];
-    for (name, values) in &r.weather_per_bin {
+    for (term, values) in &r.weather_per_bin {
         let points = r
             .per_bin
             .iter()
@@ -147,10 +145,10 @@ fn rate(r: &LogResult) -> Figure {
             .map(|(b, &v)| (b[0], v))
             .collect();
         panels.push(Panel::new(
-            format!("The {name}"),
+            format!("The {}", term.name),
             TIME_AXIS,
-            weather_label(name),
-            vec![Series::dots(*name, thin(points, SHOWN))],
+            weather_label(term),
+            vec![Series::dots(term.name, thin(points, SHOWN))],
         ));
     }
     Figure { panels }
@@ -168,21 +166,18 @@ fn weather(r: &LogResult) -> Figure {
                         (a.min(x), b.max(x))
                     });
             let line = |x: f64| (x, p.at_mean + p.slope * (x - p.mean));
-            let lag = match (p.term, r.temperature_lag_s) {
-                ("temperature", Some(l)) if l > 0.0 => {
+            let lag = match (p.term.source, r.temperature_lag_s) {
+                (Source::LaggedColumn, Some(l)) if l > 0.0 => {
                     format!(", lagged {} h", num(l / 3600.0, 2))
                 }
                 _ => String::new(),
             };
-            let unit = match p.term {
-                "temperature" => "s/day per °C",
-                "pressure" => "s/day per hPa",
-                "humidity" => "s/day per %",
-                "amplitude" => "s/day per °",
-                _ => "(admittance)",
-            };
+            let unit = p.term.unit;
             Panel::new(
-                format!("The rate against the {}{lag}", p.term),
+                format!(
+                    "The rate against the {}{lag} (every other term and the wander taken out)",
+                    p.term.name
+                ),
                 weather_label(p.term),
                 "rate less the other terms (s/day)",
                 vec![

@@ -9,7 +9,10 @@ use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num, Summary};
 use pendulum_theory::analysis::Refusal;
-use pendulum_theory::clock_log::{analyse, LogInput, LogKind, LogResult, LogWarning, TrainInput};
+use pendulum_theory::clock_log::terms::columns;
+use pendulum_theory::clock_log::{
+    analyse, LogColumn, LogInput, LogKind, LogResult, LogWarning, Source, TrainInput, TERMS,
+};
 use pendulum_theory::period::Nominal;
 use pendulum_theory::stability::StabilityRow;
 use pendulum_theory::tide::Station;
@@ -134,13 +137,11 @@ pub(crate) fn analyse_file(args: &LogArgs) -> Result<Analysed, CliError> {
             }
             roles.push(v);
         }
-        for r in [
-            Role::Temperature,
-            Role::Pressure,
-            Role::Humidity,
-            Role::Amplitude,
-            Role::PulseWidth,
-        ] {
+        // The columns the model's table of terms reads, and pulse widths.
+        let weather = columns()
+            .filter_map(|c| crate::data::role_named(c.name))
+            .chain([Role::PulseWidth]);
+        for r in weather {
             if has(r) {
                 roles.push(r);
             }
@@ -156,9 +157,19 @@ pub(crate) fn analyse_file(args: &LogArgs) -> Result<Analysed, CliError> {
     let origin = table.format.time_origin_s;
     // The Unix time of the log's first row: its date, or --start plus
     // the first row's seconds.
-    let epoch = match &args.start {
-        Some(text) => Some(super::tide::instant(text, "--start")? + origin.unwrap_or(0.0)),
-        None => origin.filter(|&o| o > UNIX_AFTER),
+    let dated = origin.filter(|&o| o > UNIX_AFTER);
+    let epoch = match (&args.start, dated) {
+        (Some(_), Some(first)) => {
+            return Err(CliError::flag(
+                "--start",
+                format!(
+                    "the log's times are already dates (its first is {}); --start is for a log timed in seconds from its start",
+                    super::tide::iso(first)
+                ),
+            ))
+        }
+        (Some(text), None) => Some(super::tide::instant(text, "--start")? + origin.unwrap_or(0.0)),
+        (None, dated) => dated,
     };
     let times = table.column(Role::Time).unwrap_or(&[]).to_vec();
     let (kind, time_s, values) = match table.roles.get(1) {
@@ -177,11 +188,15 @@ pub(crate) fn analyse_file(args: &LogArgs) -> Result<Analysed, CliError> {
         ),
     };
     let skip = usize::from(values.len() < table.lines.len());
-    let env = |role: Role, scale: f64| {
-        table
-            .column(role)
-            .map(|c| c[skip..].iter().map(|v| v * scale).collect::<Vec<f64>>())
-    };
+    // Each column the table of terms reads, in its SI unit as the reader
+    // gives it.
+    let weather: Vec<LogColumn> = columns()
+        .filter_map(|c| {
+            let values = table.column(crate::data::role_named(c.name)?)?;
+            Some(LogColumn::new(c.name, values[skip..].to_vec()))
+        })
+        .collect();
+    let pulses = table.column(Role::PulseWidth).map(|c| c[skip..].to_vec());
     let events = match &args.events {
         Some(path) => read_events(path, origin.unwrap_or(0.0), epoch)?,
         None => Vec::new(),
@@ -207,11 +222,8 @@ pub(crate) fn analyse_file(args: &LogArgs) -> Result<Analysed, CliError> {
     let input = LogInput {
         epoch_unix_s: epoch,
         kind: Some(kind),
-        temperature_c: env(Role::Temperature, 1.0),
-        pressure_hpa: env(Role::Pressure, 0.01),
-        humidity_percent: env(Role::Humidity, 1.0),
-        amplitude_deg: env(Role::Amplitude, 1f64.to_degrees()),
-        pulse_width_s: env(Role::PulseWidth, 1.0),
+        columns: weather,
+        pulse_width_s: pulses,
         flag_width_m: args.flag_width.map(|w| w.0),
         gate_radius_m: args.gate_radius.map(|r| r.0),
         time_s,
@@ -327,60 +339,50 @@ pub(crate) fn text(file: &str, r: &LogResult) -> String {
     s.row(
         "Rate",
         format!(
-            "{} s/day at the mean time and weather",
+            "{} s/day over the log, at its mean weather{}",
             pm(
                 Some(r.rate_s_per_day),
                 Some(r.rate_standard_error_s_per_day),
                 5
             )
-            .unwrap_or_default()
+            .unwrap_or_default(),
+            if (r.rate_at_end_s_per_day - r.rate_s_per_day).abs()
+                > 2.0 * r.rate_standard_error_s_per_day
+            {
+                format!("; {} s/day at its end", num(r.rate_at_end_s_per_day, 4))
+            } else {
+                String::new()
+            }
         ),
     );
-    if let Some(d) = pm(
-        r.drift_s_per_day_per_day,
-        r.drift_standard_error_s_per_day_per_day,
-        3,
-    ) {
-        s.row("Drift", format!("{d} s/day a day"));
-    }
     let c = &r.coefficients;
     let e = &r.standard_errors;
-    if let Some(t) = pm(
-        c.temperature_s_per_day_per_c,
-        e.temperature_s_per_day_per_c,
-        3,
-    ) {
-        let lag = r
-            .temperature_lag_s
-            .filter(|&l| l > 0.0)
-            .map_or(String::new(), |l| {
-                format!(", following the air {} h late", num(l / 3600.0, 2))
-            });
-        s.row("Temperature", format!("{t} s/day per °C{lag}"));
-    }
-    if let Some(p) = pm(
-        c.pressure_s_per_day_per_hpa,
-        e.pressure_s_per_day_per_hpa,
-        3,
-    ) {
-        s.row("Pressure", format!("{p} s/day per hPa"));
-    }
-    if let Some(h) = pm(
-        c.humidity_s_per_day_per_percent,
-        e.humidity_s_per_day_per_percent,
-        3,
-    ) {
-        s.row("Humidity", format!("{h} s/day per % RH"));
-    }
-    if let Some(a) = pm(
-        c.amplitude_s_per_day_per_deg,
-        e.amplitude_s_per_day_per_deg,
-        3,
-    ) {
-        s.row("Amplitude", format!("{a} s/day per degree of swing"));
-    }
-    if let Some(k) = pm(c.tide_admittance, e.tide_admittance, 3) {
-        s.row("Tide", format!("admittance {k} (1: the full body tide)"));
+    for term in TERMS.iter() {
+        let value = match term.source {
+            Source::Time => r.drift_s_per_day_per_day,
+            _ => c.get(term.name),
+        };
+        let se = match term.source {
+            Source::Time => r.drift_standard_error_s_per_day_per_day,
+            _ => e.get(term.name),
+        };
+        let Some(text) = pm(value, se, 3) else {
+            continue;
+        };
+        let lag = match (term.source, r.temperature_lag_s, r.temperature_lag_range_s) {
+            (Source::LaggedColumn, Some(l), Some([lo, hi])) if l > 0.0 => format!(
+                ", following the air {} h late ({} to {} h)",
+                num(l / 3600.0, 3),
+                num(lo / 3600.0, 3),
+                num(hi / 3600.0, 3)
+            ),
+            (Source::LaggedColumn, Some(_), Some([_, hi])) => format!(
+                ", following the air within {} h (no lag told from none)",
+                num(hi / 3600.0, 2)
+            ),
+            _ => String::new(),
+        };
+        s.row(term.label, format!("{text} {}{lag}", term.unit));
     }
     for (i, (v, se)) in c.steps_s_per_day.iter().zip(&e.steps_s_per_day).enumerate() {
         s.row(
@@ -388,13 +390,27 @@ pub(crate) fn text(file: &str, r: &LogResult) -> String {
             format!("{} ± {} s/day", num(*v, 4), num(*se, 2)),
         );
     }
-    let dropped: Vec<&str> = r.terms.iter().filter(|t| !t.kept).map(|t| t.name).collect();
+    let dropped: Vec<String> = r
+        .terms
+        .iter()
+        .filter(|t| !t.kept)
+        .map(|t| {
+            let unit = TERMS
+                .iter()
+                .find(|m| m.name == t.name)
+                .map_or("", |m| m.unit);
+            match pm(t.estimate, t.standard_error, 2) {
+                Some(v) => format!("{}: {v} {unit}", t.name.replace('_', " ")),
+                None => t.name.replace('_', " "),
+            }
+        })
+        .collect();
     if !dropped.is_empty() {
         s.row(
             "Left out",
             format!(
                 "{} (the information criterion prefers the model without)",
-                dropped.join(", ")
+                dropped.join("; ")
             ),
         );
     }
@@ -408,22 +424,20 @@ pub(crate) fn text(file: &str, r: &LogResult) -> String {
         ),
     );
     if let Some(d) = &r.design {
-        let versus = |p: f64, diff: Option<f64>| match diff {
-            Some(x) => format!(
-                "{} (measured {} standard errors away)",
-                num(p, 3),
-                num(x, 2)
-            ),
-            None => format!("{} (not measured)", num(p, 3)),
-        };
-        s.row(
-            "Design says",
-            format!(
-                "{} s/day per °C; {} s/day per hPa",
-                versus(d.temperature_s_per_day_per_c, d.temperature_difference_se),
-                versus(d.pressure_s_per_day_per_hpa, d.pressure_difference_se)
-            ),
-        );
+        let parts: Vec<String> = d
+            .predictions
+            .iter()
+            .map(|p| match p.difference_se {
+                Some(x) => format!(
+                    "{} {} (measured {} standard errors away)",
+                    num(p.predicted, 3),
+                    p.term.unit,
+                    num(x, 2)
+                ),
+                None => format!("{} {} (not measured)", num(p.predicted, 3), p.term.unit),
+            })
+            .collect();
+        s.row("Design says", parts.join("; "));
     }
     let mut out = s.render();
     for (title, rows) in [
@@ -435,7 +449,7 @@ pub(crate) fn text(file: &str, r: &LogResult) -> String {
     }
     out.push_str(&periodic(r));
     for w in &r.warnings {
-        out.push_str(&format!("warning: {}\n", warning(w)));
+        out.push_str(&format!("warning: {}\n", warning(w, r.epoch_unix_s)));
     }
     out
 }
@@ -560,7 +574,11 @@ fn stability_table(rows: &[StabilityRow]) -> String {
                     _ => "–".into(),
                 },
                 r.adev_s_per_day.map_or("–".into(), |v| num(v, 3)),
-                r.noise.map_or("–".into(), |n| n.name().to_string()),
+                match r.noise {
+                    Some(n) => n.name().to_string(),
+                    None if r.periodic => "periodic signal".into(),
+                    None => "–".into(),
+                },
             ]
         })
         .collect();
@@ -568,21 +586,66 @@ fn stability_table(rows: &[StabilityRow]) -> String {
 }
 
 /// A warning in words.
-fn warning(w: &LogWarning) -> String {
+fn warning(w: &LogWarning, epoch: Option<f64>) -> String {
+    // A log time as a date when the log has dates, else in seconds.
+    let when = |t: f64| match epoch {
+        Some(e) => super::tide::iso(e + t),
+        None => format!("{} s", num(t, 10)),
+    };
     match w {
+        LogWarning::JumpsUndone {
+            count,
+            first_time_s,
+            largest_s,
+        } => format!(
+            "rate: {count} jumps of the offset taken out (the first at {}, the largest {} s): the clock set or stopped, or the reference changed; the rate is read across them, and a stop's lost time is not in it",
+            when(*first_time_s),
+            num(*largest_s, 4)
+        ),
+        LogWarning::GlitchesLeftOut {
+            count,
+            samples,
+            first_time_s,
+            largest_s,
+        } => format!(
+            "rate and stability: {count} glitches left out ({samples} offsets read wrong and then right, the first at {}, the largest {} s off: a missed pulse?)",
+            when(*first_time_s),
+            num(*largest_s, 4)
+        ),
+        LogWarning::RatesLeftOut {
+            count,
+            first_time_s,
+            largest_s_per_day,
+        } => format!(
+            "rate: {count} rates far out of line with their neighbours left out (the first at {}, the largest {} s/day off)",
+            when(*first_time_s),
+            num(*largest_s_per_day, 4)
+        ),
+        LogWarning::LagAtLimit { lag_s } => format!(
+            "temperature: its lag, {} h, is the longest this log can tell: the lag may be longer, and the temperature coefficient larger with it",
+            num(lag_s / 3600.0, 3)
+        ),
+        LogWarning::ErrorsWidened {
+            factor,
+            autocorrelation,
+        } => format!(
+            "every standard error (the rate's and the coefficients') widened {}×: the residuals are correlated beyond the noise model (lag-1 autocorrelation {})",
+            num(*factor, 3),
+            num(*autocorrelation, 2)
+        ),
         LogWarning::WrapsUndone { count } => format!(
-            "{count} whole-beat jumps of the offset undone (the reference slipped a tick)"
+            "rate: {count} whole-beat jumps of the offset undone (the reference slipped a tick); the rate is read across them"
         ),
         LogWarning::Implausible { term, reason } => format!("{term}: {reason}"),
         LogWarning::TideAdmittance {
             admittance,
             from_one_se,
         } => format!(
-            "the tide's admittance {} is {} standard errors from 1: something else shares the tide's periods (a daily temperature cycle?), or the times are not UTC",
+            "tide: the admittance {} is {} standard errors from 1: something else shares the tide's periods (a daily temperature cycle?), or the times are not UTC",
             num(*admittance, 3),
             num(*from_one_se, 2)
         ),
-        LogWarning::Short { what } => format!("the log is too short to tell the {what}"),
+        LogWarning::Short { what } => format!("{what}: the log is too short to tell it"),
         LogWarning::TimesRepeated {
             dropped,
             first_time_s,

@@ -1,0 +1,165 @@
+//! `pendulum log` and `pendulum stability` on the records issue 44 found
+//! answered wrong: each is now answered, refused with its reason or
+//! warned with the figure it concerns, through the real binary.
+
+use crate::util::{f, json, pendulum, refuses};
+
+/// A file of the project's examples, by its path from the repository.
+fn example(name: &str) -> String {
+    format!("{}/../../examples/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn write(dir: &std::path::Path, name: &str, text: &str) -> String {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+/// A small generator of standard normal deviates (xorshift and
+/// Box–Muller), so the files do not depend on a crate's stream.
+struct Normal(u64);
+
+impl Normal {
+    fn uniform(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        ((self.0 >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    }
+    fn next(&mut self) -> f64 {
+        let (a, b) = (self.uniform(), self.uniform());
+        (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
+    }
+}
+
+/// `--start` on a log whose times are already dates moved them decades
+/// on (to 2076) and fitted the tides for those dates: refused, naming
+/// the flag and the log's first date.
+#[test]
+fn start_on_a_dated_log_is_refused() {
+    let e = refuses(
+        &["log", &example("clock-log.csv"), "--start", "2026-01-01"],
+        "--start",
+    );
+    assert!(e.contains("already dates"), "{e}");
+    assert!(e.contains("2026-01-01T00:00:00Z"), "{e}");
+}
+
+/// A video's frame times (a Tracker export) were taken as a clock's half
+/// periods without a word: refused, pointing to the fits.
+#[test]
+fn video_frame_times_are_not_half_periods() {
+    let out = pendulum()
+        .args(["log", &example("tracker.txt")])
+        .assert()
+        .code(2)
+        .stdout("")
+        .get_output()
+        .stderr
+        .clone();
+    let e = String::from_utf8(out).unwrap();
+    assert!(e.contains("video's frames"), "{e}");
+    assert!(e.contains("fit trajectory"), "{e}");
+    assert_eq!(e.lines().count(), 1, "{e}");
+}
+
+/// A master clock's 25 hourly offsets against NTP were refused at every
+/// `--bin`: now the mean rate is given, and it agrees with the offsets'
+/// own least-squares slope within its standard error.
+#[test]
+fn twenty_five_hourly_offsets_give_a_rate() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut noise = Normal(0x5eed_0025);
+    let mut text = String::from("time_s,offset_s\n");
+    let (mut ts, mut xs) = (Vec::new(), Vec::new());
+    for i in 0..25 {
+        let t = 3600.0 * i as f64;
+        // 0.8 s/day fast, white phase noise of 5 ms (NTP's).
+        let x = 0.8 * t / 86_400.0 + 0.005 * noise.next();
+        text.push_str(&format!("{t},{x:.6}\n"));
+        ts.push(t);
+        xs.push(x);
+    }
+    let path = write(dir.path(), "hourly.csv", &text);
+    let v = json(&["log", &path]);
+    let rate = f(&v, "rate_s_per_day");
+    let se = f(&v, "rate_standard_error_s_per_day");
+    let n = ts.len() as f64;
+    let (mt, mx) = (ts.iter().sum::<f64>() / n, xs.iter().sum::<f64>() / n);
+    let slope = ts
+        .iter()
+        .zip(&xs)
+        .map(|(t, x)| (t - mt) * (x - mx))
+        .sum::<f64>()
+        / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+    let slope = slope * 86_400.0;
+    assert!(se > 0.0 && se < 0.1, "{se}");
+    assert!(
+        (rate - slope).abs() < 3.0 * se,
+        "rate {rate} ± {se} against the slope {slope}"
+    );
+    assert!((rate - 0.8).abs() < 3.0 * se, "rate {rate} ± {se}");
+}
+
+/// One missed pulse (a 1 s step) in 30 days of offsets every 10 min: the
+/// warning names ADEV at the shortest τ and the jump's time; `--outliers
+/// remove` takes it out and says so, and the deviations come back to
+/// those of the series without it.
+#[test]
+fn a_missed_pulse_is_named_and_can_be_removed() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut noise = Normal(0x0dd_5eed);
+    let (mut clean, mut stepped) = (
+        String::from("time_s,offset_s\n"),
+        String::from("time_s,offset_s\n"),
+    );
+    let mut x = 0.0;
+    for i in 0..30 * 144 {
+        x += 6e-4 * noise.next();
+        let t = 600 * i;
+        clean.push_str(&format!("{t},{x:.9}\n"));
+        let step = if i >= 2000 { 1.0 } else { 0.0 };
+        stepped.push_str(&format!("{t},{:.9}\n", x + step));
+    }
+    let clean = write(dir.path(), "clean.csv", &clean);
+    let stepped = write(dir.path(), "stepped.csv", &stepped);
+
+    let out = pendulum()
+        .args(["stability", &stepped])
+        .assert()
+        .success()
+        .get_output()
+        .clone();
+    let text = String::from_utf8(out.stdout).unwrap();
+    let warning = text
+        .lines()
+        .find(|l| l.starts_with("warning: ADEV"))
+        .unwrap_or_else(|| panic!("no warning naming ADEV:\n{text}"));
+    assert!(warning.contains("1 jump"), "{warning}");
+    assert!(warning.contains("1200000 s from the start"), "{warning}");
+    assert!(warning.contains("--outliers remove"), "{warning}");
+
+    let reference = json(&["stability", &clean]);
+    assert!(
+        reference["warnings"].as_array().unwrap().is_empty(),
+        "a clean series is warned: {}",
+        reference["warnings"]
+    );
+    let removed = json(&["stability", &stepped, "--outliers", "remove"]);
+    let w = &removed["warnings"][0];
+    assert_eq!(w["kind"], "accidents");
+    assert_eq!(w["removed"], true);
+    assert!(f(w, "adev_factor") > 10.0, "{w}");
+    let rows = |v: &serde_json::Value| -> Vec<f64> {
+        v["stability"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .take(6)
+            .map(|r| f(r, "adev"))
+            .collect()
+    };
+    for (a, b) in rows(&removed).iter().zip(rows(&reference)) {
+        assert!((a / b - 1.0).abs() < 0.01, "{a} against {b}");
+    }
+}

@@ -163,3 +163,36 @@ fn a_missed_pulse_is_named_and_can_be_removed() {
         assert!((a / b - 1.0).abs() < 0.01, "{a} against {b}");
     }
 }
+
+/// A real chronometer's daily time errors (Arnold No. 36 at Greenwich,
+/// 1779-80, 341 days): its rate "at the mean time" was -1.81 ± 0.39
+/// s/day, the first weeks' rate, where the log's own ends give -0.61:
+/// now the rate is the mean over the log, within its standard error of
+/// the ends' (first to last reading over the span, an independent
+/// figure), with a standard error that holds the rate's wander.
+#[test]
+fn a_real_chronometer_gives_its_mean_rate() {
+    let path = format!(
+        "{}/tests/data/logs/arnold36.csv",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).unwrap();
+    let rows: Vec<(f64, f64)> = text
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let (t, x) = l.split_once(',').unwrap();
+            (t.parse().unwrap(), x.parse().unwrap())
+        })
+        .collect();
+    let (first, last) = (rows[0], rows[rows.len() - 1]);
+    let ends = (last.1 - first.1) / (last.0 - first.0) * 86_400.0;
+    let v = json(&["log", &path]);
+    let rate = f(&v, "rate_s_per_day");
+    let se = f(&v, "rate_standard_error_s_per_day");
+    assert!((rate - ends).abs() < se, "{rate} ± {se} against {ends}");
+    // The rate wandered by some 2 s/day over the year: a standard error
+    // of white noise alone (0.7 s/day a day over 340 days: 0.002) would
+    // be far too small.
+    assert!(se > 0.02 && se < 0.2, "{se}");
+}

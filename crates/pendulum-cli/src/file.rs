@@ -255,10 +255,10 @@ fn blocking(file: &File) -> std::io::Result<()> {
     Ok(())
 }
 
-/// Opens a file the run reads, and remembers it so that no output of the
-/// run may replace it. A FIFO is opened without waiting for a writer (one
-/// that has none then reads as empty), so a named pipe never hangs a run.
-pub fn open_input(path: &Path) -> std::io::Result<File> {
+/// Opens `path` for reading without waiting for a writer (a FIFO that has
+/// none then reads as empty, so a named pipe never hangs a run), and
+/// remembers it so that no output of the run may replace it.
+fn open_registered(path: &Path) -> std::io::Result<File> {
     use std::os::unix::fs::OpenOptionsExt;
     let file = std::fs::OpenOptions::new()
         .read(true)
@@ -272,6 +272,129 @@ pub fn open_input(path: &Path) -> std::io::Result<File> {
         inputs.push((meta.dev(), meta.ino(), path.to_path_buf()));
     }
     Ok(file)
+}
+
+/// Opens a file the run reads by position (a sound file, which a decoder
+/// seeks in). A pipe or a device opened here is read once, as it comes:
+/// its caller refuses anything but a regular file.
+pub fn open_input_file(path: &Path) -> std::io::Result<File> {
+    open_registered(path)
+}
+
+/// The bytes of a stream this run has read (a pipe, `/dev/stdin`, a
+/// terminal, a device), kept so that every reader of it reads them all:
+/// a pipe gives its bytes once, and a first look at a file (its width,
+/// its separator) must not take them from the reader that follows.
+struct Replay {
+    /// The stream.
+    source: File,
+    /// Everything read from it so far.
+    bytes: Vec<u8>,
+    /// Whether its end was reached.
+    ended: bool,
+}
+
+/// A stream's bytes, shared by its readers.
+type Shared = std::sync::Arc<Mutex<Replay>>;
+
+/// The streams this run has opened, by (device, inode).
+static STREAMS: Mutex<Vec<((u64, u64), Shared)>> = Mutex::new(Vec::new());
+
+/// A file the run reads from its start: a regular file (or a folder, for
+/// its caller to refuse) from the disk; anything else (a pipe,
+/// `/dev/stdin`, `<(…)`, a terminal, a device) through the run's one copy
+/// of its bytes, so that every opening of it reads the same bytes from
+/// the first. The copy holds what was read, no more: a reader that stops
+/// early (a line too long, a file too large) stops the reading.
+pub struct Input {
+    source: Source,
+    /// How far this reader has read a stream's bytes.
+    position: usize,
+}
+
+enum Source {
+    File(File),
+    Stream(Shared),
+}
+
+impl Input {
+    /// The metadata of what was opened (a stream's own: a FIFO, a
+    /// character device).
+    pub fn metadata(&self) -> std::io::Result<std::fs::Metadata> {
+        match &self.source {
+            Source::File(f) => f.metadata(),
+            Source::Stream(s) => s
+                .lock()
+                .unwrap_or_else(std::sync::PoisonError::into_inner)
+                .source
+                .metadata(),
+        }
+    }
+}
+
+impl std::io::Read for Input {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let replay = match &mut self.source {
+            Source::File(f) => return f.read(buf),
+            Source::Stream(s) => s.clone(),
+        };
+        let mut replay = replay
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if self.position == replay.bytes.len() && !replay.ended && !buf.is_empty() {
+            // Past what any reader has read: read on, keeping the bytes.
+            let Replay {
+                source,
+                bytes,
+                ended,
+            } = &mut *replay;
+            let start = bytes.len();
+            bytes.resize(start + buf.len().max(1 << 16), 0);
+            let read = source.read(&mut bytes[start..]);
+            bytes.truncate(start + *read.as_ref().unwrap_or(&0));
+            *ended = read? == 0;
+        }
+        let held = &replay.bytes[self.position..];
+        let n = held.len().min(buf.len());
+        buf[..n].copy_from_slice(&held[..n]);
+        self.position += n;
+        Ok(n)
+    }
+}
+
+/// Opens a file the run reads as an [`Input`], and remembers it so that
+/// no output of the run may replace it. A stream opened before (the same
+/// pipe, by any path) is read again from its first byte.
+pub fn open_input(path: &Path) -> std::io::Result<Input> {
+    let file = open_registered(path)?;
+    let meta = file.metadata()?;
+    if meta.is_file() || meta.is_dir() {
+        return Ok(Input {
+            source: Source::File(file),
+            position: 0,
+        });
+    }
+    let key = (meta.dev(), meta.ino());
+    let mut streams = STREAMS
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let replay = match streams.iter().find(|(k, _)| *k == key) {
+        // (The new descriptor is closed: the first one reads on.)
+        Some((_, replay)) => replay.clone(),
+        None => {
+            let replay = std::sync::Arc::new(Mutex::new(Replay {
+                source: file,
+                bytes: Vec::new(),
+                ended: false,
+            }));
+            streams.push((key, replay.clone()));
+            replay
+        }
+    };
+    Ok(Input {
+        source: Source::Stream(replay),
+        position: 0,
+    })
 }
 
 /// The input (as its path was given) that `target` is, or that lies

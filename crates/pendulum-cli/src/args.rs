@@ -569,7 +569,9 @@ pub struct ReportArgs {
     pub train: Option<TrainSpec>,
     #[arg(long, allow_hyphen_values = true, value_name = "N", requires = "train", help = with_default("Turns an hour of the train's first arbor", train_analysis::DEFAULT_ARBOR_TURNS_PER_HOUR))]
     pub arbor_turns_per_hour: Option<Number>,
-    /// Folder to write index.html and its figures in.
+    /// Folder to write index.html and its figures in: new, empty, or an
+    /// earlier report's holding nothing else (of which only the files its
+    /// .pendulum-report lists are removed).
     #[arg(long, value_name = "DIR", default_value = "pendulum-report")]
     pub output: std::path::PathBuf,
     #[command(flatten)]

@@ -149,3 +149,177 @@ fn a_design_through_dev_stdin_is_read_by_every_reader() {
     );
     assert_eq!(from_pipe, from_file);
 }
+
+// ---- A report's folder: only the files it wrote are removed ------------------
+
+/// `report --output DIR` into `dir`: its one line of refusal (status 2,
+/// nothing on standard output), or `None` when it wrote the report.
+fn report_into(dir: &Path, extra: &[&str]) -> Option<String> {
+    let out = pendulum()
+        .args(["report", "--output", dir.to_str().unwrap()])
+        .args(extra)
+        .output()
+        .unwrap();
+    if out.status.success() {
+        return None;
+    }
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let line = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(line.lines().count(), 1, "{line}");
+    assert!(line.starts_with("error: --output: "), "{line}");
+    Some(line)
+}
+
+/// The sorted names in `dir`.
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+/// Puts a marker into a folder.
+type MakeMarker<'a> = dyn Fn(&Path) + 'a;
+
+/// A marker that is empty, a symbolic link, written by something else,
+/// or naming a file outside the folder makes no folder the report's: the
+/// user's files beside it stay (an empty marker, or a link named like
+/// it, was enough for the folder to be replaced whole).
+#[test]
+fn a_marker_the_report_did_not_write_deletes_nothing() {
+    let root = tempfile::tempdir().unwrap();
+    let outside = root.path().join("outside.txt");
+    std::fs::write(&outside, "the user's").unwrap();
+    let cases: [(&str, &MakeMarker<'_>, &str); 5] = [
+        (
+            "empty",
+            &|d| std::fs::write(d.join(".pendulum-report"), "").unwrap(),
+            "is empty",
+        ),
+        (
+            "link",
+            &|d| std::os::unix::fs::symlink(&outside, d.join(".pendulum-report")).unwrap(),
+            "symbolic link",
+        ),
+        (
+            "foreign",
+            &|d| std::fs::write(d.join(".pendulum-report"), "index.html\nnotes.txt\n").unwrap(),
+            "not the list of files a report writes",
+        ),
+        (
+            "outside",
+            &|d| {
+                std::fs::write(
+                    d.join(".pendulum-report"),
+                    "pendulum report: the files below were written here by `pendulum report`; a \
+                     later report removes them and nothing else.\n../outside.txt\nnotes.txt\n",
+                )
+                .unwrap()
+            },
+            "names '../outside.txt'",
+        ),
+        (
+            "a folder",
+            &|d| std::fs::create_dir(d.join(".pendulum-report")).unwrap(),
+            "not the list of files a report writes",
+        ),
+    ];
+    for (name, make_marker, says) in cases {
+        let dir = root.path().join(name);
+        std::fs::create_dir(&dir).unwrap();
+        make_marker(&dir);
+        std::fs::write(dir.join("notes.txt"), "the user's").unwrap();
+        let before = names(&dir);
+        let line = report_into(&dir, &[]).unwrap_or_else(|| panic!("{name}: written"));
+        assert!(line.contains("not an earlier report"), "{name}: {line}");
+        assert!(line.contains(says), "{name}: {line}");
+        assert_eq!(names(&dir), before, "{name}");
+        assert_eq!(
+            std::fs::read_to_string(dir.join("notes.txt")).unwrap(),
+            "the user's"
+        );
+    }
+    assert_eq!(std::fs::read_to_string(&outside).unwrap(), "the user's");
+}
+
+/// An earlier report is replaced file for file: the new report's files,
+/// the old one's that it does not write removed (a log's figures), its
+/// marker listing what it wrote; a file of the user's put in beside the
+/// report is named in the refusal and kept, the report with it.
+#[test]
+fn an_earlier_report_is_replaced_only_of_its_own_files() {
+    let root = tempfile::tempdir().unwrap();
+    let dir = root.path().join("report");
+    let log = example("clock-log.csv");
+    assert_eq!(report_into(&dir, &["--log", log.to_str().unwrap()]), None);
+    let with_log = names(&dir);
+    assert!(
+        with_log.contains(&"log-rate.svg".to_string()),
+        "{with_log:?}"
+    );
+    std::fs::write(dir.join("notes.txt"), "the user's").unwrap();
+    let line = report_into(&dir, &[]).expect("refused");
+    assert!(
+        line.contains("holds a file the earlier report there did not write (notes.txt)"),
+        "{line}"
+    );
+    let mut kept = with_log.clone();
+    kept.push("notes.txt".to_string());
+    kept.sort();
+    assert_eq!(names(&dir), kept);
+    std::fs::remove_file(dir.join("notes.txt")).unwrap();
+    assert_eq!(report_into(&dir, &[]), None);
+    assert_eq!(
+        names(&dir),
+        [
+            ".pendulum-report",
+            "decay.svg",
+            "index.html",
+            "period.svg",
+            "rundown.svg"
+        ]
+    );
+    let marker = std::fs::read_to_string(dir.join(".pendulum-report")).unwrap();
+    let mut listed: Vec<&str> = marker.lines().skip(1).collect();
+    listed.sort_unstable();
+    assert_eq!(
+        listed,
+        ["decay.svg", "index.html", "period.svg", "rundown.svg"]
+    );
+    // A listed name that is now a folder is not the report's file.
+    std::fs::remove_file(dir.join("decay.svg")).unwrap();
+    std::fs::create_dir(dir.join("decay.svg")).unwrap();
+    std::fs::write(dir.join("decay.svg").join("inside.txt"), "the user's").unwrap();
+    let line = report_into(&dir, &[]).expect("refused");
+    assert!(line.contains("'decay.svg', which is not a file"), "{line}");
+    assert!(dir.join("decay.svg").join("inside.txt").is_file());
+}
+
+/// A folder of a report from before the marker listed its files (its
+/// marker a fixed sentence) is replaced when it holds only the files
+/// those reports wrote, and refused when it holds anything else.
+#[test]
+fn a_report_from_before_the_list_is_replaced_only_when_it_holds_its_own_files() {
+    let root = tempfile::tempdir().unwrap();
+    let legacy = "This folder was written by `pendulum report`; a later report may replace it.\n";
+    let dir = root.path().join("old");
+    std::fs::create_dir(&dir).unwrap();
+    std::fs::write(dir.join(".pendulum-report"), legacy).unwrap();
+    for f in ["index.html", "period.svg", "log-folds.svg"] {
+        std::fs::write(dir.join(f), "old").unwrap();
+    }
+    std::fs::write(dir.join("thesis.tex"), "the user's").unwrap();
+    let line = report_into(&dir, &[]).expect("refused");
+    assert!(line.contains("(thesis.tex)"), "{line}");
+    assert!(dir.join("thesis.tex").is_file() && dir.join("log-folds.svg").is_file());
+    std::fs::remove_file(dir.join("thesis.tex")).unwrap();
+    assert_eq!(report_into(&dir, &[]), None);
+    assert!(!dir.join("log-folds.svg").exists());
+    assert_ne!(
+        std::fs::read_to_string(dir.join("index.html")).unwrap(),
+        "old"
+    );
+}

@@ -323,3 +323,74 @@ fn a_report_from_before_the_list_is_replaced_only_when_it_holds_its_own_files() 
         "old"
     );
 }
+
+// ---- A raw stream's layout ----------------------------------------------------
+
+/// `--channels 1000000000` aborted on a block of 9.6 TB; every count past
+/// a WAV stream's 65,535 is refused in one line, the last one allowed is
+/// read.
+#[test]
+fn listen_refuses_more_channels_than_a_stream_holds() {
+    let zeros = vec![0_u8; 1 << 16];
+    for channels in ["1000000000", "65536", "0"] {
+        let line = super::util::refuses_given(
+            &[
+                "listen",
+                "-",
+                "--raw",
+                "s16le",
+                "--sample-rate",
+                "48000",
+                "--channels",
+                channels,
+            ],
+            &zeros,
+            "--channels",
+        );
+        assert!(
+            line.contains(&format!(
+                "must be 1 to 65535 (the most a WAV stream can hold), got {channels}"
+            )),
+            "{line}"
+        );
+    }
+    // The most allowed is read (and found silent), not refused.
+    let line = super::util::refuses_given(
+        &[
+            "listen",
+            "-",
+            "--raw",
+            "s16le",
+            "--sample-rate",
+            "4294967295",
+            "--channels",
+            "65535",
+        ],
+        &zeros,
+        "-: no regular ticking",
+    );
+    assert!(!line.contains("--channels"), "{line}");
+}
+
+/// A WAV stream whose header claims 65,535 channels at 4.29 GHz aborted
+/// on a block of 56 TB; it is read in blocks of at most a mebibyte.
+#[test]
+fn a_wav_stream_of_the_most_channels_at_the_highest_rate_is_read_in_bounded_blocks() {
+    let channels: u16 = u16::MAX;
+    let rate = u32::MAX;
+    let mut wav = Vec::new();
+    wav.extend_from_slice(b"RIFF");
+    wav.extend_from_slice(&u32::MAX.to_le_bytes());
+    wav.extend_from_slice(b"WAVEfmt ");
+    wav.extend_from_slice(&16_u32.to_le_bytes());
+    wav.extend_from_slice(&1_u16.to_le_bytes());
+    wav.extend_from_slice(&channels.to_le_bytes());
+    wav.extend_from_slice(&rate.to_le_bytes());
+    wav.extend_from_slice(&0_u32.to_le_bytes());
+    wav.extend_from_slice(&channels.wrapping_mul(2).to_le_bytes());
+    wav.extend_from_slice(&16_u16.to_le_bytes());
+    wav.extend_from_slice(b"data");
+    wav.extend_from_slice(&u32::MAX.to_le_bytes());
+    wav.resize(wav.len() + 2_000_000, 0);
+    super::util::refuses_given(&["listen", "-"], &wav, "-: no regular ticking");
+}

@@ -1280,9 +1280,10 @@ pub struct ClockArgs {
     )]
     pub every: Option<Time>,
     /// With --duration: what changes with time (CSV: time_s and any of
-    /// drive_factor, temperature_c, pressure_hpa, humidity_percent,
-    /// gradient_k_per_m; all but the first with --design, moving the rate
-    /// by its coefficients), linear between rows.
+    /// drive_factor; rate_change_s_per_day, a change of rate from outside,
+    /// positive gaining; or, with --design, moving the rate by its
+    /// coefficients, temperature_c, pressure_hpa, humidity_percent,
+    /// gradient_k_per_m), linear between rows.
     #[arg(long, value_name = "FILE.csv", requires = "duration")]
     pub drive_file: Option<InputPath>,
     /// The gas the --drive-file's pressure_hpa is of: air, nitrogen or

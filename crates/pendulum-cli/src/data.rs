@@ -87,6 +87,8 @@ pub enum Role {
     Humidity,
     /// A vertical temperature gradient, K/m, warmer upwards.
     Gradient,
+    /// A change of a clock's rate from outside, s/day (positive: gaining).
+    RateChange,
 }
 
 /// A role's name for messages ("offset", "half period").
@@ -124,6 +126,7 @@ impl Role {
             Role::PulseWidth => "pulse width",
             Role::Humidity => "humidity",
             Role::Gradient => "gradient",
+            Role::RateChange => "rate change",
         }
     }
 
@@ -210,6 +213,7 @@ impl Role {
             | "vertical gradient"
             | "dt_dz"
             | "dtdz" => Role::Gradient,
+            "rate_change" | "rate change" | "ratechange" => Role::RateChange,
             // phyphox's raw gyroscope data, in the app's languages.
             _ if gyro_axis(base).is_some() => gyro_axis(base)?,
             _ => return None,
@@ -984,6 +988,7 @@ fn units_for(role: Role) -> &'static str {
         Role::Frequency => "s/day, ppm, ppb, or none (a fraction)",
         Role::Humidity => "%",
         Role::Gradient => "K/m, °C/m, K/cm",
+        Role::RateChange => "s/day, ppm",
         _ => "none",
     }
 }
@@ -1062,6 +1067,9 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
             (Role::Humidity, _) => unit.as_deref().map_or(Some(1.0), |_| kind(Kind::Percent)),
             // A bare gradient is in K/m.
             (Role::Gradient, _) => unit.as_deref().map_or(Some(1.0), |_| kind(Kind::Gradient)),
+            // A rate change is read in s/day, bare or with its unit.
+            (Role::RateChange, None) => Some(1.0),
+            (Role::RateChange, Some(_)) => kind(Kind::ClockRate).map(|f| f * 86_400.0),
             (Role::Pressure, Some(_)) => kind(Kind::Pressure),
         };
         found.push(Found {

@@ -394,3 +394,104 @@ fn a_wav_stream_of_the_most_channels_at_the_highest_rate_is_read_in_bounded_bloc
     wav.resize(wav.len() + 2_000_000, 0);
     super::util::refuses_given(&["listen", "-"], &wav, "-: no regular ticking");
 }
+
+// ---- A rate that stops the clock ----------------------------------------------
+
+/// `clock --drive-file` with a `rate_change_s_per_day` column (Python's
+/// `rate_schedule`): a change of rate from outside moves the time error
+/// by its integral, and a rate of -86,400 s/day or below (a clock that
+/// has stopped; a run towards it hung in Python) is refused by its line
+/// and column; close to it the run ends, warned.
+#[test]
+fn a_drive_file_rate_change_of_a_stopped_clock_is_refused_by_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |last: &str| {
+        let path = dir.path().join("rate.csv");
+        std::fs::write(
+            &path,
+            format!("time_s,rate_change_s_per_day\n0,0\n86400,{last}\n"),
+        )
+        .unwrap();
+        let args = [
+            "clock",
+            "--length",
+            "0.99362m",
+            "--drive",
+            "20uJ",
+            "--duration",
+            "2day",
+            "--every",
+            "1h",
+            "--drive-file",
+            path.to_str().unwrap(),
+        ];
+        (path.clone(), args.map(String::from))
+    };
+    for (last, says) in [
+        (
+            "-86400",
+            "above -86400 s/day: a clock that loses a day a day has stopped; got -86400 s/day",
+        ),
+        ("-86401", "has stopped; got -86401 s/day"),
+        ("-1e300", "has stopped; got -1e300 s/day"),
+        ("86400", "below 86400 s/day"),
+    ] {
+        let (path, args) = run(last);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let line = super::util::refuses(&args, "--drive-file");
+        assert!(
+            line.contains(&format!(
+                "{}: line 3, column rate_change_s_per_day: must be a rate change within a day per day, ",
+                path.display()
+            )) && line.contains(says),
+            "{line}"
+        );
+    }
+    // Near it: the run ends, its last beat long past the duration, said.
+    let (_, args) = run("-86399.999999");
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let v = json(&args);
+    let warning = v["long_run"]["warnings"][0].as_str().unwrap();
+    assert!(warning.contains("days after the 2 days asked"), "{warning}");
+    assert!(warning.contains("(a clock all but stopped)"), "{warning}");
+    // A constant 2 s/day for two days puts the clock 4 s further ahead
+    // than without: the integral of the rate, in closed form.
+    let (path, args) = run("2");
+    std::fs::write(&path, "time_s,rate_change_s_per_day\n0,2\n").unwrap();
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let with = json(&args);
+    let without = json(&args[..args.len() - 2]);
+    let (a, b) = (&with["long_run"], &without["long_run"]);
+    let elapsed = a["duration_s"].as_f64().unwrap();
+    let gained = a["time_error_s"].as_f64().unwrap() - b["time_error_s"].as_f64().unwrap();
+    assert!((gained - 2.0 * elapsed / 86_400.0).abs() < 1e-6, "{gained}");
+    assert!(a.get("warnings").is_none(), "{a}");
+}
+
+/// Every flag that takes a clock's rate refuses -86,400 s/day and below
+/// in one line, and answers close to it without a non-finite number.
+#[test]
+fn rate_flags_at_and_near_a_stopped_clock() {
+    for rate in ["-86400", "-86401", "-1e300", "-86400s/day", "-1000000ppm"] {
+        let flag = format!("--rate={rate}");
+        super::util::refuses(&["regulate", "--length", "0.994m", &flag], "--rate");
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("t.wav");
+        super::util::refuses(
+            &[
+                "synth",
+                "ticks",
+                out.to_str().unwrap(),
+                &flag,
+                "--duration",
+                "10s",
+            ],
+            "--rate",
+        );
+    }
+    let line = super::util::refuses(
+        &["regulate", "--length", "0.994m", "--rate=-86399.99"],
+        "--rate",
+    );
+    assert!(line.contains("-100%"), "{line}");
+}

@@ -398,7 +398,8 @@ pub struct TideArgs {
     /// The step between rows.
     #[arg(long, value_name = "DURATION", allow_hyphen_values = true)]
     pub every: Time,
-    /// Run even when the table is long (more than 2·10⁵ rows).
+    /// Run even when the table is long (about 3·10⁵ rows, or a row a month
+    /// or fewer over decades).
     #[arg(long)]
     pub force: bool,
     /// Print one JSON object ({"rows": [...]}).

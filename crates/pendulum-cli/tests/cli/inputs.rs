@@ -495,3 +495,45 @@ fn rate_flags_at_and_near_a_stopped_clock() {
     );
     assert!(line.contains("-100%"), "{line}");
 }
+
+// ---- The tide's work ------------------------------------------------------------
+
+/// Rows centuries apart cost their own knots and months, not every knot
+/// between (21 rows over two centuries took 48 s); a row every 40 days
+/// over them (1,827 rows, 2,437 months of K1 means, 30 s of computing)
+/// needs --force, as a long table does.
+#[test]
+fn a_tide_over_centuries_is_judged_by_its_months() {
+    let v = json(&[
+        "tide",
+        "--latitude",
+        "48.33",
+        "--longitude",
+        "8.33",
+        "--from",
+        "1900-01-02",
+        "--to",
+        "2099-12-30",
+        "--every",
+        "3650day",
+    ]);
+    assert_eq!(v["rows"].as_array().unwrap().len(), 21);
+    let line = super::util::refuses(
+        &[
+            "tide",
+            "--latitude",
+            "48.33",
+            "--longitude",
+            "8.33",
+            "--from",
+            "1900-01-02",
+            "--to",
+            "2099-12-30",
+            "--every",
+            "40day",
+        ],
+        "--every",
+    );
+    assert!(line.contains("1827 times over 73040 days"), "{line}");
+    assert!(line.contains("force it"), "{line}");
+}

@@ -722,6 +722,53 @@ fn is_numeric(cells: &[&str], decimal_comma: bool) -> bool {
     numbers > 0 && labels <= numbers
 }
 
+/// The header and the row of a line that holds both, its line end lost
+/// or turned into a separator, over rows of `width` cells: the header's
+/// `width` names and then the row's numbers, the first glued to the last
+/// name (`time_s,offset_s0.0,1.2e-06`: `2 width - 1` cells) or not
+/// (`time_s offset_s 0.0 1.2e-06`: `2 width`); `None` for anything else.
+/// A one-column line must end in a number with a point or an exponent
+/// after a name the reader knows (`offset_s1.2e-06`), as a name may end
+/// in a digit (`x2`, `t_1`). Returned as names and numbers joined by
+/// `join`.
+fn glued_row(
+    cells: &[&str],
+    width: usize,
+    decimal_comma: bool,
+    join: &str,
+) -> Option<(String, String)> {
+    let number = |c: &str| matches!(cell_value(c, decimal_comma), Some(Some(_)));
+    let cells: Vec<&str> = cells.iter().map(|c| c.trim().trim_matches('"')).collect();
+    let (names, row): (Vec<&str>, Vec<&str>) = if width > 1 && cells.len() == 2 * width {
+        (cells[..width].to_vec(), cells[width..].to_vec())
+    } else if cells.len() + 1 == 2 * width {
+        // The longest number at the end of the last name.
+        let cell = cells[width - 1];
+        let (name, first) = cell
+            .char_indices()
+            .skip(1)
+            .map(|(i, _)| cell.split_at(i))
+            .find(|(name, first)| {
+                first.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c))
+                    && !name.ends_with(|c: char| c.is_ascii_digit() || c == '.')
+                    && number(first)
+            })?;
+        let fraction = first.contains(['.', 'e', 'E']) || decimal_comma && first.contains(',');
+        if width == 1 && !(fraction && Role::of(&split_header(name).0).is_some()) {
+            return None;
+        }
+        let mut names = cells[..width - 1].to_vec();
+        names.push(name.trim());
+        let mut row = vec![first];
+        row.extend(&cells[width..]);
+        (names, row)
+    } else {
+        return None;
+    };
+    (names.iter().all(|c| !c.is_empty() && !number(c)) && row.iter().all(|c| number(c)))
+        .then(|| (names.join(join), row.join(join)))
+}
+
 /// Whether `cell` is written as a number (digits and an exponent, not the
 /// words `inf` or `nan`) that is beyond double precision.
 fn overflows(cell: &str, decimal_comma: bool) -> bool {
@@ -1282,6 +1329,22 @@ pub fn stream_table(
         .map(|i| &sample[i].1)
         .filter(|l| !numeric(l));
     let width = width.unwrap_or(1);
+    // A header run together with the first row (its line end lost) is
+    // refused by its line, with --columns too: it was taken as the header,
+    // or skipped under --columns, and its row dropped without a word.
+    if let Some((names, row)) = header_line.and_then(|line| {
+        let join = match separator {
+            Separator::Char('\t') | Separator::Spaces | Separator::Whole => " ".to_string(),
+            Separator::Char(c) => c.to_string(),
+        };
+        glued_row(&separator.split(line), width, decimal_comma, &join)
+    }) {
+        return Err(fail(format!(
+            "line {} holds the header and the first row of numbers run together \
+             ('{names}' then '{row}'): put the row on a line of its own",
+            sample[first_numeric - 1].0
+        )));
+    }
     let headers: Vec<String> = match (&options.columns, header_line) {
         (Some(names), _) => names.clone(),
         (None, None) => {

@@ -537,3 +537,75 @@ fn a_tide_over_centuries_is_judged_by_its_months() {
     assert!(line.contains("1827 times over 73040 days"), "{line}");
     assert!(line.contains("force it"), "{line}");
 }
+
+// ---- A header run together with its first row --------------------------------
+
+/// A header whose line end was lost is refused by its line, naming the
+/// header and the row it holds: under --columns the line was skipped and
+/// its row dropped without a word (63 phase points of 64), and without it
+/// the refusal spoke of a header of three columns. The same table with
+/// its line end, and headers whose names end in digits, are read whole.
+#[test]
+fn a_header_run_together_with_its_first_row_is_refused_by_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let offsets: Vec<String> = (0..64)
+        .map(|i| format!("{:.6e}", 1e-6 * (f64::from(i) * 0.9).sin()))
+        .collect();
+    let column = |head: &str, line_end: &str| format!("{head}{line_end}{}\n", offsets.join("\n"));
+    let table = |head: &str, sep: &str, line_end: &str| {
+        let rows: Vec<String> = offsets
+            .iter()
+            .enumerate()
+            .map(|(i, v)| format!("{i}.0{sep}{v}"))
+            .collect();
+        format!("{head}{line_end}{}\n", rows.join("\n"))
+    };
+    let write = |name: &str, text: String| {
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap();
+        path.display().to_string()
+    };
+    let points = |path: &str, extra: &[&str]| {
+        let mut args = vec!["stability", path, "--tau0", "1s"];
+        args.extend(extra);
+        json(&args)["phase_points"].as_u64().unwrap()
+    };
+    let whole = write("column.csv", column("offset_s", "\n"));
+    assert_eq!(points(&whole, &[]), 64);
+    assert_eq!(points(&whole, &["--columns", "offset_s"]), 64);
+    assert_eq!(
+        points(&write("t.csv", table("t_1,offset_s", ",", "\n")), &[]),
+        64
+    );
+    let named = write("named.csv", column("clock2", "\n"));
+    assert_eq!(points(&named, &["--columns", "offset_s"]), 64);
+    let first = &offsets[0];
+    let glued = write("glued.csv", column("offset_s", ""));
+    for extra in [&[][..], &["--columns", "offset_s"][..]] {
+        let mut args = vec!["stability", glued.as_str(), "--tau0", "1s"];
+        args.extend(extra);
+        let line = super::util::refuses(&args, "glued.csv");
+        assert!(
+            line.ends_with(&format!(
+                "line 1 holds the header and the first row of numbers run together \
+                 ('offset_s' then '{first}'): put the row on a line of its own\n"
+            )),
+            "{line}"
+        );
+    }
+    for (name, text, shown) in [
+        ("comma.csv", table("time_s,offset_s", ",", ""), ","),
+        ("spaces.txt", table("time_s offset_s", " ", " "), " "),
+        ("semicolon.csv", table("time_s;offset_s", ";", ";"), ";"),
+    ] {
+        let path = write(name, text);
+        let line = super::util::refuses(&["stability", &path], name);
+        assert!(
+            line.contains(&format!(
+                "line 1 holds the header and the first row of numbers run together \
+                 ('time_s{shown}offset_s' then '0.0{shown}{first}')"
+            )),
+            "{line}"
+        );
+    }
+}

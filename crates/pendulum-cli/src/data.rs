@@ -894,7 +894,14 @@ fn split_header(header: &str) -> (String, Option<String>) {
         }
     }
     if let Some((base, unit)) = text.rsplit_once(['_', ' ']) {
-        if unit_of(unit).is_some() && !base.is_empty() {
+        // A pressure's unit only after a pressure's name (`x_bar` is a
+        // name).
+        let known = unit_of(unit).is_some_and(|(kind, _)| {
+            kind != Kind::Pressure
+                || Role::of(base.trim()) == Some(Role::Pressure)
+                || matches!(unit, "hpa" | "mbar" | "pa" | "kpa" | "inhg" | "mmhg")
+        });
+        if known && !base.is_empty() {
             return (base.trim().to_string(), Some(unit.to_string()));
         }
     }
@@ -984,6 +991,10 @@ fn length_factor(unit: &str) -> Option<f64> {
 /// The kind and SI factor of a unit written in a header (temperature in
 /// °C, its only unit here).
 fn unit_of(unit: &str) -> Option<(Kind, f64)> {
+    // Pressures from the flags' table (units::PRESSURE): one list for both.
+    if let Some(si) = crate::units::si_factor(crate::units::Dimension::Pressure, unit) {
+        return Some((Kind::Pressure, si));
+    }
     Some(match unit {
         "s" | "sec" | "secs" | "second" | "seconds" => (Kind::Time, 1.0),
         "ms" => (Kind::Time, 1e-3),
@@ -1002,12 +1013,6 @@ fn unit_of(unit: &str) -> Option<(Kind, f64)> {
         // Kelvin and Fahrenheit (their offsets are applied where the
         // column is found).
         "k" | "kelvin" | "f" | "°f" | "degf" | "fahrenheit" => (Kind::Temperature, 1.0),
-        "hpa" | "mbar" => (Kind::Pressure, 100.0),
-        "pa" => (Kind::Pressure, 1.0),
-        "kpa" => (Kind::Pressure, 1000.0),
-        // The conventional inch (25.4 mm) and millimetre of mercury.
-        "inhg" => (Kind::Pressure, 3386.389),
-        "mmhg" => (Kind::Pressure, 133.322_387_415),
         "s/day" | "s/d" | "sec/day" | "s per day" | "s_per_day" | "spd" => {
             (Kind::ClockRate, 1.0 / 86_400.0)
         }
@@ -1026,7 +1031,7 @@ fn units_for(role: Role) -> &'static str {
         Role::Time => "s, ms, us, min, h",
         Role::Angle | Role::Amplitude => "deg, rad",
         Role::Temperature => "°C (c, degc, celsius), K, °F (f, degf)",
-        Role::Pressure => "hPa, mbar, Pa, kPa, inHg, mmHg",
+        Role::Pressure => "hPa, mbar, Pa, kPa, bar, atm, inHg, mmHg, Torr",
         Role::Period | Role::PeriodError => "s, ms, us, min, h",
         Role::Length => "m, cm, mm, in",
         Role::Ticks => "none: give the clock's rate with --tick-rate HZ",

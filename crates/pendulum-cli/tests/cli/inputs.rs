@@ -609,3 +609,65 @@ fn a_header_run_together_with_its_first_row_is_refused_by_line() {
         );
     }
 }
+
+// ---- One unit table for a quantity -------------------------------------------
+
+/// A drive file's pressure column takes the units `--pressure` takes, from
+/// the same table (bar, atm and Torr were not known to the reader: a
+/// `pressure_bar` column was "no weather column"): 1.01325 to 0.98325 bar
+/// runs the clock as 1013.25 to 983.25 hPa, and 760 to 737.5 Torr as
+/// those pressures in hPa (× 1.33322387415). `x_bar` stays a name.
+#[test]
+fn a_pressure_column_takes_the_flags_units() {
+    let dir = tempfile::tempdir().unwrap();
+    let design = example("seconds-steel-brass.toml");
+    let run = |header: &str, a: f64, b: f64| {
+        let path = dir
+            .path()
+            .join(format!("{}.csv", header.replace([' ', '(', ')'], "")));
+        std::fs::write(&path, format!("time_s,{header}\n0,{a}\n86400,{b}\n")).unwrap();
+        let path = path.display().to_string();
+        let v = json(&[
+            "clock",
+            "--design",
+            design.to_str().unwrap(),
+            "--drive",
+            "2e-5J",
+            "--duration",
+            "2day",
+            "--every",
+            "1h",
+            "--drive-file",
+            &path,
+        ]);
+        v["long_run"]["final_rate_s_per_day"].as_f64().unwrap()
+    };
+    let hpa = run("pressure_hpa", 1013.25, 983.25);
+    assert!(hpa > 0.25, "{hpa}");
+    assert_eq!(run("pressure_bar", 1.01325, 0.98325), hpa);
+    let torr = 133.322_387_415 / 100.0;
+    let in_hpa = run("pressure_hpa", 760.0 * torr, 737.5 * torr);
+    for header in ["pressure_torr", "pressure (Torr)", "Pressure [TORR]"] {
+        let r = run(header, 760.0, 737.5);
+        assert!(
+            (r - in_hpa).abs() < 1e-9 * in_hpa.abs(),
+            "{header}: {r} against {in_hpa}"
+        );
+    }
+    let path = dir.path().join("x.csv");
+    std::fs::write(&path, "time_s,x_bar\n0,1\n86400,2\n").unwrap();
+    super::util::refuses(
+        &[
+            "clock",
+            "--design",
+            design.to_str().unwrap(),
+            "--drive",
+            "2e-5J",
+            "--duration",
+            "2day",
+            "--drive-file",
+            path.to_str().unwrap(),
+        ],
+        "found: time_s, x_bar",
+    );
+}

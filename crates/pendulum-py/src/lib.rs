@@ -399,34 +399,6 @@ fn answer<T: serde::Serialize>(result: Result<T, Refusal>) -> PyResult<String> {
     serde_json::to_string(&value).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
-/// `refusal` naming its input by the Python keyword (`keys`: the
-/// library's field, the keyword) where the keyword carries its unit
-/// (`pressure_hpa`) and the library's field does not.
-fn keyed(refusal: Refusal, keys: &[(&str, &'static str)]) -> Refusal {
-    use pendulum_theory::analysis::Place;
-    let key = |field: &'static str| {
-        keys.iter()
-            .find(|(f, _)| *f == field)
-            .map_or(field, |k| k.1)
-    };
-    Refusal {
-        place: match refusal.place {
-            Place::Field(f) => Place::Field(key(f)),
-            Place::Sample(f, i) => Place::Sample(key(f), i),
-            Place::Data => Place::Data,
-        },
-        reason: refusal.reason,
-    }
-}
-
-/// The weather's columns: the library's fields, the keys of Python's
-/// `clock_run(weather=)` (the drive file's column names).
-const WEATHER_KEYS: [(&str, &str); 3] = [
-    ("pressure", "pressure_hpa"),
-    ("humidity", "humidity_percent"),
-    ("gradient", "gradient_k_per_m"),
-];
-
 /// The stability analysis (the CLI's `stability`) as JSON.
 #[pyfunction]
 #[pyo3(signature = (data, tau0, kind, all_taus, force))]
@@ -748,6 +720,34 @@ fn fit_trajectory(
         })
     }))
 }
+
+/// `refusal` naming its input by the Python keyword (`keys`: the
+/// library's field, the keyword) where the keyword carries its unit
+/// (`pressure_hpa`) and the library's field does not.
+fn keyed(refusal: Refusal, keys: &[(&str, &'static str)]) -> Refusal {
+    use pendulum_theory::analysis::Place;
+    let key = |field: &'static str| {
+        keys.iter()
+            .find(|(f, _)| *f == field)
+            .map_or(field, |k| k.1)
+    };
+    Refusal {
+        place: match refusal.place {
+            Place::Field(f) => Place::Field(key(f)),
+            Place::Sample(f, i) => Place::Sample(key(f), i),
+            Place::Data => Place::Data,
+        },
+        reason: refusal.reason,
+    }
+}
+
+/// The weather's columns: the library's fields, the keys of Python's
+/// `clock_run(weather=)` (the drive file's column names).
+const WEATHER_KEYS: [(&str, &str); 3] = [
+    ("pressure", "pressure_hpa"),
+    ("humidity", "humidity_percent"),
+    ("gradient", "gradient_k_per_m"),
+];
 
 /// A long run as the Python package passes it: duration, row interval,
 /// drive schedule (times, factors), rate schedule (times, s/day), weather

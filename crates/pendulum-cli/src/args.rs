@@ -413,7 +413,8 @@ pub struct TideArgs {
     /// The step between rows.
     #[arg(long, value_name = "DURATION", allow_hyphen_values = true)]
     pub every: Time,
-    /// Run even when the table is long (more than 2·10⁵ rows).
+    /// Run even when the table is long (about 3·10⁵ rows, or a row a month
+    /// or fewer over decades).
     #[arg(long)]
     pub force: bool,
     /// Print one JSON object ({"rows": [...]}).
@@ -584,7 +585,9 @@ pub struct ReportArgs {
     pub train: Option<TrainSpec>,
     #[arg(long, allow_hyphen_values = true, value_name = "N", requires = "train", help = with_default("Turns an hour of the train's first arbor", train_analysis::DEFAULT_ARBOR_TURNS_PER_HOUR))]
     pub arbor_turns_per_hour: Option<Number>,
-    /// Folder to write index.html and its figures in.
+    /// Folder to write index.html and its figures in: new, empty, or an
+    /// earlier report's holding nothing else (of which only the files its
+    /// .pendulum-report lists are removed).
     #[arg(long, value_name = "DIR", default_value = "pendulum-report")]
     pub output: std::path::PathBuf,
     #[command(flatten)]
@@ -1293,9 +1296,10 @@ pub struct ClockArgs {
     )]
     pub every: Option<Time>,
     /// With --duration: what changes with time (CSV: time_s and any of
-    /// drive_factor, temperature_c, pressure_hpa, humidity_percent,
-    /// gradient_k_per_m; all but the first with --design, moving the rate
-    /// by its coefficients), linear between rows.
+    /// drive_factor; rate_change_s_per_day, a change of rate from outside,
+    /// positive gaining; or, with --design, moving the rate by its
+    /// coefficients, temperature_c, pressure_hpa, humidity_percent,
+    /// gradient_k_per_m), linear between rows.
     #[arg(long, value_name = "FILE.csv", requires = "duration")]
     pub drive_file: Option<InputPath>,
     /// The gas the --drive-file's pressure_hpa is of: air, nitrogen or

@@ -127,7 +127,7 @@ fn decode_frames(
     let file_name = path.display().to_string();
     let fail = |what: String| CliError::other(format!("{file_name}: {what}"));
     let mut file =
-        crate::file::open_input(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+        crate::file::open_input_file(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
     let regular = file.metadata().is_ok_and(|m| m.is_file());
     if !regular {
         return Err(fail(
@@ -145,7 +145,8 @@ fn decode_frames(
         ));
     }
     drop(file);
-    let file = crate::file::open_input(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+    let file =
+        crate::file::open_input_file(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
     DECODING.with(|d| d.set(true));
     let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         decode_file(file, path, extent, &mut each, &fail)

@@ -87,6 +87,8 @@ pub enum Role {
     Humidity,
     /// A vertical temperature gradient, K/m, warmer upwards.
     Gradient,
+    /// A change of a clock's rate from outside, s/day (positive: gaining).
+    RateChange,
 }
 
 /// The role a column named `name` has (`temperature`, `pressure`): how
@@ -130,6 +132,7 @@ impl Role {
             Role::PulseWidth => "pulse width",
             Role::Humidity => "humidity",
             Role::Gradient => "gradient",
+            Role::RateChange => "rate change",
         }
     }
 
@@ -216,6 +219,7 @@ impl Role {
             | "vertical gradient"
             | "dt_dz"
             | "dtdz" => Role::Gradient,
+            "rate_change" | "rate change" | "ratechange" => Role::RateChange,
             // phyphox's raw gyroscope data, in the app's languages.
             _ if gyro_axis(base).is_some() => gyro_axis(base)?,
             _ => return None,
@@ -724,6 +728,53 @@ fn is_numeric(cells: &[&str], decimal_comma: bool) -> bool {
     numbers > 0 && labels <= numbers
 }
 
+/// The header and the row of a line that holds both, its line end lost
+/// or turned into a separator, over rows of `width` cells: the header's
+/// `width` names and then the row's numbers, the first glued to the last
+/// name (`time_s,offset_s0.0,1.2e-06`: `2 width - 1` cells) or not
+/// (`time_s offset_s 0.0 1.2e-06`: `2 width`); `None` for anything else.
+/// A one-column line must end in a number with a point or an exponent
+/// after a name the reader knows (`offset_s1.2e-06`), as a name may end
+/// in a digit (`x2`, `t_1`). Returned as names and numbers joined by
+/// `join`.
+fn glued_row(
+    cells: &[&str],
+    width: usize,
+    decimal_comma: bool,
+    join: &str,
+) -> Option<(String, String)> {
+    let number = |c: &str| matches!(cell_value(c, decimal_comma), Some(Some(_)));
+    let cells: Vec<&str> = cells.iter().map(|c| c.trim().trim_matches('"')).collect();
+    let (names, row): (Vec<&str>, Vec<&str>) = if width > 1 && cells.len() == 2 * width {
+        (cells[..width].to_vec(), cells[width..].to_vec())
+    } else if cells.len() + 1 == 2 * width {
+        // The longest number at the end of the last name.
+        let cell = cells[width - 1];
+        let (name, first) = cell
+            .char_indices()
+            .skip(1)
+            .map(|(i, _)| cell.split_at(i))
+            .find(|(name, first)| {
+                first.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c))
+                    && !name.ends_with(|c: char| c.is_ascii_digit() || c == '.')
+                    && number(first)
+            })?;
+        let fraction = first.contains(['.', 'e', 'E']) || decimal_comma && first.contains(',');
+        if width == 1 && !(fraction && Role::of(&split_header(name).0).is_some()) {
+            return None;
+        }
+        let mut names = cells[..width - 1].to_vec();
+        names.push(name.trim());
+        let mut row = vec![first];
+        row.extend(&cells[width..]);
+        (names, row)
+    } else {
+        return None;
+    };
+    (names.iter().all(|c| !c.is_empty() && !number(c)) && row.iter().all(|c| number(c)))
+        .then(|| (names.join(join), row.join(join)))
+}
+
 /// Whether `cell` is written as a number (digits and an exponent, not the
 /// words `inf` or `nan`) that is beyond double precision.
 fn overflows(cell: &str, decimal_comma: bool) -> bool {
@@ -849,7 +900,14 @@ fn split_header(header: &str) -> (String, Option<String>) {
         }
     }
     if let Some((base, unit)) = text.rsplit_once(['_', ' ']) {
-        if unit_of(unit).is_some() && !base.is_empty() {
+        // A pressure's unit only after a pressure's name (`x_bar` is a
+        // name).
+        let known = unit_of(unit).is_some_and(|(kind, _)| {
+            kind != Kind::Pressure
+                || Role::of(base.trim()) == Some(Role::Pressure)
+                || matches!(unit, "hpa" | "mbar" | "pa" | "kpa" | "inhg" | "mmhg")
+        });
+        if known && !base.is_empty() {
             return (base.trim().to_string(), Some(unit.to_string()));
         }
     }
@@ -939,6 +997,10 @@ fn length_factor(unit: &str) -> Option<f64> {
 /// The kind and SI factor of a unit written in a header (temperature in
 /// °C, its only unit here).
 fn unit_of(unit: &str) -> Option<(Kind, f64)> {
+    // Pressures from the flags' table (units::PRESSURE): one list for both.
+    if let Some(si) = crate::units::si_factor(crate::units::Dimension::Pressure, unit) {
+        return Some((Kind::Pressure, si));
+    }
     Some(match unit {
         "s" | "sec" | "secs" | "second" | "seconds" => (Kind::Time, 1.0),
         "ms" => (Kind::Time, 1e-3),
@@ -957,12 +1019,6 @@ fn unit_of(unit: &str) -> Option<(Kind, f64)> {
         // Kelvin and Fahrenheit (their offsets are applied where the
         // column is found).
         "k" | "kelvin" | "f" | "°f" | "degf" | "fahrenheit" => (Kind::Temperature, 1.0),
-        "hpa" | "mbar" => (Kind::Pressure, 100.0),
-        "pa" => (Kind::Pressure, 1.0),
-        "kpa" => (Kind::Pressure, 1000.0),
-        // The conventional inch (25.4 mm) and millimetre of mercury.
-        "inhg" => (Kind::Pressure, 3386.389),
-        "mmhg" => (Kind::Pressure, 133.322_387_415),
         "s/day" | "s/d" | "sec/day" | "s per day" | "s_per_day" | "spd" => {
             (Kind::ClockRate, 1.0 / 86_400.0)
         }
@@ -981,7 +1037,7 @@ fn units_for(role: Role) -> &'static str {
         Role::Time => "s, ms, us, min, h",
         Role::Angle | Role::Amplitude => "deg, rad",
         Role::Temperature => "°C (c, degc, celsius), K, °F (f, degf)",
-        Role::Pressure => "hPa, mbar, Pa, kPa, inHg, mmHg",
+        Role::Pressure => "hPa, mbar, Pa, kPa, bar, atm, inHg, mmHg, Torr",
         Role::Period | Role::PeriodError => "s, ms, us, min, h",
         Role::Length => "m, cm, mm, in",
         Role::Ticks => "none: give the clock's rate with --tick-rate HZ",
@@ -990,6 +1046,7 @@ fn units_for(role: Role) -> &'static str {
         Role::Frequency => "s/day, ppm, ppb, or none (a fraction)",
         Role::Humidity => "%",
         Role::Gradient => "K/m, °C/m, K/cm",
+        Role::RateChange => "s/day, ppm",
         _ => "none",
     }
 }
@@ -1068,6 +1125,9 @@ fn find_columns(headers: &[String], options: &ReadOptions) -> Vec<Found> {
             (Role::Humidity, _) => unit.as_deref().map_or(Some(1.0), |_| kind(Kind::Percent)),
             // A bare gradient is in K/m.
             (Role::Gradient, _) => unit.as_deref().map_or(Some(1.0), |_| kind(Kind::Gradient)),
+            // A rate change is read in s/day, bare or with its unit.
+            (Role::RateChange, None) => Some(1.0),
+            (Role::RateChange, Some(_)) => kind(Kind::ClockRate).map(|f| f * 86_400.0),
             (Role::Pressure, Some(_)) => kind(Kind::Pressure),
         };
         found.push(Found {
@@ -1280,6 +1340,22 @@ pub fn stream_table(
         .map(|i| &sample[i].1)
         .filter(|l| !numeric(l));
     let width = width.unwrap_or(1);
+    // A header run together with the first row (its line end lost) is
+    // refused by its line, with --columns too: it was taken as the header,
+    // or skipped under --columns, and its row dropped without a word.
+    if let Some((names, row)) = header_line.and_then(|line| {
+        let join = match separator {
+            Separator::Char('\t') | Separator::Spaces | Separator::Whole => " ".to_string(),
+            Separator::Char(c) => c.to_string(),
+        };
+        glued_row(&separator.split(line), width, decimal_comma, &join)
+    }) {
+        return Err(fail(format!(
+            "line {} holds the header and the first row of numbers run together \
+             ('{names}' then '{row}'): put the row on a line of its own",
+            sample[first_numeric - 1].0
+        )));
+    }
     let headers: Vec<String> = match (&options.columns, header_line) {
         (Some(names), _) => names.clone(),
         (None, None) => {

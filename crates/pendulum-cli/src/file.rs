@@ -255,10 +255,10 @@ fn blocking(file: &File) -> std::io::Result<()> {
     Ok(())
 }
 
-/// Opens a file the run reads, and remembers it so that no output of the
-/// run may replace it. A FIFO is opened without waiting for a writer (one
-/// that has none then reads as empty), so a named pipe never hangs a run.
-pub fn open_input(path: &Path) -> std::io::Result<File> {
+/// Opens `path` for reading without waiting for a writer (a FIFO that has
+/// none then reads as empty, so a named pipe never hangs a run), and
+/// remembers it so that no output of the run may replace it.
+fn open_registered(path: &Path) -> std::io::Result<File> {
     use std::os::unix::fs::OpenOptionsExt;
     let file = std::fs::OpenOptions::new()
         .read(true)
@@ -272,6 +272,129 @@ pub fn open_input(path: &Path) -> std::io::Result<File> {
         inputs.push((meta.dev(), meta.ino(), path.to_path_buf()));
     }
     Ok(file)
+}
+
+/// Opens a file the run reads by position (a sound file, which a decoder
+/// seeks in). A pipe or a device opened here is read once, as it comes:
+/// its caller refuses anything but a regular file.
+pub fn open_input_file(path: &Path) -> std::io::Result<File> {
+    open_registered(path)
+}
+
+/// The bytes of a stream this run has read (a pipe, `/dev/stdin`, a
+/// terminal, a device), kept so that every reader of it reads them all:
+/// a pipe gives its bytes once, and a first look at a file (its width,
+/// its separator) must not take them from the reader that follows.
+struct Replay {
+    /// The stream.
+    source: File,
+    /// Everything read from it so far.
+    bytes: Vec<u8>,
+    /// Whether its end was reached.
+    ended: bool,
+}
+
+/// A stream's bytes, shared by its readers.
+type Shared = std::sync::Arc<Mutex<Replay>>;
+
+/// The streams this run has opened, by (device, inode).
+static STREAMS: Mutex<Vec<((u64, u64), Shared)>> = Mutex::new(Vec::new());
+
+/// A file the run reads from its start: a regular file (or a folder, for
+/// its caller to refuse) from the disk; anything else (a pipe,
+/// `/dev/stdin`, `<(…)`, a terminal, a device) through the run's one copy
+/// of its bytes, so that every opening of it reads the same bytes from
+/// the first. The copy holds what was read, no more: a reader that stops
+/// early (a line too long, a file too large) stops the reading.
+pub struct Input {
+    source: Source,
+    /// How far this reader has read a stream's bytes.
+    position: usize,
+}
+
+enum Source {
+    File(File),
+    Stream(Shared),
+}
+
+impl Input {
+    /// The metadata of what was opened (a stream's own: a FIFO, a
+    /// character device).
+    pub fn metadata(&self) -> std::io::Result<std::fs::Metadata> {
+        match &self.source {
+            Source::File(f) => f.metadata(),
+            Source::Stream(s) => s
+                .lock()
+                .unwrap_or_else(std::sync::PoisonError::into_inner)
+                .source
+                .metadata(),
+        }
+    }
+}
+
+impl std::io::Read for Input {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let replay = match &mut self.source {
+            Source::File(f) => return f.read(buf),
+            Source::Stream(s) => s.clone(),
+        };
+        let mut replay = replay
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if self.position == replay.bytes.len() && !replay.ended && !buf.is_empty() {
+            // Past what any reader has read: read on, keeping the bytes.
+            let Replay {
+                source,
+                bytes,
+                ended,
+            } = &mut *replay;
+            let start = bytes.len();
+            bytes.resize(start + buf.len().max(1 << 16), 0);
+            let read = source.read(&mut bytes[start..]);
+            bytes.truncate(start + *read.as_ref().unwrap_or(&0));
+            *ended = read? == 0;
+        }
+        let held = &replay.bytes[self.position..];
+        let n = held.len().min(buf.len());
+        buf[..n].copy_from_slice(&held[..n]);
+        self.position += n;
+        Ok(n)
+    }
+}
+
+/// Opens a file the run reads as an [`Input`], and remembers it so that
+/// no output of the run may replace it. A stream opened before (the same
+/// pipe, by any path) is read again from its first byte.
+pub fn open_input(path: &Path) -> std::io::Result<Input> {
+    let file = open_registered(path)?;
+    let meta = file.metadata()?;
+    if meta.is_file() || meta.is_dir() {
+        return Ok(Input {
+            source: Source::File(file),
+            position: 0,
+        });
+    }
+    let key = (meta.dev(), meta.ino());
+    let mut streams = STREAMS
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let replay = match streams.iter().find(|(k, _)| *k == key) {
+        // (The new descriptor is closed: the first one reads on.)
+        Some((_, replay)) => replay.clone(),
+        None => {
+            let replay = std::sync::Arc::new(Mutex::new(Replay {
+                source: file,
+                bytes: Vec::new(),
+                ended: false,
+            }));
+            streams.push((key, replay.clone()));
+            replay
+        }
+    };
+    Ok(Input {
+        source: Source::Stream(replay),
+        position: 0,
+    })
 }
 
 /// The input (as its path was given) that `target` is, or that lies
@@ -362,6 +485,11 @@ fn put_in_place(temporary: &Path, target: &Path, folder: bool) -> Result<(), Cli
     let fail =
         |e: std::io::Error| CliError::other(format!("writing '{}' failed: {e}", target.display()));
     if folder && target.exists() {
+        // Checked again: the folder may have changed during the run.
+        let earlier = earlier_report(target).map_err(|why| {
+            let _ = std::fs::remove_dir_all(temporary);
+            CliError::other(format!("'{}' {why}", target.display()))
+        })?;
         let mut aside = temporary.as_os_str().to_owned();
         aside.push(".old");
         let aside = PathBuf::from(aside);
@@ -374,7 +502,21 @@ fn put_in_place(temporary: &Path, target: &Path, folder: bool) -> Result<(), Cli
             let _ = std::fs::remove_dir_all(temporary);
             return Err(fail(e));
         }
-        let _ = std::fs::remove_dir_all(&aside);
+        // Only the earlier report's own files go, one by one.
+        for name in earlier
+            .iter()
+            .map(std::ffi::OsString::as_os_str)
+            .chain([std::ffi::OsStr::new(REPORT_MARKER)])
+        {
+            let _ = std::fs::remove_file(aside.join(name));
+        }
+        if std::fs::remove_dir(&aside).is_err() {
+            crate::output::warn(format!(
+                "the earlier report's folder is kept as '{}': something else was written into \
+                 it during the run",
+                aside.display()
+            ));
+        }
         return Ok(());
     }
     std::fs::rename(temporary, target).map_err(|e| {
@@ -599,23 +741,150 @@ impl CsvFile {
     }
 }
 
-/// The file a report writes into its folder, by which a later report
-/// recognises the folder as its own to replace.
+/// The file a report writes into its folder: the list of the files it
+/// wrote there, which a later report into the same folder removes, and
+/// nothing else.
 pub const REPORT_MARKER: &str = ".pendulum-report";
+
+/// The marker's first line; the file names follow, one a line.
+const MARKER_HEAD: &str = "pendulum report: the files below were written here by `pendulum \
+                           report`; a later report removes them and nothing else.";
+
+/// The whole marker of the reports before 2026-11-27, which named no
+/// files; the files those reports wrote are [`LEGACY_FILES`].
+const LEGACY_MARKER: &str =
+    "This folder was written by `pendulum report`; a later report may replace it.\n";
+
+/// The files a report before 2026-11-27 could write.
+const LEGACY_FILES: [&str; 9] = [
+    "index.html",
+    "period.svg",
+    "decay.svg",
+    "rundown.svg",
+    "log-rate.svg",
+    "log-weather.svg",
+    "log-stability.svg",
+    "log-spectrum.svg",
+    "log-folds.svg",
+];
+
+/// The longest marker read (a report writes a dozen names).
+const MAX_MARKER_BYTES: u64 = 64 * 1024;
+
+/// The files of `folder` an earlier report wrote, as its marker lists
+/// them (none when the folder is empty), or why the folder is not one a
+/// report may clear: files its marker does not list, a marker that is
+/// missing, a link, empty, or not one a report wrote, a listed name that
+/// is not a plain file of the folder.
+fn earlier_report(folder: &Path) -> Result<Vec<std::ffi::OsString>, String> {
+    let entries: Vec<std::ffi::OsString> = std::fs::read_dir(folder)
+        .and_then(|d| d.map(|e| e.map(|e| e.file_name())).collect())
+        .map_err(|e| format!("cannot be read: {e}"))?;
+    if entries.is_empty() {
+        return Ok(Vec::new());
+    }
+    let not_a_report = |why: &str| {
+        format!(
+            "is a folder that holds other files, not an earlier report ({why}); give a new or \
+             empty folder"
+        )
+    };
+    let marker = folder.join(REPORT_MARKER);
+    let meta = std::fs::symlink_metadata(&marker)
+        .map_err(|_| not_a_report(&format!("it has no {REPORT_MARKER}")))?;
+    if meta.file_type().is_symlink() {
+        return Err(not_a_report(&format!(
+            "its {REPORT_MARKER} is a symbolic link, not the list of files a report writes"
+        )));
+    }
+    if !meta.is_file() || meta.len() > MAX_MARKER_BYTES {
+        return Err(not_a_report(&format!(
+            "its {REPORT_MARKER} is not the list of files a report writes"
+        )));
+    }
+    let text = std::fs::read(&marker)
+        .ok()
+        .and_then(|b| String::from_utf8(b).ok())
+        .unwrap_or_default();
+    let listed: Vec<&str> = if text == LEGACY_MARKER {
+        LEGACY_FILES.to_vec()
+    } else if let Some(names) = text
+        .strip_prefix(MARKER_HEAD)
+        .and_then(|rest| rest.strip_prefix('\n'))
+    {
+        names.lines().filter(|n| !n.is_empty()).collect()
+    } else {
+        return Err(not_a_report(&format!(
+            "its {REPORT_MARKER} is {}not the list of files a report writes",
+            if text.trim().is_empty() {
+                "empty: "
+            } else {
+                ""
+            }
+        )));
+    };
+    for name in &listed {
+        let plain = Path::new(name).file_name() == Some(std::ffi::OsStr::new(name))
+            && *name != REPORT_MARKER;
+        if !plain {
+            return Err(not_a_report(&format!(
+                "its {REPORT_MARKER} names '{}', not a file of the folder",
+                name.escape_debug()
+            )));
+        }
+    }
+    let others: Vec<String> = entries
+        .iter()
+        .filter(|e| *e != REPORT_MARKER && !listed.iter().any(|n| *e == *n))
+        .map(|e| e.to_string_lossy().escape_debug().to_string())
+        .collect();
+    if !others.is_empty() {
+        let shown: Vec<&str> = others.iter().take(3).map(String::as_str).collect();
+        return Err(format!(
+            "holds {} the earlier report there did not write ({}{}); move {} out, or give a new \
+             or empty folder",
+            if others.len() == 1 { "a file" } else { "files" },
+            shown.join(", "),
+            if others.len() > 3 { ", …" } else { "" },
+            if others.len() == 1 { "it" } else { "them" },
+        ));
+    }
+    let mut present = Vec::new();
+    for name in listed {
+        match std::fs::symlink_metadata(folder.join(name)) {
+            Ok(m) if m.is_file() => present.push(name.into()),
+            Ok(_) => {
+                return Err(format!(
+                    "holds '{}', which is not a file the earlier report wrote (a folder or a \
+                     link); move it out, or give a new or empty folder",
+                    name.escape_debug()
+                ))
+            }
+            Err(_) => {}
+        }
+    }
+    Ok(present)
+}
 
 /// A folder written whole or not at all: files go into a temporary folder
 /// beside the target, which replaces the target with the run's other
 /// outputs ([`commit_all`]). The target must be new, empty, or a folder an
-/// earlier report wrote (it holds [`REPORT_MARKER`]): any other folder is
-/// refused before any work, so no folder of the user's is ever replaced.
+/// earlier report wrote that holds nothing else (its [`REPORT_MARKER`]
+/// lists its files): any other folder is refused before any work, and of
+/// an earlier report only the files its marker lists are removed.
 pub struct AtomicFolder {
     id: Option<usize>,
     temporary: PathBuf,
+    /// The names of the files written into it.
+    files: Vec<String>,
+    shown: String,
+    flag: &'static str,
 }
 
 impl AtomicFolder {
     /// Checks that `target` (named by `flag`) may be written: not `-`, not
-    /// a file, and new, empty or an earlier report.
+    /// a file, and new, empty or an earlier report that holds nothing
+    /// else.
     pub fn check(target: &Path, flag: &'static str) -> Result<(), CliError> {
         let shown = target.display().to_string();
         if is_stdout(target) {
@@ -638,18 +907,8 @@ impl AtomicFolder {
             ));
         }
         if target.is_dir() {
-            let mut entries = std::fs::read_dir(target)
-                .map_err(|e| CliError::flag(flag, format!("cannot read '{shown}': {e}")))?;
-            let empty = entries.next().is_none();
-            if !empty && !target.join(REPORT_MARKER).is_file() {
-                return Err(CliError::flag(
-                    flag,
-                    format!(
-                        "'{shown}' is a folder that holds other files, not an earlier report; \
-                         give a new or empty folder"
-                    ),
-                ));
-            }
+            earlier_report(target)
+                .map_err(|why| CliError::flag(flag, format!("'{shown}' {why}")))?;
         }
         if temporary_beside(target).is_none() {
             return Err(CliError::flag(
@@ -668,7 +927,7 @@ impl AtomicFolder {
         Ok(())
     }
 
-    /// Starts the folder `target` (named by `flag`), with its marker.
+    /// Starts the folder `target` (named by `flag`).
     pub fn create(target: &Path, flag: &'static str) -> Result<Self, CliError> {
         Self::check(target, flag)?;
         let shown = target.display().to_string();
@@ -682,28 +941,39 @@ impl AtomicFolder {
             folder: true,
             ready: false,
         });
-        std::fs::write(
-            temporary.join(REPORT_MARKER),
-            "This folder was written by `pendulum report`; a later report may replace it.\n",
-        )
-        .map_err(|e| CliError::flag(flag, format!("cannot write in '{shown}': {e}")))?;
         Ok(Self {
             id: Some(id),
             temporary,
+            files: Vec::new(),
+            shown,
+            flag,
         })
     }
 
-    /// Where to write the folder's files.
-    pub fn path(&self) -> &Path {
-        &self.temporary
+    /// Where to write the folder's file `name`, which its marker will
+    /// list.
+    pub fn file(&mut self, name: &str) -> PathBuf {
+        if !self.files.iter().any(|f| f == name) {
+            self.files.push(name.to_string());
+        }
+        self.temporary.join(name)
     }
 
-    /// Marks the folder ready, after every file in it; returns its path.
-    pub fn commit(mut self, target: &Path) -> PathBuf {
+    /// Writes the marker listing the folder's files and marks the folder
+    /// ready, after every file in it; returns its path.
+    pub fn commit(mut self, target: &Path) -> Result<PathBuf, CliError> {
+        let mut marker = format!("{MARKER_HEAD}\n");
+        for name in &self.files {
+            marker.push_str(name);
+            marker.push('\n');
+        }
+        std::fs::write(self.temporary.join(REPORT_MARKER), marker).map_err(|e| {
+            CliError::flag(self.flag, format!("cannot write in '{}': {e}", self.shown))
+        })?;
         if let Some(id) = self.id.take() {
             mark_ready(id);
         }
-        target.to_path_buf()
+        Ok(target.to_path_buf())
     }
 }
 

@@ -85,9 +85,27 @@ pub enum Block {
     Failed(String),
 }
 
+/// The most channels a stream may interleave: as many as a WAV header can
+/// count (16 bits).
+pub const MAX_CHANNELS: usize = u16::MAX as usize;
+
+/// The most bytes read as one block (a tenth of a second of 48 kHz stereo
+/// is 38 kB; a block of a stream of many channels or a high rate holds
+/// fewer frames).
+const MAX_BLOCK_BYTES: usize = 1 << 20;
+
+/// The frames read as one block: a tenth of a second, at least one frame,
+/// at most [`MAX_BLOCK_BYTES`] (a whole frame always fits: it is at most
+/// [`MAX_CHANNELS`] × 4 bytes).
+fn block_frames(layout: &Layout) -> usize {
+    let frame = layout.channels * layout.encoding.bytes();
+    (layout.sample_rate as usize / 10).clamp(1, (MAX_BLOCK_BYTES / frame).max(1))
+}
+
 /// Opens `input` (standard input): its layout, and a receiver of blocks
 /// of `channel` (from 0) read on a thread; the receiver's end is the end
-/// of the input.
+/// of the input. Raw samples of more than [`MAX_CHANNELS`] channels are
+/// refused by `--channels`.
 pub fn open(
     input: impl Read + Send + 'static,
     given: Given,
@@ -95,7 +113,18 @@ pub fn open(
 ) -> Result<(Layout, Receiver<Block>), CliError> {
     let mut reader = BufReader::with_capacity(1 << 16, input);
     let layout = match given {
-        Given::Raw(layout) => layout,
+        Given::Raw(layout) => {
+            if !(1..=MAX_CHANNELS).contains(&layout.channels) {
+                return Err(CliError::flag(
+                    "--channels",
+                    format!(
+                        "must be 1 to {MAX_CHANNELS} (the most a WAV stream can hold), got {}",
+                        layout.channels
+                    ),
+                ));
+            }
+            layout
+        }
         Given::Wav => wav_header(&mut reader)?,
     };
     if channel >= layout.channels {
@@ -109,7 +138,7 @@ pub fn open(
     }
     let (send, receive) = sync_channel(64);
     let frame = layout.channels * layout.encoding.bytes();
-    let frames = (layout.sample_rate as usize / 10).max(1);
+    let frames = block_frames(&layout);
     std::thread::spawn(move || {
         let mut bytes = vec![0u8; frame * frames];
         let mut filled = 0;
@@ -217,4 +246,26 @@ fn wav_header<R: Read>(reader: &mut R) -> Result<Layout, CliError> {
         channels,
         encoding,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A tenth of a second a block, within a mebibyte, never no frame.
+    #[test]
+    fn blocks_are_a_tenth_of_a_second_within_a_mebibyte() {
+        let layout = |sample_rate, channels, encoding| Layout {
+            sample_rate,
+            channels,
+            encoding,
+        };
+        assert_eq!(block_frames(&layout(48_000, 2, Encoding::S16le)), 4800);
+        assert_eq!(block_frames(&layout(5, 1, Encoding::S16le)), 1);
+        let widest = layout(u32::MAX, MAX_CHANNELS, Encoding::F32le);
+        let frames = block_frames(&widest);
+        assert_eq!(frames, 4);
+        assert!(frames * MAX_CHANNELS * 4 <= MAX_BLOCK_BYTES);
+        assert_eq!(block_frames(&layout(u32::MAX, 1, Encoding::S16le)), 1 << 19);
+    }
 }

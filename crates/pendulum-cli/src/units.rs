@@ -424,6 +424,17 @@ pub fn parse_in(text: &str, dimension: Dimension, bare: &str) -> Result<f64, Uni
     finite(trimmed, value)
 }
 
+/// The size in SI of `unit` of `dimension` in any case, from the table
+/// the flags read: a file's header (read in lower case) takes the units
+/// the flags take (`pressure_bar` as `--pressure 1bar`).
+pub fn si_factor(dimension: Dimension, unit: &str) -> Option<f64> {
+    dimension
+        .units()
+        .iter()
+        .find(|u| u.names.iter().any(|n| n.eq_ignore_ascii_case(unit)))
+        .map(|u| u.si)
+}
+
 fn lookup(dimension: Dimension, unit: &str) -> Option<&'static Unit> {
     dimension.units().iter().find(|u| u.names.contains(&unit))
 }

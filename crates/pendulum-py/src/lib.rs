@@ -440,15 +440,17 @@ fn stability(
     answer(py.detach(|| stability(&input)))
 }
 
-/// The body tide (the CLI's `tide`) at Unix times, as JSON rows.
+/// The body tide (the CLI's `tide`) at Unix times, as JSON rows; times
+/// whose work is more than a few seconds need `force`.
 #[pyfunction]
-#[pyo3(signature = (latitude, longitude, time, height))]
+#[pyo3(signature = (latitude, longitude, time, height, force))]
 fn tide(
     py: Python<'_>,
     latitude: f64,
     longitude: f64,
     time: In<'_>,
     height: f64,
+    force: bool,
 ) -> PyResult<String> {
     use pendulum_theory::tide::{at, Station};
     let station = Station {
@@ -457,7 +459,7 @@ fn tide(
         height_m: height,
     };
     let time = values(&time, "time")?;
-    answer(py.detach(|| at(station, time)))
+    answer(py.detach(|| at(station, time, force)))
 }
 
 /// The clock-log analysis (the CLI's `log`) as JSON.
@@ -741,10 +743,39 @@ fn fit_trajectory(
     }))
 }
 
+/// `refusal` naming its input by the Python keyword (`keys`: the
+/// library's field, the keyword) where the keyword carries its unit
+/// (`pressure_hpa`) and the library's field does not.
+fn keyed(refusal: Refusal, keys: &[(&str, &'static str)]) -> Refusal {
+    use pendulum_theory::analysis::Place;
+    let key = |field: &'static str| {
+        keys.iter()
+            .find(|(f, _)| *f == field)
+            .map_or(field, |k| k.1)
+    };
+    Refusal {
+        place: match refusal.place {
+            Place::Field(f) => Place::Field(key(f)),
+            Place::Sample(f, i) => Place::Sample(key(f), i),
+            Place::Data => Place::Data,
+        },
+        reason: refusal.reason,
+    }
+}
+
+/// The weather's columns: the library's fields, the keys of Python's
+/// `clock_run(weather=)` (the drive file's column names).
+const WEATHER_KEYS: [(&str, &str); 3] = [
+    ("pressure", "pressure_hpa"),
+    ("humidity", "humidity_percent"),
+    ("gradient", "gradient_k_per_m"),
+];
+
 /// A long run as the Python package passes it: duration, row interval,
 /// drive schedule (times, factors), rate schedule (times, s/day), weather
-/// (times, temperatures °C, pressures Pa, humidities %, gradients K/m),
-/// force.
+/// (times, temperatures °C, pressures Pa: the package's `pressure_hpa`
+/// times 100, as the drive file's reader makes them; humidities %,
+/// gradients K/m), force.
 type RunArgs = (
     f64,
     Option<f64>,
@@ -895,7 +926,7 @@ fn clock<'py>(
     };
     let mut rows = Columns::default();
     let result = py.detach(|| analyse(&input, &mut rows));
-    let text = answer(result)?;
+    let text = answer(result.map_err(|r| keyed(r, &WEATHER_KEYS)))?;
     let columns = input
         .run
         .is_some()
@@ -1160,7 +1191,9 @@ fn design_of(parts: &str) -> PyResult<pendulum_theory::compound::description::De
     design(&value, &no_units).map_err(|r| PyValueError::new_err(r.to_string()))
 }
 
-/// A design's datasheet (the CLI's `design`) as JSON.
+/// A design's datasheet (the CLI's `design`) as JSON: `pressure` in Pa
+/// (the package's `pressure_hpa` times 100, as the command line makes
+/// `--pressure`).
 #[pyfunction]
 #[pyo3(signature = (parts, g, pressure, temperature, humidity, regulated_at, gas, pivot_q, amplitude))]
 #[allow(clippy::too_many_arguments)]
@@ -1181,7 +1214,7 @@ fn design(
         .map(pendulum_theory::gas::Gas::parse)
         .transpose()
         .map_err(|r| PyValueError::new_err(r.to_string()))?;
-    answer(datasheet(
+    let sheet = datasheet(
         &design,
         g,
         &Air {
@@ -1193,7 +1226,8 @@ fn design(
             pivot_q,
             amplitude_rad: amplitude,
         },
-    ))
+    );
+    answer(sheet.map_err(|r| keyed(r, &[("pressure", "pressure_hpa")])))
 }
 
 /// Regulation (the CLI's `regulate`) as JSON.

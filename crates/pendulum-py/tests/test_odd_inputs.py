@@ -40,7 +40,7 @@ calls = {
     "damped_c": lambda: pt.damped(1.0, 0.1, damping_coefficient=pick(), mass=pick()),
     "train": lambda: pt.train([random.choice([0, 8, 64, 10**6]) for _ in range(3)], [random.choice([0, 8, 10**6]) for _ in range(2)], arbor_turns_per_hour=pick(), g=pick()),
     "train_for": lambda: pt.train_for(pick(), escape_teeth=random.choice([None, 0, 30, 10**9]), tolerance=pick()),
-    "design": lambda: pt.design([{**ROD, "length": pick()}, {**BOB, "diameter": pick(), "centre": pick()}], temperature=pick(), pressure=pick(), humidity=pick(), g=pick()),
+    "design": lambda: pt.design([{**ROD, "length": pick()}, {**BOB, "diameter": pick(), "centre": pick()}], temperature=pick(), pressure_hpa=pick(), humidity=pick(), g=pick()),
     "regulate": lambda: pt.regulate(pick(), length=pick(), nut_pitch=random.choice([None, pick()]), nut_tpi=random.choice([None, pick()])),
     "regulate_design": lambda: pt.regulate(pick(), parts=[ROD, BOB], part="bob", tray=random.choice([None, pick()])),
     "compensate": lambda: pt.compensate([ROD, BOB], random.choice(["zinc", "gridiron", "mercury", "collar", "x"]), jar_diameter=random.choice([None, pick()]), tube_bore=random.choice([None, pick()])),

@@ -1187,11 +1187,11 @@ DESIGN = {
     "rests_on": ([ROD, {**NUT, "centre": 1.0}, {"name": "bob", "shape": "cylinder",
                                                   "material": "brass", "length": 0.1,
                                                   "diameter": 0.1, "rests_on": "nut"}], {}),
-    "hot_humid": ([ROD, BOB], {"temperature": 35.0, "humidity": 75.0, "pressure": 95000.0}),
-    "cold_low": ([ROD, BOB], {"temperature": -10.0, "pressure": 70000.0,
+    "hot_humid": ([ROD, BOB], {"temperature": 35.0, "humidity": 75.0, "pressure_hpa": 950.0}),
+    "cold_low": ([ROD, BOB], {"temperature": -10.0, "pressure_hpa": 700.0,
                               "regulated_at": 15.0}),
     "lunar": ([ROD, BOB], {"g": 1.62}),
-    "pressure_high": ([ROD, BOB], {"pressure": 120000.0}),
+    "pressure_high": ([ROD, BOB], {"pressure_hpa": 1200.0}),
     "temperature_cold": ([ROD, BOB], {"temperature": -40.0}),
     "humidity_over": ([ROD, BOB], {"humidity": 120.0}),
     "regulated_hot": ([ROD, BOB], {"regulated_at": 150.0}),
@@ -1214,15 +1214,15 @@ DESIGN = {
     "hangs_and_rests": ([ROD, {**NUT, "centre": 1.0},
                          {k: v for k, v in BOB.items() if k != "centre"} |
                          {"rests_on": "nut", "hangs_from": "rod"}], {}),
-    "shortt_tank": ([ROD, BOB], {"gas": "nitrogen", "pressure": 2700.0, "humidity": 0.0,
+    "shortt_tank": ([ROD, BOB], {"gas": "nitrogen", "pressure_hpa": 27.0, "humidity": 0.0,
                                  "amplitude": 0.026, "pivot_q": 50000.0}),
-    "helium_low": ([ROD, BOB], {"gas": "helium", "pressure": 1.0}),
+    "helium_low": ([ROD, BOB], {"gas": "helium", "pressure_hpa": 0.01}),
     "arc_in_air": ([ROD, BOB, NUT], {"amplitude": 0.035}),
     "unknown_gas": ([ROD, BOB], {"gas": "argon"}),
     "helium_humid": ([ROD, BOB], {"gas": "helium", "humidity": 50.0}),
     "pivot_q_zero": ([ROD, BOB], {"pivot_q": 0.0}),
     "arc_too_wide": ([ROD, BOB], {"amplitude": 1.5}),
-    "pressure_vacuum": ([ROD, BOB], {"pressure": 0.1}),
+    "pressure_vacuum": ([ROD, BOB], {"pressure_hpa": 0.001}),
     "spring": ([SPRING, {**ROD, "centre": 0.515}, {**BOB, "centre": 0.965}], {}),
     "spring_own_material": ([{**SPRING, "material": {"density": 8800, "expansion": 17e-6,
                                                       "modulus": 1.1e11,
@@ -1244,11 +1244,12 @@ DESIGN = {
     "pivot_q_of_one": ([ROD, BOB], {"pivot_q": 1.0, "amplitude": 0.035}),
     "tiny_arc": ([ROD, BOB], {"amplitude": 1e-200}),
 }
-DESIGN_FLAGS = {"g": ("--g", 1.0), "pressure": ("--pressure", 0.01),
+DESIGN_FLAGS = {"g": ("--g", 1.0), "pressure_hpa": ("--pressure", 1.0),
                 "temperature": ("--temperature", 1.0), "humidity": ("--humidity", 1.0),
                 "regulated_at": ("--regulated-at", 1.0), "gas": ("--gas", None),
                 "pivot_q": ("--pivot-q", 1.0), "amplitude": ("--amplitude", "rad")}
-FLAG.update({"humidity": "--humidity", "regulated_at": "--regulated-at"})
+FLAG.update({"humidity": "--humidity", "regulated_at": "--regulated-at",
+             "pressure_hpa": "--pressure"})
 
 
 @pytest.mark.parametrize("name", sorted(DESIGN))
@@ -1428,8 +1429,9 @@ def weather_case(name, tmp_path, parts):
             columns.append(column)
     path = tmp_path / "weather.csv"
     write_csv(path, header, columns)
-    pa = None if press is None else [p * 100.0 for p in press]
-    return path, (times, temps, pa, humid, gradient)
+    columns = {"time_s": times, "temperature_c": temps, "pressure_hpa": press,
+               "humidity_percent": humid, "gradient_k_per_m": gradient}
+    return path, {k: v for k, v in columns.items() if v is not None}
 
 
 @pytest.mark.parametrize("name", sorted(WEATHER))

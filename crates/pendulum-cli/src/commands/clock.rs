@@ -24,6 +24,7 @@ use std::path::Path;
 /// The library's field names that are not `--` and the field.
 const FLAGS: &[(&str, &str)] = &[
     ("drive_schedule", "--drive-file"),
+    ("rate_schedule", "--drive-file"),
     ("weather", "--drive-file"),
     ("humidity", "--drive-file"),
     ("gradient", "--drive-file"),
@@ -35,19 +36,29 @@ fn number(flag: &str, text: &str) -> Result<f64, CliError> {
 }
 
 /// The columns a drive file may have besides its times.
-const COLUMNS: [(Role, &str); 5] = [
+const COLUMNS: [(Role, &str); 6] = [
     (Role::DriveFactor, "drive_factor"),
+    (Role::RateChange, "rate_change_s_per_day"),
     (Role::Temperature, "temperature_c"),
     (Role::Pressure, "pressure_hpa"),
     (Role::Humidity, "humidity_percent"),
     (Role::Gradient, "gradient_k_per_m"),
 ];
 
+/// A drive file's schedules: the drive's factors, the rate's changes from
+/// outside, the weather.
+struct Schedules {
+    drive: Option<Schedule>,
+    rate: Option<Schedule>,
+    weather: Option<Weather>,
+}
+
 /// A drive file read by the shared reader (any separator, decimal commas,
-/// units in the header): times and any of a drive factor, a temperature,
-/// a pressure (hPa without a unit), a relative humidity (%) and a vertical
-/// temperature gradient (K/m, warmer upwards).
-fn read_schedule(path: &Path) -> Result<(Table, Option<Schedule>, Option<Weather>), CliError> {
+/// units in the header): times and any of a drive factor, a change of
+/// rate from outside (s/day), a temperature, a pressure (hPa without a
+/// unit), a relative humidity (%) and a vertical temperature gradient
+/// (K/m, warmer upwards).
+fn read_schedule(path: &Path) -> Result<(Table, Schedules), CliError> {
     let flag = |e: CliError| e.of_flag("--drive-file");
     let choose = |found: &[Found]| -> Result<Vec<Role>, String> {
         let has = |r: Role| found.iter().any(|f| f.role == r);
@@ -84,6 +95,10 @@ fn read_schedule(path: &Path) -> Result<(Table, Option<Schedule>, Option<Weather
         time: time.clone(),
         value,
     });
+    let rate = column(Role::RateChange).map(|value| Schedule {
+        time: time.clone(),
+        value,
+    });
     let weather = Weather {
         time: time.clone(),
         temperature_c: column(Role::Temperature),
@@ -92,7 +107,14 @@ fn read_schedule(path: &Path) -> Result<(Table, Option<Schedule>, Option<Weather
         gradient_k_per_m: column(Role::Gradient),
     };
     let weather = weather.any().then_some(weather);
-    Ok((table, drive, weather))
+    Ok((
+        table,
+        Schedules {
+            drive,
+            rate,
+            weather,
+        },
+    ))
 }
 
 /// The isochronism curve's range, `0.5x..2x`.
@@ -179,20 +201,24 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
     let mut file = None;
     let run = match args.duration {
         Some(duration) => {
-            let (drive_schedule, weather) = match &args.drive_file {
+            let schedules = match &args.drive_file {
                 Some(p) => {
-                    let (table, drive, weather) = read_schedule(p)?;
+                    let (table, schedules) = read_schedule(p)?;
                     file = Some(table);
-                    (drive, weather)
+                    schedules
                 }
-                None => (None, None),
+                None => Schedules {
+                    drive: None,
+                    rate: None,
+                    weather: None,
+                },
             };
             Some(RunInput {
                 duration: duration.0,
                 every: args.every.map(|t| t.0),
-                drive_schedule,
-                weather,
-                rate_schedule: None,
+                drive_schedule: schedules.drive,
+                weather: schedules.weather,
+                rate_schedule: schedules.rate,
                 force: args.force,
                 gas: args
                     .gas
@@ -251,6 +277,7 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
     let data = |which: Option<(&'static str, usize)>, reason: &str| {
         let role = match which {
             Some(("drive_schedule", _)) => Role::DriveFactor,
+            Some(("rate_schedule", _)) => Role::RateChange,
             Some(("temperature_c", _)) => Role::Temperature,
             Some(("pressure", _)) => Role::Pressure,
             Some(("humidity", _)) => Role::Humidity,

@@ -15,7 +15,6 @@ use crate::plot::{render, Figure, Panel, Series, Target};
 use pendulum_theory::damped::DampedPendulum;
 use pendulum_theory::report::{report, Report, ReportInput, UNDAMPED_RUNDOWN_PERIODS};
 use pendulum_theory::Pendulum;
-use std::path::Path;
 
 /// One line of the page's table: quantity, value with unit, note.
 struct Row(&'static str, String, &'static str);
@@ -61,14 +60,13 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
             })
         })
         .transpose()?;
-    let output = AtomicFolder::create(&args.output, "--output")?;
-    let folder = output.path().to_path_buf();
+    let mut output = AtomicFolder::create(&args.output, "--output")?;
     let damped = r.damped.friction.damped;
     let pendulum = damped.pendulum;
     let a0 = r.damped.amplitude_rad;
     let a_deg = a0.to_degrees();
     write_figure(
-        &folder,
+        &mut output,
         "period.svg",
         &period_figure(
             &pendulum,
@@ -82,14 +80,18 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         UNDAMPED_RUNDOWN_PERIODS * pendulum.small_angle_period(),
         |t| 3.0 * std::f64::consts::LN_2 * t,
     );
-    write_figure(&folder, "decay.svg", &decay_figure(&damped, a0, decay_span))?;
+    write_figure(
+        &mut output,
+        "decay.svg",
+        &decay_figure(&damped, a0, decay_span),
+    )?;
     let points: Vec<(f64, f64, f64)> = r
         .rundown
         .points
         .iter()
         .map(|p| (p.time_s, p.amplitude_rad.to_degrees(), p.rate_s_per_day))
         .collect();
-    write_figure(&folder, "rundown.svg", &rundown_figure(&points))?;
+    write_figure(&mut output, "rundown.svg", &rundown_figure(&points))?;
     let datasheet = r
         .datasheet
         .as_ref()
@@ -111,7 +113,7 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         );
         for (name, figure) in super::log::figures(&l.result) {
             let file = format!("log-{name}.svg");
-            write_figure(&folder, &file, &figure)?;
+            write_figure(&mut output, &file, &figure)?;
             log_html.push_str(&format!("<img src=\"{file}\" alt=\"the log: {name}\">\n"));
         }
     }
@@ -121,12 +123,12 @@ pub fn run(args: &ReportArgs) -> Result<String, CliError> {
         &log_html,
     );
     crate::output::check_finite_text(&page)?;
-    let mut file = AtomicFile::create(&folder.join("index.html"), "--output")?;
+    let mut file = AtomicFile::create(&output.file("index.html"), "--output")?;
     file.writer()
         .write_all(page.as_bytes())
         .map_err(|e| file.write_error(e))?;
     file.commit()?;
-    let written = output.commit(&args.output);
+    let written = output.commit(&args.output)?;
     Ok(json.unwrap_or_else(|| format!("{}\n", written.join("index.html").display())))
 }
 
@@ -356,8 +358,9 @@ fn log_section(
     })
 }
 
-fn write_figure(folder: &Path, name: &str, figure: &Figure) -> Result<(), CliError> {
-    render(&Target::new(&folder.join(name), "--output")?, figure)?;
+/// Draws `figure` as the report's file `name`.
+fn write_figure(folder: &mut AtomicFolder, name: &str, figure: &Figure) -> Result<(), CliError> {
+    render(&Target::new(&folder.file(name), "--output")?, figure)?;
     Ok(())
 }
 

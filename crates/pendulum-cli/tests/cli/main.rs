@@ -14,6 +14,7 @@ mod fit_period;
 mod formats;
 mod gyroscope;
 mod hardening;
+mod inputs;
 mod layouts;
 mod listen;
 mod listen_live;

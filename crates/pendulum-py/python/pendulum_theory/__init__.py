@@ -3,7 +3,11 @@
 Every function takes scalars or numpy arrays of any shape (broadcast
 together as numpy does) and returns a float for scalars, else a float64
 array of the broadcast shape. Angles are in radians (``numpy.radians`` is
-one call away), lengths in metres, times in seconds, g in m/s².
+one call away), lengths in metres, times in seconds, g in m/s². The
+weather is as the command line takes it: temperatures in °C, relative
+humidities in %, pressures in hPa (``design``'s keyword and
+``clock_run``'s weather column say so: ``pressure_hpa``; ``clock_log``'s
+``pressure`` column is hPa too); a log's amplitudes are in degrees.
 
 The computing is done by the Rust library ``pendulum-theory`` without the
 GIL: the same code, methods and measured accuracy as the ``pendulum``
@@ -261,6 +265,14 @@ def _holds_bool(value):
     return False
 
 
+#: Keywords renamed with their unit (the old name is refused, pointing to
+#: the new): a pressure was Pa in ``design`` and hPa on the command line.
+_RENAMED = {
+    "design": {"pressure": "pressure_hpa: a pressure in hPa, as the CLI's --pressure "
+                           "(the keyword pressure took Pa)"},
+}
+
+
 def _refusing_bools(f):
     """``f`` refusing ``True`` or ``False`` for any argument whose default
     is not itself ``True`` or ``False`` (Python takes ``True`` for 1:
@@ -271,8 +283,14 @@ def _refusing_bools(f):
     signature = inspect.signature(f)
     flags = {n for n, p in signature.parameters.items() if isinstance(p.default, bool)}
 
+    renamed = _RENAMED.get(f.__name__, {})
+
     @functools.wraps(f)
     def checked(*args, **kwargs):
+        for key in kwargs:
+            if key in renamed:
+                raise TypeError(f"{f.__name__}() takes no keyword '{key}'; give "
+                                f"{renamed[key]}")
         try:
             bound = signature.bind_partial(*args, **kwargs)
         except TypeError:
@@ -478,11 +496,13 @@ def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedul
     a change of rate from outside (positive: gaining), as the CLI's drive
     file makes from temperature and pressure with a design: for a
     coefficient of -0.5 s/day per °C and a 10 °C warm spell, ``([0, 86400,
-    86401], [0, 0, -5])``; or, for a clock of ``parts``, ``weather`` is
-    ``(times_s, temperatures_c, pressures_pa)``, optionally followed by
-    ``humidities_percent`` and ``gradients_k_per_m`` (the vertical
-    temperature gradient, warmer upwards; any column ``None``), and the
-    design's own coefficients move the rate. Returns a dict of arrays (time_s, beats,
+    86401], [0, 0, -5])``, the drive file's ``rate_change_s_per_day``
+    (above -86400: a clock losing a day a day has stopped); or, for a
+    clock of ``parts``, ``weather`` is a dict of the drive file's columns,
+    ``time_s`` and any of ``temperature_c``, ``pressure_hpa`` (hPa),
+    ``humidity_percent`` and ``gradient_k_per_m`` (the vertical
+    temperature gradient, warmer upwards), and the design's own
+    coefficients move the rate. Returns a dict of arrays (time_s, beats,
     amplitude_rad, rate_s_per_day, time_error_s, drive_factor) and the
     command's ``--json`` object (its ``long_run`` the run's summary)."""
     def pairs(schedule):
@@ -490,22 +510,38 @@ def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedul
             return None
         return [float(x) for x in schedule[0]], [float(x) for x in schedule[1]]
 
-    def column(values):
-        return None if values is None else [float(x) for x in values]
+    def column(values, scale=1.0):
+        return None if values is None else [float(x) * scale for x in values]
 
-    def nth(k):
-        return column(weather[k]) if len(weather) > k else None
-
-    if weather is not None and not 2 <= len(weather) <= 5:
-        raise ValueError("weather: give (times_s, temperatures_c, pressures_pa, "
-                         "humidities_percent, gradients_k_per_m), the last four optional")
-
-    climate = None if weather is None else tuple(nth(k) for k in range(5))
+    climate = None if weather is None else _weather(weather, column)
     run = (float(duration), _number(every), pairs(drive_schedule), pairs(rate_schedule),
            climate, bool(force), _text(gas))
     result, columns = _clock(length, run=run, **clock_keywords)
     names = ["time_s", "beats", "amplitude_rad", "rate_s_per_day", "time_error_s", "drive_factor"]
     return dict(zip(names, columns)), result
+
+
+#: The columns of ``clock_run``'s weather, as the drive file names them,
+#: and the factor to the library's unit (pressures in Pa).
+_WEATHER = {"time_s": 1.0, "temperature_c": 1.0, "pressure_hpa": 100.0,
+            "humidity_percent": 1.0, "gradient_k_per_m": 1.0}
+
+
+def _weather(weather, column):
+    """``clock_run``'s weather (a dict of named columns) as the library's
+    (times, temperatures °C, pressures Pa, humidities %, gradients K/m)."""
+    names = ", ".join(_WEATHER)
+    if not hasattr(weather, "keys"):
+        raise ValueError(f"weather: give a dict of named columns ({names}: the drive file's "
+                         "names), not a sequence (whose third entry was pressures in Pa)")
+    unknown = [k for k in weather.keys() if k not in _WEATHER]
+    if unknown:
+        hint = " (pressures go in hPa as pressure_hpa)" if \
+            any(str(k).startswith("pressure") for k in unknown) else ""
+        raise ValueError(f"weather: no column {unknown[0]!r}{hint}; the columns are {names}")
+    if "time_s" not in weather:
+        raise ValueError(f"weather: give its times as time_s, beside any of {names}")
+    return tuple(column(weather.get(k), f) for k, f in _WEATHER.items())
 
 
 def listen(samples, sample_rate, *, bph=None, period=None, sample_rate_error_ppm=None,
@@ -657,20 +693,22 @@ def _parts(parts):
     return _json.dumps(_finite_or_none(parts))
 
 
-def design(parts, *, g=None, pressure=None, temperature=None, humidity=None,
+def design(parts, *, g=None, pressure_hpa=None, temperature=None, humidity=None,
            regulated_at=None, gas=None, pivot_q=None, amplitude=None):
     """The command's ``design`` (the same library call): a pendulum of
     ``parts`` (dicts with the design file's fields: name, shape,
     material, length, diameter, ..., centre or rests_on; sizes as numbers
     in metres and kilograms) in ``gas`` ("air", "nitrogen" or "helium",
-    default air) at ``pressure`` Pa, ``temperature`` °C and relative
+    default air) at ``pressure_hpa`` hPa (as the CLI's ``--pressure``),
+    ``temperature`` °C and relative
     ``humidity`` (%, 0 to 100, air only, as the CLI's ``--humidity`` and
     the weather of :func:`clock_run` and :func:`clock_log`), regulated at ``regulated_at`` °C;
     ``pivot_q`` the Q of its pivot's own losses and ``amplitude`` the
     semi-arc (rad) it swings here. Returns its ``--json`` object as a dict
     (without ``file``)."""
     humidity = None if humidity is None else _number(humidity) / 100.0
-    return _json.loads(_native.design(_parts(parts), _number(g), _number(pressure),
+    pressure = None if pressure_hpa is None else _number(pressure_hpa) * 100.0
+    return _json.loads(_native.design(_parts(parts), _number(g), pressure,
                                       _number(temperature), humidity,
                                       _number(regulated_at), _text(gas), _number(pivot_q),
                                       _number(amplitude)))
@@ -720,13 +758,15 @@ def stability(data, tau0, *, kind="phase", all_taus=False, force=False, outliers
                                          bool(force), str(outliers)))
 
 
-def tide(latitude, longitude, time, *, height=0.0):
+def tide(latitude, longitude, time, *, height=0.0, force=False):
     """The Earth's body tide at a place (degrees, m) at Unix times ``time``
-    (s, UTC): the CLI's ``tide``, the same library call. Returns a dict of
-    arrays: time_unix_s, gravity_change_nm_s2 (positive: g larger) and
-    rate_s_per_day (a pendulum's, +Δg/2g of a day)."""
+    (s, UTC): the CLI's ``tide``, the same library call. Times whose work
+    is estimated at more than a few seconds (300,000 of them, or fewer a
+    month or more apart over decades) raise ValueError unless ``force``.
+    Returns a dict of arrays: time_unix_s, gravity_change_nm_s2 (positive:
+    g larger) and rate_s_per_day (a pendulum's, +Δg/2g of a day)."""
     rows = _json.loads(_native.tide(float(latitude), float(longitude), _array(time),
-                                    float(height)))
+                                    float(height), bool(force)))
     keys = ["time_unix_s", "gravity_change_nm_s2", "rate_s_per_day"]
     return {k: _np.array([r[k] for r in rows], dtype=_np.float64) for k in keys}
 

@@ -1,4 +1,4 @@
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -113,7 +113,7 @@ def clock_run(
     every: Optional[float] = ...,
     drive_schedule: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = ...,
     rate_schedule: Optional[Tuple[npt.ArrayLike, npt.ArrayLike]] = ...,
-    weather: Any = ...,
+    weather: Optional[Mapping[str, Optional[npt.ArrayLike]]] = ...,
     gas: Any = ...,
     force: Any = ...,
     **clock_keywords: Any,
@@ -185,7 +185,7 @@ def design(
     parts: Any,
     *,
     g: Any = ...,
-    pressure: Any = ...,
+    pressure_hpa: Any = ...,
     temperature: Any = ...,
     humidity: Any = ...,
     regulated_at: Any = ...,
@@ -239,7 +239,12 @@ def stability(
     outliers: str = ...,
 ) -> dict[str, Any]: ...
 def tide(
-    latitude: float, longitude: float, time: npt.ArrayLike, *, height: float = ...
+    latitude: float,
+    longitude: float,
+    time: npt.ArrayLike,
+    *,
+    height: float = ...,
+    force: bool = ...,
 ) -> dict[str, npt.NDArray[np.float64]]: ...
 def clock_log(
     time: npt.ArrayLike,

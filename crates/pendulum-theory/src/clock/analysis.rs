@@ -8,7 +8,7 @@
 
 use super::escapement::spec::{Drive, Kind, Spec};
 use super::long_run::{period_factor, piecewise_linear, run_with_damping, Ending, LongRun, Row};
-use super::plan::{check_schedule, plan_run, RunPlan, MAX_RATE_S_PER_DAY};
+use super::plan::{check_rate_schedule, check_schedule, plan_run, RunPlan};
 use super::{Clock, ClockError, HalfSwingMethod, Steady};
 use crate::air::TEMPERATURE_RANGE_C;
 use crate::analysis::{require_finite, require_finite_sample, Refusal};
@@ -1215,13 +1215,7 @@ fn long(
             ))
         }
         (_, _, Some(r)) => {
-            check_schedule(
-                "rate_schedule",
-                &r.time,
-                &r.value,
-                -MAX_RATE_S_PER_DAY..=MAX_RATE_S_PER_DAY,
-                "a rate change within a day per day (86400 s/day)",
-            )?;
+            check_rate_schedule(&r.time, &r.value)?;
             Some(r.clone())
         }
         _ => None,
@@ -1282,10 +1276,27 @@ fn long(
                  units"
             ),
         )),
-        Ending::Duration | Ending::Sink | Ending::PendulumStopped => Ok(RunSummary {
-            warnings,
-            ..summary(&finish, nominal_period)
-        }),
+        Ending::Duration | Ending::Sink | Ending::PendulumStopped => {
+            // A beat stretched past a row's interval (a rate change close
+            // to a day lost a day, a clock all but stopped) ends the run
+            // long after its duration: said with the beat's length.
+            let overshoot = finish.last.time - input.duration;
+            if overshoot > input.every.unwrap_or(0.0).max(2.0 * steady.period) {
+                let rate = finish.last.rate;
+                warnings.push(format!(
+                    "the run ends {} days after the {} days asked: at a rate of {} s/day one \
+                     beat lasts {} s (a clock all but stopped)",
+                    format_significant(overshoot / 86_400.0, 4),
+                    format_significant(input.duration / 86_400.0, 4),
+                    format_significant(rate, 12),
+                    format_significant(nominal_period / 2.0 * period_factor(rate), 3),
+                ));
+            }
+            Ok(RunSummary {
+                warnings,
+                ..summary(&finish, nominal_period)
+            })
+        }
     }
 }
 
@@ -1401,5 +1412,51 @@ mod tests {
         let gaining = analyse(&c, &mut NoRows).unwrap().long_run.unwrap();
         let expected = 2.0 * gaining.duration_s / 86_400.0;
         assert!((gaining.time_error_s - plain.time_error_s - expected).abs() < 1e-6);
+    }
+
+    /// A rate schedule reaching -86,400 s/day (a clock that stops) hung:
+    /// its beats grew without end and the rows were counted one by one.
+    /// It is refused by its sample, as is the other end; close to it the
+    /// run ends, its last beat taking the clock past the duration.
+    #[test]
+    fn a_rate_schedule_of_a_stopped_clock_is_refused_and_near_it_ends() {
+        let mut c = seconds_clock();
+        let run = |to: f64| RunInput {
+            duration: 2.0 * 86_400.0,
+            every: Some(3600.0),
+            rate_schedule: Some(Schedule {
+                time: vec![0.0, 86_400.0],
+                value: vec![0.0, to],
+            }),
+            ..RunInput::default()
+        };
+        for (to, says) in [
+            (
+                -86_400.0,
+                "above -86400 s/day: a clock that loses a day a day has stopped",
+            ),
+            (-1e300, "has stopped"),
+            (86_400.0, "below 86400 s/day"),
+        ] {
+            c.run = Some(run(to));
+            let refused = analyse(&c, &mut NoRows).unwrap_err().to_string();
+            assert!(refused.starts_with("rate_schedule[1]: "), "{refused}");
+            assert!(refused.contains(says), "{refused}");
+        }
+        for to in [-86_399.999_999, -86_400.0 * (1.0 - f64::EPSILON)] {
+            c.run = Some(run(to));
+            let r = analyse(&c, &mut NoRows).unwrap().long_run.unwrap();
+            assert!(
+                r.duration_s > 3.0 * 86_400.0 && r.duration_s.is_finite(),
+                "{r:?}"
+            );
+            assert!(r.time_error_s.is_finite() && r.time_error_s < 0.0, "{r:?}");
+            assert!(r.warnings[0].contains("(a clock all but stopped)"), "{r:?}");
+        }
+        // A run that ends on time says nothing of it.
+        c.run = Some(run(-3600.0));
+        let r = analyse(&c, &mut NoRows).unwrap().long_run.unwrap();
+        assert!(r.warnings.is_empty(), "{r:?}");
+        assert!(r.duration_s < 2.0 * 86_400.0 + 3600.0, "{r:?}");
     }
 }

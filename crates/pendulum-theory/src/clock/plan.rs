@@ -175,3 +175,34 @@ pub fn check_schedule(
     }
     Ok(())
 }
+
+/// Checks a rate schedule, s/day at times s ([`check_schedule`]'s
+/// checks): every rate a change within a day per day, both ends left out.
+/// At -86,400 s/day the clock has stopped (its beat lasts for ever, and a
+/// run towards it never ends); at +86,400 it goes twice as fast.
+pub fn check_rate_schedule(times: &[f64], values: &[f64]) -> Result<(), Refusal> {
+    check_schedule(
+        "rate_schedule",
+        times,
+        values,
+        f64::MIN..=f64::MAX,
+        "a number",
+    )?;
+    let max = MAX_RATE_S_PER_DAY;
+    if let Some(i) = values.iter().position(|v| v.abs() >= max) {
+        let why = if values[i] < 0.0 {
+            format!("above -{max} s/day: a clock that loses a day a day has stopped")
+        } else {
+            format!("below {max} s/day: a clock that gains a day a day goes twice as fast")
+        };
+        return Err(Refusal::sample(
+            "rate_schedule",
+            i,
+            format!(
+                "must be a rate change within a day per day, {why}; got {} s/day",
+                format_significant(values[i], 6)
+            ),
+        ));
+    }
+    Ok(())
+}

@@ -35,13 +35,9 @@ pub(super) fn listen(args: &ListenArgs, input: &ListenInput) -> Result<Heard, Cl
                     "must be positive, got 0 Hz",
                 ));
             }
-            let channels = args.channels.unwrap_or(1);
-            if channels == 0 {
-                return Err(CliError::flag("--channels", "must be at least 1, got 0"));
-            }
             Given::Raw(Layout {
                 sample_rate,
-                channels,
+                channels: args.channels.unwrap_or(1),
                 encoding: Encoding::parse(raw)?,
             })
         }

@@ -110,6 +110,24 @@ def test_the_old_weather_tuple_and_a_pressure_in_pa_are_refused_by_name():
         pt.design(PARTS, pressure=101325.0)
 
 
+def test_a_logs_weather_keywords_name_their_units():
+    """``clock_log`` took ``pressure`` in hPa and ``amplitude`` in
+    degrees where every other amplitude keyword is radians, unnamed: the
+    keywords are ``pressure_hpa`` and ``amplitude_deg``, the old names
+    refused, and a pressure in hPa gives the coefficient the file does."""
+    t = np.arange(3 * 144) * 600.0
+    pressure = 1013.0 + 5.0 * np.cos(t / 50000.0)
+    rate = 0.5 - 0.01 * (pressure - 1013.0)
+    offset = np.concatenate([[0.0], np.cumsum(rate[1:] * 600.0 / 86400.0)])
+    offset += 1e-5 * np.sin(np.arange(t.size) * 1.7)
+    for old in ["pressure", "amplitude"]:
+        with pytest.raises(TypeError, match=rf"clock_log\(\) takes no keyword '{old}'; give "
+                                            rf"{old}_(hpa|deg): the log's"):
+            pt.clock_log(t, offset, **{old: pressure})
+    fitted = pt.clock_log(t, offset, pressure_hpa=pressure)
+    assert abs(fitted["coefficients"]["pressure_s_per_day_per_hpa"] + 0.01) < 1e-3
+
+
 def test_a_pressure_out_of_range_is_named_by_its_keyword_in_hpa():
     with pytest.raises(ValueError, match=r"^pressure_hpa: must lie between 1 Pa and 1200 hPa, "
                                          r"got -1 hPa$"):

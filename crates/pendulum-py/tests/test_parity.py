@@ -1672,7 +1672,7 @@ def test_clock_log(name, tmp_path):
         # Both take hPa (the file's column and the keyword) to Pa alike.
         header.append("pressure_hpa")
         columns.append(kw["pressure_pa"] * 0.01)
-        weather["pressure"] = kw["pressure_pa"] * 0.01
+        weather["pressure_hpa"] = kw["pressure_pa"] * 0.01
     path = tmp_path / "log.csv"
     write_csv(path, header, columns)
     args = ["log", str(path), "--json"]

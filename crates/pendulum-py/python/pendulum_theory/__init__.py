@@ -6,8 +6,9 @@ array of the broadcast shape. Angles are in radians (``numpy.radians`` is
 one call away), lengths in metres, times in seconds, g in m/s². The
 weather is as the command line takes it: temperatures in °C, relative
 humidities in %, pressures in hPa (``design``'s keyword and
-``clock_run``'s weather column say so: ``pressure_hpa``; ``clock_log``'s
-``pressure`` column is hPa too); a log's amplitudes are in degrees.
+``clock_run``'s weather column and ``clock_log``'s keyword say so:
+``pressure_hpa``); a log's amplitudes are in degrees, named so:
+``amplitude_deg``.
 
 The computing is done by the Rust library ``pendulum-theory`` without the
 GIL: the same code, methods and measured accuracy as the ``pendulum``
@@ -270,6 +271,10 @@ def _holds_bool(value):
 _RENAMED = {
     "design": {"pressure": "pressure_hpa: a pressure in hPa, as the CLI's --pressure "
                            "(the keyword pressure took Pa)"},
+    "clock_log": {"pressure": "pressure_hpa: the log's pressures in hPa, as its "
+                              "pressure_hpa column",
+                  "amplitude": "amplitude_deg: the log's amplitudes in degrees, as its "
+                               "amplitude_deg column (other amplitudes are radians)"},
 }
 
 
@@ -771,15 +776,16 @@ def tide(latitude, longitude, time, *, height=0.0, force=False):
     return {k: _np.array([r[k] for r in rows], dtype=_np.float64) for k in keys}
 
 
-def clock_log(time, values, *, kind="offset", temperature=None, pressure=None, humidity=None,
-              amplitude=None, pulse_width=None, flag_width=None, gate_radius=None, epoch=None, latitude=None, longitude=None, height=0.0,
+def clock_log(time, values, *, kind="offset", temperature=None, pressure_hpa=None, humidity=None,
+              amplitude_deg=None, pulse_width=None, flag_width=None, gate_radius=None, epoch=None, latitude=None, longitude=None, height=0.0,
               tides=False, events=None, bin=None, beat=None, bph=None, period=None,
               force=False, stability=True, wheels=None, pinions=None, arbor_turns_per_hour=None):
     """A clock's log, the CLI's ``log``, the same library call: ``time``
     (s, increasing; ``epoch`` the Unix time of 0, for the tides),
     ``values`` offsets (s, ``kind="offset"``), rates (s/day,
     ``"rate"``) or half periods (s, ``"half_periods"``); weather beside
-    them (°C, hPa, %, degrees; NaN where not read); a photogate's
+    them (``temperature`` °C, ``pressure_hpa``, ``humidity`` %,
+    ``amplitude_deg``; NaN where not read); a photogate's
     ``pulse_width`` (s) with ``flag_width`` and ``gate_radius`` (m) gives
     the amplitude exactly; ``wheels`` and ``pinions`` (the CLI's
     ``--train W,…:P,…``) mark the wheels' periods and fold the rate over
@@ -790,8 +796,8 @@ def clock_log(time, values, *, kind="offset", temperature=None, pressure=None, h
     def optional(x):
         return None if x is None else _array(x)
     return _json.loads(_native.clock_log(
-        _array(time), _array(values), str(kind), optional(temperature), optional(pressure),
-        optional(humidity), optional(amplitude), optional(pulse_width), _number(flag_width),
+        _array(time), _array(values), str(kind), optional(temperature), optional(pressure_hpa),
+        optional(humidity), optional(amplitude_deg), optional(pulse_width), _number(flag_width),
         _number(gate_radius), _number(epoch), _number(latitude),
         _number(longitude), float(height), bool(tides), optional(events), _number(bin),
         _number(beat), _number(bph), _number(period), bool(force), bool(stability),

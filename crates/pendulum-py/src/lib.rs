@@ -553,7 +553,7 @@ fn clock_log(
 
 /// The run-down analysis (the CLI's `fit decay`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, amplitude, model, period, length, g, mass, force))]
+#[pyo3(signature = (time, amplitude, model, period, length, g, mass, force, length_uncertainty=None))]
 #[allow(clippy::too_many_arguments)]
 fn fit_decay(
     py: Python<'_>,
@@ -565,6 +565,7 @@ fn fit_decay(
     g: Option<f64>,
     mass: Option<f64>,
     force: bool,
+    length_uncertainty: Option<f64>,
 ) -> PyResult<String> {
     use pendulum_theory::fitting::rundown::{analyse, RunDownInput};
     let (time, amplitude) = (values(&time, "time")?, values(&amplitude, "amplitude")?);
@@ -575,9 +576,12 @@ fn fit_decay(
             model,
             period,
             turning_half_period: None,
+            turning_count: None,
             length,
+            length_standard_error: length_uncertainty,
             g,
             mass,
+            declared_degrees: false,
             force,
         })
     }))
@@ -678,7 +682,8 @@ fn fit_beats(
 
 /// The tracked-swing analysis (the CLI's `fit trajectory`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, angle, model, length, force, angular_velocity))]
+#[pyo3(signature = (time, angle, model, length, force, angular_velocity, length_uncertainty=None))]
+#[allow(clippy::too_many_arguments)]
 fn fit_trajectory(
     py: Python<'_>,
     time: In<'_>,
@@ -687,6 +692,7 @@ fn fit_trajectory(
     length: Option<f64>,
     force: bool,
     angular_velocity: Option<Vec<In<'_>>>,
+    length_uncertainty: Option<f64>,
 ) -> PyResult<String> {
     use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
     let time = values(&time, "time")?;
@@ -712,9 +718,10 @@ fn fit_trajectory(
             angular_velocity: rate.as_deref().unwrap_or(&[]),
             model,
             length: length.map(|l| (l, LengthSource::Given)),
-            length_standard_error: None,
+            length_standard_error: length_uncertainty,
             force,
             angle_from_positions: false,
+            declared_degrees: false,
         })
     }))
 }

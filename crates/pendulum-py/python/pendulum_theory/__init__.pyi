@@ -55,6 +55,7 @@ def fit_decay(
     g: Optional[float] = ...,
     mass: Any = ...,
     force: Any = ...,
+    length_uncertainty: Optional[float] = ...,
 ) -> FitResult: ...
 def fit_trajectory(
     time: npt.ArrayLike,
@@ -63,6 +64,7 @@ def fit_trajectory(
     *,
     angular_velocity: Optional[npt.ArrayLike] = ...,
     length: Optional[float] = ...,
+    length_uncertainty: Optional[float] = ...,
     force: Any = ...,
 ) -> FitResult: ...
 def fit_beats(time: npt.ArrayLike, *, bph: Optional[float] = ..., period: Optional[float] = ...) -> FitResult: ...
@@ -84,6 +86,7 @@ def fit_period(
     pendulum_length: Optional[float] = ...,
     pendulum_length_standard_error: Optional[float] = ...,
     bob_radius: Optional[float] = ...,
+    length_uncertainty: Optional[float] = ...,
 ) -> FitResult: ...
 def clock(
     length: Optional[float] = ...,

@@ -132,7 +132,7 @@ def tracks(binary, folder):
             t, x, y = read_trk(path)
             angle = np.arctan2(x - pivot["x"], pivot["y"] - y)
             track(binary, name, [path, "--pivot", "fit"], t - t[0], angle)
-        elif name.startswith("q4b_data") and name.endswith(".txt"):
+        elif "q4b_data" in name and name.endswith(".txt"):
             d = np.loadtxt(path, skiprows=1)
             track(binary, name, [path, "--columns", "time_s,angle_rad,dt,da"],
                   d[:, 0] - d[0, 0], d[:, 1])

@@ -553,7 +553,7 @@ fn clock_log(
 
 /// The run-down analysis (the CLI's `fit decay`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, amplitude, model, period, length, g, mass, force, length_uncertainty=None))]
+#[pyo3(signature = (time, amplitude, model, period, length, g, mass, force))]
 #[allow(clippy::too_many_arguments)]
 fn fit_decay(
     py: Python<'_>,
@@ -565,7 +565,6 @@ fn fit_decay(
     g: Option<f64>,
     mass: Option<f64>,
     force: bool,
-    length_uncertainty: Option<f64>,
 ) -> PyResult<String> {
     use pendulum_theory::fitting::rundown::{analyse, RunDownInput};
     let (time, amplitude) = (values(&time, "time")?, values(&amplitude, "amplitude")?);
@@ -578,7 +577,7 @@ fn fit_decay(
             turning_half_period: None,
             turning_count: None,
             length,
-            length_standard_error: length_uncertainty,
+            length_standard_error: None,
             g,
             mass,
             declared_degrees: false,

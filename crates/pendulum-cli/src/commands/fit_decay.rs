@@ -130,6 +130,17 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
                 ))
             }
         };
+        // g comes from a track's turning times: a table of amplitudes
+        // gives none for the length's uncertainty to go in.
+        if args.length_uncertainty.is_some() {
+            return Err(CliError::flag(
+                "--length-uncertainty",
+                format!(
+                    "goes in g, which {file} (amplitudes, no times of turning points) does not \
+                     give: g comes from a track (angle, or x and y, against time)"
+                ),
+            ));
+        }
         let declared = declared_degrees(&table, Role::Amplitude, args.read.angle_unit.as_deref());
         let _spinner = work::Spinner::start(
             format!("fitting {} rows", time.len()),

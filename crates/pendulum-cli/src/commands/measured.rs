@@ -6,7 +6,7 @@ use crate::args::MeasurementArgs;
 use crate::data::{read_table, AngleUnit, Found, ReadOptions, Role, Table, RATE_ROLES};
 use crate::error::CliError;
 use crate::units::parse_number;
-use pendulum_theory::fitting::frames::{frame_grid, FrameGrid};
+use pendulum_theory::fitting::frames::{frame_grid, longest_run, FrameGrid};
 use pendulum_theory::fitting::track::{angle_about, fit_circle};
 use serde::Serialize;
 use std::path::Path;
@@ -392,7 +392,14 @@ pub fn track_of(
     let y = y.as_slice();
     let (mut pivot, radius) = match positions.pivot.map(str::trim) {
         Some("fit") => {
-            let circle = fit_circle(x, y).map_err(|e| {
+            // The arc of the record's longest run: marks after a tracking
+            // gap (a stray point elsewhere in the picture) are no part of
+            // it, and the fits leave them out too.
+            let run = match table.column(Role::Time) {
+                Some(t) if t.len() == x.len() && t.len() == y.len() => longest_run(t).0,
+                _ => 0..x.len().min(y.len()),
+            };
+            let circle = fit_circle(&x[run.clone()], &y[run]).map_err(|e| {
                 CliError::flag(
                     "--pivot",
                     format!("no circle fits the positions of {}: {e}", table.file),

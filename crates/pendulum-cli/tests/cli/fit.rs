@@ -552,6 +552,22 @@ fn the_length_uncertainty_is_in_g() {
         v["standard_error_parts"]["g_m_s2"]["length"].is_null(),
         "{v}"
     );
+    // A table of amplitudes gives no g for it to go in: refused, not
+    // ignored.
+    let rundown = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/rundown.csv");
+    let e = refuses(
+        &[
+            "fit",
+            "decay",
+            rundown.to_str().unwrap(),
+            "--length",
+            "0.99362m",
+            "--length-uncertainty",
+            "1mm",
+        ],
+        "--length-uncertainty",
+    );
+    assert!(e.contains("does not give"), "{e}");
     // The uncertainty without a length is refused by its flag.
     refuses(
         &["fit", "trajectory", path, "--length-uncertainty", "2mm"],
@@ -664,6 +680,13 @@ fn a_tracking_gap_leaves_out_what_follows_it() {
     assert!(codes(&a).is_empty(), "{a}");
     let d = json(&["fit", "decay", p, "--length", "0.8m"]);
     assert!(codes(&d).contains(&"samples_left_out".to_string()), "{d}");
+    // The pivot fitted to the run's arc alone: the marks after the gap
+    // are no part of it (they made a 6.6 m radius, g 80.6 m/s² and a
+    // warning of pixels).
+    let c = json(&["fit", "trajectory", p, "--pivot", "fit"]);
+    let r = f(&c, "length_m");
+    assert!((r - 0.8).abs() < 1e-9, "{c}");
+    assert_eq!(codes(&c), ["samples_left_out"], "{c}");
     // One lost frame is no gap: nothing is left out.
     let trk = write(
         dir.path(),

@@ -316,10 +316,23 @@ def _text(x):
     return None if x is None else str(x)
 
 
+def _as_length_uncertainty(call):
+    """``call()``, its refusal of the library's ``length_standard_error``
+    named by this module's argument, ``length_uncertainty``."""
+    try:
+        return call()
+    except ValueError as e:
+        text = str(e)
+        if text.startswith("length_standard_error"):
+            raise ValueError("length_uncertainty" + text[len("length_standard_error"):]) from None
+        raise
+
+
 def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=None, mass=None,
-              force=False, length_uncertainty=None):
+              force=False):
     """Fits the amplitude-decay laws (viscous, coulomb, quadratic,
-    viscous+coulomb, viscous+quadratic, full; ``model="all"`` for every one)
+    viscous+coulomb, viscous+quadratic, viscous+coulomb+quadratic (once
+    ``full``, still taken); ``model="all"`` for every one)
     to ``amplitude`` (rad) at ``time`` (s), every rate held at least 0: the
     CLI's ``fit decay``, the same library call. With ``period`` (s) or
     ``length`` (m; ``g`` m/s², standard gravity if not given) the rates
@@ -327,13 +340,14 @@ def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=None,
     the energy each law says is lost. Each law's ``q_factor`` is Q over
     the record (the energy lost per cycle, whatever the law: what
     ``fit_trajectory`` gives for the same record), ``q_viscous`` its
-    viscous part alone. ``length_uncertainty`` (m) is the length's
-    standard uncertainty (the CLI's ``--length-uncertainty``). Returns the
+    viscous part alone (amplitudes give no g: the length's uncertainty,
+    the CLI's ``--length-uncertainty``, goes in ``fit_trajectory``'s and
+    ``fit_period``'s). Returns the
     CLI's JSON as a dict (points, omega_rad_s, omega_source, models,
     preferred, warnings), every key and number the same."""
     d = _json.loads(_native.fit_decay(
         _array(time), _array(amplitude), _text(model), _number(period), _number(length),
-        _number(g), _number(mass), bool(force), _number(length_uncertainty)))
+        _number(g), _number(mass), bool(force)))
     best = next((m for m in d["models"] if m["model"] == d["preferred"]), {})
     return FitResult(d, best.get("parameters", {}), best.get("standard_errors", {}),
                      d["preferred"])
@@ -362,9 +376,9 @@ def fit_trajectory(time, angle=None, model="auto", *, angular_velocity=None, len
             rates = [_np.ascontiguousarray(a[:, j]) for j in range(a.shape[1])]
         else:
             rates = [_array(a)]
-    d = _json.loads(_native.fit_trajectory(_array(time), None if angle is None else _array(angle),
-                                           _text(model), _number(length), bool(force), rates,
-                                           _number(length_uncertainty)))
+    d = _json.loads(_as_length_uncertainty(lambda: _native.fit_trajectory(
+        _array(time), None if angle is None else _array(angle), _text(model), _number(length),
+        bool(force), rates, _number(length_uncertainty))))
     return FitResult(d, d["parameters"], d["standard_errors"], d["model"])
 
 

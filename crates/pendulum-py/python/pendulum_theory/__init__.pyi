@@ -55,7 +55,6 @@ def fit_decay(
     g: Optional[float] = ...,
     mass: Any = ...,
     force: Any = ...,
-    length_uncertainty: Optional[float] = ...,
 ) -> FitResult: ...
 def fit_trajectory(
     time: npt.ArrayLike,

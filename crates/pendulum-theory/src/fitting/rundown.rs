@@ -390,6 +390,13 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
             _ => {}
         }
     }
+    // It goes in g, which only a track's turning times give.
+    if input.length_standard_error.is_some() && input.turning_count.is_none() {
+        return Err(Refusal::field(
+            "length_standard_error",
+            "goes in g, which amplitudes without their turning points' count do not give",
+        ));
+    }
     if let Some(c) = input.turning_count {
         check_pairs("time", "turning_count", time, c)?;
         require_finite_samples("turning_count", c)?;

@@ -90,7 +90,7 @@ LAWS = {
     "viscous+coulomb": [0, 1],
     "viscous+quadratic": [0, 2],
     "coulomb+quadratic": [1, 2],
-    "full": [0, 1, 2],
+    "viscous+coulomb+quadratic": [0, 1, 2],
 }
 
 

@@ -682,17 +682,28 @@ pub struct MeasurementArgs {
 /// `pendulum fit decay`.
 #[derive(Debug, Args)]
 pub struct FitDecayArgs {
-    /// Amplitudes against time (`time_s` or `swing`, and `amplitude_deg`,
-    /// `amplitude (rad)`, …): CSV, semicolon, tab or space separated.
+    /// Amplitudes against time (`time_s`, and `amplitude_deg`, `amplitude
+    /// (rad)`, …), or against a count of swings (`swing`: a swing is a
+    /// half period, one pass from side to side; a count of full swings,
+    /// there and back, read as one would halve Q and double every rate),
+    /// or a track (angle, or x and y, against time): CSV, semicolon, tab
+    /// or space separated.
     #[arg(value_name = "FILE")]
     pub file: InputPath,
     #[command(flatten)]
     pub read: MeasurementArgs,
     #[arg(long, value_name = "LAW", help = with_default(&format!("Which decay law to fit: {}", pendulum_theory::fitting::rundown::model_names()), pendulum_theory::fitting::rundown::DEFAULT_MODEL))]
     pub model: Option<String>,
-    /// Pendulum length: turns rates into ζ, Q, friction angle and drag (needed for a swing column).
+    /// Pendulum length: turns rates into ζ, Q, friction angle and drag
+    /// (needed for a swing column); with a track, g from its turning
+    /// points' times.
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub length: Option<Length>,
+    /// The standard uncertainty of --length (or of --design's length):
+    /// in g's standard error, listed beside the fit's part. Without it g's
+    /// ± is the turning times' alone.
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length_uncertainty: Option<Length>,
     /// A pendulum designed as parts (TOML; see examples/*.toml), in place
     /// of --length: its equivalent length, and its effective mass M d / l
     /// for the energy budget.
@@ -701,8 +712,10 @@ pub struct FitDecayArgs {
     /// Bob mass, for the energy lost per period and the power (with --length).
     #[arg(long, value_name = "M", allow_hyphen_values = true)]
     pub mass: Option<Mass>,
-    /// The period, to turn rates into ζ, Q, friction angle and drag
-    /// [default: from the turning points of a track, else from --length].
+    /// The period (there and back: two swings), to turn rates into ζ, Q,
+    /// friction angle and drag, and a swing column (half periods) into
+    /// time [default: from the turning points of a track, else from
+    /// --length].
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub period: Option<Time>,
     /// With a track (angle or x/y against time): write the turning points
@@ -741,6 +754,11 @@ pub struct FitTrajectoryArgs {
     /// Pendulum length, to give g.
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub length: Option<Length>,
+    /// The standard uncertainty of --length (or of --design's length):
+    /// in g's standard error, listed beside the fit's part. Without it g's
+    /// ± is the fit's alone.
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length_uncertainty: Option<Length>,
     /// A pendulum designed as parts (TOML), in place of --length: g from
     /// its equivalent length.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]

@@ -599,9 +599,12 @@ fn fit_decay(
             model,
             period,
             turning_half_period: None,
+            turning_count: None,
             length,
+            length_standard_error: None,
             g,
             mass,
+            declared_degrees: false,
             force,
         })
     }))
@@ -702,7 +705,8 @@ fn fit_beats(
 
 /// The tracked-swing analysis (the CLI's `fit trajectory`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, angle, model, length, force, angular_velocity))]
+#[pyo3(signature = (time, angle, model, length, force, angular_velocity, length_uncertainty=None))]
+#[allow(clippy::too_many_arguments)]
 fn fit_trajectory(
     py: Python<'_>,
     time: In<'_>,
@@ -711,6 +715,7 @@ fn fit_trajectory(
     length: Option<f64>,
     force: bool,
     angular_velocity: Option<Vec<In<'_>>>,
+    length_uncertainty: Option<f64>,
 ) -> PyResult<String> {
     use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
     let time = values(&time, "time")?;
@@ -736,9 +741,10 @@ fn fit_trajectory(
             angular_velocity: rate.as_deref().unwrap_or(&[]),
             model,
             length: length.map(|l| (l, LengthSource::Given)),
-            length_standard_error: None,
+            length_standard_error: length_uncertainty,
             force,
             angle_from_positions: false,
+            declared_degrees: false,
         })
     }))
 }

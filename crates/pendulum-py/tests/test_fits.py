@@ -114,3 +114,38 @@ def test_fit_trajectory_of_a_gyroscope_as_the_binary():
         pt.fit_trajectory(t, np.zeros_like(t), angular_velocity=d[:, 2])
     with pytest.raises(ValueError, match="angle"):
         pt.fit_trajectory(t)
+
+
+def test_the_length_uncertainty_is_in_g():
+    """Issue 44, item 2, from Python: a 0.8 m pendulum measured to 2 mm
+    has g's standard error at least 9.81 × 2/800 = 0.0245 m/s², its parts
+    listed, in every fit that gives g; the same figures as the binary's
+    --length-uncertainty."""
+    from pathlib import Path
+    path = Path(__file__).parents[2] / "pendulum-cli" / "tests" / "data" / "record_q" / "drag.csv"
+    d = np.genfromtxt(path, delimiter=",", skip_header=3)
+    t, theta = d[:, 0], d[:, 1]
+    ours = pt.fit_trajectory(t, theta, length=0.8, length_uncertainty=0.002)
+    assert ours.standard_errors["g_m_s2"] >= 0.024
+    parts = ours["standard_error_parts"]["g_m_s2"]
+    assert math.hypot(parts["fit"], parts["length"]) == pytest.approx(
+        ours.standard_errors["g_m_s2"], rel=1e-12)
+    cli = json.loads(subprocess.run(
+        [str(binary()), "fit", "trajectory", str(path), "--length", "0.8m",
+         "--length-uncertainty", "2mm", "--json"],
+        capture_output=True, text=True, check=True,
+    ).stdout)
+    assert ours.standard_errors["g_m_s2"] == pytest.approx(cli["standard_errors"]["g_m_s2"], rel=1e-6)
+    # Without it, the length's part is absent (None) and g's ± is the fit's.
+    bare = pt.fit_trajectory(t, theta, length=0.8)
+    assert bare["standard_error_parts"]["g_m_s2"]["length"] is None
+    assert bare.standard_errors["g_m_s2"] < 1e-3
+    # A period table of the pendulum: the same length's part.
+    a = np.radians([5.0, 10.0, 15.0, 20.0])
+    periods = np.array([pt.period(0.8, x) for x in a])
+    table = pt.fit_period(periods, amplitude=a, pendulum_length=0.8, length_uncertainty=0.002)
+    assert table.standard_errors["g_m_s2"] >= 0.024
+    with pytest.raises(ValueError, match="^length_uncertainty: is the length"):
+        pt.fit_trajectory(t, theta, length_uncertainty=0.002)
+    with pytest.raises(ValueError, match="^length_uncertainty: must be positive"):
+        pt.fit_trajectory(t, theta, length=0.8, length_uncertainty=-1.0)

@@ -34,6 +34,7 @@ fn fit(rec: &Record) -> Result<Track, Refusal> {
         length_standard_error: None,
         force: true,
         angle_from_positions: false,
+        declared_degrees: false,
         angular_velocity: &[],
     })
 }

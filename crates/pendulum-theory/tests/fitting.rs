@@ -540,6 +540,7 @@ mod self_checks {
             length_standard_error: None,
             force: false,
             angle_from_positions: false,
+            declared_degrees: false,
             angular_velocity: &[],
         })
         .unwrap()
@@ -566,6 +567,7 @@ mod self_checks {
             length_standard_error: None,
             force: false,
             angle_from_positions: false,
+            declared_degrees: false,
             angular_velocity: &[],
         })
         .unwrap();
@@ -589,6 +591,7 @@ mod self_checks {
             length_standard_error: None,
             force: false,
             angle_from_positions: false,
+            declared_degrees: false,
             angular_velocity: &[],
         })
         .unwrap();
@@ -628,6 +631,7 @@ mod self_checks {
             length_standard_error: None,
             force: false,
             angle_from_positions: false,
+            declared_degrees: false,
             angular_velocity: &[],
         })
         .unwrap()
@@ -826,6 +830,7 @@ mod long_large_swings {
                 length_standard_error: None,
                 force: true,
                 angle_from_positions: false,
+                declared_degrees: false,
                 angular_velocity: &[],
             })
             .unwrap();

@@ -108,6 +108,16 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     let (mut stride, mut seen) = (1_u64, 0_u64);
     let chooser = |found: &[Found]| {
         let has = |r: Role| found.iter().any(|f| f.role == r);
+        // A track (a Tracker project, a video's export) times video
+        // frames, not beats: its rate would be the camera's.
+        if has(Role::Angle) || has(Role::X) && has(Role::Y) {
+            return Err(
+                "is a tracked swing (an angle, or x and y, against time: a Tracker project or \
+                 a video's export), whose times are the video's frames, not beats: fit it with \
+                 fit trajectory (or fit decay); fit beats reads one time per beat or pass"
+                    .to_string(),
+            );
+        }
         if has(Role::Gate) || has(Role::Ticks) || gate_flags {
             photogate.set(true);
             let mut roles = need(&[&[Role::Ticks, Role::Time]])(found)?;

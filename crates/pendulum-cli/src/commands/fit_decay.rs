@@ -1,7 +1,9 @@
 //! `pendulum fit decay`: which damping, and how much, from a run-down.
 
 use super::common;
-use super::measured::{has_track, read_options, track_of, track_roles, Positions};
+use super::measured::{
+    declared_degrees, has_track, read_options, rebuild_times, track_of, track_roles, Positions,
+};
 use crate::args::FitDecayArgs;
 use crate::data::{need, read_table, Format, Found, Role, RATE_ROLES};
 use crate::error::CliError;
@@ -10,7 +12,11 @@ use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::work;
 use pendulum_theory::fitting::decay::{swings_to_time, DecayFit, DecayModel};
-use pendulum_theory::fitting::rundown::{analyse, RunDown, RunDownInput, SECONDS_PER_ROW};
+use pendulum_theory::fitting::frames::longest_run;
+use pendulum_theory::fitting::rundown::{
+    analyse, RunDown, RunDownInput, RunDownWarning, SECONDS_PER_ROW,
+};
+use pendulum_theory::fitting::tracked::TimeRebuilt;
 use pendulum_theory::fitting::turning::{turning_points, Turns};
 use serde::Serialize;
 
@@ -25,6 +31,9 @@ struct DecayJson {
     zero_offset_rad: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     turning_points_file: Option<String>,
+    /// A track's times, written rounded, rebuilt on their frame grid.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    time_rebuilt: Option<TimeRebuilt>,
     #[serde(flatten)]
     analysis: RunDown,
 }
@@ -73,36 +82,66 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
             )
         }
     };
-    let table = read_table(&args.file, &options, &choose)?;
+    let mut table = read_table(&args.file, &options, &choose)?;
     let file = table.file.clone();
     let format = table.format.clone();
+    if args.length_uncertainty.is_some() && pendulum.is_none() {
+        return Err(CliError::flag(
+            "--length-uncertainty",
+            "is the uncertainty of --length (or of --design's length): give the length too",
+        ));
+    }
     let input = RunDownInput {
         model: args.model.as_deref(),
         period,
         length: pendulum.map(|p| p.length_m()),
+        length_standard_error: args.length_uncertainty.map(|l| l.0),
         g: pendulum.map(|p| p.g_m_s2()),
         mass,
         force: args.read.force,
         ..RunDownInput::default()
     };
-    let flags = [("time", "FILE"), ("g", "--g")];
+    let mut rebuilt = None;
+    let mut left_out = None;
+    let flags = [
+        ("time", "FILE"),
+        ("g", "--g"),
+        ("length_standard_error", "--length-uncertainty"),
+    ];
     let (analysis, time, amplitude, turns_found) = if table.column(Role::Amplitude).is_some() {
         // Out of order times named as the file has them (the library sees
         // them less the first).
         table.require_increasing(Role::Time)?;
         let amplitude = table.column(Role::Amplitude).unwrap_or(&[]).to_vec();
         let first = table.values[0].clone();
-        let time = if table.roles[0] == Role::Swing {
-            let p = pendulum.as_ref().ok_or_else(|| {
-                CliError::flag(
+        // A swing is a half period: with --period each takes half of it;
+        // else half the exact period at its amplitude, from the length.
+        let time = match (table.roles[0] == Role::Swing, period, pendulum.as_ref()) {
+            (false, _, _) => first,
+            (true, Some(p), _) => first.iter().map(|s| (s - first[0]) * 0.5 * p).collect(),
+            (true, None, Some(p)) => swings_to_time(p, &first, &amplitude),
+            (true, None, None) => {
+                return Err(CliError::flag(
                     "--length",
-                    format!("is needed to turn the swing column of {file} into time"),
-                )
-            })?;
-            swings_to_time(p, &first, &amplitude)
-        } else {
-            first
+                    format!(
+                        "is needed to turn the swing column of {file} into time (or \
+                         --period: a swing is half of it)"
+                    ),
+                ))
+            }
         };
+        // g comes from a track's turning times: a table of amplitudes
+        // gives none for the length's uncertainty to go in.
+        if args.length_uncertainty.is_some() {
+            return Err(CliError::flag(
+                "--length-uncertainty",
+                format!(
+                    "goes in g, which {file} (amplitudes, no times of turning points) does not \
+                     give: g comes from a track (angle, or x and y, against time)"
+                ),
+            ));
+        }
+        let declared = declared_degrees(&table, Role::Amplitude, args.read.angle_unit.as_deref());
         let _spinner = work::Spinner::start(
             format!("fitting {} rows", time.len()),
             time.len() as f64 * SECONDS_PER_ROW,
@@ -110,6 +149,7 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         let analysis = analyse(&RunDownInput {
             time: &time,
             amplitude: &amplitude,
+            declared_degrees: declared,
             ..input
         })
         .map_err(|r| {
@@ -127,17 +167,33 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         })?;
         (analysis, time, amplitude, None)
     } else {
+        let declared = declared_degrees(&table, Role::Angle, args.read.angle_unit.as_deref());
+        rebuilt = rebuild_times(&args.file, &options, &mut table, &choose)?;
         let track = track_of(table, &Positions::of(&args.read)?, rate)?;
-        let found = turning_points(&track.time, &track.angle);
+        // A record in pieces: its longest run (turning points across a
+        // gap are no swing's).
+        let (kept, others) = longest_run(&track.time);
+        if !others.is_empty() {
+            left_out = Some(RunDownWarning::SamplesLeftOut {
+                kept: [track.time[kept.start], track.time[kept.end - 1]],
+                left: others
+                    .iter()
+                    .map(|r| [track.time[r.start], track.time[r.end - 1], r.len() as f64])
+                    .collect(),
+            });
+        }
+        let track_time = track.time[kept.clone()].to_vec();
+        let track_angle = track.angle[kept].to_vec();
+        let found = turning_points(&track_time, &track_angle);
         if found.turns.len() < 4 {
             // A short table of angles is more likely a list of amplitudes
             // under an angle's name than a track.
-            let hint = if track.time.len() < 200 {
+            let hint = if track_time.len() < 200 {
                 format!(
                     " (the file was read as a track of angle against time, {} rows of {}; if \
                      its angles are the amplitudes of successive swings, call that column \
                      amplitude: --columns with amplitude_rad or amplitude_deg in its place)",
-                    track.time.len(),
+                    track_time.len(),
                     track.table.names.join(", ")
                 )
             } else {
@@ -151,10 +207,13 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         }
         let time: Vec<f64> = found.turns.iter().map(|t| t.time).collect();
         let amplitude: Vec<f64> = found.turns.iter().map(|t| t.amplitude).collect();
+        let count = found.half_swings();
         let analysis = analyse(&RunDownInput {
             time: &time,
             amplitude: &amplitude,
             turning_half_period: found.half_period(),
+            turning_count: Some(&count),
+            declared_degrees: declared,
             ..input
         })
         .map_err(|r| {
@@ -189,8 +248,11 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
             &figure(&time, &amplitude, &analysis.fits, best.map(|f| f.model)),
         )?;
     }
+    let mut analysis = analysis;
+    analysis.warnings.extend(left_out);
     let result = DecayJson {
         file,
+        time_rebuilt: rebuilt.as_ref().map(TimeRebuilt::from),
         format,
         zero_offset_rad: turns_found.as_ref().map(|t| t.offset),
         turning_points_file,
@@ -209,7 +271,7 @@ fn bound_of(bound: &str, name: &str) -> bool {
     let rate_of = |n: &str| match n {
         "zeta" | "decay_rate_per_s" => "viscous",
         "friction_angle_rad" | "amplitude_fall_rad_per_s" => "dry",
-        "quadratic_drag" | "quadratic_decay_per_rad_s" => "drag",
+        "quadratic_drag_per_rad" | "quadratic_decay_per_rad_s" => "drag",
         _ => "",
     };
     !rate_of(name).is_empty() && rate_of(name) == rate_of(bound)
@@ -234,6 +296,15 @@ fn text(r: &DecayJson) -> String {
         r.analysis.points,
         r.format.describe()
     );
+    if let Some(t) = &r.time_rebuilt {
+        out.push_str(&format!(
+            "the track's times were written rounded ({} s steps): rebuilt on their frame grid, \
+             one frame every {} s (each moved {} s at most)\n",
+            num(t.quantum_s, 2),
+            num(t.frame_interval_s, 8),
+            num(t.largest_change_s, 2)
+        ));
+    }
     if let Some(offset) = r.zero_offset_rad {
         out.push_str(&format!(
             "turning points of the track, zero offset {}° removed\n",
@@ -251,6 +322,17 @@ fn text(r: &DecayJson) -> String {
             num(w, 6),
             num(std::f64::consts::TAU / w, 6)
         ));
+    }
+    if let Some(g) = &r.analysis.gravity {
+        out.push_str(&format!(
+            "g from the turning points' times and the length: {} ± {} m/s² ({})\n",
+            num(g.g_m_s2, 7),
+            num(g.standard_error_m_s2, 2),
+            error_parts(&g.standard_error_parts)
+        ));
+    }
+    for w in &r.analysis.warnings {
+        out.push_str(&format!("WARNING: {w}\n"));
     }
     for m in &r.analysis.models {
         let Some(fitted) = &m.fitted else {
@@ -294,22 +376,39 @@ fn text(r: &DecayJson) -> String {
                 .q_factor_standard_error
                 .map_or(String::new(), |e| format!(" ± {}", num(e, 2)));
             out.push_str(&format!(
-                "  {:<28} {}{error}\n",
-                "Q (viscous part)",
+                "  {:<28} {}{error} (over the record: the energy lost per cycle)\n",
+                "Q",
                 num(q, 5)
             ));
         } else if let Some(q) = fitted.q_factor_lower_bound {
             out.push_str(&format!(
-                "  {:<28} no measurable decay: Q > {} (two standard errors)\n",
+                "  {:<28} no measurable loss over the record: Q > {} (two standard errors)\n",
                 "Q",
                 num(q, 3)
             ));
         }
-        if let Some(q) = fitted.q_factor_mean {
+        // The viscous part: alone in its law, 1/(2ζ) (Q takes the energy
+        // at the record's amplitudes, 1 − cos A, where it takes A²).
+        let others = m.model != "viscous";
+        if let Some(q) = fitted.q_viscous {
+            let error = fitted
+                .q_viscous_standard_error
+                .map_or(String::new(), |e| format!(" ± {}", num(e, 2)));
             out.push_str(&format!(
-                "  {:<28} {} (the exponential that decays as much over the record)\n",
-                "Q over the record",
-                num(q, 5)
+                "  {:<28} {}{error} ({})\n",
+                "q_viscous",
+                num(q, 5),
+                if others {
+                    "1/(2ζ): the viscous part alone, not the pendulum's Q"
+                } else {
+                    "1/(2ζ)"
+                }
+            ));
+        } else if let (Some(q), true) = (fitted.q_viscous_lower_bound, others) {
+            out.push_str(&format!(
+                "  {:<28} no measurable viscous part: > {} (two standard errors)\n",
+                "q_viscous",
+                num(q, 3)
             ));
         }
         if let (Some(e), Some(p)) = (fitted.energy_loss_per_period_j, fitted.power_w) {
@@ -344,6 +443,17 @@ fn text(r: &DecayJson) -> String {
         ));
     }
     out
+}
+
+/// What a standard error is made of, for people: "fit 0.00012, length
+/// 0.0245", or what it leaves out.
+pub fn error_parts(parts: &pendulum_theory::fitting::ErrorParts) -> String {
+    match parts.length {
+        Some(l) => format!("fit {}, length {}", num(parts.fit, 2), num(l, 2)),
+        None => "the fit's alone: the length's uncertainty is not in it; give \
+                 --length-uncertainty"
+            .to_string(),
+    }
 }
 
 /// The data with every fitted law, and the preferred law's residuals.

@@ -145,7 +145,13 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
             ("circular_error_coefficient", Some(c)) => format!("  (theory {})", num(c, 4)),
             _ => String::new(),
         };
-        out.push_str(&format!("  {name:<28} {}{error}{note}\n", num(*value, 8)));
+        let parts = a.standard_error_parts.get(name).map_or(String::new(), |p| {
+            format!("  ({})", super::fit_decay::error_parts(p))
+        });
+        out.push_str(&format!(
+            "  {name:<28} {}{error}{note}{parts}\n",
+            num(*value, 8)
+        ));
     }
     for s in &a.series {
         out.push_str(&format!(

@@ -10,7 +10,7 @@ use crate::file::CsvFile;
 use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use pendulum_theory::fitting::tracked::{
-    analyse, LengthSource, Track, TrackInput, SECONDS_PER_ROW,
+    analyse, LengthSource, TimeRebuilt, Track, TrackInput, SECONDS_PER_ROW,
 };
 use serde::Serialize;
 
@@ -47,6 +47,12 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             Some(common::pendulum_of(l, d.as_deref(), &common::gravity_default()?)?.length_m())
         }
     };
+    if args.length_uncertainty.is_some() && given_length.is_none() {
+        return Err(CliError::flag(
+            "--length-uncertainty",
+            "is the uncertainty of --length (or of --design's length): give the length too",
+        ));
+    }
     let track =
         read_track(&args.file, &args.read)?.window(args.from.map(|t| t.0), args.to.map(|t| t.0))?;
     // Without --length, a fitted pivot's radius is the length (in the
@@ -71,25 +77,48 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         angular_velocity: &axes,
         model: args.model.as_deref(),
         length,
-        length_standard_error: track.track_radius_error.filter(|_| given_length.is_none()),
+        length_standard_error: match given_length {
+            Some(_) => args.length_uncertainty.map(|l| l.0),
+            None => track.track_radius_error,
+        },
         force: args.read.force,
         angle_from_positions: track.pivot.is_some(),
+        declared_degrees: super::measured::declared_degrees(
+            &track.table,
+            crate::data::Role::Angle,
+            args.read.angle_unit.as_deref(),
+        ),
     })
     .map_err(|r| {
-        CliError::refused(&r, &[("time", "FILE")], &|at, reason| match at {
+        let flags = [
+            ("time", "FILE"),
+            ("length_standard_error", "--length-uncertainty"),
+        ];
+        CliError::refused(&r, &flags, &|at, reason| match at {
             Some((_, i)) => CliError::other(format!("{file}: sample {}: {reason}", i + 1)),
             None => CliError::other(format!("{file}: {reason}")),
         })
     })?;
+    let mut analysis = analysis;
+    if analysis.time_rebuilt.is_none() {
+        analysis.time_rebuilt = track.time_rebuilt.as_ref().map(TimeRebuilt::from);
+    }
+    // The samples fitted: after a gap, from the run fitted on, at their
+    // times as fitted (rebuilt where they were written rounded).
+    let rows = analysis.first_row..analysis.first_row + analysis.time.len();
     if let Some(target) = &plot {
         // The rate about the swing's axis, as fitted.
         let values: Vec<f64> = match &analysis.gyroscope_axis {
-            Some(d) => (0..time.len())
+            Some(d) => rows
+                .clone()
                 .map(|i| axes.iter().zip(d).map(|(a, c)| a[i] * c).sum())
                 .collect(),
-            None => theta.clone(),
+            None => theta[rows.clone()].to_vec(),
         };
-        render(target, &figure(time, &values, &analysis.residuals, rate))?;
+        render(
+            target,
+            &figure(&analysis.time, &values, &analysis.residuals, rate),
+        )?;
     }
     let residuals_file = match &args.residuals {
         Some(path) => {
@@ -99,7 +128,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
                 "time_s,residual_rad"
             };
             let mut file = CsvFile::create(path, "--residuals", header)?;
-            for (t, r) in time.iter().zip(&analysis.residuals) {
+            for (t, r) in analysis.time.iter().zip(&analysis.residuals) {
                 file.number(Some(*t)).number(Some(*r)).end_row()?;
             }
             Some(file.commit()?)
@@ -141,6 +170,20 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             num(100.0 * share, 3)
         ));
     }
+    if let Some(r) = &a.time_rebuilt {
+        out.push_str(&format!(
+            "  the times were written rounded ({} s steps{}): rebuilt on their frame grid, \
+             one frame every {} s (each moved {} s at most)\n",
+            num(r.quantum_s, 2),
+            if r.repeated_times > 0 {
+                format!(", {} repeating the row before", r.repeated_times)
+            } else {
+                String::new()
+            },
+            num(r.frame_interval_s, 8),
+            num(r.largest_change_s, 2)
+        ));
+    }
     match a.held_samples {
         0 => {}
         1 => out
@@ -159,15 +202,39 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             .standard_errors
             .get(name)
             .map_or(String::new(), |se| format!(" ± {}", num(*se, 2)));
-        out.push_str(&format!("  {name:<26} {}{error}{note}\n", num(*value, 8)));
-        if *name == "zeta" {
-            if let Some(q) = a.q_factor {
-                let error = a
-                    .q_factor_standard_error
-                    .map_or(String::new(), |se| format!(" ± {}", num(se, 2)));
-                out.push_str(&format!("  {:<26} {}{error}\n", "Q = 1/(2ζ)", num(q, 6)));
-            }
-        }
+        let parts = a.standard_error_parts.get(name).map_or(String::new(), |p| {
+            format!("  ({})", super::fit_decay::error_parts(p))
+        });
+        out.push_str(&format!(
+            "  {name:<32} {}{error}{note}{parts}\n",
+            num(*value, 8)
+        ));
+    }
+    if let Some(q) = a.q_factor {
+        let error = a
+            .q_factor_standard_error
+            .map_or(String::new(), |se| format!(" ± {}", num(se, 2)));
+        out.push_str(&format!(
+            "  {:<32} {}{error} (over the record: the energy lost per cycle)\n",
+            "Q",
+            num(q, 6)
+        ));
+    } else if let Some(q) = a.q_factor_lower_bound {
+        out.push_str(&format!(
+            "  {:<32} no measurable loss over the record: Q > {} (two standard errors)\n",
+            "Q",
+            num(q, 3)
+        ));
+    }
+    if let (Some(q), true) = (a.q_viscous, a.damping_law != "viscous") {
+        let error = a
+            .q_viscous_standard_error
+            .map_or(String::new(), |se| format!(" ± {}", num(se, 2)));
+        out.push_str(&format!(
+            "  {:<32} {}{error} (1/(2ζ): the viscous part alone, not the pendulum's Q)\n",
+            "q_viscous",
+            num(q, 6)
+        ));
     }
     if let (Some(LengthSource::TrackRadius), Some(l)) = (a.length_source, a.length_m) {
         out.push_str(&format!(
@@ -191,10 +258,21 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     };
     if rms.is_finite() {
         out.push_str(&format!(
-            "  {:<26} {} rad{per} ({}°{per})\n",
+            "  {:<32} {} rad{per} ({}°{per})\n",
             "residual rms",
             num(rms, 3),
             num(rms.to_degrees(), 3)
+        ));
+    }
+    // What the standard errors stand on: the residuals' scatter (as
+    // SciPy's curve_fit scales them), widened for their correlation.
+    if let Some(ratio) = a.residual_to_noise.filter(|r| *r > 1.5) {
+        out.push_str(&format!(
+            "  the residuals are {} times the record's sample-to-sample noise (a pattern the \
+             model leaves, or tracking errors correlated from sample to sample): the standard \
+             errors are from the residuals' scatter, widened {} times for their correlation\n",
+            num(ratio, 2),
+            num(a.standard_error_inflation, 3)
         ));
     }
     Ok(out)

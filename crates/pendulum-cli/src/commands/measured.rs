@@ -6,6 +6,7 @@ use crate::args::MeasurementArgs;
 use crate::data::{read_table, AngleUnit, Found, ReadOptions, Role, Table, RATE_ROLES};
 use crate::error::CliError;
 use crate::units::parse_number;
+use pendulum_theory::fitting::frames::{frame_grid, longest_run, FrameGrid};
 use pendulum_theory::fitting::track::{angle_about, fit_circle};
 use serde::Serialize;
 use std::path::Path;
@@ -56,6 +57,23 @@ fn frame_rate(fps: Option<crate::units::Hertz>) -> Result<Option<f64>, CliError>
     .transpose()
 }
 
+/// Whether the column of `role` was read as degrees: its header names
+/// degrees (`amplitude_deg`, `θ (°)`), or names no angle unit and
+/// `--angle-unit deg` was given.
+pub fn declared_degrees(table: &Table, role: Role, angle_unit: Option<&str>) -> bool {
+    let Some(i) = table.roles.iter().position(|&r| r == role) else {
+        return false;
+    };
+    let header = table.names[i].to_lowercase();
+    if header.contains("rad") {
+        false
+    } else if header.contains("deg") || header.contains('°') {
+        true
+    } else {
+        angle_unit == Some("deg")
+    }
+}
+
 /// Where the pivot of tracked positions came from, for the JSON output.
 #[derive(Clone, Debug, Serialize)]
 pub struct PivotJson {
@@ -84,6 +102,8 @@ pub struct Track {
     pub track_radius: Option<f64>,
     /// Its standard error.
     pub track_radius_error: Option<f64>,
+    /// The times, written rounded, rebuilt on their frame grid.
+    pub time_rebuilt: Option<FrameGrid>,
 }
 
 /// Whether the header holds a swing: time (or `rate`, a fixed sampling
@@ -154,10 +174,54 @@ pub fn trajectory_roles(found: &[Found], rate: bool) -> Result<Vec<Role>, String
 pub fn read_track(path: &Path, args: &MeasurementArgs) -> Result<Track, CliError> {
     let options = read_options(args)?;
     let rate = options.frame_rate;
-    let table = read_table(path, &options, &|found: &[Found]| {
-        trajectory_roles(found, rate.is_some())
-    })?;
-    track_of(table, &Positions::of(args)?, rate)
+    let choose = |found: &[Found]| trajectory_roles(found, rate.is_some());
+    let mut table = read_table(path, &options, &choose)?;
+    let grid = rebuild_times(path, &options, &mut table, &choose)?;
+    let mut track = track_of(table, &Positions::of(args)?, rate)?;
+    track.time_rebuilt = grid;
+    Ok(track)
+}
+
+/// Times written rounded, rebuilt on the frame grid they came from
+/// ([`pendulum_theory::fitting::frames`]), in place in `table`: from the
+/// times as written (the reader spreads a stamp shared by several rows
+/// over the interval to the next, which shifts whole stretches of a
+/// video's frames: those are read again as written). Nothing with
+/// `--frame-rate` (the times are made from it), with `--run`, or when the
+/// times are no rounded grid.
+pub fn rebuild_times(
+    path: &Path,
+    options: &ReadOptions,
+    table: &mut Table,
+    choose: &crate::data::Choose<'_>,
+) -> Result<Option<FrameGrid>, CliError> {
+    let Some(k) = table.roles.iter().position(|&r| r == Role::Time) else {
+        return Ok(None);
+    };
+    if options.frame_rate.is_some() || table.format.run.is_some() {
+        return Ok(None);
+    }
+    let written: Vec<f64> = if table.format.readings_per_time.is_some() {
+        let again = ReadOptions {
+            absolute_time: true,
+            ..options.clone()
+        };
+        let raw = read_table(path, &again, choose)?;
+        match raw.column(Role::Time) {
+            Some(t) if t.len() == table.values[k].len() => t.to_vec(),
+            _ => return Ok(None),
+        }
+    } else {
+        let origin = table.format.time_origin_s.unwrap_or(0.0);
+        table.values[k].iter().map(|t| t + origin).collect()
+    };
+    let Some(grid) = frame_grid(&written) else {
+        return Ok(None);
+    };
+    let start = grid.time[0];
+    table.values[k] = grid.time.iter().map(|t| t - start).collect();
+    table.format.readings_per_time = None;
+    Ok(Some(grid))
 }
 
 /// A gyroscope's axes as read, with their header names: the library
@@ -300,6 +364,7 @@ pub fn track_of(
                 pivot: None,
                 track_radius: None,
                 track_radius_error: None,
+                time_rebuilt: None,
             });
         }
     }
@@ -313,6 +378,7 @@ pub fn track_of(
             pivot: None,
             track_radius: None,
             track_radius_error: None,
+            time_rebuilt: None,
         });
     }
     let x = table.column(Role::X).unwrap_or(&[]);
@@ -326,7 +392,14 @@ pub fn track_of(
     let y = y.as_slice();
     let (mut pivot, radius) = match positions.pivot.map(str::trim) {
         Some("fit") => {
-            let circle = fit_circle(x, y).map_err(|e| {
+            // The arc of the record's longest run: marks after a tracking
+            // gap (a stray point elsewhere in the picture) are no part of
+            // it, and the fits leave them out too.
+            let run = match table.column(Role::Time) {
+                Some(t) if t.len() == x.len() && t.len() == y.len() => longest_run(t).0,
+                _ => 0..x.len().min(y.len()),
+            };
+            let circle = fit_circle(&x[run.clone()], &y[run]).map_err(|e| {
                 CliError::flag(
                     "--pivot",
                     format!("no circle fits the positions of {}: {e}", table.file),
@@ -425,5 +498,6 @@ pub fn track_of(
         pivot: Some(pivot),
         track_radius: radius.map(|r| r.0),
         track_radius_error: radius.map(|r| r.1),
+        time_rebuilt: None,
     })
 }

@@ -491,7 +491,7 @@ fn examples() -> Vec<(&'static str, Check)> {
                 // (1e-6 rad), both found.
                 let best = r.section("<- preferred");
                 best.says("viscous+coulomb");
-                best.within("Q (viscous part)", 10_000.0, 3.0);
+                best.within("q_viscous", 10_000.0, 3.0);
                 best.within("friction_angle_rad", 1e-6, 3.0);
                 r.svg("decay.svg");
             },
@@ -500,7 +500,7 @@ fn examples() -> Vec<(&'static str, Check)> {
             "pendulum fit decay examples/rundown-semicolon.csv --length 0.99362m",
             |r| {
                 r.says("decimal commas");
-                r.section("<- preferred").within("Q (viscous part)", 10_000.0, 3.0);
+                r.section("<- preferred").within("q_viscous", 10_000.0, 3.0);
             },
         ),
         (

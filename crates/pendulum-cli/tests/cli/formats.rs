@@ -79,7 +79,7 @@ fn a_tracker_export_is_read_as_it_is() {
     assert_eq!(t["damping_law"], "viscous+quadratic");
     for (key, decay_key, truth) in [
         ("zeta", "zeta", 5.5e-4),
-        ("quadratic_drag_per_rad", "quadratic_drag", 0.025),
+        ("quadratic_drag_per_rad", "quadratic_drag_per_rad", 0.025),
     ] {
         let (v, se) = (f(&t["parameters"], key), f(&t["standard_errors"], key));
         assert!((v - truth).abs() < 3.0 * se, "{key}: {v} ± {se}");
@@ -93,8 +93,8 @@ fn a_tracker_export_is_read_as_it_is() {
         );
     }
     // The drag the generator put in (b = 0.025 per radian), within 3σ.
-    let b = f(&best["parameters"], "quadratic_drag");
-    let se = f(&best["standard_errors"], "quadratic_drag");
+    let b = f(&best["parameters"], "quadratic_drag_per_rad");
+    let se = f(&best["standard_errors"], "quadratic_drag_per_rad");
     assert!((b - 0.025).abs() < 3.0 * se, "{b} ± {se}");
     // --pivot fit: the circle's radius is the length.
     let c = json(&["fit", "trajectory", file, "--pivot", "fit"]);
@@ -214,11 +214,20 @@ fn rounded_times_are_named_and_rebuilt_from_the_frame_rate() {
         "rounded.csv",
         &format!("time_s,angle_deg\n{text}"),
     );
-    let e = refuses(&["fit", "trajectory", &file], "--frame-rate");
-    assert!(e.contains("rounded"), "{e}");
+    // Rebuilt on their frame grid (issue 44; they were refused, naming
+    // --frame-rate), and said.
+    let w = (9.80665f64).sqrt();
+    let v = json(&["fit", "trajectory", &file]);
+    let rebuilt = &v["time_rebuilt"];
+    assert!(
+        (f(rebuilt, "frame_interval_s") * 30.0 - 1.0).abs() < 1e-7,
+        "{v}"
+    );
+    assert!((f(&v["parameters"], "omega_d_rad_s") / w - 1.0).abs() < 1e-4);
+    // --frame-rate makes them from the rows, as before.
     let v = json(&["fit", "trajectory", &file, "--frame-rate", "30"]);
     assert_eq!(v["format"]["frame_rate"], 30.0);
-    let w = (9.80665f64).sqrt();
+    assert!(v["time_rebuilt"].is_null());
     assert!((f(&v["parameters"], "omega_d_rad_s") / w - 1.0).abs() < 1e-4);
 }
 

@@ -526,7 +526,7 @@ fn constant_amplitudes_show_no_measurable_decay() {
     ];
     let (code, out, _) = run(&args);
     assert_eq!(code, 0);
-    assert!(out.contains("no measurable decay"), "{out}");
+    assert!(out.contains("no measurable loss"), "{out}");
     let v = json(&args);
     let model = &v["models"][0];
     assert!(model["q_factor"].is_null());

@@ -339,17 +339,35 @@ def _text(x):
     return None if x is None else str(x)
 
 
+def _as_length_uncertainty(call):
+    """``call()``, its refusal of the library's ``length_standard_error``
+    named by this module's argument, ``length_uncertainty``."""
+    try:
+        return call()
+    except ValueError as e:
+        text = str(e)
+        if text.startswith("length_standard_error"):
+            raise ValueError("length_uncertainty" + text[len("length_standard_error"):]) from None
+        raise
+
+
 def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=None, mass=None,
               force=False):
     """Fits the amplitude-decay laws (viscous, coulomb, quadratic,
-    viscous+coulomb, viscous+quadratic, full; ``model="all"`` for every one)
+    viscous+coulomb, viscous+quadratic, viscous+coulomb+quadratic (once
+    ``full``, still taken); ``model="all"`` for every one)
     to ``amplitude`` (rad) at ``time`` (s), every rate held at least 0: the
     CLI's ``fit decay``, the same library call. With ``period`` (s) or
     ``length`` (m; ``g`` m/s², standard gravity if not given) the rates
     become ζ, Q, the friction angle and the drag; with ``mass`` (kg) too,
-    the energy each law says is lost. Returns the CLI's JSON as a dict
-    (points, omega_rad_s, omega_source, models, preferred), every key and
-    number the same."""
+    the energy each law says is lost. Each law's ``q_factor`` is Q over
+    the record (the energy lost per cycle, whatever the law: what
+    ``fit_trajectory`` gives for the same record), ``q_viscous`` its
+    viscous part alone (amplitudes give no g: the length's uncertainty,
+    the CLI's ``--length-uncertainty``, goes in ``fit_trajectory``'s and
+    ``fit_period``'s). Returns the
+    CLI's JSON as a dict (points, omega_rad_s, omega_source, models,
+    preferred, warnings), every key and number the same."""
     d = _json.loads(_native.fit_decay(
         _array(time), _array(amplitude), _text(model), _number(period), _number(length),
         _number(g), _number(mass), bool(force)))
@@ -359,14 +377,18 @@ def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=None,
 
 
 def fit_trajectory(time, angle=None, model="auto", *, angular_velocity=None, length=None,
-                   force=False):
+                   length_uncertainty=None, force=False):
     """Fits section 1-4's closed form (``"linear"``) or the nonlinear
     damped equation integrated inside the fit (``"nonlinear"``; ``"auto"``:
     nonlinear above a 5° swing) to ``angle`` (rad) at ``time`` (s), or by
     the models' derivative to a gyroscope's ``angular_velocity`` (rad/s)
     instead (one array, or one column per sensor axis, shape (n, 3): the
     swing's axis is found among them): the CLI's ``fit trajectory``, the
-    same library call; with ``length`` (m), g. Returns the CLI's JSON as a
+    same library call; with ``length`` (m), g, whose standard error takes
+    ``length_uncertainty`` (m, the CLI's ``--length-uncertainty``) and
+    lists its parts (``standard_error_parts``). ``q_factor`` is Q over the
+    record (the energy lost per cycle, whatever the damping law),
+    ``q_viscous`` the viscous part alone. Returns the CLI's JSON as a
     dict (points, model, model_requested, observed, parameters,
     standard_errors, residual_rms_rad or residual_rms_rad_s,
     gyroscope_axis, length_m, length_source, warnings)."""
@@ -377,8 +399,9 @@ def fit_trajectory(time, angle=None, model="auto", *, angular_velocity=None, len
             rates = [_np.ascontiguousarray(a[:, j]) for j in range(a.shape[1])]
         else:
             rates = [_array(a)]
-    d = _json.loads(_native.fit_trajectory(_array(time), None if angle is None else _array(angle),
-                                           _text(model), _number(length), bool(force), rates))
+    d = _json.loads(_as_length_uncertainty(lambda: _native.fit_trajectory(
+        _array(time), None if angle is None else _array(angle), _text(model), _number(length),
+        bool(force), rates, _number(length_uncertainty))))
     return FitResult(d, d["parameters"], d["standard_errors"], d["model"])
 
 
@@ -395,14 +418,21 @@ def fit_beats(time, *, bph=None, period=None):
 
 
 def fit_period(period, *, period_standard_error=None, amplitude=None, length=None,
-               pendulum_length=None, pendulum_length_standard_error=None, bob_radius=None):
+               pendulum_length=None, pendulum_length_standard_error=None, bob_radius=None,
+               length_uncertainty=None):
     """Fits a table of periods (s): against ``amplitude`` (rad) with the
     exact law ``T0 (2/π) K(sin²(A/2))`` (and g with ``pendulum_length``,
     m), or against ``length`` (m) with ``T² = 4π²(L + offset)/g``;
     weighted by ``period_standard_error`` (s) when given. The CLI's ``fit
     period``, the same library call. Returns the CLI's JSON as a dict
     (rows, against, weighted, parameters, standard_errors, series,
-    residual_rms_s, chi_square, warnings)."""
+    residual_rms_s, chi_square, warnings). ``length_uncertainty`` is
+    ``pendulum_length_standard_error`` by the name the other fits use."""
+    if length_uncertainty is not None:
+        if pendulum_length_standard_error is not None:
+            raise ValueError("pendulum_length_standard_error: give it or length_uncertainty, "
+                             "not both")
+        pendulum_length_standard_error = length_uncertainty
     def optional(x):
         return None if x is None else _array(x)
     d = _json.loads(_native.fit_period(

@@ -63,6 +63,7 @@ def fit_trajectory(
     *,
     angular_velocity: Optional[npt.ArrayLike] = ...,
     length: Optional[float] = ...,
+    length_uncertainty: Optional[float] = ...,
     force: Any = ...,
 ) -> FitResult: ...
 def fit_beats(time: npt.ArrayLike, *, bph: Optional[float] = ..., period: Optional[float] = ...) -> FitResult: ...
@@ -84,6 +85,7 @@ def fit_period(
     pendulum_length: Optional[float] = ...,
     pendulum_length_standard_error: Optional[float] = ...,
     bob_radius: Optional[float] = ...,
+    length_uncertainty: Optional[float] = ...,
 ) -> FitResult: ...
 def clock(
     length: Optional[float] = ...,

@@ -12,7 +12,7 @@
 //! | `viscous+coulomb` | λ, μ | `A0 e^{-λt} + μ expm1(-λt)/λ` | the half-swing recursion's interpolant |
 //! | `viscous+quadratic` | λ, κ | `λA0 e^{-λt} / (λ + κA0(1 - e^{-λt}))` | a Bernoulli equation: the usual pendulum in air |
 //! | `coulomb+quadratic` | μ, κ | `s tan(atan(2κA0/s) - st/2)/(2κ)`, `s = 2√(κμ)` | the Riccati solution below with λ = 0 |
-//! | `full` | λ, μ, κ | the Riccati solution below | all three |
+//! | `viscous+coulomb+quadratic` (once `full`) | λ, μ, κ | the Riccati solution below | all three |
 //!
 //! The full law is solved by shifting to the equilibrium `a* = -2μ/(λ + √D)`
 //! (`D = λ² - 4κμ`, a root of `κa² + λa + μ`), which turns it into the
@@ -37,7 +37,8 @@
 //! turning points' times, or `2π/T(A)` at the data's median amplitude with
 //! the exact period, [`crate::period`]).
 
-use super::{fit_curve, straight_line, Fit, FitError};
+use super::quality::{loss_per_radian, RecordQ};
+use super::{fit_curve, propagate, straight_line, Fit, FitError};
 use crate::pendulum::{Amplitude, Pendulum};
 
 /// The amplitude-decay laws.
@@ -55,7 +56,8 @@ pub enum DecayModel {
     ViscousQuadratic,
     /// Dry friction and air drag together (no viscous part).
     CoulombQuadratic,
-    /// Viscous damping, dry friction and air drag.
+    /// Viscous damping, dry friction and air drag
+    /// (`viscous+coulomb+quadratic`, the trajectory fit's name for it).
     Full,
 }
 
@@ -79,22 +81,25 @@ pub struct DecayFit {
     pub fit: Fit,
     /// The fitted rates and, given `ω`, the physical parameters.
     pub parameters: Vec<Estimate>,
-    /// `Q = ω/(2λ)`, for the models with viscous damping and a known `ω`,
-    /// when the decay is measurable (`ζ` at least two standard errors
-    /// above 0).
-    pub q_factor: Option<f64>,
-    /// When the viscous decay is not measurable (`ζ` within two standard
-    /// errors of 0, or below): the two-sigma lower bound on Q,
+    /// Q over the record ([`super::quality`]): the energy the fitted law
+    /// loses per radian of swing between the record's first and last
+    /// times, `ln(E(A(t₀))/E(A(tₙ))) / (ω (tₙ − t₀))`, with its standard
+    /// error from the fit's covariance; `None` without `ω` or a decay.
+    /// What the trajectory fit reports for the same record, whatever the
+    /// law.
+    pub record_q: Option<RecordQ>,
+    /// The viscous part's `Q = ω/(2λ) = 1/(2ζ)`, for the laws with viscous
+    /// damping and a known `ω`, when that part is measurable (`ζ` at
+    /// least two standard errors above 0). With drag or friction beside
+    /// it, it is not the pendulum's Q ([`Self::record_q`] is).
+    pub q_viscous: Option<f64>,
+    /// When the viscous part is not measurable (`ζ` within two standard
+    /// errors of 0, or below): the two-sigma lower bound on its Q,
     /// `1/(2 (ζ + 2σ_ζ))`, what the data can still say.
-    pub q_factor_lower_bound: Option<f64>,
+    pub q_viscous_lower_bound: Option<f64>,
     /// The rates held at their bound 0 (physical names when `ω` is known,
     /// else the rate names): the fit is then a simpler law's.
     pub at_bound: Vec<&'static str>,
-    /// The Q of the exponential decay that falls as much over the record as
-    /// the fitted law does, `ω (t_n - t_0) / (2 ln(A(t_0)/A(t_n)))`: what a
-    /// fit of a purely viscous motion (a trajectory fit) reports for the
-    /// same record, whatever the law; `None` without `ω` or without decay.
-    pub q_factor_mean: Option<f64>,
 }
 
 impl DecayModel {
@@ -118,12 +123,17 @@ impl DecayModel {
             DecayModel::ViscousCoulomb => "viscous+coulomb",
             DecayModel::ViscousQuadratic => "viscous+quadratic",
             DecayModel::CoulombQuadratic => "coulomb+quadratic",
-            DecayModel::Full => "full",
+            DecayModel::Full => "viscous+coulomb+quadratic",
         }
     }
 
-    /// The model called `name`.
+    /// The model called `name` (`full` is the law of all three rates, by
+    /// the name it had before the trajectory fit and this one shared
+    /// their names).
     pub fn from_name(name: &str) -> Option<Self> {
+        if name == "full" {
+            return Some(DecayModel::Full);
+        }
         Self::ALL.into_iter().find(|m| m.name() == name)
     }
 
@@ -317,9 +327,23 @@ pub fn fit_decay(
     {
         errors[j] = e;
     }
+    // The covariance in the full order: a rate at its bound keeps the
+    // variance it had when it was fixed, uncorrelated (what the data can
+    // say of it there: a bound on the loss it could add).
+    let index: Vec<usize> = (0..k).filter(|&j| free[j]).collect();
+    let mut covariance = vec![vec![0.0; k]; k];
+    for (a, &r) in index.iter().enumerate() {
+        for (b, &c) in index.iter().enumerate() {
+            covariance[r][c] = fit.covariance[a][b];
+        }
+    }
+    for j in (0..k).filter(|&j| !free[j]) {
+        covariance[j][j] = errors[j] * errors[j];
+    }
     let fit = Fit {
         parameters: full.clone(),
         standard_errors: errors,
+        covariance,
         ..fit
     };
     let mut parameters: Vec<Estimate> = names
@@ -334,7 +358,7 @@ pub fn fit_decay(
     let physical_name = |rate: &str| match rate {
         "decay_rate_per_s" => "zeta",
         "amplitude_fall_rad_per_s" => "friction_angle_rad",
-        _ => "quadratic_drag",
+        _ => "quadratic_drag_per_rad",
     };
     let at_bound: Vec<&'static str> = (1..k)
         .filter(|&j| !free[j])
@@ -346,7 +370,7 @@ pub fn fit_decay(
             }
         })
         .collect();
-    let (mut q_factor, mut q_factor_lower_bound) = (None, None);
+    let (mut q_viscous, mut q_viscous_lower_bound) = (None, None);
     if let Some(w) = omega {
         let physical: Vec<Estimate> = parameters
             .iter()
@@ -366,18 +390,30 @@ pub fn fit_decay(
             .collect();
         if let Some(z) = physical.iter().find(|e| e.name == "zeta") {
             if z.value > 2.0 * z.standard_error {
-                q_factor = Some(0.5 / z.value);
+                q_viscous = Some(0.5 / z.value);
             } else {
                 let upper = z.value.max(0.0) + 2.0 * z.standard_error;
-                q_factor_lower_bound = (upper > 0.0).then(|| 0.5 / upper);
+                q_viscous_lower_bound = (upper > 0.0).then(|| 0.5 / upper);
             }
         }
         parameters.extend(physical);
     }
-    let q_factor_mean = match (omega, time.first(), time.last()) {
+    // Q over the record: the loss per radian between the record's ends.
+    let record_q = match (omega, time.first(), time.last()) {
         (Some(w), Some(&t0), Some(&t1)) if t1 > t0 => {
-            let ratio = model.amplitude(t0, &fit.parameters) / model.amplitude(t1, &fit.parameters);
-            (ratio > 1.0 && ratio.is_finite()).then(|| w * (t1 - t0) / (2.0 * ratio.ln()))
+            let loss = |p: &[f64]| {
+                loss_per_radian(
+                    w * (t1 - t0),
+                    model.amplitude(t0, p),
+                    model.amplitude(t1, p),
+                )
+            };
+            loss(&fit.parameters).and_then(|value| {
+                Some(RecordQ {
+                    loss: value,
+                    loss_standard_error: propagate(&fit, loss)?,
+                })
+            })
         }
         _ => None,
     };
@@ -385,10 +421,10 @@ pub fn fit_decay(
         model,
         fit,
         parameters,
-        q_factor,
-        q_factor_lower_bound,
+        record_q,
+        q_viscous,
+        q_viscous_lower_bound,
         at_bound,
-        q_factor_mean,
     })
 }
 

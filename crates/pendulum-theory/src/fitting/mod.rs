@@ -12,10 +12,13 @@
 
 pub mod beat_log;
 pub mod beats;
+pub mod crest;
 pub mod decay;
+pub mod frames;
 pub mod gyroscope;
 pub mod period_table;
 pub mod photogate;
+pub mod quality;
 pub mod rundown;
 pub mod track;
 pub mod tracked;
@@ -45,6 +48,10 @@ pub struct Fit {
     pub parameters: Vec<f64>,
     /// Their standard errors (square roots of the covariance's diagonal).
     pub standard_errors: Vec<f64>,
+    /// Their covariance (scaled as the standard errors are), row by row:
+    /// what a figure derived from several parameters takes its standard
+    /// error from ([`propagate`]).
+    pub covariance: Vec<Vec<f64>>,
     /// Residuals `y - f(x; p)` at the optimum.
     pub residuals: Vec<f64>,
     /// Root mean square of the residuals.
@@ -53,6 +60,37 @@ pub struct Fit {
     pub aic: f64,
     /// The Bayesian (Schwarz) information criterion.
     pub bic: f64,
+}
+
+/// What a standard error is made of, for a figure derived from a fit and
+/// a measured input (g from a frequency and a length): the fit's part, and
+/// the length's when its uncertainty was given (`None`: not given, and not
+/// in the standard error, which is then the fit's alone). The standard
+/// error is their sum in quadrature.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct ErrorParts {
+    /// From the fit (the frequency or period's standard error).
+    pub fit: f64,
+    /// From the length's uncertainty; `None` when none was given.
+    pub length: Option<f64>,
+}
+
+impl ErrorParts {
+    /// The parts of g's standard error, for `g ∝ l` with the fit's part
+    /// `fit` and the length `length` (m) known to `length_error` (m).
+    pub fn gravity(g: f64, fit: f64, length: f64, length_error: Option<f64>) -> Self {
+        Self {
+            fit,
+            length: length_error
+                .filter(|e| e.is_finite() && length > 0.0)
+                .map(|e| g * e / length),
+        }
+    }
+
+    /// The whole standard error, the parts in quadrature.
+    pub fn total(&self) -> f64 {
+        self.fit.hypot(self.length.unwrap_or(0.0))
+    }
 }
 
 /// Why a fit failed.
@@ -205,16 +243,54 @@ fn fit_with(
     let standard_errors = (0..k)
         .map(|j| (scale * covariance[(j, j)]).max(0.0).sqrt())
         .collect();
+    let covariance = (0..k)
+        .map(|r| (0..k).map(|c| scale * covariance[(r, c)]).collect())
+        .collect();
     let nf = n as f64;
     let log_likelihood_term = nf * (weighted_rss / nf).max(f64::MIN_POSITIVE).ln();
     Ok(Fit {
         parameters: p,
         standard_errors,
+        covariance,
         residual_rms: (rss / nf).sqrt(),
         aic: log_likelihood_term + 2.0 * k as f64,
         bic: log_likelihood_term + k as f64 * nf.ln(),
         residuals,
     })
+}
+
+/// The standard error of a figure `f(p)` of a fit's parameters, by first
+/// order propagation (the delta method: `√(∇fᵀ C ∇f)`), the gradient
+/// by central differences of `f` with steps of a tenth of each
+/// parameter's standard error (where the figure is as good as linear,
+/// whatever the parameter's size; a parameter known exactly is not
+/// stepped). `None` when `f` has no finite value at a step.
+///
+/// Accuracy: exact for a figure linear in the parameters; for smooth
+/// ones the central difference errs by `f'''h²/6`, a few parts in 10⁴ of
+/// the standard error at `h = σ/10` (measured on `1/x` at 1σ = 10%).
+pub fn propagate(fit: &Fit, f: impl Fn(&[f64]) -> Option<f64>) -> Option<f64> {
+    let k = fit.parameters.len();
+    let mut gradient = vec![0.0; k];
+    let mut p = fit.parameters.clone();
+    for j in 0..k {
+        let h = 0.1 * fit.standard_errors[j];
+        if !(h > 0.0 && h.is_finite()) {
+            continue;
+        }
+        let original = p[j];
+        p[j] = original + h;
+        let plus = f(&p)?;
+        p[j] = original - h;
+        let minus = f(&p)?;
+        p[j] = original;
+        gradient[j] = (plus - minus) / (2.0 * h);
+    }
+    let variance: f64 = (0..k)
+        .flat_map(|r| (0..k).map(move |c| (r, c)))
+        .map(|(r, c)| gradient[r] * fit.covariance[r][c] * gradient[c])
+        .sum();
+    (variance.is_finite()).then(|| variance.max(0.0).sqrt())
 }
 
 /// Why the minimiser stopped, in words (its enum's names are not for

@@ -43,6 +43,7 @@
 //! tables with noise, `T0` lies within one standard error of the truth in
 //! 68% of 2,000 seeded tables (`tests` below).
 
+use super::ErrorParts;
 use crate::analysis::{judge_work, require_finite, require_finite_samples, Refusal};
 use crate::pendulum::Amplitude;
 use crate::period::{period_ratio, period_ratio_series};
@@ -61,9 +62,14 @@ pub const SAME_LENGTH: f64 = 0.01;
 /// Amplitudes whose `F(A)` differ by less than this are one amplitude: the
 /// law cannot be tested on them.
 pub const SAME_AMPLITUDE: f64 = 1e-6;
-/// `z` of `χ²` beyond which residuals exceed (or fall short of) the
-/// uncertainties given: a one-sided 0.1% test.
-pub const CHI_SQUARE_Z: f64 = 3.09;
+/// The probability of a `χ²` at least as large below which the residuals
+/// exceed the uncertainties given: 1%. (A χ² of 13.5 on 4 degrees of
+/// freedom, probability 0.009, gave no word under the 0.1% test this
+/// replaced, with standard errors 1.8 times too small.)
+pub const CHI_SQUARE_P: f64 = 0.01;
+/// The probability of a `χ²` at most as large below which the
+/// uncertainties given are overstated: 0.1%.
+pub const CHI_SQUARE_P_LOW: f64 = 0.001;
 /// A fitted g further than this from standard gravity (relative), and
 /// beyond three standard errors, says the length is not the pendulum's.
 pub const GRAVITY_CHECK: f64 = 0.05;
@@ -125,11 +131,20 @@ pub struct SeriesFit {
 /// Something the fit found wrong with its own answer.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PeriodWarning {
-    /// `χ²` of the residuals against the uncertainties given is too large:
-    /// the standard errors are widened by the Birge ratio.
+    /// `χ²` of the residuals against the uncertainties given is too large
+    /// (its probability below [`CHI_SQUARE_P`]): the standard errors are
+    /// widened by the Birge ratio.
     ResidualsExceedUncertainties {
         /// `√(χ²/ν)`.
         birge_ratio: f64,
+        /// `χ²`.
+        chi_square: f64,
+        /// Its degrees of freedom.
+        degrees_of_freedom: usize,
+        /// The probability of a `χ²` at least as large.
+        probability: f64,
+        /// The figures whose standard errors were widened.
+        figures: Vec<&'static str>,
     },
     /// `χ²` is far below its degrees of freedom: the uncertainties given
     /// are larger than the scatter.
@@ -178,12 +193,27 @@ impl fmt::Display for PeriodWarning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let n = |v: f64| crate::error::format_significant(v, 4);
         match self {
-            PeriodWarning::ResidualsExceedUncertainties { birge_ratio } => write!(
+            PeriodWarning::ResidualsExceedUncertainties {
+                birge_ratio,
+                chi_square,
+                degrees_of_freedom,
+                probability,
+                figures,
+            } => write!(
                 f,
-                "the periods scatter {} times more than their uncertainties allow (the \
-                 uncertainties left out something: reaction time, a miscount, amplitudes that \
-                 changed); the standard errors are widened by that factor",
-                n(*birge_ratio)
+                "the periods scatter {} times more than their uncertainties allow (χ² {} for {} \
+                 degrees of freedom, a probability of {}: the uncertainties left out something, \
+                 reaction time, a miscount, amplitudes that changed); the standard errors of {} \
+                 are widened by that factor",
+                n(*birge_ratio),
+                n(*chi_square),
+                degrees_of_freedom,
+                crate::error::format_significant(*probability, 2),
+                if figures.is_empty() {
+                    "every figure".to_string()
+                } else {
+                    figures.join(", ")
+                }
             ),
             PeriodWarning::UncertaintiesOverstated { birge_ratio } => write!(
                 f,
@@ -264,6 +294,12 @@ pub struct PeriodTable {
     pub parameters: BTreeMap<&'static str, f64>,
     /// Their standard errors.
     pub standard_errors: BTreeMap<&'static str, f64>,
+    /// What the standard errors of figures derived from a measured input
+    /// are made of (`g_m_s2` from the periods and the pendulum's length:
+    /// the fit's part, and the length's, null when no uncertainty of the
+    /// length was given).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub standard_error_parts: BTreeMap<&'static str, ErrorParts>,
     /// The exact law's coefficient of `A²`, 1/16, beside the measured one.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub circular_error_coefficient_theory: Option<f64>,
@@ -275,6 +311,10 @@ pub struct PeriodTable {
     /// `χ²` of the residuals against the uncertainties given.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub chi_square: Option<f64>,
+    /// The probability of a `χ²` at least as large, were the
+    /// uncertainties right ([`chi_square_probability`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub chi_square_probability: Option<f64>,
     /// Its degrees of freedom.
     pub degrees_of_freedom: usize,
     /// The fitted period at each row, s (for plots).
@@ -337,6 +377,69 @@ fn linear(columns: &[Vec<f64>], y: &[f64], w: &[f64]) -> Option<Linear> {
         })
         .sum();
     Some(Linear { p, cov, chi_square })
+}
+
+/// The probability that a `χ²` with `nu` degrees of freedom is at least
+/// `chi_square`: `Q(ν/2, χ²/2)`, the regularised upper incomplete gamma
+/// function, by its power series below `x = a + 1` and its continued
+/// fraction above (modified Lentz; DLMF 8.7.1 and 8.9.2), `ln Γ(ν/2)`
+/// exact for the half-integers it takes. Measured against SciPy's
+/// `chi2.sf` (`tools/reference/chi_square.py`) within 1e-12 relative from
+/// 1e-36 to 0.9995.
+pub fn chi_square_probability(chi_square: f64, nu: usize) -> f64 {
+    if nu == 0 || chi_square.is_nan() {
+        return f64::NAN;
+    }
+    if chi_square <= 0.0 {
+        return 1.0;
+    }
+    let (a, x) = (0.5 * nu as f64, 0.5 * chi_square);
+    // ln Γ(a) for a = ν/2: (a−1)! or the half-integer product with √π.
+    let ln_gamma = if nu % 2 == 0 {
+        (1..nu / 2).map(|k| (k as f64).ln()).sum::<f64>()
+    } else {
+        0.5 * PI.ln() + (0..nu / 2).map(|k| (k as f64 + 0.5).ln()).sum::<f64>()
+    };
+    let front = (a * x.ln() - x - ln_gamma).exp();
+    if x < a + 1.0 {
+        // P(a, x) = e^{-x} x^a / Γ(a+1) Σ x^k / ((a+1)…(a+k)).
+        let (mut term, mut sum, mut b) = (1.0 / a, 1.0 / a, a);
+        for _ in 0..10_000 {
+            b += 1.0;
+            term *= x / b;
+            sum += term;
+            if term.abs() < sum.abs() * 1e-16 {
+                break;
+            }
+        }
+        (1.0 - sum * front).max(0.0)
+    } else {
+        // Q(a, x) = e^{-x} x^a / Γ(a) · 1/(x+1−a− 1(1−a)/(x+3−a− …)).
+        let tiny = 1e-300;
+        let mut b = x + 1.0 - a;
+        let mut c = 1.0 / tiny;
+        let mut d = 1.0 / b;
+        let mut h = d;
+        for i in 1..10_000 {
+            let an = -(i as f64) * (i as f64 - a);
+            b += 2.0;
+            d = an * d + b;
+            if d.abs() < tiny {
+                d = tiny;
+            }
+            c = b + an / c;
+            if c.abs() < tiny {
+                c = tiny;
+            }
+            d = 1.0 / d;
+            let step = d * c;
+            h *= step;
+            if (step - 1.0).abs() < 1e-16 {
+                break;
+            }
+        }
+        (front * h).clamp(0.0, 1.0)
+    }
 }
 
 /// The Wilson-Hilferty normal deviate of `χ²` with `ν` degrees of
@@ -576,13 +679,17 @@ fn judge_scatter(
         scale(reduced);
         return None;
     }
-    let z = chi_square_z(fit.chi_square, nu);
-    if z > CHI_SQUARE_Z {
+    let p = chi_square_probability(fit.chi_square, nu);
+    if p < CHI_SQUARE_P {
         warnings.push(PeriodWarning::ResidualsExceedUncertainties {
             birge_ratio: reduced.sqrt(),
+            chi_square: fit.chi_square,
+            degrees_of_freedom: nu,
+            probability: p,
+            figures: Vec::new(),
         });
         scale(reduced);
-    } else if z < -CHI_SQUARE_Z {
+    } else if 1.0 - p < CHI_SQUARE_P_LOW {
         warnings.push(PeriodWarning::UncertaintiesOverstated {
             birge_ratio: reduced.sqrt(),
         });
@@ -590,11 +697,14 @@ fn judge_scatter(
     Some(fit.chi_square)
 }
 
-/// g and its standard error from `T0` and a length.
-fn gravity(t0: f64, t0_se: f64, length: f64, length_se: f64) -> (f64, f64) {
+/// g and the parts of its standard error from `T0` and a length known to
+/// `length_se` (if given).
+fn gravity(t0: f64, t0_se: f64, length: f64, length_se: Option<f64>) -> (f64, ErrorParts) {
     let g = 4.0 * PI * PI * length / (t0 * t0);
-    let se = g * ((2.0 * t0_se / t0).powi(2) + (length_se / length).powi(2)).sqrt();
-    (g, se)
+    (
+        g,
+        ErrorParts::gravity(g, 2.0 * g * t0_se / t0, length, length_se),
+    )
 }
 
 /// Says what a g far from standard gravity most likely means.
@@ -622,17 +732,15 @@ fn fit_amplitude(
     let nu = n - 1;
     let chi_square = judge_scatter(&mut fit, weighted, nu, &mut warnings);
     let (t0, t0_se) = (fit.p[0], fit.cov[0][0].sqrt());
+    let mut standard_error_parts = BTreeMap::new();
     let mut parameters = BTreeMap::new();
     let mut standard_errors = BTreeMap::new();
     parameters.insert("small_angle_period_s", t0);
     standard_errors.insert("small_angle_period_s", t0_se);
     if let Some(l) = length {
-        let (g, se) = gravity(
-            t0,
-            t0_se,
-            l,
-            input.pendulum_length_standard_error.unwrap_or(0.0),
-        );
+        let (g, parts) = gravity(t0, t0_se, l, input.pendulum_length_standard_error);
+        let se = parts.total();
+        standard_error_parts.insert("g_m_s2", parts);
         parameters.insert("g_m_s2", g);
         standard_errors.insert("g_m_s2", se);
         judge_gravity(g, se, &mut warnings);
@@ -711,6 +819,7 @@ fn fit_amplitude(
             }
         }
     }
+    name_widened(&mut warnings, &standard_errors);
     let fitted_period: Vec<f64> = ratio.iter().map(|f| t0 * f).collect();
     let residual_rms_s = rms(period, &fitted_period);
     Ok(PeriodTable {
@@ -724,8 +833,10 @@ fn fit_amplitude(
         parameters,
         standard_errors,
         circular_error_coefficient_theory: theory,
+        standard_error_parts,
         series,
         residual_rms_s,
+        chi_square_probability: chi_square.map(|c| chi_square_probability(c, nu)),
         chi_square,
         degrees_of_freedom: nu,
         fitted_period,
@@ -794,6 +905,7 @@ fn fit_length(
         0.0
     };
     judge_gravity(g, g_se, &mut warnings);
+    name_widened(&mut warnings, &standard_errors);
     let fitted_period: Vec<f64> = lengths
         .iter()
         .zip(ratio)
@@ -807,14 +919,25 @@ fn fit_length(
         parameters,
         standard_errors,
         circular_error_coefficient_theory: None,
+        standard_error_parts: BTreeMap::new(),
         series: Vec::new(),
         residual_rms_s,
+        chi_square_probability: chi_square.map(|c| chi_square_probability(c, nu)),
         chi_square,
         degrees_of_freedom: nu,
         fitted_period,
         equivalent_length: lengths,
         warnings,
     })
+}
+
+/// Names the figures whose standard errors a too large `χ²` widened.
+fn name_widened(warnings: &mut [PeriodWarning], errors: &BTreeMap<&'static str, f64>) {
+    for w in warnings {
+        if let PeriodWarning::ResidualsExceedUncertainties { figures, .. } = w {
+            *figures = errors.keys().copied().collect();
+        }
+    }
 }
 
 fn rms(a: &[f64], b: &[f64]) -> f64 {
@@ -1149,5 +1272,86 @@ mod tests {
             let z = chi_square_z(q, nu);
             assert!((z - 3.090).abs() < 0.03, "ν {nu}: z {z}");
         }
+    }
+
+    /// SciPy's `chi2.sf` (tools/reference/chi_square.py) from the tail to
+    /// the bulk.
+    #[test]
+    fn the_chi_square_probability_is_scipys() {
+        for (x, nu, p) in [
+            (13.5, 4, 0.009074317061131603),
+            (20.515, 5, 0.0010000024510678572),
+            (3.0, 10, 0.9814240637778593),
+            (100.0, 60, 0.0009168288614560842),
+            (0.5, 1, 0.47950012218695337),
+            (1e-3, 2, 0.9995001249791693),
+            (250.0, 30, 1.5157414203687308e-36),
+            (7.0, 7, 0.42887985755305486),
+        ] {
+            let q = chi_square_probability(x, nu);
+            assert!((q / p - 1.0).abs() < 1e-12, "χ² {x} ν {nu}: {q} vs {p}");
+        }
+    }
+
+    /// Issue 44: a length table whose χ² is 13.5 on 4 degrees of freedom
+    /// (probability 0.009) warns, naming g, and widens its error by the
+    /// Birge ratio √(13.5/4) = 1.84.
+    #[test]
+    fn a_chi_square_of_13_5_on_4_degrees_of_freedom_is_warned() {
+        let l = [0.3, 0.5, 0.7, 0.9, 1.1, 1.3];
+        let sigma = 2e-3;
+        // Residuals in T of ±σ·k: χ² = Σk² after the fit's two
+        // parameters; scaled to 13.5 below.
+        let pattern = [1.0, -1.6, 0.4, 1.5, -1.9, 0.6];
+        let t_of = |scale: f64| -> Vec<f64> {
+            l.iter()
+                .zip(&pattern)
+                .map(|(&l, k)| 2.0 * PI * (l / 9.81_f64).sqrt() + scale * sigma * k)
+                .collect()
+        };
+        let s = vec![sigma; 6];
+        let fit = |t: &[f64]| {
+            analyse(&PeriodTableInput {
+                period: t,
+                period_standard_error: Some(&s),
+                length: Some(&l),
+                ..Default::default()
+            })
+            .unwrap()
+        };
+        // The scale that makes χ² 13.5 (χ² grows nearly as its square).
+        let mut scale = 1.0;
+        for _ in 0..20 {
+            scale *= (13.5 / fit(&t_of(scale)).chi_square.unwrap()).sqrt();
+        }
+        let r = fit(&t_of(scale));
+        assert!(
+            (r.chi_square.unwrap() - 13.5).abs() < 1e-6,
+            "{:?}",
+            r.chi_square
+        );
+        assert_eq!(r.degrees_of_freedom, 4);
+        let p = r.chi_square_probability.unwrap();
+        assert!((p - 0.009074317061131603).abs() < 1e-9, "{p}");
+        let text: Vec<String> = r.warnings.iter().map(|w| w.to_string()).collect();
+        assert!(
+            text.iter()
+                .any(|w| w.contains("g_m_s2") && w.contains("13.5")),
+            "{text:?}"
+        );
+        // The same table with its χ² at 4 says nothing.
+        let mut scale = 1.0;
+        for _ in 0..20 {
+            scale *= (4.0 / fit(&t_of(scale)).chi_square.unwrap()).sqrt();
+        }
+        let quiet = fit(&t_of(scale));
+        assert!(quiet.warnings.is_empty(), "{:?}", quiet.warnings);
+        let widened = r.standard_errors["g_m_s2"] / quiet.standard_errors["g_m_s2"];
+        // Widened by √(13.5/4) = 1.84 (the unscaled errors of the two
+        // tables differ by their periods' few parts in 10⁴).
+        assert!(
+            (widened / (13.5f64 / 4.0).sqrt() - 1.0).abs() < 1e-3,
+            "{widened}"
+        );
     }
 }

@@ -40,14 +40,27 @@ pub struct RunDownInput<'a> {
     /// came from, s (when they came from a track): used when no period is
     /// given.
     pub turning_half_period: Option<f64>,
+    /// The half swing each row ends, counted from the first, when the
+    /// amplitudes are a track's turning points
+    /// ([`super::turning::Turns::half_swings`]): with it the half period
+    /// (and its standard error) is the slope of the rows' times against
+    /// it, in place of `turning_half_period`, and with `length` the
+    /// turning times give g.
+    pub turning_count: Option<&'a [f64]>,
     /// The pendulum's length, m: ω from the exact period at the record's
     /// median amplitude, when neither of the above is given; with `mass`,
-    /// the energy each law says is lost.
+    /// the energy each law says is lost; with `turning_count`, g.
     pub length: Option<f64>,
+    /// The length's standard uncertainty, m: in g's standard error.
+    pub length_standard_error: Option<f64>,
     /// Gravity, m/s² (default standard gravity).
     pub g: Option<f64>,
     /// The bob's mass, kg (needs the length).
     pub mass: Option<f64>,
+    /// The amplitudes were read from a column declared in degrees (a
+    /// header's unit or a flag): amplitudes that never reach a degree are
+    /// then said to look like radians.
+    pub declared_degrees: bool,
     /// Runs estimated beyond [`crate::analysis::FORCE_SECONDS`] anyway.
     pub force: bool,
 }
@@ -71,9 +84,104 @@ pub struct RunDown {
     /// BIC is: under 2 the data hardly choose between them, over 10 they
     /// choose clearly (Kass & Raftery 1995).
     pub runner_up: Option<RunnerUp>,
+    /// g from the turning points' times and the length (a track's
+    /// amplitudes and `length`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gravity: Option<TurnGravity>,
+    /// What the reader must know of these figures.
+    pub warnings: Vec<RunDownWarning>,
     /// The fits themselves (residuals, for plots).
     #[serde(skip)]
     pub fits: Vec<DecayFit>,
+}
+
+/// g from the times of a track's turning points: each half swing takes
+/// `T0 F(Ā)/2` at the mean amplitude `Ā` of the two turns that bound it
+/// (`F` the exact period ratio, [`crate::period::period_ratio`]), so the
+/// turning times are a straight line in `Σ F(Ā)` whose slope is `T0/2`
+/// (least squares, its standard error from the times' scatter); `g = l
+/// (2π/T0)² / (1 − ζ²)` with `ζ = 1/(2Q)` of the preferred law's Q over
+/// the record (the damped period is the longer by `1/√(1 − ζ²)`).
+#[derive(Clone, Debug, Serialize)]
+pub struct TurnGravity {
+    /// g, m/s².
+    pub g_m_s2: f64,
+    /// Its standard error, m/s²: the parts below in quadrature.
+    pub standard_error_m_s2: f64,
+    /// The parts of the standard error: the turning times' (`fit`) and
+    /// the length's (`length`, null when no uncertainty was given: the
+    /// standard error leaves it out).
+    pub standard_error_parts: super::ErrorParts,
+    /// The small-angle period the turning times give, s.
+    pub small_angle_period_s: f64,
+    /// Its standard error, s.
+    pub small_angle_period_standard_error_s: f64,
+    /// The length, m.
+    pub length_m: f64,
+    /// Its standard uncertainty, m, as given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub length_standard_error_m: Option<f64>,
+}
+
+/// What a run-down's figures carry that the reader must know.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RunDownWarning {
+    /// Amplitudes declared in degrees that never reach a degree: they look
+    /// like radians, and the figures that depend on the swing's size are
+    /// then wrong by 57 times.
+    SwingTiny {
+        /// The largest amplitude, rad.
+        largest: f64,
+    },
+    /// The track the amplitudes came from is in pieces: the turning
+    /// points of its longest run were fitted, the rest left out.
+    SamplesLeftOut {
+        /// The run fitted: its first and last times, s.
+        kept: [f64; 2],
+        /// Each run left out: first and last times, s, and samples.
+        left: Vec<[f64; 3]>,
+    },
+}
+
+impl RunDownWarning {
+    /// A stable code for programs.
+    pub fn code(&self) -> &'static str {
+        match self {
+            RunDownWarning::SwingTiny { .. } => "angles_look_like_radians",
+            RunDownWarning::SamplesLeftOut { .. } => "samples_left_out",
+        }
+    }
+}
+
+impl std::fmt::Display for RunDownWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RunDownWarning::SamplesLeftOut { kept, left } => {
+                f.write_str(&super::frames::left_out_message(*kept, left))
+            }
+            RunDownWarning::SwingTiny { largest } => write!(
+                f,
+                "the amplitudes, read as degrees, never reach {}°: if the column holds radians \
+                 (a swing of {}°), amplitude0_rad is {} times too small, the drag \
+                 (quadratic_drag_per_rad) {} times too large, and Q is right; check the column's \
+                 unit",
+                crate::error::format_significant(largest.to_degrees(), 3),
+                crate::error::format_significant(largest.to_degrees().to_degrees(), 3),
+                crate::error::format_significant(180.0 / std::f64::consts::PI, 4),
+                crate::error::format_significant(180.0 / std::f64::consts::PI, 4)
+            ),
+        }
+    }
+}
+
+impl Serialize for RunDownWarning {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(2))?;
+        m.serialize_entry("code", self.code())?;
+        m.serialize_entry("message", &self.to_string())?;
+        m.end()
+    }
 }
 
 /// The law next to the preferred one.
@@ -105,16 +213,28 @@ pub struct Fitted {
     pub parameters: BTreeMap<&'static str, f64>,
     /// Their standard errors.
     pub standard_errors: BTreeMap<&'static str, f64>,
-    /// Q of the viscous part, when measurable.
+    /// Q over the record ([`crate::fitting::quality`]): from the energy
+    /// the law loses per cycle between the record's first and last
+    /// amplitudes; what `fit trajectory` reports for the same record.
     pub q_factor: Option<f64>,
-    /// Its standard error, `Q σ_ζ / ζ` (first order in `σ_ζ/ζ`).
+    /// Its standard error (the loss's, from the fit's covariance and the
+    /// turning points' ω).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub q_factor_standard_error: Option<f64>,
-    /// With no measurable viscous decay: the two-sigma lower bound on Q.
+    /// With no measurable loss over the record: the two-sigma lower bound
+    /// on Q.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub q_factor_lower_bound: Option<f64>,
-    /// The Q of the exponential that decays as much over the record.
-    pub q_factor_mean: Option<f64>,
+    /// The viscous part's Q, `1/(2ζ)`, when measurable: the pendulum's Q
+    /// only when the law is viscous alone.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q_viscous: Option<f64>,
+    /// Its standard error, `Q σ_ζ / ζ`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q_viscous_standard_error: Option<f64>,
+    /// With no measurable viscous part: the two-sigma lower bound on its Q.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q_viscous_lower_bound: Option<f64>,
     /// Rates held at their bound 0 (the law is then a simpler one).
     pub at_bound: Vec<&'static str>,
     /// Root mean square of the residuals, rad.
@@ -242,6 +362,45 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
         }
     }
     let pendulum = input.length.map(|l| pendulum_of(l, input.g)).transpose()?;
+    if let Some(e) = input.length_standard_error {
+        require_finite("length_standard_error", e)?;
+        if e <= 0.0 {
+            return Err(Refusal::field(
+                "length_standard_error",
+                format!("must be positive, got {e} m"),
+            ));
+        }
+        match input.length {
+            None => {
+                return Err(Refusal::field(
+                    "length_standard_error",
+                    "is the length's uncertainty: give the length too",
+                ))
+            }
+            Some(l) if e >= l => {
+                return Err(Refusal::field(
+                    "length_standard_error",
+                    format!(
+                        "must be smaller than the length ({} m), got {} m",
+                        crate::error::format_significant(l, 6),
+                        crate::error::format_significant(e, 6)
+                    ),
+                ))
+            }
+            _ => {}
+        }
+    }
+    // It goes in g, which only a track's turning times give.
+    if input.length_standard_error.is_some() && input.turning_count.is_none() {
+        return Err(Refusal::field(
+            "length_standard_error",
+            "goes in g, which amplitudes without their turning points' count do not give",
+        ));
+    }
+    if let Some(c) = input.turning_count {
+        check_pairs("time", "turning_count", time, c)?;
+        require_finite_samples("turning_count", c)?;
+    }
     if input.length.is_none() {
         if let Some(g) = input.g {
             pendulum_of(1.0, Some(g))?;
@@ -275,9 +434,26 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
         rows as f64 * SECONDS_PER_ROW,
         input.force,
     )?;
-    let (omega, omega_source) = match (input.period, input.turning_half_period, &pendulum) {
+    // The turning points' half period: the slope of their times against
+    // their half-swing count, with its standard error.
+    let turning = match input.turning_count {
+        Some(count) if count.len() >= 3 => {
+            let (a, b) = super::straight_line(count, time);
+            let mean = count.iter().sum::<f64>() / count.len() as f64;
+            let sxx: f64 = count.iter().map(|x| (x - mean).powi(2)).sum();
+            let rss: f64 = count
+                .iter()
+                .zip(time)
+                .map(|(x, y)| (y - a - b * x).powi(2))
+                .sum();
+            let se = (rss / (count.len() - 2) as f64 / sxx).sqrt();
+            (b > 0.0 && b.is_finite()).then_some((b, if se.is_finite() { se } else { 0.0 }))
+        }
+        _ => input.turning_half_period.map(|h| (h, 0.0)),
+    };
+    let (omega, omega_source) = match (input.period, turning, &pendulum) {
         (Some(p), _, _) => (Some(std::f64::consts::TAU / p), Some("period")),
-        (None, Some(h), _) => (Some(std::f64::consts::PI / h), Some("turning_points")),
+        (None, Some((h, _)), _) => (Some(std::f64::consts::PI / h), Some("turning_points")),
         (None, None, Some(p)) => (
             Some(effective_angular_frequency(p, amplitude)),
             Some("length"),
@@ -287,9 +463,18 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
     // Every law is listed: fitted, or failed with the reason.
     let mut fits = Vec::new();
     let mut failures: Vec<(DecayModel, FitError)> = Vec::new();
+    // ω from the turning points carries their half period's error into
+    // every Q.
+    let omega_error = match (omega_source, turning) {
+        (Some("turning_points"), Some((h, se))) => se / h,
+        _ => 0.0,
+    };
     for model in models {
         match fit_decay(model, time, amplitude, omega) {
-            Ok(fit) => fits.push(fit),
+            Ok(mut fit) => {
+                fit.record_q = fit.record_q.map(|q| q.with_omega_error(omega_error));
+                fits.push(fit)
+            }
             Err(e) => failures.push((model, e)),
         }
     }
@@ -329,6 +514,21 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
             }
         })
         .collect();
+    let zeta = best
+        .and_then(|m| fits.iter().find(|f| f.model == m))
+        .and_then(|f| f.record_q)
+        .map_or(0.0, |q| 0.5 * q.loss.max(0.0));
+    let gravity = match (input.turning_count, input.length) {
+        (Some(count), Some(l)) => {
+            turn_gravity(time, amplitude, count, l, input.length_standard_error, zeta)
+        }
+        _ => None,
+    };
+    let mut warnings = Vec::new();
+    let largest = amplitude.iter().copied().fold(0.0, f64::max);
+    if input.declared_degrees && largest < TINY_SWING_DEG.to_radians() {
+        warnings.push(RunDownWarning::SwingTiny { largest });
+    }
     Ok(RunDown {
         points: time.len(),
         omega_rad_s: omega,
@@ -337,7 +537,67 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
         preferred: best.map(DecayModel::name),
         preferred_akaike_weight,
         runner_up,
+        gravity,
+        warnings,
         fits,
+    })
+}
+
+/// A swing whose amplitudes, declared in degrees, never reach this many
+/// degrees looks like one in radians: no video or clock swing is filmed
+/// or logged under a degree but with an instrument that reads radians.
+pub const TINY_SWING_DEG: f64 = 1.0;
+
+/// g from the turning points' times (see [`TurnGravity`]); `None` with
+/// fewer than three turns or no slope.
+fn turn_gravity(
+    time: &[f64],
+    amplitude: &[f64],
+    count: &[f64],
+    length: f64,
+    length_error: Option<f64>,
+    zeta: f64,
+) -> Option<TurnGravity> {
+    let n = time.len();
+    if n < 3 {
+        return None;
+    }
+    // Σ F(Ā) over the half swings up to each turn.
+    let mut sum = vec![0.0; n];
+    for i in 1..n {
+        let mean = 0.5 * (amplitude[i - 1] + amplitude[i]);
+        let ratio = Amplitude::from_radians(mean.min(std::f64::consts::PI.next_down()))
+            .map_or(1.0, crate::period::period_ratio);
+        sum[i] = sum[i - 1] + (count[i] - count[i - 1]) * ratio;
+    }
+    let (a, half) = super::straight_line(&sum, time);
+    let mean = sum.iter().sum::<f64>() / n as f64;
+    let sxx: f64 = sum.iter().map(|x| (x - mean).powi(2)).sum();
+    let rss: f64 = sum
+        .iter()
+        .zip(time)
+        .map(|(x, y)| (y - a - half * x).powi(2))
+        .sum();
+    let half_se = (rss / (n - 2) as f64 / sxx).sqrt();
+    if !(half > 0.0 && half.is_finite() && half_se.is_finite()) {
+        return None;
+    }
+    let t0 = 2.0 * half;
+    let w0 = std::f64::consts::TAU / t0;
+    let g = length * w0 * w0 / (1.0 - zeta * zeta).max(f64::MIN_POSITIVE);
+    let parts = super::ErrorParts::gravity(g, 2.0 * g * half_se / half, length, length_error);
+    // (A length no pendulum has can overflow it: no g then.)
+    if !(g.is_finite() && parts.total().is_finite()) {
+        return None;
+    }
+    Some(TurnGravity {
+        g_m_s2: g,
+        standard_error_m_s2: parts.total(),
+        standard_error_parts: parts,
+        small_angle_period_s: t0,
+        small_angle_period_standard_error_s: 2.0 * half_se,
+        length_m: length,
+        length_standard_error_m: length_error,
     })
 }
 
@@ -363,13 +623,18 @@ fn law_fit(f: &DecayFit, weight: f64, pendulum: Option<&Pendulum>, mass: Option<
         fitted: Some(Fitted {
             parameters,
             standard_errors,
-            q_factor: f.q_factor.and_then(finite),
-            q_factor_standard_error: f.q_factor.and_then(|q| {
+            q_factor: f.record_q.and_then(|q| q.q()).and_then(finite),
+            q_factor_standard_error: f
+                .record_q
+                .and_then(|q| q.q_standard_error())
+                .and_then(finite),
+            q_factor_lower_bound: f.record_q.and_then(|q| q.lower_bound()).and_then(finite),
+            q_viscous: f.q_viscous.and_then(finite),
+            q_viscous_standard_error: f.q_viscous.and_then(|q| {
                 let z = f.parameters.iter().find(|e| e.name == "zeta")?;
                 finite(q * z.standard_error / z.value)
             }),
-            q_factor_lower_bound: f.q_factor_lower_bound.and_then(finite),
-            q_factor_mean: f.q_factor_mean.and_then(finite),
+            q_viscous_lower_bound: f.q_viscous_lower_bound.and_then(finite),
             at_bound: f.at_bound.clone(),
             residual_rms: f.fit.residual_rms,
             aic: f.fit.aic,

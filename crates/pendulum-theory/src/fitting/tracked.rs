@@ -4,10 +4,13 @@
 //! command line's `fit trajectory` and Python's `fit_trajectory` are this
 //! call.
 
+use super::crest::measured_crest;
+use super::frames::{frame_grid, longest_run};
 use super::gyroscope::principal_axis;
 pub use super::noise_of;
 use super::rundown::{check_pairs, check_times};
 use super::trajectory::{fit_observed, swing_of, Observed, TrajectoryModel};
+use super::ErrorParts;
 use crate::analysis::{judge_work, require_finite, require_finite_samples, Refusal};
 use crate::error::format_significant;
 use serde::Serialize;
@@ -38,9 +41,19 @@ pub const GRAVITY_CHECK: f64 = 0.05;
 /// Residuals (rms) beyond this fraction of the record's largest swing mean
 /// the model does not follow the record.
 pub const RESIDUAL_OF_SWING: f64 = 0.25;
-/// Residuals (rms) beyond this many times the record's own sample-to-sample
-/// noise say the model leaves a pattern in them.
-pub const RESIDUAL_OF_NOISE: f64 = 1.5;
+
+/// A swing whose angles, declared in degrees, never reach this many
+/// degrees from the middle looks like one in radians.
+pub const TINY_SWING_DEG: f64 = 1.0;
+
+/// Standard errors apart beyond which the fitted curve's first crest is
+/// said to miss the data's ([`TrackWarning::FirstCrestOff`]): 4, as the
+/// measured crest's error, from a few samples, has wider tails than a
+/// normal deviate's (2 of 400 fair records beyond 3σ, none beyond 4σ; see
+/// [`super::crest`]).
+pub const CREST_SIGMA: f64 = 4.0;
+/// Samples each side of a crest it is measured from, at least.
+pub const CREST_MIN_SIDE: usize = 3;
 
 /// Of a gyroscope's rotation, the share about the swing's axis below
 /// which the phone is turning about others too (twisting on its strings,
@@ -81,14 +94,19 @@ pub struct TrackInput<'a> {
     pub model: Option<&'a str>,
     /// The length g is computed with, m, and where it came from.
     pub length: Option<(f64, LengthSource)>,
-    /// The length's standard error, m (a radius fitted to the track has
-    /// one): carried into g's.
+    /// The length's standard uncertainty, m (measured with a tape, or a
+    /// radius fitted to the track): carried into g's, which lists it as a
+    /// part beside the fit's ([`Track::standard_error_parts`]).
     pub length_standard_error: Option<f64>,
     /// Runs estimated beyond [`crate::analysis::FORCE_SECONDS`] anyway.
     pub force: bool,
     /// The angles were computed from x and y positions, so no unit of
     /// theirs can be mistaken (no angle-unit hint for a g off).
     pub angle_from_positions: bool,
+    /// The angles were read from a column declared in degrees (a header's
+    /// unit, a flag): a swing that never reaches a degree is then said to
+    /// look like radians.
+    pub declared_degrees: bool,
 }
 
 /// What a person must know about a trajectory fit.
@@ -147,18 +165,36 @@ pub enum TrackWarning {
         /// Whether the record is of angular velocities.
         rate: bool,
     },
-    /// The residuals are larger than the record's own noise: the model
-    /// leaves a pattern (or the tracking errors are correlated).
-    ResidualsExceedNoise {
-        /// Residual rms, rad (rad/s for angular velocities).
-        rms: f64,
-        /// The noise from the residuals' fourth differences, rad (rad/s).
-        noise: f64,
-        /// Whether the record is of angular velocities.
-        rate: bool,
-        /// The factor the standard errors were widened by for the
-        /// residuals' correlation.
-        inflation: f64,
+    /// The fitted curve's first crest is off the data's by more than
+    /// [`CREST_SIGMA`] standard errors: the fitted motion does not follow
+    /// the record's start, and its release amplitude (`amplitude_rad`) is
+    /// not the record's swing.
+    FirstCrestOff {
+        /// The data's first crest, rad.
+        measured: f64,
+        /// Its standard error, rad.
+        measured_error: f64,
+        /// The fitted curve's, rad.
+        fitted: f64,
+        /// How many combined standard errors apart.
+        sigmas: f64,
+    },
+    /// The record is in pieces: its longest run was fitted, the rest left
+    /// out.
+    SamplesLeftOut {
+        /// The run fitted: its first and last times, s.
+        kept: [f64; 2],
+        /// Each run left out: first and last times, s, and samples.
+        left: Vec<[f64; 3]>,
+    },
+    /// Angles declared in degrees whose swing never reaches a degree: they
+    /// look like radians.
+    AnglesLookLikeRadians {
+        /// The largest swing about the middle, as read, rad.
+        swing: f64,
+        /// How much g (or the small-angle frequency squared) would change
+        /// with the angles read as radians (relative).
+        g_change: f64,
     },
     /// The fitted damping is negative beyond three standard errors: the
     /// swing grows (a driven or pushed pendulum), which a free decay does
@@ -201,7 +237,9 @@ impl TrackWarning {
             TrackWarning::GravityOff { .. } => "gravity_off",
             TrackWarning::CrossingsDiffer { .. } => "crossings_differ",
             TrackWarning::SeveralAxes { .. } => "several_axes",
-            TrackWarning::ResidualsExceedNoise { .. } => "residuals_exceed_noise",
+            TrackWarning::FirstCrestOff { .. } => "first_crest_off",
+            TrackWarning::SamplesLeftOut { .. } => "samples_left_out",
+            TrackWarning::AnglesLookLikeRadians { .. } => "angles_look_like_radians",
         }
     }
 }
@@ -281,32 +319,38 @@ impl fmt::Display for TrackWarning {
                 format_significant(swing.to_degrees(), 3),
                 degrees(*rate)
             ),
-            TrackWarning::ResidualsExceedNoise {
-                rms,
-                noise,
-                inflation,
-                rate,
+            TrackWarning::FirstCrestOff {
+                measured,
+                measured_error,
+                fitted,
+                sigmas,
             } => write!(
                 f,
-                "the residuals (rms {}{}) are {} times the record's sample-to-sample noise ({}{}): \
-                 the model leaves a pattern in them ({}) or the {} errors are correlated; the \
-                 standard errors are widened {} times for the residuals' correlation from sample \
-                 to sample, but a pattern the model cannot follow may still bias the figures",
-                format_significant(rms.to_degrees(), 3),
-                degrees(*rate),
-                format_significant(rms / noise, 2),
-                format_significant(noise.to_degrees(), 3),
-                degrees(*rate),
-                if *rate {
-                    "the phone wobbling or twisting on its strings, a release by hand or a catch \
-                     in the record (fit the free swing only), a damping the laws fitted do not \
-                     describe"
-                } else {
-                    "a damping the laws fitted do not describe, a bob that is not a point, the \
-                     camera's perspective, a drifting tracker"
-                },
-                if *rate { "sensor's" } else { "tracking" },
-                format_significant(*inflation, 3)
+                "the fitted curve's first crest ({}°) is {}% off the data's ({}° ± {}°, \
+                 first_crest_amplitude_rad), {} standard errors: the fitted motion does not \
+                 follow the record's start (a release by hand, a push; leave it out with --from), \
+                 and amplitude_rad (its release amplitude) is not the record's swing",
+                format_significant(fitted.to_degrees(), 4),
+                format_significant(100.0 * (fitted - measured) / measured, 2),
+                format_significant(measured.to_degrees(), 5),
+                format_significant(measured_error.to_degrees(), 2),
+                format_significant(*sigmas, 2)
+            ),
+            TrackWarning::SamplesLeftOut { kept, left } => {
+                f.write_str(&super::frames::left_out_message(*kept, left))
+            }
+            TrackWarning::AnglesLookLikeRadians { swing, g_change } => write!(
+                f,
+                "the angles, read as degrees, never swing {}° from the middle (the largest \
+                 swing {}°): if the column holds radians (a {}° swing), amplitude_rad, \
+                 first_crest_amplitude_rad and offset_rad are 57.3 times too small, and g (and \
+                 the small-angle omega) {} by {}% with the finite-amplitude correction; check \
+                 the column's unit",
+                format_significant(TINY_SWING_DEG, 2),
+                format_significant(swing.to_degrees(), 3),
+                format_significant(swing.to_degrees().to_degrees(), 3),
+                if *g_change >= 0.0 { "rises" } else { "falls" },
+                format_significant(100.0 * g_change.abs(), 2)
             ),
             TrackWarning::SeveralAxes { share } => write!(
                 f,
@@ -389,14 +433,37 @@ pub struct Track {
     /// The factor every standard error was widened by for it,
     /// `√((1 + ρ)/(1 − ρ))` (1 for independent errors).
     pub standard_error_inflation: f64,
-    /// The viscous quality factor `Q = 1/(2ζ)`, when ζ is positive and
-    /// determined (`None` otherwise: an undamped or growing swing has
-    /// none).
+    /// The residual rms over the record's own sample-to-sample noise
+    /// (from the residuals' fourth differences): above 1, a pattern the
+    /// model leaves or tracking errors correlated from sample to sample,
+    /// both already in the standard errors.
+    pub residual_to_noise: Option<f64>,
+    /// Q over the record ([`super::quality`]): from the energy the fitted
+    /// motion loses per cycle between its first and last crests in the
+    /// record, whatever its damping law; what `fit decay` reports for the
+    /// same record. `None` when the loss is not measurable (then
+    /// `q_factor_lower_bound`).
     pub q_factor: Option<f64>,
-    /// Its standard error, `σ_ζ / (2ζ²)` (first-order propagation).
+    /// Its standard error (the loss's, from the fit's covariance).
     pub q_factor_standard_error: Option<f64>,
+    /// With no measurable loss over the record: Q's two-sigma lower bound.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub q_factor_lower_bound: Option<f64>,
+    /// The viscous part's `Q = 1/(2ζ)`, when ζ is positive and determined:
+    /// the pendulum's Q only when the damping law is `viscous`.
+    pub q_viscous: Option<f64>,
+    /// Its standard error, `σ_ζ / (2ζ²)` (first-order propagation).
+    pub q_viscous_standard_error: Option<f64>,
+    /// What the standard errors of figures derived from a measured input
+    /// are made of (`g_m_s2`: the fit's part, and the length's, null when
+    /// no uncertainty of the length was given).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub standard_error_parts: BTreeMap<&'static str, ErrorParts>,
     /// The length g is computed with, m.
     pub length_m: Option<f64>,
+    /// Its standard uncertainty, m (given, or the fitted radius's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub length_standard_error_m: Option<f64>,
     /// Where it came from.
     pub length_source: Option<LengthSource>,
     /// What a person must know about these results.
@@ -406,9 +473,45 @@ pub struct Track {
     /// The parameters the data do not determine.
     #[serde(skip)]
     pub undetermined: Vec<&'static str>,
-    /// The residuals, rad (rad/s of angular velocities), one per sample.
+    /// The residuals, rad (rad/s of angular velocities), one per sample
+    /// fitted.
     #[serde(skip)]
     pub residuals: Vec<f64>,
+    /// The times fitted, s (rebuilt where they were written rounded): the
+    /// samples from `first_row` on, one per residual.
+    #[serde(skip)]
+    pub time: Vec<f64>,
+    /// The input's row the fitted samples start at (after a gap).
+    #[serde(skip)]
+    pub first_row: usize,
+    /// Times written rounded, rebuilt on their frame grid
+    /// ([`super::frames`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub time_rebuilt: Option<TimeRebuilt>,
+}
+
+/// Times written rounded and rebuilt on their frame grid: what was done.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct TimeRebuilt {
+    /// The frame interval found, s.
+    pub frame_interval_s: f64,
+    /// The quantum most times were written to, s.
+    pub quantum_s: f64,
+    /// The largest change from a time written to its rebuilt one, s.
+    pub largest_change_s: f64,
+    /// Rows whose written time repeated the row before's.
+    pub repeated_times: usize,
+}
+
+impl From<&super::frames::FrameGrid> for TimeRebuilt {
+    fn from(g: &super::frames::FrameGrid) -> Self {
+        Self {
+            frame_interval_s: g.interval,
+            quantum_s: g.quantum,
+            largest_change_s: g.largest_change,
+            repeated_times: g.repeated,
+        }
+    }
 }
 
 /// The model fitted when none is named: the nonlinear one past 5°.
@@ -454,8 +557,29 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     };
     let rate = observed == Observed::AngularVelocity;
     check_pairs("time", name, time, theta)?;
+    // Times written rounded (repeats among them) are rebuilt on their
+    // frame grid before they are judged.
+    require_finite_samples("time", time)?;
+    let grid = frame_grid(time);
+    let rebuilt: Vec<f64>;
+    let time: &[f64] = match &grid {
+        Some(g) => {
+            rebuilt = g.time.clone();
+            &rebuilt
+        }
+        None => time,
+    };
     check_times("time", time)?;
     require_finite_samples(name, theta)?;
+    // A record in pieces (a tracker that lost the bob, a logger paused):
+    // its longest run is fitted, the rest left out and said.
+    let (kept, others) = longest_run(time);
+    let left_out: Vec<[f64; 3]> = others
+        .iter()
+        .map(|r| [time[r.start], time[r.end - 1], r.len() as f64])
+        .collect();
+    let first_row = kept.start;
+    let (time, theta) = (&time[kept.clone()], &theta[kept]);
     if let (Some(first), true) = (theta.first(), theta.len() > 1) {
         if theta.iter().all(|v| v == first) {
             return Err(Refusal::data(if rate {
@@ -529,6 +653,34 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             ));
         }
     }
+    if let Some(e) = input.length_standard_error {
+        require_finite("length_standard_error", e)?;
+        match input.length {
+            None => {
+                return Err(Refusal::field(
+                    "length_standard_error",
+                    "is the length's uncertainty: give the length too",
+                ))
+            }
+            Some(_) if e <= 0.0 => {
+                return Err(Refusal::field(
+                    "length_standard_error",
+                    format!("must be positive, got {e} m"),
+                ))
+            }
+            Some((l, _)) if e >= l => {
+                return Err(Refusal::field(
+                    "length_standard_error",
+                    format!(
+                        "must be smaller than the length ({} m), got {} m",
+                        format_significant(l, 6),
+                        format_significant(e, 6)
+                    ),
+                ))
+            }
+            _ => {}
+        }
+    }
     judge_work(
         "time",
         format!("{} rows", time.len()),
@@ -549,6 +701,9 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     for se in &mut fit.fit.standard_errors {
         *se *= inflation;
     }
+    for v in fit.fit.covariance.iter_mut().flatten() {
+        *v *= inflation * inflation;
+    }
     fit.natural_angular_frequency_error *= inflation;
     let names = fit.names();
     let mut parameters: BTreeMap<&'static str, f64> = names
@@ -566,11 +721,32 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     if let Some(a) = parameters.get_mut("amplitude_rad") {
         *a = a.abs();
     }
+    let mut standard_error_parts: BTreeMap<&'static str, ErrorParts> = BTreeMap::new();
     let mut warnings: Vec<TrackWarning> = fit
         .fallback_note()
         .map(TrackWarning::NonlinearRejected)
         .into_iter()
         .collect();
+    if !left_out.is_empty() {
+        warnings.push(TrackWarning::SamplesLeftOut {
+            kept: [time[0], time[time.len() - 1]],
+            left: left_out,
+        });
+    }
+    if input.declared_degrees
+        && !rate
+        && !input.angle_from_positions
+        && swing_angle < TINY_SWING_DEG.to_radians()
+    {
+        use crate::pendulum::Amplitude;
+        use crate::period::period_ratio;
+        let ratio = |a: f64| Amplitude::from_radians(a.min(3.1)).map_or(1.0, period_ratio);
+        let other = swing_angle.to_degrees();
+        warnings.push(TrackWarning::AnglesLookLikeRadians {
+            swing: swing_angle,
+            g_change: (ratio(other) / ratio(swing_angle)).powi(2) - 1.0,
+        });
+    }
     // The linear model's g carries a finite-amplitude bias larger than its
     // standard error above a few degrees (the correction takes the
     // amplitude at mid-record, but the swing decays through it).
@@ -578,10 +754,9 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         if fit.model.gives_gravity_at(swing_angle) {
             let (g, se) = fit.gravity(l);
             // g = l ω²: the length's error adds in quadrature.
-            let se = match input.length_standard_error {
-                Some(sl) if sl.is_finite() && l > 0.0 => se.hypot(g * sl / l),
-                _ => se,
-            };
+            let parts = ErrorParts::gravity(g, se, l, input.length_standard_error);
+            let se = parts.total();
+            standard_error_parts.insert("g_m_s2", parts);
             parameters.insert("g_m_s2", g);
             standard_errors.insert("g_m_s2", se);
             if let Some(likely) = implausible_gravity(g, input.length.map(|(_, s)| s)) {
@@ -604,13 +779,70 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     }
     // The first crest the record shows, beside the fitted amplitude (the
     // envelope's at the first sample, or the release's up to a period
-    // before it).
+    // before it): measured from the samples around it (angles; a
+    // gyroscope's rate has no crest to see), the fitted curve's beside it.
     let interval = time.get(1).zip(time.first()).map_or(0.0, |(b, a)| b - a);
-    if let Some([time, time_error, amplitude, error]) = fit.first_crest(interval) {
-        parameters.insert("first_crest_time_s", time);
-        standard_errors.insert("first_crest_time_s", time_error);
-        parameters.insert("first_crest_amplitude_rad", amplitude);
-        standard_errors.insert("first_crest_amplitude_rad", error);
+    let held = fit.held_samples.min(time.len());
+    let white = noise_of(&fit.fit.residuals[held..]).unwrap_or(0.0);
+    if let Some([crest_time, time_error, amplitude, error]) = fit.first_crest(interval) {
+        let offset = parameters.get("offset_rad").copied().unwrap_or(0.0);
+        let offset_error = standard_errors.get("offset_rad").copied().unwrap_or(0.0);
+        let at = time[0] + crest_time;
+        let curve: Vec<f64> = theta
+            .iter()
+            .zip(&fit.fit.residuals)
+            .map(|(v, r)| v - r)
+            .collect();
+        let nearest = time[held..]
+            .partition_point(|&t| t < at)
+            .min(time.len() - held - 1)
+            + held;
+        let sign = if curve[nearest] >= offset { 1.0 } else { -1.0 };
+        let quarter = 0.25 * std::f64::consts::TAU / fit.natural_angular_frequency.max(1e-300);
+        let measured = (!rate)
+            .then(|| {
+                measured_crest(
+                    &time[held..],
+                    &theta[held..],
+                    &curve[held..],
+                    at,
+                    offset + sign * amplitude,
+                    0.5 * quarter,
+                    CREST_MIN_SIDE,
+                    white,
+                    sign,
+                )
+            })
+            .flatten();
+        match measured {
+            Some(c) => {
+                let value = sign * (c.value - offset);
+                let value_se = c.value_standard_error.hypot(offset_error);
+                parameters.insert("first_crest_time_s", c.time - time[0]);
+                standard_errors.insert("first_crest_time_s", c.time_standard_error);
+                parameters.insert("first_crest_amplitude_rad", value);
+                standard_errors.insert("first_crest_amplitude_rad", value_se);
+                parameters.insert("first_crest_fitted_amplitude_rad", amplitude);
+                standard_errors.insert("first_crest_fitted_amplitude_rad", error);
+                let apart = (value - amplitude).abs();
+                let sigma = value_se.hypot(error);
+                // (A record fitted exactly has no errors to judge by.)
+                if sigma > 0.0 && (apart / sigma).is_finite() && apart > CREST_SIGMA * sigma {
+                    warnings.push(TrackWarning::FirstCrestOff {
+                        measured: value,
+                        measured_error: value_se,
+                        fitted: amplitude,
+                        sigmas: apart / sigma,
+                    });
+                }
+            }
+            None => {
+                parameters.insert("first_crest_time_s", crest_time);
+                standard_errors.insert("first_crest_time_s", time_error);
+                parameters.insert("first_crest_amplitude_rad", amplitude);
+                standard_errors.insert("first_crest_amplitude_rad", error);
+            }
+        }
     }
     // Without a length g cannot be judged; the period still can.
     if input.length.is_none() {
@@ -677,21 +909,17 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             rate,
         });
     }
-    // (The residuals of angles read in steps are not in steps; the
-    // steps' rounding is in them all the same.)
-    if let Some(noise) = noise_of(&fit.fit.residuals[fit.held_samples..])
+    // The residuals against the record's own sample-to-sample noise: a
+    // pattern the model leaves, or tracking errors correlated from sample
+    // to sample. The standard errors already carry both (the residuals'
+    // variance scales them, as SciPy's curve_fit does, and their
+    // correlation widens them by the AR(1) factor): said beside them, not
+    // warned. (The residuals of angles read in steps are not in steps;
+    // the steps' rounding is in them all the same.)
+    let residual_to_noise = noise_of(&fit.fit.residuals[held..])
         .map(|n| n.max(super::rounding_noise(theta)))
-    {
-        let rms = fit.fit.residual_rms;
-        if rms > RESIDUAL_OF_NOISE * noise {
-            warnings.push(TrackWarning::ResidualsExceedNoise {
-                rms,
-                noise,
-                inflation,
-                rate,
-            });
-        }
-    }
+        .map(|n| fit.fit.residual_rms / n)
+        .filter(|v| v.is_finite());
     // Counted over the span where both swing beyond the band: a curve
     // that decays by another law leaves the band earlier or later than
     // the data, with the same frequency.
@@ -716,14 +944,20 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         .get("zeta")
         .copied()
         .filter(|&z| z > 0.0 && !undetermined.contains(&"zeta"));
-    let q_factor = zeta.map(|z| 0.5 / z);
-    let q_factor_standard_error = zeta
+    let q_viscous = zeta.map(|z| 0.5 / z);
+    let q_viscous_standard_error = zeta
         .and_then(|z| standard_errors.get("zeta").map(|se| se / (2.0 * z * z)))
         .filter(|se| se.is_finite());
+    // Q over the record, from the fitted motion's energy loss.
+    let span = time.last().copied().unwrap_or(0.0) - time[held.min(time.len() - 1)];
+    let record = fit.record_q(span, interval);
     Ok(Track {
         points: time.len(),
-        q_factor,
-        q_factor_standard_error,
+        q_factor: record.and_then(|q| q.q()).filter(|q| q.is_finite()),
+        q_factor_standard_error: record.and_then(|q| q.q_standard_error()),
+        q_factor_lower_bound: record.and_then(|q| q.lower_bound()),
+        q_viscous,
+        q_viscous_standard_error,
         model: match fit.model {
             TrajectoryModel::Linear => "linear",
             TrajectoryModel::Nonlinear => "nonlinear",
@@ -740,12 +974,21 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         residual_rms_rad_s: rate.then_some(fit.fit.residual_rms),
         residual_autocorrelation: autocorrelation,
         standard_error_inflation: inflation,
+        residual_to_noise,
+        standard_error_parts,
         length_m: input.length.map(|(l, _)| l),
+        length_standard_error_m: input
+            .length
+            .and(input.length_standard_error)
+            .filter(|e| e.is_finite()),
         length_source: input.length.map(|(_, s)| s),
         warning_codes: warnings.iter().map(TrackWarning::code).collect(),
         warnings,
         undetermined,
         residuals: fit.fit.residuals,
+        time: time.to_vec(),
+        first_row,
+        time_rebuilt: grid.as_ref().map(TimeRebuilt::from),
     })
 }
 

@@ -44,7 +44,8 @@
 //! the exact period ratio at the amplitude in the middle of the record);
 //! the nonlinear model has `ω_n` directly.
 
-use super::{fit_curve, fit_curve_patient, Curve, Fit, FitError};
+use super::quality::{loss_per_radian, RecordQ};
+use super::{fit_curve, fit_curve_patient, propagate, Curve, Fit, FitError};
 use crate::damped::State;
 use crate::damping::Damping;
 use crate::pendulum::{Amplitude, Pendulum};
@@ -365,6 +366,63 @@ impl TrajectoryFit {
         }
     }
 
+    /// Q over the record ([`super::quality`]), from the energy the fitted
+    /// motion loses per radian of swing over the `span` s of fitted
+    /// samples (from the first fitted one), with the loss's standard error
+    /// from the fit's covariance ([`super::propagate`]). Linear model: the
+    /// envelope `A e^{−ζω_n t}` at the span's ends through `ω_d` times the
+    /// span. Nonlinear model: the fitted motion integrated from its release
+    /// (DOP853 at 1e-12), its first and last crests within the record and
+    /// the half swings between them, the crests held to the same half
+    /// swings while the parameters are stepped for the error (the phase
+    /// then plays no part). A crest within half the sampling `interval`
+    /// (s) outside the span is the record's (it starts or ends on it), as
+    /// the turning points of the decay fit count it. `None` with fewer
+    /// than two crests in the record, or no decay.
+    pub fn record_q(&self, span: f64, interval: f64) -> Option<RecordQ> {
+        let loss: Box<LossOf> = match self.model {
+            TrajectoryModel::Linear => Box::new(move |p: &[f64]| {
+                let (a, wd, zeta) = (p[0].abs(), p[1].abs(), p[2]);
+                let wn = wd / (1.0 - zeta * zeta).max(f64::MIN_POSITIVE).sqrt();
+                loss_per_radian(wd * span, a, a * (-zeta * wn * span).exp())
+            }),
+            TrajectoryModel::Nonlinear => {
+                let p = &self.fit.parameters;
+                let (a, wn) = (p[0].abs(), p[1].abs());
+                // The release leads the first fitted sample by
+                // phase·ratio/ω_n (the phase is a fraction of the true
+                // period).
+                let lead = p[3] * release_period_ratio(a) / wn.max(f64::MIN_POSITIVE);
+                let crests = crests_until(&self.law.full(p), lead.max(0.0) + span + interval)?;
+                // The crests the record shows, a crest it starts or ends
+                // on with them.
+                let tolerance = 0.5 * interval.max(0.0) + 1e-9 * span.max(1.0);
+                let inside: Vec<&(u64, f64, f64)> = crests
+                    .iter()
+                    .filter(|(_, t, _)| *t >= lead - tolerance && *t <= lead + span + tolerance)
+                    .collect();
+                let (first, last) = (inside.first()?.0, inside.last()?.0);
+                if last <= first {
+                    return None;
+                }
+                let law = self.law;
+                Box::new(move |q: &[f64]| {
+                    let picked = crest_angles(&law.full(q), first, last)?;
+                    loss_per_radian(
+                        std::f64::consts::PI * (last - first) as f64,
+                        picked.0,
+                        picked.1,
+                    )
+                })
+            }
+        };
+        let value = loss(&self.fit.parameters)?;
+        Some(RecordQ {
+            loss: value,
+            loss_standard_error: propagate(&self.fit, |q| loss(q))?,
+        })
+    }
+
     /// `g = l ω_0²` and its standard error, for a pendulum of `length` m.
     pub fn gravity(&self, length: f64) -> (f64, f64) {
         let w = self.natural_angular_frequency;
@@ -669,6 +727,7 @@ fn fit_released(
     if lin.parameters[0] < 0.0 {
         lin.parameters[0] = -lin.parameters[0];
         lin.parameters[3] += std::f64::consts::PI;
+        rescale(&mut lin, 0, -1.0);
     }
     let wrapped = lin.parameters[3].rem_euclid(std::f64::consts::TAU);
     lin.parameters[3] = if wrapped > std::f64::consts::PI {
@@ -794,9 +853,12 @@ fn fit_released(
     let ratio = release_period_ratio(fit.parameters[0]);
     fit.parameters[3] /= ratio;
     fit.standard_errors[3] /= ratio;
-    fit.parameters[0] = fit.parameters[0].abs();
-    for p in &mut fit.parameters[5..] {
-        *p = p.abs();
+    rescale(&mut fit, 3, 1.0 / ratio);
+    for j in (0..1).chain(5..fit.parameters.len()) {
+        if fit.parameters[j] < 0.0 {
+            fit.parameters[j] = -fit.parameters[j];
+            rescale(&mut fit, j, -1.0);
+        }
     }
     let (w, e) = (fit.parameters[1].abs(), fit.standard_errors[1]);
     Ok(TrajectoryFit {
@@ -810,6 +872,21 @@ fn fit_released(
         held_seconds: 0.0,
         observed,
     })
+}
+
+/// The covariance of a fit whose parameter `j` was multiplied by `factor`
+/// (its sign turned, or its unit changed): row and column `j` scale by it.
+fn rescale(fit: &mut Fit, j: usize, factor: f64) {
+    for (r, row) in fit.covariance.iter_mut().enumerate() {
+        for (c, v) in row.iter_mut().enumerate() {
+            if r == j {
+                *v *= factor;
+            }
+            if c == j {
+                *v *= factor;
+            }
+        }
+    }
 }
 
 /// A coefficient of a damping law must exceed this many of its standard
@@ -1007,6 +1084,86 @@ pub const LATEST_RELEASE: f64 = 1.5 * std::f64::consts::PI;
 
 /// The first window of a staged fit, periods.
 pub const FIRST_WINDOW_PERIODS: f64 = 4.0;
+
+/// The turning points (index from the release, time after it, s, signed
+/// angle, rad) of the motion of nonlinear parameters `[A, ω_n, ζ, φ, θ_off,
+/// b, r]` released from rest at `A`, up to `until` s after the release
+/// (DOP853 at 1e-12); the release is index 0.
+fn crests_until(p: &[f64; 7], until: f64) -> Option<Vec<(u64, f64, f64)>> {
+    let model = model_of(p)?;
+    let amplitude = Amplitude::from_radians(p[0].abs().min(3.1)).ok()?;
+    struct All(Vec<(u64, f64, f64)>);
+    impl Observer for All {
+        fn turning_point(
+            &mut self,
+            tp: &crate::simulation::TurningPoint,
+        ) -> crate::simulation::Action {
+            self.0.push((tp.index, tp.time, tp.angle));
+            crate::simulation::Action::Continue
+        }
+    }
+    let options = Options {
+        duration: until + 1e-9 * until.max(1.0),
+        tolerance: 1e-12,
+        method: Method::Dop853,
+        sample_interval: None,
+    };
+    let mut all = All(Vec::new());
+    simulate(&model, amplitude, &options, &mut all).ok()?;
+    if all.0.first().is_none_or(|c| c.0 != 0) {
+        all.0.insert(0, (0, 0.0, p[0].abs()));
+    }
+    Some(all.0)
+}
+
+/// The amplitudes (rad, unsigned) of the motion of nonlinear parameters
+/// `[A, ω_n, ζ, ...]` at its turning points `first` and `last` (indices
+/// from the release, 0 the release itself).
+fn crest_angles(p: &[f64; 7], first: u64, last: u64) -> Option<(f64, f64)> {
+    let model = model_of(p)?;
+    let amplitude = Amplitude::from_radians(p[0].abs().min(3.1)).ok()?;
+    struct Two {
+        first: u64,
+        last: u64,
+        found: (Option<f64>, Option<f64>),
+    }
+    impl Observer for Two {
+        fn turning_point(
+            &mut self,
+            tp: &crate::simulation::TurningPoint,
+        ) -> crate::simulation::Action {
+            if tp.index == self.first {
+                self.found.0 = Some(tp.angle.abs());
+            }
+            if tp.index == self.last {
+                self.found.1 = Some(tp.angle.abs());
+                return crate::simulation::Action::Stop;
+            }
+            crate::simulation::Action::Continue
+        }
+    }
+    // Half a period a half swing, and room: the motion stops at the last.
+    let wn = p[1].abs().max(f64::MIN_POSITIVE);
+    let options = Options {
+        duration: (last as f64 + 2.0) * std::f64::consts::PI / wn * release_period_ratio(p[0]),
+        tolerance: 1e-12,
+        method: Method::Dop853,
+        sample_interval: None,
+    };
+    let mut two = Two {
+        first,
+        last,
+        found: (if first == 0 { Some(p[0].abs()) } else { None }, None),
+    };
+    simulate(&model, amplitude, &options, &mut two).ok()?;
+    match two.found {
+        (Some(a), Some(b)) => Some((a, b)),
+        _ => None,
+    }
+}
+
+/// A figure of a fit's parameters (the loss per radian over the record).
+type LossOf = dyn Fn(&[f64]) -> Option<f64>;
 
 /// `T(A)/T0` at the release amplitude `a` (rad).
 fn release_period_ratio(a: f64) -> f64 {

@@ -16,7 +16,11 @@
 //!    to a fraction of a frame.
 //!
 //! The first and last half swings are dropped when they are cut by the ends
-//! of the record (their extreme sample lies on the record's edge).
+//! of the record (their extreme sample lies on the record's edge), unless
+//! the record starts (or ends) on the crest itself: the parabola through
+//! the samples after it (or before) has its vertex within half a sample
+//! interval of the edge (a swing released from rest as the record starts:
+//! its first crest is the release, the largest amplitude it has).
 
 use super::straight_line;
 
@@ -43,14 +47,46 @@ pub struct Turns {
 
 impl Turns {
     /// The mean half period from the turning times (least-squares slope of
-    /// time against turn number), s; `None` with fewer than 3 turns.
+    /// time against the half-swing count, [`Self::half_swings`]), s;
+    /// `None` with fewer than 3 turns.
     pub fn half_period(&self) -> Option<f64> {
+        self.half_period_with_error().map(|(h, _)| h)
+    }
+
+    /// [`Self::half_period`] and its standard error (the slope's, from the
+    /// times' scatter about the line), s.
+    pub fn half_period_with_error(&self) -> Option<(f64, f64)> {
         if self.turns.len() < 3 {
             return None;
         }
-        let n: Vec<f64> = (0..self.turns.len()).map(|i| i as f64).collect();
+        let n = self.half_swings();
         let t: Vec<f64> = self.turns.iter().map(|p| p.time).collect();
-        Some(straight_line(&n, &t).1)
+        let (a, b) = straight_line(&n, &t);
+        let mean = n.iter().sum::<f64>() / n.len() as f64;
+        let sxx: f64 = n.iter().map(|x| (x - mean).powi(2)).sum();
+        let rss: f64 = n.iter().zip(&t).map(|(x, y)| (y - a - b * x).powi(2)).sum();
+        let se = (rss / (n.len() - 2) as f64 / sxx).sqrt();
+        Some((b, if se.is_finite() { se } else { 0.0 }))
+    }
+
+    /// The half swing each turning point ends, counted from the first
+    /// (0): successive turns on opposite sides are one half swing apart,
+    /// two on the same side two (the turn between was not found: a gap
+    /// in the track, or a half swing cut short).
+    pub fn half_swings(&self) -> Vec<f64> {
+        let mut count = 0.0;
+        let mut out = Vec::with_capacity(self.turns.len());
+        for (i, t) in self.turns.iter().enumerate() {
+            if i > 0 {
+                count += if t.side == self.turns[i - 1].side {
+                    2.0
+                } else {
+                    1.0
+                };
+            }
+            out.push(count);
+        }
+        out
     }
 }
 
@@ -136,17 +172,42 @@ fn find(time: &[f64], angle: &[f64], n: usize, zero: f64) -> Vec<Turn> {
             (from, f64::NEG_INFINITY),
             |best, c| if c.1 > best.1 { c } else { best },
         );
-        // A half swing cut by an end of the record has its extreme there.
-        if i_max == 0 || i_max + 1 >= n {
-            continue;
-        }
+        // A half swing cut by an end of the record has its extreme there;
+        // one the record starts or ends on has its vertex within half a
+        // sample of the edge.
+        let edge = i_max == 0 || i_max + 1 >= n;
         let half = ((b - from) / 8).max(2);
-        let lo = i_max.saturating_sub(half);
-        let hi = (i_max + half + 1).min(n);
+        // (At an edge, the samples on its one side, as many as both sides
+        // would have.)
+        let lo = if i_max + 1 >= n {
+            i_max.saturating_sub(3 * half)
+        } else {
+            i_max.saturating_sub(half)
+        };
+        let hi = if i_max == 0 {
+            (3 * half + 1).min(n)
+        } else {
+            (i_max + half + 1).min(n)
+        };
         if hi - lo < 5 {
             continue;
         }
-        if let Some((t, y)) = vertex(&time[lo..hi], &angle[lo..hi], time[i_max]) {
+        let slack = if edge && n > 1 {
+            let half_sample = 0.5 * (time[1] - time[0]).min(time[n - 1] - time[n - 2]);
+            match edge_crest(
+                &time[lo..hi],
+                &angle[lo..hi],
+                time[i_max],
+                half_sample,
+                side,
+            ) {
+                Some(vertex_error) => half_sample + 2.0 * vertex_error,
+                None => continue,
+            }
+        } else {
+            0.0
+        };
+        if let Some((t, y)) = vertex(&time[lo..hi], &angle[lo..hi], time[i_max], slack) {
             turns.push(Turn {
                 time: t,
                 amplitude: side * (y - zero),
@@ -157,10 +218,67 @@ fn find(time: &[f64], angle: &[f64], n: usize, zero: f64) -> Vec<Turn> {
     turns
 }
 
+/// Whether the parabola through `(t, y)` about the record's edge `t0`
+/// pins its vertex (a crest the record starts or ends on; `slack` is half
+/// a sample interval): it opens towards the `side`'s extreme, and the
+/// vertex's standard error (from the scatter about it, `σ(c₁)/|2c₂|`) is
+/// within two sample intervals, so that a steep, noisy stretch the record
+/// ends in is not read as a crest. Returns that standard error: the
+/// vertex must then lie within half a sample and two of it of the edge.
+fn edge_crest(t: &[f64], y: &[f64], t0: f64, slack: f64, side: f64) -> Option<f64> {
+    let m = t.len();
+    if m < 5 || slack.is_nan() || slack <= 0.0 {
+        return None;
+    }
+    let u: Vec<f64> = t.iter().map(|ti| ti - t0).collect();
+    let (mut s, mut r) = ([0.0_f64; 5], [0.0_f64; 3]);
+    for (&ui, &yi) in u.iter().zip(y) {
+        let mut p = 1.0;
+        for (k, sk) in s.iter_mut().enumerate() {
+            *sk += p;
+            if k < 3 {
+                r[k] += p * yi;
+            }
+            p *= ui;
+        }
+    }
+    let a = [[s[0], s[1], s[2]], [s[1], s[2], s[3]], [s[2], s[3], s[4]]];
+    let det3 = |m: [[f64; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let d = det3(a);
+    if d == 0.0 || !d.is_finite() {
+        return None;
+    }
+    let solve = |k: usize| {
+        let mut mk = a;
+        for row in 0..3 {
+            mk[row][k] = r[row];
+        }
+        det3(mk) / d
+    };
+    let (c0, c1, c2) = (solve(0), solve(1), solve(2));
+    if side * c2 >= 0.0 {
+        return None;
+    }
+    let rss: f64 = u
+        .iter()
+        .zip(y)
+        .map(|(&ui, &yi)| (yi - c0 - c1 * ui - c2 * ui * ui).powi(2))
+        .sum();
+    // (XᵀX)⁻¹ at (1, 1): its cofactor over the determinant.
+    let inverse_11 = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) / d;
+    let c1_se = (rss / (m - 3) as f64 * inverse_11).max(0.0).sqrt();
+    let vertex_error = c1_se / (2.0 * c2.abs());
+    (vertex_error <= 4.0 * slack).then_some(vertex_error)
+}
+
 /// The vertex of the least-squares parabola through `(t, y)`, in
 /// coordinates centred on `t0`; `None` if it does not open towards the
-/// extreme or its vertex falls outside the points.
-fn vertex(t: &[f64], y: &[f64], t0: f64) -> Option<(f64, f64)> {
+/// extreme or its vertex falls outside the points by more than `slack` s.
+fn vertex(t: &[f64], y: &[f64], t0: f64, slack: f64) -> Option<(f64, f64)> {
     // Normal equations of y = c0 + c1 u + c2 u², u = t - t0.
     let mut s = [0.0_f64; 5];
     let mut r = [0.0_f64; 3];
@@ -198,7 +316,7 @@ fn vertex(t: &[f64], y: &[f64], t0: f64) -> Option<(f64, f64)> {
     }
     let u = -c1 / (2.0 * c2);
     let (first, last) = (t[0] - t0, t[t.len() - 1] - t0);
-    if !(first..=last).contains(&u) {
+    if !(first - slack..=last + slack).contains(&u) {
         return None;
     }
     Some((t0 + u, c0 + c1 * u + c2 * u * u))
@@ -260,5 +378,34 @@ mod tests {
         assert!(bias.abs() < 5e-4, "mean error {bias}");
         let half = turns.half_period().unwrap();
         assert!((half / 0.85 - 1.0).abs() < 1e-3, "{half}");
+    }
+
+    /// A record that starts on its release (a crest) keeps it as its
+    /// first turning point; one that ends on a steep, noisy stretch does
+    /// not make a crest of it.
+    #[test]
+    fn a_record_that_starts_on_its_release_keeps_that_crest() {
+        let (w, zeta, a0) = (2.0 * std::f64::consts::PI / 1.7, 0.01, 0.3);
+        let mut state = 11_u64;
+        let mut noise = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            0.002 * 12f64.sqrt() * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5)
+        };
+        let t: Vec<f64> = (0..1200).map(|i| i as f64 / 60.0).collect();
+        let y: Vec<f64> = t
+            .iter()
+            .map(|&t| a0 * (-zeta * w * t).exp() * (w * t).cos() + noise())
+            .collect();
+        let turns = turning_points(&t, &y);
+        let first = turns.turns[0];
+        assert!(first.time.abs() < 2.5 / 60.0, "{first:?}");
+        assert!((first.amplitude - a0).abs() < 0.004, "{first:?}");
+        // Cut a quarter of a period short of a crest: that end is no crest.
+        let end = t.partition_point(|&x| x < 1.7 * 10.0 - 0.3);
+        let turns = turning_points(&t[..end], &y[..end]);
+        let last = turns.turns.last().unwrap();
+        assert!(last.time < t[end - 1] - 0.2, "{last:?}");
     }
 }

@@ -185,12 +185,22 @@ fn every_rate_at_44_and_8_khz() {
 /// noise's RMS) and 8 dB, with and without the nominal rate given.
 #[test]
 fn strong_noise_reports_missed_beats_and_invents_none() {
-    for (snr, bph, seed) in [
-        (6.0, 3600.0, 31),
-        (6.0, 18_000.0, 32),
-        (8.0, 3600.0, 33),
-        (8.0, 28_800.0, 34),
-    ] {
+    // The four records are independent: each on its own thread.
+    std::thread::scope(|scope| {
+        for (snr, bph, seed) in [
+            (6.0, 3600.0, 31),
+            (6.0, 18_000.0, 32),
+            (8.0, 3600.0, 33),
+            (8.0, 28_800.0, 34),
+        ] {
+            scope.spawn(move || strong_noise_case(snr, bph, seed));
+        }
+    });
+}
+
+/// One record of [`strong_noise_reports_missed_beats_and_invents_none`].
+fn strong_noise_case(snr: f64, bph: f64, seed: u64) {
+    {
         let rec = synthesize(&spec(bph, 44_100, snr, seed));
         for nominal in [None, Some(3600.0 / bph)] {
             let label = format!("{snr} dB, {bph} bph, nominal {nominal:?}");

@@ -265,10 +265,9 @@ impl fmt::Display for TrackWarning {
                 format_significant(*standard_error, 2)
             ),
             TrackWarning::ZetaUndetermined => f.write_str(
-                "zeta not determined (its standard error exceeds it): the viscous part of the \
-                 damping is too small to measure in this record, beside the drag or friction \
-                 fitted with it, or because the swing decays too little over it (a longer \
-                 record would tell)",
+                "zeta not determined (its standard error exceeds it): the swing decays too \
+                 little over this record to measure its damping and Q well (a longer record \
+                 would tell)",
             ),
             TrackWarning::GravityImplausible { g, likely } => write!(
                 f,
@@ -883,7 +882,15 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             });
         }
     }
-    if undetermined.contains(&"zeta") {
+    // An undetermined ζ is a warning where it is the whole damping (Q
+    // then rests on it); beside drag or friction it is one part of a loss
+    // that Q over the record measures, and its "not determined" stands
+    // beside its value (a warning there fired on right answers: a 79°
+    // release with Q 386 ± 2).
+    let other_losses = ["quadratic_drag_per_rad", "friction_angle_rad"]
+        .iter()
+        .any(|k| parameters.contains_key(*k));
+    if undetermined.contains(&"zeta") && !other_losses {
         warnings.push(TrackWarning::ZetaUndetermined);
     }
     let shape: Vec<&'static str> = undetermined

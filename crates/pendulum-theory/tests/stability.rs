@@ -288,20 +288,8 @@ fn intervals_and_noise_types_as_allantools_computes_them() {
 /// over twice the length (Kasdin 1995), cut and summed into phase.
 fn power_law(alpha: i32, n: usize, seed: u64) -> Vec<f64> {
     use realfft::RealFftPlanner;
-    let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
-    let mut uniform = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-    };
     let len = 2 * n;
-    let mut white: Vec<f64> = (0..len)
-        .map(|_| {
-            let (u, v) = (uniform(), uniform());
-            (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
-        })
-        .collect();
+    let mut white = gaussian(len, seed);
     let mut planner = RealFftPlanner::<f64>::new();
     let forward = planner.plan_fft_forward(len);
     let inverse = planner.plan_fft_inverse(len);

@@ -371,22 +371,13 @@ fn text(r: &DecayJson) -> String {
                 ));
             }
         }
-        if let Some(q) = fitted.q_factor {
-            let error = fitted
-                .q_factor_standard_error
-                .map_or(String::new(), |e| format!(" ± {}", num(e, 2)));
-            out.push_str(&format!(
-                "  {:<28} {}{error} (over the record: the energy lost per cycle)\n",
-                "Q",
-                num(q, 5)
-            ));
-        } else if let Some(q) = fitted.q_factor_lower_bound {
-            out.push_str(&format!(
-                "  {:<28} no measurable loss over the record: Q > {} (two standard errors)\n",
-                "Q",
-                num(q, 3)
-            ));
-        }
+        out.push_str(&q_line(
+            28,
+            5,
+            fitted.q_factor,
+            fitted.q_factor_standard_error,
+            fitted.q_factor_lower_bound,
+        ));
         // The viscous part: alone in its law, 1/(2ζ) (Q takes the energy
         // at the record's amplitudes, 1 − cos A, where it takes A²).
         let others = m.model != "viscous";
@@ -443,6 +434,34 @@ fn text(r: &DecayJson) -> String {
         ));
     }
     out
+}
+
+/// The row of Q over the record (the energy lost per cycle), or of its
+/// lower bound where no loss is measurable; empty where neither is known.
+/// Both fits print it so, at `width` and `digits`.
+pub fn q_line(
+    width: usize,
+    digits: usize,
+    q: Option<f64>,
+    standard_error: Option<f64>,
+    lower_bound: Option<f64>,
+) -> String {
+    match (q, lower_bound) {
+        (Some(q), _) => {
+            let error = standard_error.map_or(String::new(), |e| format!(" ± {}", num(e, 2)));
+            format!(
+                "  {:<width$} {}{error} (over the record: the energy lost per cycle)\n",
+                "Q",
+                num(q, digits)
+            )
+        }
+        (None, Some(q)) => format!(
+            "  {:<width$} no measurable loss over the record: Q > {} (two standard errors)\n",
+            "Q",
+            num(q, 3)
+        ),
+        (None, None) => String::new(),
+    }
 }
 
 /// What a standard error is made of, for people: "fit 0.00012, length

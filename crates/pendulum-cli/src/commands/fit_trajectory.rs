@@ -210,22 +210,13 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             num(*value, 8)
         ));
     }
-    if let Some(q) = a.q_factor {
-        let error = a
-            .q_factor_standard_error
-            .map_or(String::new(), |se| format!(" ± {}", num(se, 2)));
-        out.push_str(&format!(
-            "  {:<32} {}{error} (over the record: the energy lost per cycle)\n",
-            "Q",
-            num(q, 6)
-        ));
-    } else if let Some(q) = a.q_factor_lower_bound {
-        out.push_str(&format!(
-            "  {:<32} no measurable loss over the record: Q > {} (two standard errors)\n",
-            "Q",
-            num(q, 3)
-        ));
-    }
+    out.push_str(&super::fit_decay::q_line(
+        32,
+        6,
+        a.q_factor,
+        a.q_factor_standard_error,
+        a.q_factor_lower_bound,
+    ));
     if let (Some(q), true) = (a.q_viscous, a.damping_law != "viscous") {
         let error = a
             .q_viscous_standard_error

@@ -948,20 +948,7 @@ fn rms(a: &[f64], b: &[f64]) -> f64 {
 mod tests {
     use super::*;
 
-    /// A deterministic normal deviate stream (xorshift and Box-Muller).
-    struct Normal(u64);
-    impl Normal {
-        fn uniform(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            ((self.0 >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-        }
-        fn next(&mut self) -> f64 {
-            let (u, v) = (self.uniform(), self.uniform());
-            (-2.0 * u.ln()).sqrt() * (2.0 * PI * v).cos()
-        }
-    }
+    use crate::test_noise::Normals as Normal;
 
     /// The exact period of a 1 m pendulum at standard gravity, computed
     /// independently by the AGM (DLMF 19.8.5), not by `period_ratio`.

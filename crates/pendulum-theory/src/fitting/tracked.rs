@@ -1134,19 +1134,11 @@ mod tests {
     /// Box-Muller), whose mean's standard error the independent formula
     /// understates by `√((1 + ρ)/(1 − ρ))`.
     fn ar1(rho: f64, n: usize, seed: u64) -> Vec<f64> {
-        let mut s = seed;
-        let mut uniform = move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            ((s >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-        };
+        let mut e = crate::test_noise::Normals(seed);
         let mut x = 0.0;
         (0..n)
             .map(|_| {
-                let (u, v) = (uniform(), uniform());
-                let e = (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos();
-                x = rho * x + e;
+                x = rho * x + e.next();
                 x
             })
             .collect()

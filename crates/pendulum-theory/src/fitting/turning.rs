@@ -230,46 +230,22 @@ fn edge_crest(t: &[f64], y: &[f64], t0: f64, slack: f64, side: f64) -> Option<f6
     if m < 5 || slack.is_nan() || slack <= 0.0 {
         return None;
     }
-    let u: Vec<f64> = t.iter().map(|ti| ti - t0).collect();
-    let (mut s, mut r) = ([0.0_f64; 5], [0.0_f64; 3]);
-    for (&ui, &yi) in u.iter().zip(y) {
-        let mut p = 1.0;
-        for (k, sk) in s.iter_mut().enumerate() {
-            *sk += p;
-            if k < 3 {
-                r[k] += p * yi;
-            }
-            p *= ui;
-        }
-    }
-    let a = [[s[0], s[1], s[2]], [s[1], s[2], s[3]], [s[2], s[3], s[4]]];
-    let det3 = |m: [[f64; 3]; 3]| {
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
-    };
-    let d = det3(a);
-    if d == 0.0 || !d.is_finite() {
-        return None;
-    }
-    let solve = |k: usize| {
-        let mut mk = a;
-        for row in 0..3 {
-            mk[row][k] = r[row];
-        }
-        det3(mk) / d
-    };
-    let (c0, c1, c2) = (solve(0), solve(1), solve(2));
+    let p = Parabola::fit(t, y, t0)?;
+    let [c0, c1, c2] = p.c;
     if side * c2 >= 0.0 {
         return None;
     }
-    let rss: f64 = u
+    let rss: f64 = t
         .iter()
         .zip(y)
-        .map(|(&ui, &yi)| (yi - c0 - c1 * ui - c2 * ui * ui).powi(2))
+        .map(|(&ti, &yi)| {
+            let u = ti - t0;
+            (yi - c0 - c1 * u - c2 * u * u).powi(2)
+        })
         .sum();
     // (XᵀX)⁻¹ at (1, 1): its cofactor over the determinant.
-    let inverse_11 = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) / d;
+    let a = p.normal;
+    let inverse_11 = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) / p.det;
     let c1_se = (rss / (m - 3) as f64 * inverse_11).max(0.0).sqrt();
     let vertex_error = c1_se / (2.0 * c2.abs());
     (vertex_error <= 4.0 * slack).then_some(vertex_error)
@@ -279,38 +255,7 @@ fn edge_crest(t: &[f64], y: &[f64], t0: f64, slack: f64, side: f64) -> Option<f6
 /// coordinates centred on `t0`; `None` if it does not open towards the
 /// extreme or its vertex falls outside the points by more than `slack` s.
 fn vertex(t: &[f64], y: &[f64], t0: f64, slack: f64) -> Option<(f64, f64)> {
-    // Normal equations of y = c0 + c1 u + c2 u², u = t - t0.
-    let mut s = [0.0_f64; 5];
-    let mut r = [0.0_f64; 3];
-    for (&ti, &yi) in t.iter().zip(y) {
-        let u = ti - t0;
-        let mut p = 1.0;
-        for (k, sk) in s.iter_mut().enumerate() {
-            *sk += p;
-            if k < 3 {
-                r[k] += p * yi;
-            }
-            p *= u;
-        }
-    }
-    let m = [[s[0], s[1], s[2]], [s[1], s[2], s[3]], [s[2], s[3], s[4]]];
-    let det = |m: [[f64; 3]; 3]| {
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
-    };
-    let d = det(m);
-    if d == 0.0 || !d.is_finite() {
-        return None;
-    }
-    let solve = |k: usize| {
-        let mut mk = m;
-        for row in 0..3 {
-            mk[row][k] = r[row];
-        }
-        det(mk) / d
-    };
-    let (c0, c1, c2) = (solve(0), solve(1), solve(2));
+    let [c0, c1, c2] = Parabola::fit(t, y, t0)?.c;
     if c2 == 0.0 {
         return None;
     }
@@ -320,6 +265,57 @@ fn vertex(t: &[f64], y: &[f64], t0: f64, slack: f64) -> Option<(f64, f64)> {
         return None;
     }
     Some((t0 + u, c0 + c1 * u + c2 * u * u))
+}
+
+/// The least-squares parabola `y = c0 + c1 u + c2 u²`, `u = t − t0`, by
+/// its 3×3 normal equations solved with Cramer's rule (centring on `t0`
+/// keeps them well conditioned over a crest's few samples).
+struct Parabola {
+    /// `c0, c1, c2`.
+    c: [f64; 3],
+    /// The normal matrix `XᵀX`.
+    normal: [[f64; 3]; 3],
+    /// Its determinant (finite and not zero).
+    det: f64,
+}
+
+impl Parabola {
+    fn fit(t: &[f64], y: &[f64], t0: f64) -> Option<Self> {
+        let (mut s, mut r) = ([0.0_f64; 5], [0.0_f64; 3]);
+        for (&ti, &yi) in t.iter().zip(y) {
+            let u = ti - t0;
+            let mut p = 1.0;
+            for (k, sk) in s.iter_mut().enumerate() {
+                *sk += p;
+                if k < 3 {
+                    r[k] += p * yi;
+                }
+                p *= u;
+            }
+        }
+        let normal = [[s[0], s[1], s[2]], [s[1], s[2], s[3]], [s[2], s[3], s[4]]];
+        let det3 = |m: [[f64; 3]; 3]| {
+            m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+                - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+                + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+        };
+        let det = det3(normal);
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        let solve = |k: usize| {
+            let mut mk = normal;
+            for row in 0..3 {
+                mk[row][k] = r[row];
+            }
+            det3(mk) / det
+        };
+        Some(Self {
+            c: [solve(0), solve(1), solve(2)],
+            normal,
+            det,
+        })
+    }
 }
 
 #[cfg(test)]

@@ -261,19 +261,28 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
         }
         previous = r.noise;
     }
-    let reasons: Vec<String> = s
-        .rows
-        .iter()
-        .filter_map(|r| {
-            Some(format!(
-                "τ = {} s: {}",
-                num(r.tau_s, 4),
-                r.no_interval_reason?
-            ))
-        })
-        .collect();
+    // Rows without an interval, runs of one reason named once.
+    let mut reasons: Vec<(f64, f64, &str)> = Vec::new();
+    for r in &s.rows {
+        match (r.no_interval_reason, reasons.last_mut()) {
+            (Some(why), Some((_, last, said))) if *said == why => *last = r.tau_s,
+            (Some(why), _) => reasons.push((r.tau_s, r.tau_s, why)),
+            (None, _) => {}
+        }
+    }
     if !reasons.is_empty() {
-        out.push_str(&format!("No interval at {}.\n", reasons.join("; ")));
+        let said: Vec<String> = reasons
+            .iter()
+            .map(|&(first, last, why)| {
+                let taus = if first == last {
+                    format!("τ = {} s", num(first, 4))
+                } else {
+                    format!("τ = {} to {} s", num(first, 4), num(last, 4))
+                };
+                format!("{taus}: {why}")
+            })
+            .collect();
+        out.push_str(&format!("No interval at {}.\n", said.join("; ")));
     }
     if let Some(b) = &s.best {
         out.push_str(&format!(
@@ -347,7 +356,8 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
     out
 }
 
-/// The deviations against τ, log–log, with the Allan deviation's interval.
+/// The deviations against τ, log–log, the Allan deviation's interval as
+/// a bar on its point (none where a periodic signal rules).
 fn figure(s: &Stability) -> Figure {
     let pick = |f: &dyn Fn(&StabilityRow) -> Option<f64>| -> Vec<(f64, f64)> {
         s.rows
@@ -360,15 +370,24 @@ fn figure(s: &Stability) -> Figure {
         "averaging time τ (s)",
         "deviation (fractional frequency)",
         vec![
-            Series::line("ADEV 68% interval, low", pick(&|r| r.adev_low))
-                .colored(0)
-                .light(),
-            Series::line("ADEV 68% interval, high", pick(&|r| r.adev_high))
-                .colored(0)
-                .light(),
-            Series::line("MDEV", pick(&|r| r.mdev)).colored(1),
-            Series::line("HDEV", pick(&|r| r.hdev)).colored(2),
-            Series::dots("ADEV (overlapping)", pick(&|r| r.adev)).colored(0),
+            Series::line("MDEV", pick(&|r| r.mdev)).colored(1).light(),
+            Series::line("HDEV", pick(&|r| r.hdev)).colored(2).light(),
+            Series::dots_with_bars(
+                "ADEV (overlapping), 68% interval as a bar",
+                s.rows
+                    .iter()
+                    .filter_map(|r| {
+                        let a = r.adev?;
+                        Some((
+                            r.tau_s,
+                            a,
+                            r.adev_low.unwrap_or(a),
+                            r.adev_high.unwrap_or(a),
+                        ))
+                    })
+                    .collect(),
+            )
+            .colored(0),
         ],
     )
     .log_log();

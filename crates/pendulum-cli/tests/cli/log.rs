@@ -186,3 +186,41 @@ fn a_real_chronometer_gives_its_mean_rate() {
     // be far too small.
     assert!(se > 0.02 && se < 0.2, "{se}");
 }
+
+/// A daily cycle in 30 days of offsets: the rows it rules carry no
+/// interval, and the text says why once for the run of them, not once a
+/// row; the figure draws ADEV's interval as a bar on its point, not as
+/// two more lines in the legend.
+#[test]
+fn a_daily_cycle_is_said_once_and_intervals_are_bars() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut noise = Normal(0x5eed_da7);
+    let mut text = String::from("time_s,offset_s\n");
+    let mut x = 0.0;
+    for i in 0..30 * 144 {
+        let t = 600.0 * i as f64;
+        // 0.5 s/day of daily swing in the rate, white FM of 0.02 s/day.
+        let rate = 0.5 * (std::f64::consts::TAU * t / 86_400.0).sin() + 0.02 * noise.next();
+        x += rate * 600.0 / 86_400.0;
+        text.push_str(&format!("{t},{x:.9}\n"));
+    }
+    let path = write(dir.path(), "daily.csv", &text);
+    let plot = dir.path().join("daily.svg");
+    let out = pendulum()
+        .args(["stability", &path, "--plot", plot.to_str().unwrap()])
+        .assert()
+        .success()
+        .get_output()
+        .clone();
+    let text = String::from_utf8(out.stdout).unwrap();
+    let reasons: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with("No interval at"))
+        .collect();
+    assert_eq!(reasons.len(), 1, "{text}");
+    assert_eq!(reasons[0].matches("periodic signal").count(), 1, "{text}");
+    assert!(reasons[0].contains(" to "), "{text}");
+    let svg = std::fs::read_to_string(&plot).unwrap();
+    assert!(svg.contains("68% interval as a bar"), "legend");
+    assert!(!svg.contains("interval, low"), "legend");
+}

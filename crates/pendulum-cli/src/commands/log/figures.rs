@@ -225,16 +225,29 @@ fn stability(r: &LogResult) -> Figure {
     } else {
         &r.residual_stability
     };
-    let mut runs: Vec<(pendulum_theory::stability::Noise, Vec<(f64, f64)>)> = Vec::new();
+    // A run is broken by a row of another noise or of none (a periodic
+    // signal rules there): a guide drawn across such a row would average
+    // points that do not follow its slope. Rows whose noise is carried
+    // from the row before extend the guide without placing it.
+    type Run = (pendulum_theory::stability::Noise, Vec<(f64, f64)>, f64);
+    let mut runs: Vec<Run> = Vec::new();
+    let mut open = false;
     for s in noisy {
-        if let (Some(n), Some(a), false) = (s.noise, s.adev, s.noise_carried) {
-            match runs.last_mut() {
-                Some((m, points)) if *m == n => points.push((s.tau_s, a)),
-                _ => runs.push((n, vec![(s.tau_s, a)])),
+        match (s.noise, s.adev, s.noise_carried, runs.last_mut()) {
+            (Some(n), Some(a), false, Some((m, points, end))) if open && *m == n => {
+                points.push((s.tau_s, a));
+                *end = s.tau_s;
             }
+            (Some(n), Some(a), false, _) => {
+                runs.push((n, vec![(s.tau_s, a)], s.tau_s));
+                open = true;
+            }
+            (Some(_), Some(_), true, Some((_, _, end))) if open => *end = s.tau_s,
+            (Some(_), Some(_), true, _) => {}
+            _ => open = false,
         }
     }
-    for (noise, points) in runs.iter().filter(|(_, p)| p.len() >= 2) {
+    for (noise, points, end) in runs.iter().filter(|(_, p, _)| p.len() >= 2) {
         let slope = f64::from((-noise.alpha() - 1).max(-2)) / 2.0;
         let centre = points
             .iter()
@@ -242,8 +255,7 @@ fn stability(r: &LogResult) -> Figure {
             .sum::<f64>()
             / points.len() as f64;
         let guide = |t: f64| (t, (centre + slope * t.ln()).exp());
-        let first = points[0].0;
-        let last = points[points.len() - 1].0;
+        let (first, last) = (points[0].0, *end);
         series.push(
             Series::line(
                 format!("{}: slope τ^{}", noise.name(), num(slope, 2)),

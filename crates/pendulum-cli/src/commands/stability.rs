@@ -356,6 +356,22 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
     out
 }
 
+/// Each row's (τ, ADEV, interval low, high), a point without a bar where
+/// the row has no interval: the figures of `stability` and `log` draw them.
+pub(crate) fn adev_bars(rows: &[StabilityRow]) -> Vec<(f64, f64, f64, f64)> {
+    rows.iter()
+        .filter_map(|r| {
+            let a = r.adev?;
+            Some((
+                r.tau_s,
+                a,
+                r.adev_low.unwrap_or(a),
+                r.adev_high.unwrap_or(a),
+            ))
+        })
+        .collect()
+}
+
 /// The deviations against τ, log–log, the Allan deviation's interval as
 /// a bar on its point (none where a periodic signal rules).
 fn figure(s: &Stability) -> Figure {
@@ -374,18 +390,7 @@ fn figure(s: &Stability) -> Figure {
             Series::line("HDEV", pick(&|r| r.hdev)).colored(2).light(),
             Series::dots_with_bars(
                 "ADEV (overlapping), 68% interval as a bar",
-                s.rows
-                    .iter()
-                    .filter_map(|r| {
-                        let a = r.adev?;
-                        Some((
-                            r.tau_s,
-                            a,
-                            r.adev_low.unwrap_or(a),
-                            r.adev_high.unwrap_or(a),
-                        ))
-                    })
-                    .collect(),
+                adev_bars(&s.rows),
             )
             .colored(0),
         ],

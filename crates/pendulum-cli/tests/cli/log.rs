@@ -194,7 +194,7 @@ fn a_real_chronometer_gives_its_mean_rate() {
 #[test]
 fn a_daily_cycle_is_said_once_and_intervals_are_bars() {
     let dir = tempfile::tempdir().unwrap();
-    let mut noise = Normal(0x5eed_da7);
+    let mut noise = Normal(0x05ee_dda7);
     let mut text = String::from("time_s,offset_s\n");
     let mut x = 0.0;
     for i in 0..30 * 144 {

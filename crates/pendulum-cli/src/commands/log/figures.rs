@@ -3,11 +3,11 @@
 //! weather term, the stability with its intervals and noise slopes, the
 //! spectrum with its lines, and the folds over the wheels' turns.
 
+use crate::commands::stability::adev_bars;
 use crate::error::CliError;
 use crate::output::num;
 use crate::plot::{render, thin, Figure, Panel, Series, Target, TIME_AXIS};
 use pendulum_theory::clock_log::{LogResult, ModelTerm, Source};
-use pendulum_theory::stability::StabilityRow;
 use std::path::{Path, PathBuf};
 
 /// The figures' names.
@@ -202,19 +202,6 @@ fn weather(r: &LogResult) -> Figure {
 /// ADEV with its 68% intervals, before and after the model, with the
 /// slope of each noise found.
 fn stability(r: &LogResult) -> Figure {
-    let with_bars = |rows: &[StabilityRow]| -> Vec<(f64, f64, f64, f64)> {
-        rows.iter()
-            .filter_map(|s| {
-                let a = s.adev?;
-                Some((
-                    s.tau_s,
-                    a,
-                    s.adev_low.unwrap_or(a),
-                    s.adev_high.unwrap_or(a),
-                ))
-            })
-            .collect()
-    };
     let mut series = Vec::new();
     // Each noise's slope through the taus it was found at: ADEV goes as
     // τ^(μ/2), μ = −α − 1 (−2 at most), NIST SP 1065 table 5.
@@ -266,11 +253,11 @@ fn stability(r: &LogResult) -> Figure {
     }
     series.push(Series::dots_with_bars(
         "the log, ADEV with 68% interval",
-        with_bars(&r.stability),
+        adev_bars(&r.stability),
     ));
     series.push(Series::dots_with_bars(
         "after the model",
-        with_bars(&r.residual_stability),
+        adev_bars(&r.residual_stability),
     ));
     Figure {
         panels: vec![Panel::new(

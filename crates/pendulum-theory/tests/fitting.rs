@@ -390,9 +390,33 @@ mod trajectory {
     /// 55-80% of 100 seeds for every model that reports g there (the
     /// nonlinear one; the CLI does not report the linear model's g above
     /// 5°). The record starts at a random point of the first swing, so the
-    /// release phase varies as in real recordings.
+    /// release phase varies as in real recordings. Each fit takes some 3 s:
+    /// CI runs the first 30 seeds (`g_coverage_ci_subset`), the 100 are
+    /// run before a release with `-- --ignored`.
     #[test]
+    #[ignore = "the 100 seeds of issue 10 (about 3 CPU-minutes): cargo test --release --test fitting -- --ignored"]
     fn nonlinear_g_coverage_over_100_seeds() {
+        let (covered, phases_in_range) = g_coverage(0..100);
+        assert!((55..=80).contains(&covered), "coverage {covered}");
+        assert_eq!(phases_in_range, 100);
+    }
+
+    /// The first 30 of those seeds: a band 25 points wide is too narrow
+    /// for 30, so the count must be what a 68.3% coverage gives (two-sided
+    /// binomial at 1%, normal approximation with continuity), and every
+    /// phase in its range.
+    #[test]
+    fn g_coverage_ci_subset() {
+        let (covered, phases_in_range) = g_coverage(0..30);
+        let (k, n, p) = (covered as f64, 30.0, 0.6827);
+        let z = ((k - n * p).abs() - 0.5) / (n * p * (1.0 - p)).sqrt();
+        assert!(z < 2.576, "coverage {covered} of 30 (z = {z:.2})");
+        assert_eq!(phases_in_range, 30);
+    }
+
+    /// Of the seeds given: how many g intervals hold the truth, and how
+    /// many phases fall in [-π/2, 2π).
+    fn g_coverage(seeds: std::ops::Range<u64>) -> (usize, usize) {
         let pendulum = Pendulum::with_standard_gravity(0.5).unwrap();
         let model = Model::new(pendulum, Damping::from_zeta(0.002).unwrap(), 0.0, 0.0).unwrap();
         let options = Options {
@@ -410,11 +434,12 @@ mod trajectory {
         )
         .unwrap();
         // The seeds in two halves on two threads (each fit is independent).
-        let seeds: Vec<u64> = (0..100).collect();
+        let seeds: Vec<u64> = seeds.collect();
+        let half = seeds.len().div_ceil(2).max(1);
         let samples = &collect.0;
         let (covered, phases_in_range) = std::thread::scope(|scope| {
             let halves: Vec<_> = seeds
-                .chunks(50)
+                .chunks(half)
                 .map(|chunk| {
                     scope.spawn(move || {
                         let (mut covered, mut phases_in_range) = (0, 0);
@@ -451,10 +476,10 @@ mod trajectory {
                 .fold((0, 0), |a, b| (a.0 + b.0, a.1 + b.1))
         });
         eprintln!(
-            "nonlinear g 1-sigma coverage {covered} of 100; phase in [-π/2, 2π) {phases_in_range}"
+            "nonlinear g 1-sigma coverage {covered} of {}; phase in [-π/2, 2π) {phases_in_range}",
+            seeds.len()
         );
-        assert!((55..=80).contains(&covered), "coverage {covered}");
-        assert_eq!(phases_in_range, 100);
+        (covered, phases_in_range)
     }
 }
 

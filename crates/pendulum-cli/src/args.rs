@@ -490,6 +490,8 @@ pub struct ListenArgs {
     /// Write the windows of --every to this CSV file.
     #[arg(long, value_name = "OUT.csv", requires = "every")]
     pub windows: Option<OutputPath>,
+    #[command(flatten)]
+    pub advice: AdviceArgs,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -854,6 +856,8 @@ pub struct FitBeatsArgs {
     /// Plot the data, the fitted curves and the residuals to this file (.svg or .png).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<OutputPath>,
+    #[command(flatten)]
+    pub advice: AdviceArgs,
     /// Print one JSON object.
     #[arg(long)]
     pub json: bool,
@@ -1004,6 +1008,52 @@ pub struct PendulumArgs {
     /// of --length: its equivalent simple length is used.
     #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
     pub design: Option<InputPath>,
+}
+
+/// The rating nut's thread: shared by `regulate` and the advice.
+#[derive(Debug, Args)]
+pub struct NutArgs {
+    /// The rating nut's thread pitch (e.g. 0.7mm), for its turns.
+    #[arg(long, allow_hyphen_values = true, value_name = "P")]
+    pub nut_pitch: Option<Length>,
+    /// The rating nut's threads per inch, for its turns.
+    #[arg(long, allow_hyphen_values = true, value_name = "N")]
+    pub nut_tpi: Option<ThreadsPerInch>,
+    /// Divisions engraved round the nut.
+    #[arg(long, allow_hyphen_values = true, value_name = "N")]
+    pub nut_divisions: Option<u32>,
+}
+
+impl NutArgs {
+    /// The thread as the library takes it.
+    pub fn nut(&self) -> pendulum_theory::compound::regulate::Nut {
+        pendulum_theory::compound::regulate::Nut {
+            pitch: self.nut_pitch.map(|p| p.0),
+            tpi: self.nut_tpi.map(|t| t.0),
+            divisions: self.nut_divisions,
+        }
+    }
+}
+
+/// What is known of the clock, for the advice that ends `listen` and
+/// `fit beats`: every flag optional.
+#[derive(Debug, Args)]
+#[command(next_help_heading = "Advice (how to move the bob, the nut and the crutch)")]
+pub struct AdviceArgs {
+    /// The pendulum's length [default: the simple pendulum of the beat, said].
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
+    pub length: Option<Length>,
+    /// The pendulum designed as parts (TOML), in place of --length.
+    #[arg(long, value_name = "FILE.toml", conflicts_with = "length")]
+    pub design: Option<InputPath>,
+    #[command(flatten)]
+    pub nut: NutArgs,
+    /// From the pendulum's pivot down to the crutch's pin, for the move there.
+    #[arg(long, allow_hyphen_values = true, value_name = "D")]
+    pub crutch: Option<Length>,
+    /// The swing either side as you see it (degrees unless a unit is given) [default: heard with --lift-angle where a clock can swing so, else 2.5° (a balance: 270°), said].
+    #[arg(long, allow_hyphen_values = true, value_name = "A")]
+    pub amplitude: Option<Angle>,
 }
 
 /// One way to give viscous damping (at most one; `damped` needs one).
@@ -1204,19 +1254,31 @@ pub struct RegulateArgs {
     /// The clock's rate now (positive: gaining), e.g. +12s/day or -30.
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub rate: RatePerDay,
-    #[command(flatten)]
-    pub pendulum: PendulumArgs,
+    /// Pendulum length (e.g. 0.99362m, 994mm, 39.1in).
+    #[arg(
+        long,
+        value_name = "L",
+        allow_hyphen_values = true,
+        required_unless_present_any = ["design", "bph"]
+    )]
+    pub length: Option<Length>,
+    /// A pendulum designed as parts (TOML; see examples/*.toml), in place
+    /// of --length: its equivalent simple length is used.
+    #[arg(long, value_name = "FILE.toml", conflicts_with_all = ["length", "bph"])]
+    pub design: Option<InputPath>,
+    /// The clock's beat rate, beats an hour, in place of --length: the
+    /// simple pendulum of that beat is used (3600: a seconds pendulum).
+    #[arg(
+        long,
+        value_name = "B",
+        allow_hyphen_values = true,
+        conflicts_with = "length"
+    )]
+    pub bph: Option<BeatsPerHour>,
     #[arg(long, value_name = "NAME", help = with_default("The part the nut moves (with what rests on it)", format_args!("the design's threaded part, else {}, else the bob", pendulum_theory::compound::regulate::DEFAULT_PART)))]
     pub part: Option<String>,
-    /// The rating nut's thread pitch (e.g. 0.7mm).
-    #[arg(long, allow_hyphen_values = true, value_name = "P")]
-    pub nut_pitch: Option<Length>,
-    /// The rating nut's threads per inch.
-    #[arg(long, allow_hyphen_values = true, value_name = "N")]
-    pub nut_tpi: Option<ThreadsPerInch>,
-    /// Divisions engraved round the nut.
-    #[arg(long, allow_hyphen_values = true, value_name = "N")]
-    pub nut_divisions: Option<u32>,
+    #[command(flatten)]
+    pub nut: NutArgs,
     /// Where a regulating tray sits below the pivot [default: a third of the length] (with --design).
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub tray: Option<Length>,

@@ -683,15 +683,70 @@ fn fit_photogate(
     }))
 }
 
+/// What the caller knows of the clock, for the advice (the CLI's
+/// `--length`, `--design`, `--nut-*`, `--crutch`, `--amplitude`), checked
+/// as the CLI checks it before anything is measured.
+#[allow(clippy::too_many_arguments)]
+fn known_of(
+    length: Option<f64>,
+    parts: Option<&str>,
+    nut_pitch: Option<f64>,
+    nut_tpi: Option<f64>,
+    nut_divisions: Option<i64>,
+    crutch: Option<f64>,
+    amplitude: Option<f64>,
+) -> PyResult<pendulum_theory::advice::Known> {
+    use pendulum_theory::compound::regulate::{Nut, Regulated};
+    let pendulum = match (length, parts) {
+        (Some(_), Some(_)) => {
+            return Err(PyValueError::new_err(
+                "length: give the length or the design's parts, not both",
+            ))
+        }
+        (Some(l), None) => Some(Regulated::Length(l)),
+        (None, Some(p)) => Some(Regulated::Design(design_of(p)?, None)),
+        (None, None) => None,
+    };
+    let known = pendulum_theory::advice::Known {
+        pendulum,
+        nut: Nut {
+            pitch: nut_pitch,
+            tpi: nut_tpi,
+            divisions: nut_divisions.map(count::<u32>),
+        },
+        crutch_m: crutch,
+        amplitude_rad: amplitude,
+    };
+    pendulum_theory::advice::check(&known).map_err(|r| PyValueError::new_err(r.to_string()))?;
+    Ok(known)
+}
+
 /// The beat-log analysis (the CLI's `fit beats`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, bph, period))]
+#[pyo3(signature = (time, bph, period, length=None, parts=None, nut_pitch=None, nut_tpi=None, nut_divisions=None, crutch=None, amplitude=None))]
+#[allow(clippy::too_many_arguments)]
 fn fit_beats(
     py: Python<'_>,
     time: In<'_>,
     bph: Option<f64>,
     period: Option<f64>,
+    length: Option<f64>,
+    parts: Option<&str>,
+    nut_pitch: Option<f64>,
+    nut_tpi: Option<f64>,
+    nut_divisions: Option<i64>,
+    crutch: Option<f64>,
+    amplitude: Option<f64>,
 ) -> PyResult<String> {
+    let known = known_of(
+        length,
+        parts,
+        nut_pitch,
+        nut_tpi,
+        nut_divisions,
+        crutch,
+        amplitude,
+    )?;
     use pendulum_theory::fitting::beat_log::{analyse, Nominal};
     let time = values(&time, "time")?;
     let nominal = match (bph, period) {
@@ -700,7 +755,12 @@ fn fit_beats(
         (None, Some(p)) => Some(Nominal::Period(p)),
         (None, None) => None,
     };
-    answer(py.detach(|| analyse(time, nominal)))
+    answer(py.detach(|| {
+        analyse(time, nominal).and_then(|mut beats| {
+            beats.advise(&known, None, None, None)?;
+            Ok(beats)
+        })
+    }))
 }
 
 /// The tracked-swing analysis (the CLI's `fit trajectory`) as JSON.
@@ -943,7 +1003,7 @@ fn clock<'py>(
 /// Listening to a recording in memory (the CLI's `listen`) as JSON, and
 /// the ticks kept (time_s, side, amplitude).
 #[pyfunction]
-#[pyo3(signature = (samples, sample_rate, bph, period, sample_rate_error_ppm, lift_angle, oscillator=None, every=None))]
+#[pyo3(signature = (samples, sample_rate, bph, period, sample_rate_error_ppm, lift_angle, oscillator=None, every=None, length=None, parts=None, nut_pitch=None, nut_tpi=None, nut_divisions=None, crutch=None, amplitude=None))]
 #[allow(clippy::type_complexity, clippy::too_many_arguments)]
 fn listen<'py>(
     py: Python<'py>,
@@ -955,7 +1015,23 @@ fn listen<'py>(
     lift_angle: Option<f64>,
     oscillator: Option<&str>,
     every: Option<f64>,
+    length: Option<f64>,
+    parts: Option<&str>,
+    nut_pitch: Option<f64>,
+    nut_tpi: Option<f64>,
+    nut_divisions: Option<i64>,
+    crutch: Option<f64>,
+    amplitude: Option<f64>,
 ) -> PyResult<(String, [Array1<'py>; 3])> {
+    let known = known_of(
+        length,
+        parts,
+        nut_pitch,
+        nut_tpi,
+        nut_divisions,
+        crutch,
+        amplitude,
+    )?;
     use pendulum_theory::fitting::beat_log::Nominal;
     use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput, Oscillator};
     let samples = samples
@@ -975,7 +1051,12 @@ fn listen<'py>(
             .map_err(|r| PyValueError::new_err(r.to_string()))?,
         every,
     };
-    let result = py.detach(|| listen_to_samples(samples, sample_rate, &input));
+    let result = py.detach(|| {
+        listen_to_samples(samples, sample_rate, &input).and_then(|mut heard| {
+            heard.advise(&known)?;
+            Ok(heard)
+        })
+    });
     let ticks = result.as_ref().map(|r| r.ticks.clone()).unwrap_or_default();
     let text = answer(result)?;
     let column = |f: &dyn Fn(&pendulum_theory::listening::detect::Tick) -> f64| {
@@ -1238,7 +1319,7 @@ fn design(
 
 /// Regulation (the CLI's `regulate`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (rate, length, parts, part, nut_pitch, nut_tpi, nut_divisions, tray))]
+#[pyo3(signature = (rate, length, parts, part, nut_pitch, nut_tpi, nut_divisions, tray, bph=None))]
 #[allow(clippy::too_many_arguments)]
 fn regulate(
     rate: f64,
@@ -1249,14 +1330,19 @@ fn regulate(
     nut_tpi: Option<f64>,
     nut_divisions: Option<i64>,
     tray: Option<f64>,
+    bph: Option<f64>,
 ) -> PyResult<String> {
     use pendulum_theory::compound::regulate::{regulate, Nut, Regulated};
-    let pendulum = match (length, parts) {
-        (Some(l), None) => Regulated::Length(l),
-        (None, Some(p)) => Regulated::Design(design_of(p)?, part),
+    let pendulum = match (length, parts, bph) {
+        (Some(l), None, None) => Regulated::Length(l),
+        (None, Some(p), None) => Regulated::Design(design_of(p)?, part),
+        (None, None, Some(b)) => Regulated::Length(
+            pendulum_theory::advice::length_for_bph(b)
+                .map_err(|r| PyValueError::new_err(r.to_string()))?,
+        ),
         _ => {
             return Err(PyValueError::new_err(
-                "length: give the length or the design's parts, one of them",
+                "length: give the length, the design's parts or the bph, one of them",
             ))
         }
     };

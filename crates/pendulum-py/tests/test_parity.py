@@ -325,7 +325,17 @@ def _beats_cases():
         "milliseconds": (t * 1e-4, {}),
         "gate_off_centre": (gate_off_centre(), {"period": 1.18}),
         "gate_off_centre_holes": (np.delete(gate_off_centre(), [41, 300, 301]), {}),
+        # The advice, with what is known of the clock (issue 45).
+        "advice_known": (t, {"bph": 3600.0, "length": 0.994, "nut_tpi": 32.0,
+                             "crutch": 0.18, "amplitude": 0.05}),
+        "advice_out_of_beat": (beats(beat_error=0.02), {"bph": 3600.0, "nut_pitch": 0.0007}),
+        "advice_watch": (beats(beat=0.125, n=4000, beat_error=0.001), {"bph": 28800.0}),
+        "advice_nut_tpi_zero": (t, {"nut_tpi": 0.0}),
+        "advice_crutch_negative": (t, {"crutch": -0.1}),
+        "advice_amplitude_huge": (t, {"amplitude": 4.0}),
     }
+BEAT_UNITS = {"period": "s", "length": "m", "nut_pitch": "m", "crutch": "m",
+              "amplitude": "rad"}
 
 
 BEATS = _beats_cases()
@@ -338,7 +348,7 @@ def test_fit_beats(name, tmp_path):
     write_csv(path, ["time_s"], [t])
     args = ["fit", "beats", str(path), "--json"]
     for k, v in kw.items():
-        args += [f"--{k}", cli_value(v, "s" if k == "period" else "")]
+        args += [f"--{k.replace('_', '-')}", cli_value(v, BEAT_UNITS.get(k, ""))]
     check(args, lambda: pt.fit_beats(t, **kw), reader_refuses=t.size == 0)
 
 
@@ -1296,9 +1306,12 @@ REGULATE = {
     "tray_at_pivot": (12.0, {"parts": WITH_NUT, "tray": 0.0}),
     "no_such_part": (12.0, {"parts": WITH_NUT, "part": "pendulum"}),
     "length_zero": (12.0, {"length": 0.0}),
+    "bph": (-30.0, {"bph": 3600.0, "nut_tpi": 32.0}),
+    "bph_of_a_watch": (3.0, {"bph": 20000.0}),
+    "bph_too_slow": (3.0, {"bph": 100.0}),
 }
 REGULATE_UNITS = {"length": "m", "nut_pitch": "m", "nut_tpi": "", "nut_divisions": "",
-                  "tray": "m", "part": ""}
+                  "tray": "m", "part": "", "bph": ""}
 
 
 @pytest.mark.parametrize("name", sorted(REGULATE))

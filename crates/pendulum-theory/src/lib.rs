@@ -22,6 +22,8 @@
 //!   sum them.
 //! * [`gravity`]: WGS 84 normal gravity with the free-air correction.
 //! * [`listening`]: the ticks of a sound recording, and a synthetic one.
+//! * [`advice`]: a measured rate and beat error turned into the moves of
+//!   the bob, the nut and the crutch, with their directions.
 //! * [`stability`]: a clock's frequency stability as NIST SP 1065 computes
 //!   it: Allan, modified Allan, time and Hadamard deviations.
 //! * [`pendulum`]: the types that say what a number is: a [`Pendulum`]
@@ -43,6 +45,7 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod advice;
 pub mod air;
 pub mod analysis;
 pub mod averaging;
@@ -64,6 +67,7 @@ pub mod lift;
 pub mod listening;
 pub mod moisture;
 pub mod oscillating_flow;
+pub mod oscillator;
 pub mod pendulum;
 pub mod period;
 pub mod report;

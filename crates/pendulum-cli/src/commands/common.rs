@@ -217,3 +217,31 @@ pub fn nominal(
         (None, None) => None,
     }
 }
+
+/// What the user said of the clock, for the advice.
+pub fn known(args: &crate::args::AdviceArgs) -> Result<pendulum_theory::advice::Known, CliError> {
+    use pendulum_theory::compound::regulate::Regulated;
+    let pendulum = match (&args.design, args.length) {
+        (Some(path), _) => Some(Regulated::Design(crate::design::read_design(path)?, None)),
+        (None, Some(l)) => Some(Regulated::Length(l.0)),
+        (None, None) => None,
+    };
+    Ok(pendulum_theory::advice::Known {
+        pendulum,
+        nut: args.nut.nut(),
+        crutch_m: args.crutch.map(|c| c.0),
+        amplitude_rad: args.amplitude.map(|a| a.0),
+    })
+}
+
+/// The advice as the text's last lines: "What to do:" and one line each.
+pub fn advice_text(advice: &[pendulum_theory::advice::Advice]) -> String {
+    if advice.is_empty() {
+        return String::new();
+    }
+    let mut out = String::from("What to do:\n");
+    for a in advice {
+        out.push_str(&format!("  - {}\n", a.sentence()));
+    }
+    out
+}

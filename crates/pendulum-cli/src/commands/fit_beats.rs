@@ -80,6 +80,8 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
     let nominal = common::nominal(args.period, args.bph);
+    let known = common::known(&args.advice)?;
+    pendulum_theory::advice::check(&known).map_err(|e| common::refused(&e))?;
     let file = args.file.display().to_string();
     let refused = |r: &Refusal, line: Option<u64>| {
         CliError::refused(r, &[], &|at, reason| match (at, line) {
@@ -203,6 +205,10 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
     } else {
         (log.finish().map_err(|r| refused(&r, None))?, None)
     };
+    let mut analysis = analysis;
+    analysis
+        .advise(&known, None, None, None)
+        .map_err(|e| common::refused(&e))?;
     let a = &analysis;
     if let Some(target) = &plot {
         let mean = vec![
@@ -350,5 +356,6 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
             &rows,
         ));
     }
+    out.push_str(&common::advice_text(&a.advice));
     Ok(out)
 }

@@ -5,24 +5,26 @@ use super::common;
 use crate::args::RegulateArgs;
 use crate::error::CliError;
 use crate::output::{self, num, Summary};
-use pendulum_theory::compound::regulate::{regulate, Nut, Regulated};
+use pendulum_theory::compound::regulate::{regulate, Regulated};
 
 pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
     let r = args.rate.0;
-    let pendulum = match &args.pendulum.design {
-        Some(path) => Regulated::Design(crate::design::read_design(path)?, args.part.clone()),
-        None => Regulated::Length(
-            args.pendulum
-                .length
-                .ok_or_else(|| CliError::flag("--length", "give --length or --design"))?
-                .0,
+    let pendulum = match (&args.design, args.length, args.bph) {
+        (Some(path), _, _) => {
+            Regulated::Design(crate::design::read_design(path)?, args.part.clone())
+        }
+        (None, Some(l), _) => Regulated::Length(l.0),
+        (None, None, Some(b)) => Regulated::Length(
+            pendulum_theory::advice::length_for_bph(b.0).map_err(|e| common::refused(&e))?,
         ),
+        (None, None, None) => {
+            return Err(CliError::flag(
+                "--length",
+                "give --length, --design or --bph",
+            ))
+        }
     };
-    let nut = Nut {
-        pitch: args.nut_pitch.map(|p| p.0),
-        tpi: args.nut_tpi.map(|t| t.0),
-        divisions: args.nut_divisions,
-    };
+    let nut = args.nut.nut();
     let tray = args.tray.map(|t| t.0);
     let result = regulate(&pendulum, r, nut, tray).map_err(|e| common::refused(&e))?;
     if args.json {
@@ -47,12 +49,28 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
         ),
     )
     .row("Bob", format!("{way} it {} mm", num(shift.abs() * 1e3, 4)));
+    if let (None, None, Some(b)) = (&args.design, args.length, args.bph) {
+        s.row(
+            "Figured for",
+            format!(
+                "the simple pendulum of {} beats an hour, {} m (give --length or --design if \
+                 yours differs)",
+                num(b.0, 6),
+                num(result.equivalent_length_m, 5)
+            ),
+        );
+    }
     if let Some(t) = turns {
         let mut nut = format!(
-            "{} turns {} ({} the bob)",
+            "{} turns {} ({} the bob): {} seen from below",
             num(t.abs(), 4),
             if shift >= 0.0 { "down" } else { "up" },
-            if shift >= 0.0 { "lowering" } else { "raising" }
+            if shift >= 0.0 { "lowering" } else { "raising" },
+            if shift >= 0.0 {
+                "anticlockwise"
+            } else {
+                "clockwise"
+            }
         );
         if let Some(d) = divisions {
             nut.push_str(&format!(", {} divisions", num(d.abs(), 4)));

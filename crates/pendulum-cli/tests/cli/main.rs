@@ -1,6 +1,7 @@
 //! The real `pendulum` binary, run as a user would run it: one test target,
 //! one module per command family.
 
+mod advice;
 mod audit;
 mod clock;
 mod damped;

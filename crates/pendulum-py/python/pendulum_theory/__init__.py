@@ -405,14 +405,29 @@ def fit_trajectory(time, angle=None, model="auto", *, angular_velocity=None, len
     return FitResult(d, d["parameters"], d["standard_errors"], d["model"])
 
 
-def fit_beats(time, *, bph=None, period=None):
+def _known(length, parts, nut_pitch, nut_tpi, nut_divisions, crutch, amplitude):
+    """The advice's keywords, as the native calls take them."""
+    return dict(length=_number(length), parts=None if parts is None else _parts(parts),
+                nut_pitch=_number(nut_pitch), nut_tpi=_number(nut_tpi),
+                nut_divisions=_count(nut_divisions), crutch=_number(crutch),
+                amplitude=_number(amplitude))
+
+
+def fit_beats(time, *, bph=None, period=None, length=None, parts=None, nut_pitch=None,
+              nut_tpi=None, nut_divisions=None, crutch=None, amplitude=None):
     """What a timegrapher shows, from one time per beat (s): the CLI's
     ``fit beats``, the same library call. The rate is against ``bph`` or
     ``period`` (s), else the nearest standard beat within 2%. Returns the
     CLI's JSON as a dict (beats, mean_beat_s, beats_per_hour,
     nominal_beat_s, rate_s_per_day, beat_error_ms, jitter_ms, repaired,
-    allan_deviation)."""
-    d = _json.loads(_native.fit_beats(_array(time), _number(bph), _number(period)))
+    allan_deviation, advice). ``advice`` is what to do (the bob, the nut,
+    the crutch), figured with what is known of the clock: ``length`` (m)
+    or a design's ``parts``, the nut's ``nut_pitch`` (m) or ``nut_tpi``,
+    ``nut_divisions``, ``crutch`` (m, the crutch pin below the pivot) and
+    ``amplitude`` (rad), as the CLI's flags of those names."""
+    d = _json.loads(_native.fit_beats(
+        _array(time), _number(bph), _number(period),
+        **_known(length, parts, nut_pitch, nut_tpi, nut_divisions, crutch, amplitude)))
     keys = ["rate_s_per_day", "beat_error_ms", "jitter_ms", "beats_per_hour"]
     return FitResult(d, {k: d[k] for k in keys}, {}, None)
 
@@ -580,7 +595,8 @@ def _weather(weather, column):
 
 
 def listen(samples, sample_rate, *, bph=None, period=None, sample_rate_error_ppm=None,
-           lift_angle=None, oscillator=None, every=None):
+           lift_angle=None, oscillator=None, every=None, length=None, parts=None,
+           nut_pitch=None, nut_tpi=None, nut_divisions=None, crutch=None, amplitude=None):
     """Listens to a clock in a recording (the CLI's ``listen``, the same
     library call): ``samples`` one channel (float, full scale ±1, as a
     sound file decodes to), ``sample_rate`` in Hz; ``bph`` or ``period``
@@ -591,12 +607,15 @@ def listen(samples, sample_rate, *, bph=None, period=None, sample_rate_error_ppm
     ``windows`` and ``window_totals`` in the result).
     Returns the command's ``--json`` object as a dict (without its
     ``file`` and ``channel``) and the ticks kept as a dict of arrays
-    (time_s, side, amplitude)."""
-    result, (time, side, amplitude) = _native.listen(
+    (time_s, side, amplitude). Its ``advice`` takes ``length``,
+    ``parts``, ``nut_pitch``, ``nut_tpi``, ``nut_divisions``, ``crutch``
+    and ``amplitude`` as :func:`fit_beats` does."""
+    result, (time, side, level) = _native.listen(
         _np.ascontiguousarray(samples, dtype=_np.float32), float(sample_rate), _number(bph),
         _number(period), _number(sample_rate_error_ppm), _number(lift_angle),
-        _text(oscillator), _number(every))
-    return _json.loads(result), {"time_s": time, "side": side, "amplitude": amplitude}
+        _text(oscillator), _number(every),
+        **_known(length, parts, nut_pitch, nut_tpi, nut_divisions, crutch, amplitude))
+    return _json.loads(result), {"time_s": time, "side": side, "amplitude": level}
 
 
 def period_table(length, amplitude=None, *, amplitude_range=None, steps=None, g=None,
@@ -750,18 +769,19 @@ def design(parts, *, g=None, pressure_hpa=None, temperature=None, humidity=None,
 
 
 def regulate(rate, *, length=None, parts=None, part=None, nut_pitch=None, nut_tpi=None,
-             nut_divisions=None, tray=None):
+             nut_divisions=None, tray=None, bph=None):
     """The command's ``regulate`` (the same library call): a clock gaining
     ``rate`` s/day (negative: losing) with a simple pendulum of ``length``
     m or a design of ``parts`` (see :func:`design`; the part moved
     ``part``, default its nut): how far to move the bob (m, positive
     down), in turns and divisions of a nut of ``nut_pitch`` m or
     ``nut_tpi`` threads per inch, or the mass for a tray at ``tray`` m
-    below the pivot. Returns its ``--json`` object as a dict."""
+    below the pivot; or, given only ``bph`` (beats an hour), for the
+    simple pendulum of that beat. Returns its ``--json`` object as a dict."""
     return _json.loads(_native.regulate(
         float(rate), _number(length), None if parts is None else _parts(parts), _text(part),
         _number(nut_pitch), _number(nut_tpi),
-        _count(nut_divisions), _number(tray)))
+        _count(nut_divisions), _number(tray), bph=_number(bph)))
 
 
 def compensate(parts, compensator=None, *, part=None, jar_material=None, jar_diameter=None,

@@ -66,7 +66,19 @@ def fit_trajectory(
     length_uncertainty: Optional[float] = ...,
     force: Any = ...,
 ) -> FitResult: ...
-def fit_beats(time: npt.ArrayLike, *, bph: Optional[float] = ..., period: Optional[float] = ...) -> FitResult: ...
+def fit_beats(
+    time: npt.ArrayLike,
+    *,
+    bph: Optional[float] = ...,
+    period: Optional[float] = ...,
+    length: Any = ...,
+    parts: Any = ...,
+    nut_pitch: Any = ...,
+    nut_tpi: Any = ...,
+    nut_divisions: Any = ...,
+    crutch: Any = ...,
+    amplitude: Any = ...,
+) -> FitResult: ...
 def fit_photogate(
     time: npt.ArrayLike,
     *,
@@ -130,6 +142,13 @@ def listen(
     lift_angle: Any = ...,
     oscillator: Optional[str] = ...,
     every: Any = ...,
+    length: Any = ...,
+    parts: Any = ...,
+    nut_pitch: Any = ...,
+    nut_tpi: Any = ...,
+    nut_divisions: Any = ...,
+    crutch: Any = ...,
+    amplitude: Any = ...,
 ) -> Dict[str, Any]: ...
 def period_table(
     length: Any,
@@ -205,6 +224,7 @@ def regulate(
     nut_tpi: Any = ...,
     nut_divisions: Any = ...,
     tray: Any = ...,
+    bph: Any = ...,
 ) -> Dict[str, Any]: ...
 def compensate(
     parts: Any,

@@ -349,6 +349,8 @@ pub struct ClockResult {
     /// What to check.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+    /// What to do ([`crate::advice`]): set it in beat, when it is out.
+    pub advice: Vec<crate::advice::Advice>,
 }
 
 /// What a long run tells its caller as it goes.
@@ -1061,12 +1063,14 @@ pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult
     if steady.beat_error >= AUDIBLY_OUT_OF_BEAT * beat {
         let split = 50.0 * steady.beat_error / beat;
         warnings.push(format!(
-            "out of beat: the ticks come {}/{} (a beat error of {} ms); bend the crutch {}° \
-             to set it in beat{}",
+            "out of beat: the ticks come {}/{} (a beat error of {} ms); move the crutch {}° \
+             ({} mm at the bob) towards the side the pendulum swings to in the longer gap, to \
+             set it in beat{}",
             format_significant(50.0 + split, 3),
             format_significant(50.0 - split, 3),
             format_significant(1e3 * steady.beat_error, 3),
             format_significant(built.out_of_beat.to_degrees().abs(), 3),
+            format_significant(1e3 * built.out_of_beat.abs() * clock.pendulum.length_m(), 3),
             if steady.beat_error >= crate::listening::analysis::OUT_OF_BEAT * beat {
                 " (so uneven that `listen` would take it for a beat misread)"
             } else {
@@ -1116,6 +1120,23 @@ pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult
         Some(r) => Some(long(&built, r, &steady, sink)?),
         None => None,
     };
+    // The advice a recording of this clock would give (its rate has no
+    // nominal beat here: only the beat is advised on), checked against the
+    // offset simulated in `clock::tests`.
+    let advice = crate::advice::advise(&crate::advice::Clockwork {
+        beat_s: 0.5 * steady.period,
+        beat_error_s: Some(steady.beat_error),
+        oscillator: Some(crate::oscillator::Oscillator::Pendulum),
+        amplitude_rad: Some(steady.amplitude),
+        lift_rad: Some(built.lift),
+        known: crate::advice::Known {
+            pendulum: Some(crate::compound::regulate::Regulated::Length(
+                clock.pendulum.length_m(),
+            )),
+            ..Default::default()
+        },
+        ..Default::default()
+    })?;
     Ok(ClockResult {
         escapement: clock.escapement.name(),
         q: clock.q,
@@ -1137,6 +1158,7 @@ pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult
         isochronism,
         long_run,
         warnings,
+        advice,
     })
 }
 

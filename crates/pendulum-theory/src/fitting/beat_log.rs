@@ -260,9 +260,38 @@ pub struct Beats {
     pub warnings: Vec<BeatWarning>,
     /// Their codes, in the same order (for programs).
     pub warning_codes: Vec<&'static str>,
+    /// What to do: bring the clock to time, set it in beat
+    /// ([`crate::advice`]), from these figures and what is known of the
+    /// clock ([`Beats::advise`]).
+    pub advice: Vec<crate::advice::Advice>,
 }
 
 impl Beats {
+    /// Fills [`Beats::advice`] from these figures and `known`, with what
+    /// swings, the measured swing (rad) and the lift angle (rad) when
+    /// listening knows them. Refused when the regulation cannot be
+    /// figured (a nut's thread out of range, a design's part not found).
+    pub fn advise(
+        &mut self,
+        known: &crate::advice::Known,
+        oscillator: Option<crate::oscillator::Oscillator>,
+        amplitude_rad: Option<f64>,
+        lift_rad: Option<f64>,
+    ) -> Result<(), crate::analysis::Refusal> {
+        self.advice = crate::advice::advise(&crate::advice::Clockwork {
+            rate_s_per_day: self.rate_s_per_day,
+            rate_standard_error_s_per_day: self.rate_se_s_per_day,
+            beat_s: self.mean_beat_s,
+            beat_error_s: Some(1e-3 * self.beat_error_ms),
+            beat_error_standard_error_s: self.beat_error_se_ms.map(|s| 1e-3 * s),
+            oscillator,
+            amplitude_rad,
+            lift_rad,
+            known: known.clone(),
+        })?;
+        Ok(())
+    }
+
     /// The result of an analysis of beat times.
     pub fn of(a: BeatAnalysis) -> Self {
         let change = (a.beat_error_end_ms - a.beat_error_start_ms).abs();
@@ -294,7 +323,7 @@ impl Beats {
                 end_ms: a.beat_error_end_ms,
             });
         }
-        Self {
+        let mut beats = Self {
             beats: a.beats,
             mean_beat_s: a.mean_beat,
             beats_per_hour: a.beats_per_hour,
@@ -323,7 +352,12 @@ impl Beats {
             allan_deviation: a.allan_deviation.iter().map(allan_row).collect(),
             warning_codes: warnings.iter().map(BeatWarning::code).collect(),
             warnings,
-        }
+            advice: Vec::new(),
+        };
+        // From the figures alone it cannot be refused (no thread, no
+        // design): the rate and beat are finite and the beat positive.
+        let _ = beats.advise(&crate::advice::Known::default(), None, None, None);
+        beats
     }
 }
 

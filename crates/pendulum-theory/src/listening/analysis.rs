@@ -100,65 +100,7 @@ impl SampleSource for SliceSource<'_> {
     }
 }
 
-/// What swings in the clock: it sets how the time across the lift becomes
-/// an amplitude.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Oscillator {
-    /// A pendulum: its exact motion ([`crate::lift`]), whose crossing of
-    /// the lift slows as the swing grows.
-    Pendulum,
-    /// A balance wheel and hairspring: harmonic at any swing, so the
-    /// first-order formula `lift / (2 sin(π Δt / T))` is exact.
-    Balance,
-}
-
-/// Above this beat rate (beats an hour) a clock's oscillator is taken for
-/// a balance wheel unless said: 10,800 (1.5 Hz; a pendulum of that beat is
-/// 11 cm long, the shortest clocks have).
-pub const BALANCE_ABOVE_BPH: f64 = 10_800.0;
-
-impl Oscillator {
-    /// The oscillator of a clock beating `beat` s apart: a balance above
-    /// [`BALANCE_ABOVE_BPH`].
-    pub fn of_beat(beat: f64) -> Self {
-        if 3600.0 / beat > BALANCE_ABOVE_BPH {
-            Oscillator::Balance
-        } else {
-            Oscillator::Pendulum
-        }
-    }
-
-    /// The oscillator named `name` (`pendulum`, `balance`), else a refusal
-    /// of the field `oscillator`.
-    pub fn parse(name: &str) -> Result<Self, Refusal> {
-        match name {
-            "pendulum" => Ok(Oscillator::Pendulum),
-            "balance" => Ok(Oscillator::Balance),
-            other => Err(Refusal::field(
-                "oscillator",
-                format!("'{other}' is not one of pendulum, balance"),
-            )),
-        }
-    }
-
-    /// The amplitude of this oscillator from the lift's two readings, rad:
-    /// a pendulum's exact one, a balance's first-order (harmonic) one.
-    pub fn amplitude(self, lifted: &crate::lift::LiftAmplitude) -> f64 {
-        match self {
-            Oscillator::Pendulum => lifted.amplitude,
-            Oscillator::Balance => lifted.first_order,
-        }
-    }
-
-    /// `pendulum` or `balance`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Oscillator::Pendulum => "pendulum",
-            Oscillator::Balance => "balance",
-        }
-    }
-}
+pub use crate::oscillator::{Oscillator, BALANCE_ABOVE_BPH};
 
 /// What to listen for.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -742,7 +684,7 @@ pub(crate) fn conclude(
         }
         None => (Vec::new(), None),
     };
-    Ok(Listening {
+    let mut listening = Listening {
         sample_rate_hz: sample_rate,
         sample_rate_error_ppm: ppm,
         duration_s: duration,
@@ -765,7 +707,38 @@ pub(crate) fn conclude(
         window_totals,
         ticks,
         sounds,
-    })
+    };
+    listening.advise(&crate::advice::Known::default())?;
+    Ok(listening)
+}
+
+/// The largest swing believed from the sound for advice, rad: a pendulum
+/// clock's 15°, a balance's 330° (past them the drop was timed wrong).
+const BELIEVED_SWING_RAD: [f64; 2] = [
+    15.0 * std::f64::consts::PI / 180.0,
+    330.0 * std::f64::consts::PI / 180.0,
+];
+
+impl Listening {
+    /// Fills the advice ([`Beats::advise`]) from what was heard and
+    /// `known`: the swing heard is used where a clock can have it.
+    pub fn advise(&mut self, known: &crate::advice::Known) -> Result<(), Refusal> {
+        let largest = match self.oscillator {
+            Oscillator::Pendulum => BELIEVED_SWING_RAD[0],
+            Oscillator::Balance => BELIEVED_SWING_RAD[1],
+        };
+        let heard = self
+            .amplitude_deg
+            .flatten()
+            .map(f64::to_radians)
+            .filter(|&a| a > 0.0 && a <= largest);
+        self.beats.advise(
+            known,
+            Some(self.oscillator),
+            heard,
+            self.lift_angle_deg.map(f64::to_radians),
+        )
+    }
 }
 
 /// Windows of `every` s must hold [`MIN_WINDOW_BEATS`] beats of `beat` s.

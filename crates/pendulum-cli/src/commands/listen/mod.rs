@@ -66,6 +66,8 @@ fn reference(path: &std::path::Path) -> Result<ReferenceJson, CliError> {
 }
 
 pub fn run(args: &ListenArgs) -> Result<String, CliError> {
+    let known = common::known(&args.advice)?;
+    pendulum_theory::advice::check(&known).map_err(|e| common::refused(&e))?;
     let reference = args.reference.as_deref().map(reference).transpose()?;
     let ppm = match &reference {
         Some(r) => Some(r.calibration.sample_rate_error_ppm),
@@ -90,7 +92,7 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         .transpose()?;
     if crate::file::is_stdout(&args.file) {
         let heard = live::listen(args, &input)?;
-        return render(args, reference, plot.as_ref(), heard);
+        return render(args, reference, plot.as_ref(), heard, &known);
     }
     if args.raw.is_some() {
         return Err(CliError::flag(
@@ -121,7 +123,7 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
         result,
         printed: None,
     };
-    render(args, reference, plot.as_ref(), heard)
+    render(args, reference, plot.as_ref(), heard, &known)
 }
 
 /// A refusal of the recording `file`, as an error.
@@ -149,8 +151,13 @@ fn render(
     args: &ListenArgs,
     reference: Option<ReferenceJson>,
     plot: Option<&Target>,
-    heard: Heard,
+    mut heard: Heard,
+    known: &pendulum_theory::advice::Known,
 ) -> Result<String, CliError> {
+    heard
+        .result
+        .advise(known)
+        .map_err(|e| common::refused(&e))?;
     let result = &heard.result;
     let plot_file = match plot {
         Some(target) => Some(figure::draw(target, result)?),

@@ -173,6 +173,9 @@ pub(super) fn render(r: &ListenJson, channels: usize, printed: Option<usize>) ->
     if let (Some(totals), None) = (&r.listening.window_totals, printed) {
         out.push_str(&windows(r, totals));
     }
+    out.push_str(&super::super::common::advice_text(
+        &r.listening.beats.advice,
+    ));
     out
 }
 

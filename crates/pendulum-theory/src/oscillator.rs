@@ -56,6 +56,19 @@ impl Oscillator {
         }
     }
 
+    /// The largest swing either side this oscillator has in a running
+    /// clock, rad: a pendulum clock's 15° (a verge's bob swings 10-15°, a
+    /// long-case's 2-5°), a balance's 330° (past it the impulse pin
+    /// knocks the banking). An amplitude from the sound beyond it is
+    /// wrong (the drop timed as the unlocking, a lift angle not the
+    /// escapement's) and is not given.
+    pub fn largest_swing_rad(self) -> f64 {
+        match self {
+            Oscillator::Pendulum => 15f64.to_radians(),
+            Oscillator::Balance => 330f64.to_radians(),
+        }
+    }
+
     /// `pendulum` or `balance`.
     pub fn name(self) -> &'static str {
         match self {

@@ -979,7 +979,11 @@ fn examples() -> Vec<(&'static str, Check)> {
             },
         ),
         ("pendulum listen clock.m4a --lift-angle 2", |r| {
-            r.says("from the 2° lift");
+            // The test recording's drop comes 16 ms after the unlocking, as
+            // in a watch (a seconds clock's comes some 0.2 s later): the
+            // 38.6° it gives is no pendulum clock's, withheld and warned.
+            r.says("not given: the 2° lift gives more than this clock can swing");
+            r.says("more than a running pendulum clock swings (15°)");
         }),
         ("pendulum fit beats ticks.csv --bph 3600", |r| {
             assert!((r.number("Rate") - 12.0).abs() < 0.05);

@@ -109,6 +109,29 @@ pub enum BeatWarning {
         /// The standard error, ms.
         se_ms: f64,
     },
+    /// The amplitude from the lift is more than the oscillator swings in a
+    /// running clock ([`crate::oscillator::Oscillator::largest_swing_rad`]):
+    /// not given.
+    AmplitudeImpossible {
+        /// The amplitude the sound gave, degrees.
+        amplitude_deg: f64,
+        /// The largest a running clock's oscillator swings, degrees.
+        largest_deg: f64,
+        /// Whether the oscillator is a pendulum (else a balance).
+        pendulum: bool,
+    },
+    /// The mean of a recording's windows' rates stands far from the whole
+    /// recording's: a periodic error the windows share biases each alike.
+    WindowsBiased {
+        /// The windows' mean rate, s/day.
+        windows_mean: f64,
+        /// The whole recording's, s/day.
+        whole: f64,
+        /// Their difference in standard errors.
+        sigma: f64,
+        /// The windows' length, s.
+        every_s: f64,
+    },
     /// The tick and tock intervals drift apart (or together) over the
     /// record: the mean beat error describes neither end.
     SidesDrift {
@@ -124,6 +147,8 @@ impl BeatWarning {
     pub fn code(&self) -> &'static str {
         match self {
             BeatWarning::SidesDrift { .. } => "sides_drift",
+            BeatWarning::AmplitudeImpossible { .. } => "amplitude_impossible",
+            BeatWarning::WindowsBiased { .. } => "windows_biased",
             BeatWarning::BeatImplausible { .. } => "beat_implausible",
             BeatWarning::EdgesUnpaired { .. } => "edges_unpaired",
             BeatWarning::RateUncertain { .. } => "rate_uncertain",
@@ -194,6 +219,45 @@ impl std::fmt::Display for BeatWarning {
                 "the beat error is uncertain by ±{} ms (one standard error): too few beats or \
                  too much scatter in their times",
                 format_significant(*se_ms, 2)
+            ),
+            BeatWarning::AmplitudeImpossible {
+                amplitude_deg,
+                largest_deg,
+                pendulum,
+            } => {
+                write!(
+                f,
+                "the amplitude from the lift angle would be {}°, more than a running {} swings \
+                 ({}°), so it is not given: {}",
+                format_significant(*amplitude_deg, 3),
+                if *pendulum { "pendulum clock" } else { "balance" },
+                format_significant(*largest_deg, 3),
+                if *pendulum {
+                    "the lift angle is not the escapement's, or the two sounds timed are not the \
+                     unlocking and the drop (in many long-case clocks the unlocking is too faint \
+                     to hear)"
+                } else {
+                    "the lift angle is not the movement's, or the ticks were timed on another \
+                     sound than the unlocking"
+                }
+            )
+            }
+            BeatWarning::WindowsBiased {
+                windows_mean,
+                whole,
+                sigma,
+                every_s,
+            } => write!(
+                f,
+                "the windows' mean rate, {} s/day, is {} standard errors from the whole \
+                 recording's {} s/day: a periodic error that repeats every {} s or a fraction of \
+                 it (an escape wheel that turns once a minute) biases every window alike; trust \
+                 the whole recording's rate, or cut windows that are not a multiple of the \
+                 wheel's turn",
+                format_significant(*windows_mean, 4),
+                format_significant(*sigma, 2),
+                format_significant(*whole, 4),
+                format_significant(*every_s, 4)
             ),
             BeatWarning::SidesDrift { start_ms, end_ms } => write!(
                 f,

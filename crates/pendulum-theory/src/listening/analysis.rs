@@ -625,6 +625,16 @@ pub(crate) fn conclude(
         ),
         _ => None,
     };
+    let oscillator = input
+        .oscillator
+        .unwrap_or_else(|| Oscillator::of_beat(a.mean_beat));
+    // An amplitude the oscillator cannot have is not given: warned with
+    // its figure.
+    let impossible = amplitude
+        .as_ref()
+        .map(|x| oscillator.amplitude(x))
+        .filter(|&swing| swing.is_nan() || swing > oscillator.largest_swing_rad());
+    let amplitude = amplitude.filter(|_| impossible.is_none());
     let lifted = |f: &dyn Fn(&crate::lift::LiftAmplitude) -> f64| {
         input
             .lift_angle
@@ -658,9 +668,15 @@ pub(crate) fn conclude(
         beats.warning_codes.push(w.code());
         beats.warnings.push(w);
     }
-    let oscillator = input
-        .oscillator
-        .unwrap_or_else(|| Oscillator::of_beat(mean_beat));
+    if let Some(swing) = impossible {
+        let w = BeatWarning::AmplitudeImpossible {
+            amplitude_deg: swing.to_degrees(),
+            largest_deg: oscillator.largest_swing_rad().to_degrees(),
+            pendulum: oscillator == Oscillator::Pendulum,
+        };
+        beats.warning_codes.push(w.code());
+        beats.warnings.push(w);
+    }
     let (windows, window_totals) = match input.every {
         Some(every) => {
             check_every(every, mean_beat)?;
@@ -677,6 +693,11 @@ pub(crate) fn conclude(
             });
             if let Some(ratio) = totals.rate_scatter_over_se.filter(|&r| r > RATE_WANDERS) {
                 let w = BeatWarning::RateWanders { ratio };
+                beats.warning_codes.push(w.code());
+                beats.warnings.push(w);
+            }
+            if let Some(w) = windows_biased(&totals, beats.rate_s_per_day, beats.rate_se_s_per_day)
+            {
                 beats.warning_codes.push(w.code());
                 beats.warnings.push(w);
             }
@@ -712,21 +733,11 @@ pub(crate) fn conclude(
     Ok(listening)
 }
 
-/// The largest swing believed from the sound for advice, rad: a pendulum
-/// clock's 15°, a balance's 330° (past them the drop was timed wrong).
-const BELIEVED_SWING_RAD: [f64; 2] = [
-    15.0 * std::f64::consts::PI / 180.0,
-    330.0 * std::f64::consts::PI / 180.0,
-];
-
 impl Listening {
     /// Fills the advice ([`Beats::advise`]) from what was heard and
     /// `known`: the swing heard is used where a clock can have it.
     pub fn advise(&mut self, known: &crate::advice::Known) -> Result<(), Refusal> {
-        let largest = match self.oscillator {
-            Oscillator::Pendulum => BELIEVED_SWING_RAD[0],
-            Oscillator::Balance => BELIEVED_SWING_RAD[1],
-        };
+        let largest = self.oscillator.largest_swing_rad();
         let heard = self
             .amplitude_deg
             .flatten()
@@ -739,6 +750,35 @@ impl Listening {
             self.lift_angle_deg.map(f64::to_radians),
         )
     }
+}
+
+/// The windows' mean rate differs from the whole recording's by more than
+/// this many standard errors of the difference (`windows_biased`).
+pub const WINDOWS_BIASED_SIGMA: f64 = 4.0;
+
+/// A warning when the windows' mean rate stands [`WINDOWS_BIASED_SIGMA`]
+/// standard errors (the two's, added in quadrature: they share their
+/// ticks, so this errs towards silence) from the whole recording's: a
+/// periodic error whose period the windows share (an escape wheel turning
+/// once a window) biases every window's slope alike, where the whole
+/// recording's regression averages it out.
+fn windows_biased(
+    totals: &WindowTotals,
+    whole: Option<f64>,
+    whole_se: Option<f64>,
+) -> Option<BeatWarning> {
+    let (mean, mean_se) = (totals.rate_mean_s_per_day?, totals.rate_mean_se_s_per_day?);
+    let (whole, whole_se) = (whole?, whole_se.unwrap_or(0.0));
+    let sigma = (mean_se * mean_se + whole_se * whole_se).sqrt();
+    (totals.windows_with_rate >= 3
+        && sigma > 0.0
+        && (mean - whole).abs() > WINDOWS_BIASED_SIGMA * sigma)
+        .then_some(BeatWarning::WindowsBiased {
+            windows_mean: mean,
+            whole,
+            sigma: (mean - whole).abs() / sigma,
+            every_s: totals.every_s,
+        })
 }
 
 /// Windows of `every` s must hold [`MIN_WINDOW_BEATS`] beats of `beat` s.

@@ -188,7 +188,8 @@ fn window(input: &WindowInput, ticks: &[Tick], start: f64, end: f64) -> Window {
             .filter(|s| s.is_finite()),
         beat_error_ms: analysis.as_ref().map(|a| a.beat_error_ms),
         drop_ms: drop.map(|d| d * 1e3),
-        amplitude_deg: amplitude.filter(|a| a.is_finite()),
+        amplitude_deg: amplitude
+            .filter(|a| a.is_finite() && *a <= input.oscillator.largest_swing_rad().to_degrees()),
         snr_db: snr,
     }
 }

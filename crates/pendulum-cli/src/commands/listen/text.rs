@@ -116,6 +116,18 @@ pub(super) fn render(r: &ListenJson, channels: usize, printed: Option<usize>) ->
                     num(lift, 4),
                     num(first, 4)
                 ),
+                _ if r
+                    .listening
+                    .beats
+                    .warning_codes
+                    .contains(&"amplitude_impossible") =>
+                {
+                    format!(
+                        "not given: the {}° lift gives more than this clock can swing (see the \
+                         warning)",
+                        num(lift, 4)
+                    )
+                }
                 _ => "not determined (no drop sound to time the lift by)".to_string(),
             },
         );

@@ -438,7 +438,19 @@ pub fn check(known: &Known) -> Result<(), Refusal> {
         }
     }
     let pendulum = known.pendulum.clone().unwrap_or(Regulated::Length(1.0));
-    regulate(&pendulum, 0.0, known.nut, None)?;
+    let length = regulate(&pendulum, 0.0, known.nut, None)?.equivalent_length_m;
+    if let (Some(c), Some(_)) = (known.crutch_m, &known.pendulum) {
+        if c > length {
+            return Err(Refusal::field(
+                "crutch",
+                format!(
+                    "the crutch's pin must lie above the pendulum's end ({} m), got {} m",
+                    format_significant(length, 5),
+                    format_significant(c, 6)
+                ),
+            ));
+        }
+    }
     Ok(())
 }
 
@@ -461,48 +473,8 @@ pub fn advise(clock: &Clockwork) -> Result<Vec<Advice>, Refusal> {
     let se = clock
         .rate_standard_error_s_per_day
         .filter(|s| s.is_finite());
-    let significant = |r: f64| se.is_none_or(|s| r.abs() > RATE_SIGNIFICANCE * s);
-    match rate.map(|r| (r, significant(r), oscillator)) {
-        None => {}
-        Some((rate, significant, oscillator)) => match (significant, oscillator) {
-            (false, _) => advice.push(Advice::OnTime {
-                rate_s_per_day: rate,
-                rate_standard_error_s_per_day: se.unwrap_or(0.0),
-            }),
-            (true, _) if rate == 0.0 => {}
-            (true, Oscillator::Balance) => advice.push(Advice::RegulateIndex {
-                rate_s_per_day: rate,
-                towards: if rate > 0.0 { Index::Slow } else { Index::Fast },
-            }),
-            (true, Oscillator::Pendulum) => {
-                let from_beat = clock.known.pendulum.is_none();
-                let pendulum = clock
-                    .known
-                    .pendulum
-                    .clone()
-                    .unwrap_or(Regulated::Length(length_of_beat(beat)));
-                let r = regulate(&pendulum, rate, clock.known.nut, None)?;
-                let lower = r.shift_m >= 0.0;
-                advice.push(Advice::Regulate {
-                    rate_s_per_day: rate,
-                    bob: if lower {
-                        BobMove::Lower
-                    } else {
-                        BobMove::Raise
-                    },
-                    bob_shift_m: r.shift_m.abs(),
-                    length_m: r.equivalent_length_m,
-                    length_from_beat: from_beat,
-                    nut_turns: r.nut_turns.map(f64::abs),
-                    nut_divisions: r.nut_divisions.map(f64::abs),
-                    nut_turn: if lower {
-                        NutTurn::Anticlockwise
-                    } else {
-                        NutTurn::Clockwise
-                    },
-                });
-            }
-        },
+    if let Some(rate) = rate {
+        advice.extend(regulation(clock, oscillator, beat, rate, se)?);
     }
     if let Some(be) = clock.beat_error_s.filter(|b| b.is_finite() && *b > 0.0) {
         let be_se = clock
@@ -518,6 +490,58 @@ pub fn advise(clock: &Clockwork) -> Result<Vec<Advice>, Refusal> {
         }
     }
     Ok(advice)
+}
+
+/// How to bring `clock`, gaining `rate` s/day (standard error `se`), to
+/// time: leave it (within [`RATE_SIGNIFICANCE`] standard errors of zero),
+/// its index (a balance), or its bob and nut (a pendulum).
+fn regulation(
+    clock: &Clockwork,
+    oscillator: Oscillator,
+    beat: f64,
+    rate: f64,
+    se: Option<f64>,
+) -> Result<Option<Advice>, Refusal> {
+    if se.is_some_and(|s| rate.abs() <= RATE_SIGNIFICANCE * s) {
+        return Ok(Some(Advice::OnTime {
+            rate_s_per_day: rate,
+            rate_standard_error_s_per_day: se.unwrap_or(0.0),
+        }));
+    }
+    if rate == 0.0 {
+        return Ok(None);
+    }
+    if oscillator == Oscillator::Balance {
+        return Ok(Some(Advice::RegulateIndex {
+            rate_s_per_day: rate,
+            towards: if rate > 0.0 { Index::Slow } else { Index::Fast },
+        }));
+    }
+    let pendulum = clock
+        .known
+        .pendulum
+        .clone()
+        .unwrap_or(Regulated::Length(length_of_beat(beat)));
+    let r = regulate(&pendulum, rate, clock.known.nut, None)?;
+    let lower = r.shift_m >= 0.0;
+    Ok(Some(Advice::Regulate {
+        rate_s_per_day: rate,
+        bob: if lower {
+            BobMove::Lower
+        } else {
+            BobMove::Raise
+        },
+        bob_shift_m: r.shift_m.abs(),
+        length_m: r.equivalent_length_m,
+        length_from_beat: clock.known.pendulum.is_none(),
+        nut_turns: r.nut_turns.map(f64::abs),
+        nut_divisions: r.nut_divisions.map(f64::abs),
+        nut_turn: if lower {
+            NutTurn::Anticlockwise
+        } else {
+            NutTurn::Clockwise
+        },
+    }))
 }
 
 /// The advice to set `clock` in beat, its beat error `be` s.

@@ -4,7 +4,7 @@
 //! offset `ω b A / 2` to first order) and its directions as a clockmaker
 //! reads them.
 
-use crate::util::{f, json, pendulum, refuses};
+use crate::util::{f, json, pendulum, refuses, text};
 use std::f64::consts::PI;
 
 fn synth(dir: &std::path::Path, args: &[&str]) -> String {
@@ -80,14 +80,7 @@ fn a_recording_is_advised_as_by_hand() {
     assert_eq!(beat["amplitude_assumed"], false);
 
     // The text ends with the same, in words.
-    let out = pendulum()
-        .args(["listen", &wav, "--nut-pitch", "0.7mm"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
-    let text = String::from_utf8(out).unwrap();
+    let text = text(&["listen", &wav, "--nut-pitch", "0.7mm"]);
     let tail: Vec<&str> = text.lines().rev().take(3).collect();
     assert_eq!(tail[2], "What to do:", "{text}");
     assert!(tail[1].contains("lower the bob"), "{text}");
@@ -192,6 +185,11 @@ fn advice_flags_are_refused_by_name() {
     refuses(&["listen", &wav, "--crutch", "-1mm"], "--crutch");
     refuses(&["listen", &wav, "--amplitude", "200deg"], "--amplitude");
     refuses(&["listen", &wav, "--length", "-1m"], "--length");
+    // A crutch longer than the pendulum: metres typed for millimetres.
+    refuses(
+        &["listen", &wav, "--length", "1m", "--crutch", "180"],
+        "--crutch",
+    );
 }
 
 /// The README's listening example: its advice lines are what the binary
@@ -223,14 +221,7 @@ fn the_readme_shows_what_the_binary_says() {
         .split_whitespace()
         .map(|a| if a == "clock.wav" { wav } else { a })
         .collect();
-    let out = pendulum()
-        .args(&listen)
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
-    let text = String::from_utf8(out).unwrap();
+    let text = text(&listen);
     let printed: Vec<&str> = text.lines().skip_while(|l| *l != "What to do:").collect();
     assert_eq!(printed, shown);
 }

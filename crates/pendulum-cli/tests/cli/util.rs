@@ -20,6 +20,18 @@ pub fn json(args: &[&str]) -> Value {
     serde_json::from_slice(&out).expect("standard output is JSON")
 }
 
+/// Runs with `args`, expects success, returns standard output as text.
+pub fn text(args: &[&str]) -> String {
+    let out = pendulum()
+        .args(args)
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    String::from_utf8(out).expect("standard output is UTF-8")
+}
+
 /// Runs with `args` and expects the one-line error contract: status 2,
 /// nothing on standard output, one line on standard error naming `flag`.
 pub fn refuses(args: &[&str], flag: &str) -> String {

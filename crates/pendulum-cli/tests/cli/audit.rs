@@ -20,6 +20,7 @@
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::io::Read;
+use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::Mutex;
@@ -199,20 +200,32 @@ fn run_case(case: &Case, binary: &Path) -> Result<(), String> {
     copy_named(&data_dir().join("fixtures"), dir.path(), &mentioned);
     setup(dir.path(), &case.setup)?;
     let before = snapshot(dir.path());
-    // The CPU limit through the shell's ulimit (SIGXCPU kills the run);
-    // a wall-clock guard of ten times that only keeps a hang from stopping
-    // the suite.
-    let mut child = Command::new("sh")
-        .arg("-c")
-        .arg(format!("ulimit -t {CPU_SECONDS}; exec \"$0\" \"$@\""))
-        .arg(binary)
+    // The CPU limit set in the child before it runs the binary (SIGXCPU
+    // kills the run); a wall-clock guard of ten times that only keeps a
+    // hang from stopping the suite.
+    let mut command = Command::new(binary);
+    command
         .args(&case.args)
         .current_dir(dir.path())
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .map_err(|e| e.to_string())?;
+        .stderr(Stdio::piped());
+    // SAFETY: setrlimit is async-signal-safe, and the closure allocates
+    // nothing between fork and exec.
+    unsafe {
+        command.pre_exec(|| {
+            let limit = libc::rlimit {
+                rlim_cur: libc::rlim_t::from(CPU_SECONDS),
+                rlim_max: libc::rlim_t::from(CPU_SECONDS),
+            };
+            if libc::setrlimit(libc::RLIMIT_CPU, &limit) == 0 {
+                Ok(())
+            } else {
+                Err(std::io::Error::last_os_error())
+            }
+        });
+    }
+    let mut child = command.spawn().map_err(|e| e.to_string())?;
     // Both pipes drained as the command runs (a command writing much to
     // standard output would otherwise wait on a full pipe).
     let drain = |pipe: Option<Box<dyn std::io::Read + Send>>| {
@@ -226,18 +239,23 @@ fn run_case(case: &Case, binary: &Path) -> Result<(), String> {
     };
     let out_reader = drain(child.stdout.take().map(|p| Box::new(p) as _));
     let err_reader = drain(child.stderr.take().map(|p| Box::new(p) as _));
-    let started = std::time::Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().map_err(|e| e.to_string())? {
-            break status;
+    let pid = child.id() as libc::pid_t;
+    let (ended, watched) = std::sync::mpsc::channel::<()>();
+    let guard = std::thread::spawn(move || {
+        let wall = std::time::Duration::from_secs(u64::from(10 * CPU_SECONDS));
+        let hung = watched.recv_timeout(wall).is_err();
+        if hung {
+            // SAFETY: a plain signal to the child, which has not been
+            // waited for yet (its pid is still its own).
+            unsafe { libc::kill(pid, libc::SIGKILL) };
         }
-        if started.elapsed().as_secs() > u64::from(10 * CPU_SECONDS) {
-            let _ = child.kill();
-            let _ = child.wait();
-            return Err("hung: no end after 100 s (waiting, not computing)".into());
-        }
-        std::thread::sleep(std::time::Duration::from_millis(5));
-    };
+        hung
+    });
+    let status = child.wait().map_err(|e| e.to_string())?;
+    let _ = ended.send(());
+    if guard.join().unwrap_or(false) {
+        return Err("hung: no end after 100 s (waiting, not computing)".into());
+    }
     let stdout = String::from_utf8_lossy(&out_reader.join().unwrap_or_default()).into_owned();
     let stderr = String::from_utf8_lossy(&err_reader.join().unwrap_or_default()).into_owned();
     let first = |t: &str| t.chars().take(200).collect::<String>();
@@ -343,7 +361,9 @@ fn every_odd_input_is_answered_safely() {
     let next = Mutex::new(0usize);
     let failures = Mutex::new(Vec::new());
     std::thread::scope(|scope| {
-        for _ in 0..2 {
+        // (Three workers on two cores: a case's start and its files are
+        // waiting, not computing.)
+        for _ in 0..3 {
             scope.spawn(|| loop {
                 let i = {
                     let mut n = next.lock().unwrap();

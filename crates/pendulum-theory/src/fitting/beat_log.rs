@@ -132,6 +132,20 @@ pub enum BeatWarning {
         /// The windows' length, s.
         every_s: f64,
     },
+    /// Sounds that are not ticks (a strike, a chime, handling, a voice)
+    /// were cut out of the recording; the clock was followed across them.
+    SoundsCut {
+        /// The spans cut, s from the start: (from, to).
+        spans: Vec<(f64, f64)>,
+        /// The clock's beats inside them (not counted as missed).
+        beats: usize,
+    },
+    /// The clock was not heard over a stretch of the recording (its ticks
+    /// faded, it stopped, or it was drowned out), outside any span cut.
+    ClockLost {
+        /// Where no tick was heard, s from the start: (from, to).
+        spans: Vec<(f64, f64)>,
+    },
     /// The tick and tock intervals drift apart (or together) over the
     /// record: the mean beat error describes neither end.
     SidesDrift {
@@ -147,6 +161,8 @@ impl BeatWarning {
     pub fn code(&self) -> &'static str {
         match self {
             BeatWarning::SidesDrift { .. } => "sides_drift",
+            BeatWarning::SoundsCut { .. } => "sounds_cut",
+            BeatWarning::ClockLost { .. } => "clock_lost",
             BeatWarning::AmplitudeImpossible { .. } => "amplitude_impossible",
             BeatWarning::WindowsBiased { .. } => "windows_biased",
             BeatWarning::BeatImplausible { .. } => "beat_implausible",
@@ -158,6 +174,21 @@ impl BeatWarning {
             BeatWarning::BeatErrorUncertain { .. } => "beat_error_uncertain",
         }
     }
+}
+
+/// Spans of a recording in words: "12.5-20 s, 240-262.5 s".
+fn spans_text(spans: &[(f64, f64)]) -> String {
+    spans
+        .iter()
+        .map(|&(a, b)| {
+            format!(
+                "{}-{} s",
+                format_significant((a * 10.0).round() / 10.0, 6),
+                format_significant((b * 10.0).round() / 10.0, 6)
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 impl std::fmt::Display for BeatWarning {
@@ -242,6 +273,19 @@ impl std::fmt::Display for BeatWarning {
                 }
             )
             }
+            BeatWarning::SoundsCut { spans, beats } => write!(
+                f,
+                "sounds that are not ticks (a strike, a chime, the recorder handled, a voice) \
+                 were cut out at {}: the clock was followed across, and its {beats} beats in \
+                 them are not counted as missed",
+                spans_text(spans)
+            ),
+            BeatWarning::ClockLost { spans } => write!(
+                f,
+                "the clock was not heard at {}: it stopped, its ticks faded, or something \
+                 drowned them; the figures are from the rest of the recording",
+                spans_text(spans)
+            ),
             BeatWarning::WindowsBiased {
                 windows_mean,
                 whole,

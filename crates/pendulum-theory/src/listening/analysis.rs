@@ -15,8 +15,8 @@
 //! unlocking to the drop into an amplitude ([`crate::lift`]).
 
 use super::detect::{
-    beat_period, clean, envelope_rate, Coarse, Envelope, MedianSound, OnsetTracker, Refiner, Tick,
-    Timing,
+    beat_period, clean, envelope_rate, Coarse, Envelope, Gate, MedianSound, OnsetTracker, Refiner,
+    Tick, Timing,
 };
 use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
 use super::windows::{windows, Window, WindowInput, WindowTotals, MIN_WINDOW_BEATS};
@@ -397,8 +397,14 @@ pub(crate) fn half_beat(
     // not followed.)
     // (Ticks that hardly stand out of the floor are the noise's crests,
     // and what stands between them says nothing of the clock.)
+    // (Ticks in strong noise still stand on their line, to a fraction of
+    // a ms, where a noise's crests scatter over the tracker's window: a
+    // clock at 6 dB, 1.7 to 2.5 dB on the envelope, was read at half its
+    // beat.)
+    let faint = snr(coarse.peak, coarse.floor) < HALF_BEAT_MIN_SNR_DB
+        && onset_scatter(coarse).is_none_or(|s| s > HALF_BEAT_MAX_SCATTER_S);
     if 0.5 * beat < BEAT_RANGE_S.0 / (1.0 + NOMINAL_SLACK)
-        || snr(coarse.peak, coarse.floor) < HALF_BEAT_MIN_SNR_DB
+        || faint
         || !(sound_between_ticks(env, env_rate, coarse)
             || sound_between_ticks(wide, env_rate, coarse))
     {
@@ -436,6 +442,8 @@ pub(crate) struct Heard {
     pub(crate) beat: f64,
     /// Samples per second.
     pub(crate) sample_rate: u32,
+    /// The spans cut out as not ticks ([`Gate`]), s.
+    pub(crate) cuts: Vec<(f64, f64)>,
 }
 
 /// Listens to `source`: see the module notes.
@@ -463,36 +471,44 @@ pub fn listen<S: SampleSource>(
         })
         .map_err(ListenFailure::Source)?;
     let env_rate = envelope_rate(&env, rate);
-    let beat = first_beat(&env.values, env_rate, input, &checked)?;
+    // Sounds that are not ticks cut out ([`Gate`]), against the floor of
+    // the first minutes (a recording may start with a strike).
+    let floor = Gate::floor_of(&env.values, env_rate);
+    let (gated, first_cuts) = Gate::apply(&env.values, env_rate, floor);
+    let wide_floor = Gate::floor_of(&wide.values, env_rate);
+    let (wide, _) = Gate::apply(&wide.values, env_rate, wide_floor);
+    let beat = first_beat(&gated, env_rate, input, &checked)?;
     // Pass 2: each beat's onset on the envelope, streamed (a recording
     // within the first pass is not read again).
     let track = |source: &mut S, beat: f64| -> Result<_, ListenFailure<S::Error>> {
         let mut tracker = OnsetTracker::new(env_rate, beat);
-        let samples = if pushed < span {
+        let (samples, cuts) = if pushed < span {
             // (In blocks, as a longer recording's come: the noise floor
             // follows the recording rather than being its last seconds'.)
-            for block in env.values.chunks(ENVELOPE_BLOCK) {
+            for block in gated.chunks(ENVELOPE_BLOCK) {
                 tracker.push(block);
             }
-            env.samples
+            (env.samples, first_cuts.clone())
         } else {
             let mut env = Envelope::new(rate);
+            let mut gate = Gate::new(env_rate, floor);
             source
                 .read(None, &mut |block| {
                     env.push(block);
-                    tracker.push(&env.values);
+                    tracker.push(&gate.push(&env.values));
                     env.values.clear();
                 })
                 .map_err(ListenFailure::Source)?;
-            env.samples
+            tracker.push(&gate.finish());
+            (env.samples, gate.spans_s())
         };
-        Ok((tracker.finish(), samples))
+        Ok((tracker.finish(), samples, cuts))
     };
-    let (mut coarse, mut samples) = track(source, beat)?;
+    let (mut coarse, mut samples, mut cuts) = track(source, beat)?;
     let mut beat = beat;
-    if let Some(half) = half_beat(&env.values, &wide.values, env_rate, &coarse, beat, input)? {
+    if let Some(half) = half_beat(&gated, &wide, env_rate, &coarse, beat, input)? {
         beat = half;
-        (coarse, samples) = track(source, beat)?;
+        (coarse, samples, cuts) = track(source, beat)?;
     }
     // Pass 3: each tick refined on the samples.
     let mut refiner = Refiner::new(rate, &coarse);
@@ -508,6 +524,7 @@ pub fn listen<S: SampleSource>(
         duration: samples as f64 / rate,
         beat,
         sample_rate,
+        cuts,
     };
     Ok(conclude(heard, &checked, input)?)
 }
@@ -528,6 +545,7 @@ pub(crate) fn conclude(
         duration,
         beat,
         sample_rate,
+        cuts,
     } = heard;
     let (nominal, ppm) = (checked.nominal, checked.ppm);
     let rate = f64::from(sample_rate);
@@ -608,6 +626,11 @@ pub(crate) fn conclude(
         (Some(a), Some(b)) => ((b.beat - a.beat + 1) as usize).saturating_sub(ticks.len()),
         _ => 0,
     };
+    // Beats inside the spans cut are not missed: they are said with the
+    // spans.
+    let in_cuts = beats_in_cuts(&ticks, &cuts, beat);
+    let missed = missed.saturating_sub(in_cuts);
+    let lost = lost_spans(&ticks, &cuts, beat, duration);
     let scale = 1.0 / (1.0 + ppm * 1e-6);
     for t in &mut ticks {
         t.time *= scale;
@@ -664,6 +687,21 @@ pub(crate) fn conclude(
         let w = BeatWarning::RepeatsExactly {
             after_beats,
             spread_s,
+        };
+        beats.warning_codes.push(w.code());
+        beats.warnings.push(w);
+    }
+    if !cuts.is_empty() {
+        let w = BeatWarning::SoundsCut {
+            spans: cuts.iter().map(|&(a, b)| (a * scale, b * scale)).collect(),
+            beats: in_cuts,
+        };
+        beats.warning_codes.push(w.code());
+        beats.warnings.push(w);
+    }
+    if !lost.is_empty() {
+        let w = BeatWarning::ClockLost {
+            spans: lost.iter().map(|&(a, b)| (a * scale, b * scale)).collect(),
         };
         beats.warning_codes.push(w.code());
         beats.warnings.push(w);
@@ -871,10 +909,89 @@ fn align_sides(mut ticks: Vec<Tick>, onsets: &[(u64, f64)]) -> Vec<Tick> {
     ticks
 }
 
+/// The longest stretch with no tick heard that is not a clock lost: the
+/// longer of this, s, and [`LOST_BEATS`] beats.
+pub const LOST_S: f64 = 5.0;
+/// See [`LOST_S`].
+pub const LOST_BEATS: f64 = 8.0;
+
+/// The beats missing between consecutive `ticks` (numbered by the
+/// tracker) whose times, at `beat` s from the tick before, fall in a span
+/// of `cuts`.
+fn beats_in_cuts(ticks: &[Tick], cuts: &[(f64, f64)], beat: f64) -> usize {
+    ticks
+        .windows(2)
+        .map(|w| {
+            (w[0].beat + 1..w[1].beat)
+                .filter(|&k| {
+                    let t = w[0].time + (k - w[0].beat) as f64 * beat;
+                    cuts.iter().any(|&(a, b)| t >= a && t <= b)
+                })
+                .count()
+        })
+        .sum()
+}
+
+/// The stretches of a recording `duration` s long, after its first tick,
+/// with no tick heard for longer than [`LOST_S`] and [`LOST_BEATS`] beats,
+/// less what `cuts` covers: a clock lost (stopped, faded, drowned), s.
+fn lost_spans(ticks: &[Tick], cuts: &[(f64, f64)], beat: f64, duration: f64) -> Vec<(f64, f64)> {
+    let longest = LOST_S.max(LOST_BEATS * beat);
+    let mut gaps: Vec<(f64, f64)> = ticks
+        .windows(2)
+        .map(|w| (w[0].time + beat, w[1].time - beat))
+        .collect();
+    if let Some(last) = ticks.last() {
+        gaps.push((last.time + beat, duration));
+    }
+    let mut lost = Vec::new();
+    for (a, b) in gaps {
+        // The gap less the spans cut: what is left in pieces.
+        let mut pieces = vec![(a, b)];
+        for &(c, d) in cuts {
+            pieces = pieces
+                .into_iter()
+                .flat_map(|(x, y)| [(x, y.min(c)), (x.max(d), y)])
+                .filter(|(x, y)| y > x)
+                .collect();
+        }
+        lost.extend(pieces.into_iter().filter(|(x, y)| y - x > longest));
+    }
+    lost
+}
+
 /// The ticks' signal to noise on the envelope below which the sound
 /// between them is not looked at, dB (followed at twice its beat, a watch
 /// at 12 dB showed 5.9 dB, noise 1.3 to 1.8).
 pub const HALF_BEAT_MIN_SNR_DB: f64 = 3.0;
+
+/// The onsets' scatter about their line (see [`onset_scatter`]) under
+/// which ticks too faint for [`HALF_BEAT_MIN_SNR_DB`] are still the
+/// clock's, s: the envelope's crests of noise followed in a window of
+/// ±3 to ±4 ms scatter 1.5 to 2.3 ms (a uniform spread's σ); synthetic
+/// ticks at 5 to 7 dB (1.3 to 4 dB on the envelope), 1,800 to 28,800
+/// beats an hour, 0.2 to 0.8 ms.
+pub const HALF_BEAT_MAX_SCATTER_S: f64 = 1e-3;
+
+/// The scatter of the tracker's onsets about the line of their side, s:
+/// 1.4826 median absolute second differences of each side's onsets five
+/// beats in a row (k, k + 2, k + 4), over √6 (a second difference of
+/// three independent times). `None` for fewer than eight.
+fn onset_scatter(coarse: &Coarse) -> Option<f64> {
+    let times: std::collections::HashMap<u64, f64> = coarse.onsets.iter().copied().collect();
+    let mut seconds: Vec<f64> = coarse
+        .onsets
+        .iter()
+        .filter_map(|&(k, t)| {
+            let (b, c) = (times.get(&(k + 2))?, times.get(&(k + 4))?);
+            Some((c - 2.0 * b + t).abs())
+        })
+        .collect();
+    if seconds.len() < 8 {
+        return None;
+    }
+    Some(1.4826 * super::detect::median(&mut seconds) / 6f64.sqrt())
+}
 
 /// A sound between two ticks this large against a tick's rise over the
 /// floor is the other side of a beat half as long: a quarter.

@@ -24,7 +24,7 @@ use super::analysis::{
     check, check_every, conclude, first_beat, half_beat, listen, Checked, Heard, ListenInput,
     Listening, Oscillator, SliceSource, ENVELOPE_BLOCK,
 };
-use super::detect::{envelope_rate, Envelope, OnsetTracker, Refiner};
+use super::detect::{envelope_rate, Envelope, Gate, OnsetTracker, Refiner};
 use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
 use super::windows::{window_of, Window, WindowInput, CLEAN_REACH};
 use crate::analysis::Refusal;
@@ -52,6 +52,8 @@ enum Stage {
 
 struct Following {
     env: Envelope,
+    /// Sounds that are not ticks cut out before the tracker.
+    gate: Gate,
     tracker: OnsetTracker,
     refiner: Refiner,
     beat: f64,
@@ -125,23 +127,23 @@ impl LiveListener {
         env.push(samples);
         wide.push(samples);
         let env_rate = envelope_rate(&env, rate);
+        let floor = Gate::floor_of(&env.values, env_rate);
+        let (gated, _) = Gate::apply(&env.values, env_rate, floor);
+        let (wide, _) = Gate::apply(
+            &wide.values,
+            env_rate,
+            Gate::floor_of(&wide.values, env_rate),
+        );
         let track = |beat: f64| {
             let mut tracker = OnsetTracker::new(env_rate, beat);
-            for block in env.values.chunks(ENVELOPE_BLOCK) {
+            for block in gated.chunks(ENVELOPE_BLOCK) {
                 tracker.push(block);
             }
             tracker.finish()
         };
-        let mut beat = first_beat(&env.values, env_rate, &self.input, &self.checked)?;
+        let mut beat = first_beat(&gated, env_rate, &self.input, &self.checked)?;
         let mut coarse = track(beat);
-        if let Some(half) = half_beat(
-            &env.values,
-            &wide.values,
-            env_rate,
-            &coarse,
-            beat,
-            &self.input,
-        )? {
+        if let Some(half) = half_beat(&gated, &wide, env_rate, &coarse, beat, &self.input)? {
             beat = half;
             coarse = track(beat);
         }
@@ -150,6 +152,7 @@ impl LiveListener {
         }
         Ok(Following {
             env: Envelope::new(rate),
+            gate: Gate::new(env_rate, floor),
             tracker: OnsetTracker::following(env_rate, beat, coarse.rule),
             refiner: Refiner::following(rate, coarse.timing, coarse.drops),
             beat,
@@ -221,11 +224,14 @@ impl LiveListener {
             Stage::Following(f) => *f,
         };
         let Following {
-            tracker,
+            mut gate,
+            mut tracker,
             mut refiner,
             beat,
             ..
         } = f;
+        tracker.push(&gate.finish());
+        let cuts = gate.spans_s();
         let given = tracker.handed();
         let coarse = tracker.finish();
         refiner.push_onsets(&coarse.onsets[given..], 0.0);
@@ -239,6 +245,7 @@ impl LiveListener {
                 duration: self.samples as f64 / rate,
                 beat,
                 sample_rate: self.sample_rate,
+                cuts,
             },
             &self.checked,
             &self.input,
@@ -250,7 +257,8 @@ impl Following {
     /// A block through the envelope, the tracker and the refiner.
     fn push(&mut self, block: &[f32]) {
         self.env.push(block);
-        self.tracker.push(&self.env.values);
+        let gated = self.gate.push(&self.env.values);
+        self.tracker.push(&gated);
         self.env.values.clear();
         let onsets = self.tracker.take_onsets();
         self.refiner.push_onsets(&onsets, self.tracker.horizon());

@@ -142,9 +142,71 @@ pub struct Synthesized {
     pub missing: Vec<f64>,
     /// The time from each tick's onset to its drop's, s.
     pub drop_delay: f64,
+    /// Where the interference is loud: its RMS over half a tick's over
+    /// the tick's first ms (from s, to s).
+    pub loud: Vec<(f64, f64)>,
 }
 
-/// splitmix64 with Box-Muller: small, seeded, reproducible everywhere.
+/// A sound that is not a tick laid over the recording: what a clock's own
+/// strike and chime, or the hands holding the recorder, add to it.
+///
+/// A blow of a bell is five partials, a minor-third bell's hum, prime,
+/// tierce, quint and nominal (0.5, 1, 1.19, 1.5 and 2 times its strike
+/// note, each detuned by up to 1%), decaying over 1 to 5 s, the note
+/// drawn between 500 and 1,000 Hz from the seed (a chime's between 600
+/// and 1,100); blows come 2 to 2.6 s
+/// apart. A chime is notes 0.65 to 0.8 s apart, each on one of four bells
+/// a fifth apart at most (a tune's notes drawn from the seed), 4 dB below
+/// the strike. Handling is rubbing (noise low-passed at 2 kHz, its level
+/// changing every 20 ms) with a knock a second (a low, short resonance).
+/// `level_db` of [`Synthesizer::interfere`] is a blow's peak, and the
+/// rubbing's peak, over a tick's.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Interference {
+    /// A clock striking.
+    Strike {
+        /// The first blow, s from the start.
+        at_s: f64,
+        /// Blows (the hour).
+        blows: u32,
+    },
+    /// A chime.
+    Chime {
+        /// The first note, s from the start.
+        at_s: f64,
+        /// Notes.
+        notes: u32,
+    },
+    /// The recorder handled.
+    Handling {
+        /// From, s from the start.
+        at_s: f64,
+        /// For, s.
+        for_s: f64,
+    },
+}
+
+/// Handling noise: its spans, its own random stream and its low-pass
+/// state (carried across blocks).
+#[derive(Clone, Debug)]
+struct Handling {
+    spans: Vec<(f64, f64)>,
+    level: f64,
+    random: Random,
+    seed: u64,
+    low: f64,
+}
+
+impl Handling {
+    /// The rubbing's level in the 20 ms segment `segment` (0.1 to 1, from
+    /// a hash of the segment: the same whatever the blocks).
+    fn level_at(&self, segment: u64) -> f64 {
+        let mut r = Random(self.seed ^ segment.wrapping_mul(0x9E37_79B9_7F4A_7C15));
+        r.between(0.1, 1.0)
+    }
+}
+
+/// splitmix64: small, seeded, reproducible everywhere.
 #[derive(Clone, Debug)]
 struct Random(u64);
 
@@ -162,9 +224,66 @@ impl Random {
     fn between(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * self.uniform()
     }
-    fn gaussian(&mut self) -> f64 {
-        let (u, v) = (self.uniform(), self.uniform());
-        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+}
+
+/// Gaussian noise from both halves of each Box-Muller pair (one logarithm,
+/// square root and sine-cosine pair for two samples); the spare half is
+/// kept across blocks.
+#[derive(Clone, Debug)]
+struct Noise {
+    random: Random,
+    spare: Option<f64>,
+}
+
+impl Noise {
+    fn next(&mut self) -> f64 {
+        if let Some(v) = self.spare.take() {
+            return v;
+        }
+        let (u, v) = (self.random.uniform(), self.random.uniform());
+        let r = (-2.0 * u.ln()).sqrt();
+        let (sin, cos) = (std::f64::consts::TAU * v).sin_cos();
+        self.spare = Some(r * sin);
+        r * cos
+    }
+}
+
+/// Samples between two fresh computations of a phasor that is otherwise
+/// advanced by one complex product a sample: any sample's value is the same
+/// whatever block it falls in.
+const CHECKPOINT: usize = 64;
+
+/// Adds `gain` times sin(`phase` + `step` i) to `out[i − first]` for the
+/// samples `from..to` of a recording whose phase starts counting at
+/// sample `begins`, damped by `decay` a sample (1 for none): a damped
+/// phasor advanced by one complex product a sample, computed afresh at
+/// every [`CHECKPOINT`]-th sample.
+fn add_phasor(
+    out: &mut [f64],
+    first: usize,
+    (begins, from, to): (usize, usize, usize),
+    gain: f64,
+    (phase, step): (f64, f64),
+    decay: f64,
+) {
+    let (c, s) = (decay * step.cos(), decay * step.sin());
+    let advance = |(re, im): (f64, f64)| (re * c - im * s, re * s + im * c);
+    let mut k = from;
+    while k < to {
+        let anchor = (k / CHECKPOINT * CHECKPOINT).max(begins);
+        let end = ((k / CHECKPOINT + 1) * CHECKPOINT).min(to);
+        let n = (anchor - begins) as f64;
+        let m = gain * decay.powf(n);
+        let (sin, cos) = (phase + step * n).sin_cos();
+        let mut z = (m * cos, m * sin);
+        for _ in anchor..k {
+            z = advance(z);
+        }
+        for slot in &mut out[k - first..end - first] {
+            *slot += z.1;
+            z = advance(z);
+        }
+        k = end;
     }
 }
 
@@ -175,7 +294,7 @@ struct Sound(Vec<(f64, f64, f64)>);
 impl Sound {
     fn random(random: &mut Random, sample_rate: f64, modes: usize) -> Self {
         let top = 8000.0_f64.min(0.45 * sample_rate);
-        let mut parts: Vec<(f64, f64, f64)> = (0..modes)
+        let parts: Vec<(f64, f64, f64)> = (0..modes)
             .map(|_| {
                 (
                     random.between(0.4, 1.0),
@@ -184,14 +303,39 @@ impl Sound {
                 )
             })
             .collect();
-        // Scale so that the peak of the sum is 1.
+        Self::normalized(parts, 5e-6)
+    }
+
+    /// The resonances `parts` scaled so that the peak of their sum over
+    /// its first 2,000 steps of `step` s is 1.
+    fn normalized(mut parts: Vec<(f64, f64, f64)>, step: f64) -> Self {
         let peak = (0..2000)
-            .map(|i| Sound(parts.clone()).value(i as f64 * 5e-6).abs())
+            .map(|i| Sound(parts.clone()).value(i as f64 * step).abs())
             .fold(0.0, f64::max);
         for p in &mut parts {
             p.0 /= peak;
         }
         Sound(parts)
+    }
+
+    /// A bell struck at `note` Hz (see [`Interference`]).
+    fn bell(random: &mut Random, note: f64) -> Self {
+        let partials = [
+            (0.4, 0.5, 4.0),
+            (1.0, 1.0, 3.0),
+            (0.5, 1.19, 2.0),
+            (0.3, 1.5, 1.5),
+            (0.6, 2.0, 1.2),
+        ];
+        let parts = partials
+            .iter()
+            .map(|&(a, ratio, tau)| {
+                let f = note * ratio * random.between(0.99, 1.01);
+                (a, f, tau * random.between(0.8, 1.2))
+            })
+            .collect();
+        // (The peak within the first 20 ms: the partials beat slowly.)
+        Self::normalized(parts, 1e-5)
     }
 
     /// The sound `t` seconds after its onset.
@@ -203,6 +347,28 @@ impl Sound {
             .iter()
             .map(|&(a, f, tau)| a * (-t / tau).exp() * (std::f64::consts::TAU * f * t).sin())
             .sum()
+    }
+
+    /// Adds `gain` times the sound with its onset at `onset` s, sampled at
+    /// `rate`, to `out`, whose first slot is sample `first`. Each
+    /// resonance is a damped phasor ([`add_phasor`]), not an exponential
+    /// and a sine a sample: some twenty times faster, and within 1e-12 of
+    /// [`Sound::value`] (test `the_recurrence_follows_the_sound`).
+    fn add_to(&self, out: &mut [f64], first: usize, gain: f64, onset: f64, rate: f64) {
+        let begins = (onset * rate).ceil().max(0.0) as usize;
+        let from = begins.max(first);
+        let to = (((onset + self.length()) * rate) as usize).min(first + out.len());
+        if from >= to {
+            return;
+        }
+        // Time of the first sample after the onset.
+        let t = begins as f64 / rate - onset;
+        for &(a, f, tau) in &self.0 {
+            let w = std::f64::consts::TAU * f;
+            let m = gain * a * (-t / tau).exp();
+            let decay = (-1.0 / (rate * tau)).exp();
+            add_phasor(out, first, (begins, from, to), m, (w * t, w / rate), decay);
+        }
     }
 
     /// How long it lasts (until e^{-12} of its slowest resonance), s.
@@ -234,14 +400,149 @@ pub struct Synthesizer {
     noise_level: f64,
     hum_level: f64,
     hum_phase: f64,
-    noise: Random,
+    noise: Noise,
     /// The true onset of every tick present, s.
     pub ticks: Vec<f64>,
     /// The times of the ticks left out, s.
     pub missing: Vec<f64>,
+    /// Bells struck: onset s, gain, the bell.
+    blows: Vec<(f64, f64, Sound)>,
+    handling: Option<Handling>,
+    /// Where the interference is loud: its RMS over half a tick's over
+    /// the tick's first ms (from s, to s).
+    pub loud: Vec<(f64, f64)>,
 }
 
 impl Synthesizer {
+    /// Lays `interference` over the recording, `level_db` over a tick's
+    /// peak (see [`Interference`]); the spans where it is louder than a
+    /// tick are in [`Self::loud`].
+    pub fn interfere(mut self, interference: &[Interference], level_db: f64) -> Self {
+        let mut random = Random(self.noise.random.0 ^ 0xB311_5EED);
+        let gain = 10f64.powf(level_db / 20.0);
+        let note = random.between(500.0, 1000.0);
+        let spacing = random.between(2.0, 2.6);
+        let chime_note = random.between(600.0, 1100.0);
+        let chime: Vec<Sound> = [1.0, 9.0 / 8.0, 5.0 / 4.0, 3.0 / 2.0]
+            .iter()
+            .map(|r| Sound::bell(&mut random, chime_note * r))
+            .collect();
+        let strike = Sound::bell(&mut random, note);
+        // A tick's loudness as a listener's envelope has it: its RMS over
+        // its first millisecond.
+        let tick_rms = ((0..1000)
+            .map(|i| self.tick.value(i as f64 * 1e-6).powi(2))
+            .sum::<f64>()
+            / 1000.0)
+            .sqrt();
+        // Until a bell's ring (the RMS of its partials) falls under half
+        // that, s (by bisection: the RMS only falls).
+        let ring = |g: f64, bell: &Sound| {
+            let rms = |t: f64| {
+                let power: f64 = bell
+                    .0
+                    .iter()
+                    .map(|&(a, _, tau)| (g * a * (-t / tau).exp()).powi(2) / 2.0)
+                    .sum();
+                power.sqrt()
+            };
+            let (mut lo, mut hi) = (0.0, bell.length());
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if rms(mid) > 0.5 * tick_rms {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            hi
+        };
+        for item in interference {
+            match *item {
+                Interference::Strike { at_s, blows } => {
+                    for i in 0..blows {
+                        let at = at_s + f64::from(i) * spacing;
+                        self.blows.push((at, gain, strike.clone()));
+                    }
+                    let last = at_s + f64::from(blows.max(1) - 1) * spacing;
+                    self.loud.push((at_s, last + ring(gain, &strike)));
+                }
+                Interference::Chime { at_s, notes } => {
+                    let g = gain * 10f64.powf(-4.0 / 20.0);
+                    let mut at = at_s;
+                    let mut end = at_s;
+                    for _ in 0..notes {
+                        let bell = &chime[(random.uniform() * 4.0) as usize % 4];
+                        self.blows.push((at, g, bell.clone()));
+                        end = end.max(at + ring(g, bell));
+                        at += random.between(0.65, 0.8);
+                    }
+                    self.loud.push((at_s, end));
+                }
+                Interference::Handling { at_s, for_s } => {
+                    let h = self.handling.get_or_insert_with(|| Handling {
+                        spans: Vec::new(),
+                        level: gain,
+                        random: Random(random.next()),
+                        seed: random.next(),
+                        low: 0.0,
+                    });
+                    h.spans.push((at_s, at_s + for_s));
+                    self.loud.push((at_s, at_s + for_s));
+                }
+            }
+        }
+        self.blows.sort_by(|a, b| a.0.total_cmp(&b.0));
+        self.loud.sort_by(|a, b| a.0.total_cmp(&b.0));
+        self
+    }
+
+    /// Adds the bells and the handling to `block`, whose first sample is
+    /// `first`.
+    fn add_interference(&mut self, block: &mut [f64], first: usize) {
+        let (start, end) = (
+            first as f64 / self.rate,
+            (first + block.len()) as f64 / self.rate,
+        );
+        for (at, gain, bell) in &self.blows {
+            if *at <= end && at + bell.length() >= start {
+                bell.add_to(block, first, *gain, *at, self.rate);
+            }
+        }
+        let Some(h) = &mut self.handling else {
+            return;
+        };
+        // Rubbing: noise through a one-pole low-pass at 2 kHz; a knock a
+        // second: a 150 Hz resonance of 30 ms.
+        let pole = (-std::f64::consts::TAU * 2000.0 / self.rate).exp();
+        let knock = Sound(vec![(1.0, 150.0, 0.03)]);
+        for (j, slot) in block.iter_mut().enumerate() {
+            let t = (first + j) as f64 / self.rate;
+            let white = h.random.uniform() - 0.5;
+            h.low = pole * h.low + (1.0 - pole) * white;
+            if h.spans.iter().any(|&(a, b)| t >= a && t < b) {
+                let level = h.level_at((t / 0.02) as u64);
+                // (The low-pass keeps about a tenth of uniform noise's
+                // range: scaled back to a peak near `level`.)
+                *slot += h.level * level * 6.0 * h.low;
+            }
+        }
+        let knocks: Vec<f64> = h
+            .spans
+            .iter()
+            .flat_map(|&(a, b)| {
+                (0..)
+                    .map(move |i| a + 0.3 + f64::from(i))
+                    .take_while(move |&k| k < b)
+            })
+            .filter(|&k| k <= end && k + knock.length() >= start)
+            .collect();
+        let level = h.level;
+        for k in knocks {
+            knock.add_to(block, first, level, k, self.rate);
+        }
+    }
+
     /// A synthesiser of `spec`; the tick times are drawn at once.
     pub fn new(spec: &TickRecording) -> Self {
         let mut random = Random(spec.seed);
@@ -313,9 +614,15 @@ impl Synthesizer {
             hum_phase,
             // The noise from its own stream, so that blocks of any size
             // give the same recording.
-            noise: Random(spec.seed ^ 0x5DEE_CE66_D1CE_4E5B),
+            noise: Noise {
+                random: Random(spec.seed ^ 0x5DEE_CE66_D1CE_4E5B),
+                spare: None,
+            },
             ticks,
             missing,
+            blows: Vec::new(),
+            handling: None,
+            loud: Vec::new(),
         }
     }
 
@@ -359,18 +666,18 @@ impl Synthesizer {
                 ));
             }
             for (onset, g, sound) in sounds {
-                let from = ((onset * self.rate).ceil().max(0.0) as usize).max(first);
-                let to = (((onset + sound.length()) * self.rate) as usize).min(last);
-                for i in from..to {
-                    block[i - first] += g * sound.value(i as f64 / self.rate - onset);
-                }
+                sound.add_to(&mut block, first, g, onset, self.rate);
             }
         }
-        for (j, (slot, value)) in out.iter_mut().zip(&block).enumerate() {
-            let t = (first + j) as f64 / self.rate;
-            let phase = std::f64::consts::TAU * 50.0 * t + self.hum_phase;
-            let mains = phase.sin() + 0.3 * (3.0 * phase).sin();
-            let v = value + self.hum_level * mains + self.noise_level * self.noise.gaussian();
+        self.add_interference(&mut block, first);
+        // Mains hum: 50 Hz and its third harmonic.
+        let step = std::f64::consts::TAU * 50.0 / self.rate;
+        for (harmonic, gain) in [(1.0, self.hum_level), (3.0, 0.3 * self.hum_level)] {
+            let phasor = (harmonic * self.hum_phase, harmonic * step);
+            add_phasor(&mut block, first, (0, first, last), gain, phasor, 1.0);
+        }
+        for (slot, value) in out.iter_mut().zip(&block) {
+            let v = value + self.noise_level * self.noise.next();
             // Leave head room: the tick's peak at half of full scale.
             *slot = (0.5 * v).clamp(-1.0, 1.0) as f32;
         }
@@ -381,7 +688,17 @@ impl Synthesizer {
 
 /// Synthesises the whole recording of `spec` in memory.
 pub fn synthesize(spec: &TickRecording) -> Synthesized {
-    let mut synth = Synthesizer::new(spec);
+    synthesize_with(spec, &[], 0.0)
+}
+
+/// Synthesises the whole recording of `spec` in memory, with
+/// `interference` laid over it `level_db` over a tick's peak.
+pub fn synthesize_with(
+    spec: &TickRecording,
+    interference: &[Interference],
+    level_db: f64,
+) -> Synthesized {
+    let mut synth = Synthesizer::new(spec).interfere(interference, level_db);
     let mut samples = vec![0.0_f32; synth.len()];
     synth.fill(&mut samples);
     Synthesized {
@@ -389,12 +706,33 @@ pub fn synthesize(spec: &TickRecording) -> Synthesized {
         ticks: synth.ticks,
         missing: synth.missing,
         drop_delay: synth.drop_delay,
+        loud: synth.loud,
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_recurrence_follows_the_sound() {
+        let mut random = Random(5);
+        for rate in [8000.0, 44_100.0, 96_000.0] {
+            let sound = Sound::random(&mut random, rate, 3);
+            let onset = 10.63 / rate;
+            // To the sound's end, where add_to stops.
+            let n = ((sound.length() + onset) * rate) as usize;
+            let mut out = vec![0.0; n];
+            sound.add_to(&mut out, 0, 0.8, onset, rate);
+            for (i, v) in out.iter().enumerate() {
+                let direct = 0.8 * sound.value(i as f64 / rate - onset);
+                assert!(
+                    (v - direct).abs() < 1e-12,
+                    "{rate} Hz, sample {i}: {v} {direct}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn blocks_of_any_size_give_the_same_recording() {

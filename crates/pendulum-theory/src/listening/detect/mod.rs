@@ -3,7 +3,9 @@
 //!
 //! 1. [`Envelope`] ([`envelope`]): band-pass ([`super::filter::BandPass`]),
 //!    then the RMS over 1 ms, one value per 0.5 ms (an energy detector:
-//!    a tick twice the noise's RMS still stands out of the floor).
+//!    a tick twice the noise's RMS still stands out of the floor); then
+//!    [`Gate`] ([`gate`]): sounds that are not ticks (a strike, a chime,
+//!    handling) found by their loudness over 0.25 s and cut out.
 //! 2. [`beat_period`] ([`period`]): the autocorrelation of the first five
 //!    minutes of envelope, by FFT; its highest peak between 50 ms and 2 s
 //!    that stands five robust standard deviations out of the noise, then
@@ -34,12 +36,14 @@
 //! ticks are found, the rest reported missed, none invented.
 
 pub mod envelope;
+pub mod gate;
 pub mod onsets;
 pub mod outliers;
 pub mod period;
 pub mod refine;
 
 pub use envelope::{envelope_rate, Envelope, ENVELOPE_RATE};
+pub use gate::Gate;
 pub use onsets::{second_sound, EventRule, OnsetTracker, Timing};
 pub use outliers::clean;
 pub use period::beat_period;

@@ -1,0 +1,1 @@
+//! Nothing: this crate only unifies dependency features (see its Cargo.toml).

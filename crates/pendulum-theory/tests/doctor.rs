@@ -125,7 +125,7 @@ fn windows_a_wheel_biases_alike_are_warned() {
 /// without its beat rate given, its rate within 0.5 s/day and beat error
 /// within 0.3 ms of the truth, every tick outside the loud spans (and half
 /// a second around them) found, the spans cut reported over the loud ones
-/// and no clock said lost.
+/// and no clock said lost; the same clock alone has nothing cut or lost.
 fn heard_through(label: &str, spec: &TickRecording, what: &[Interference], level_db: f64) {
     let rec = synthesize_with(spec, what, level_db);
     assert!(!rec.loud.is_empty(), "{label}: nothing loud");
@@ -173,6 +173,10 @@ fn heard_through(label: &str, spec: &TickRecording, what: &[Interference], level
             _ => None,
         });
         let cut = cut.unwrap_or_else(|| panic!("{label}: no span cut reported"));
+        // The same spans as data, with the beats in them.
+        let as_data: Vec<(f64, f64)> = heard.cut_s.iter().map(|s| (s[0], s[1])).collect();
+        assert_eq!(as_data, cut, "{label}");
+        assert!(heard.cut_beats > 0, "{label}");
         for &(a, z) in &rec.loud {
             // Each loud span's start is inside a span cut (its tail may
             // fall under the ticks before it ends).
@@ -187,6 +191,73 @@ fn heard_through(label: &str, spec: &TickRecording, what: &[Interference], level
             b.warnings
         );
     }
+    // The clock alone: nothing cut, nothing lost, no word of either.
+    let clean = synthesize(spec);
+    let heard = listen_to_samples(
+        &clean.samples,
+        f64::from(spec.sample_rate),
+        &ListenInput::default(),
+    )
+    .unwrap_or_else(|e| panic!("{label} alone: refused: {e}"));
+    assert!(
+        heard.cut_s.is_empty() && heard.lost_s.is_empty(),
+        "{label} alone"
+    );
+    assert_eq!(heard.cut_beats, 0, "{label} alone");
+    let codes = &heard.beats.warning_codes;
+    assert!(
+        !codes.contains(&"sounds_cut") && !codes.contains(&"clock_lost"),
+        "{label} alone: {codes:?}"
+    );
+}
+
+/// A clock that stops part-way (its ticks gone at 200 s of 300, the room's
+/// noise going on) is warned with the time, not left in silence: the
+/// figures are the first 200 s's.
+#[test]
+fn a_clock_that_stops_is_warned_with_the_time() {
+    let spec = TickRecording {
+        duration: 300.0,
+        rate_s_per_day: 12.0,
+        beat_error_ms: 1.5,
+        snr_db: 90.0,
+        seed: 11,
+        ..TickRecording::DEFAULT
+    };
+    let mut rec = synthesize(&spec);
+    let rate = f64::from(spec.sample_rate);
+    let stop = (200.0 * rate) as usize;
+    // The room's noise, 24 dB under a tick's peak (half of full scale), by
+    // a seeded xorshift and Box-Muller.
+    let mut state = 0x2545_F491_4F6C_DD1D_u64;
+    let mut uniform = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    };
+    let sigma = 0.5 * 10f64.powf(-24.0 / 20.0);
+    for (i, x) in rec.samples.iter_mut().enumerate() {
+        let clock = if i < stop { f64::from(*x) } else { 0.0 };
+        let noise = (-2.0 * uniform().ln()).sqrt() * (std::f64::consts::TAU * uniform()).cos();
+        *x = (clock + sigma * noise) as f32;
+    }
+    let heard = listen_to_samples(&rec.samples, rate, &ListenInput::default()).unwrap();
+    let b = &heard.beats;
+    let rate_found = b.rate_s_per_day.unwrap();
+    assert!((rate_found - 12.0).abs() < 0.5, "{rate_found}");
+    assert_eq!(heard.lost_s.len(), 1, "{:?}", heard.lost_s);
+    let [from, to] = heard.lost_s[0];
+    assert!(
+        (from - 200.0).abs() < 2.0 && (to - 300.0).abs() < 1.0,
+        "{from} {to}"
+    );
+    let said: Vec<String> = b.warnings.iter().map(|w| w.to_string()).collect();
+    assert!(
+        b.warning_codes.contains(&"clock_lost") && said.iter().any(|w| w.contains("-300 s")),
+        "{said:?}"
+    );
+    assert!(!b.warning_codes.contains(&"sounds_cut"), "{said:?}");
 }
 
 /// Issue 45: a long-case clock striking six in the middle and at the end;

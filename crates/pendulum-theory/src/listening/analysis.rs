@@ -152,8 +152,16 @@ pub struct Listening {
     /// The split of the two intervals, % (50/50 is in beat).
     pub in_beat_percent: [f64; 2],
     /// Beats between the first tick kept and the last with no tick kept
-    /// (no sound, or noise dropped).
+    /// (no sound, or noise dropped), but for those in `cut_s`.
     pub missed: usize,
+    /// Spans cut out as sounds that are not ticks (warning `sounds_cut`),
+    /// s from the start: `[from, to]`.
+    pub cut_s: Vec<[f64; 2]>,
+    /// The clock's beats inside `cut_s` (not in `missed`).
+    pub cut_beats: usize,
+    /// Spans outside `cut_s` where no tick was heard (warning
+    /// `clock_lost`), s from the start: `[from, to]`.
+    pub lost_s: Vec<[f64; 2]>,
     /// Doubled beats dropped.
     pub extra: usize,
     /// Tick envelope peak over the envelope's median, dB.
@@ -691,9 +699,14 @@ pub(crate) fn conclude(
         beats.warning_codes.push(w.code());
         beats.warnings.push(w);
     }
+    // (On the recording's clock, as the ticks are.)
+    let scaled = |spans: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        spans.iter().map(|&(a, b)| (a * scale, b * scale)).collect()
+    };
+    let (cuts, lost) = (scaled(&cuts), scaled(&lost));
     if !cuts.is_empty() {
         let w = BeatWarning::SoundsCut {
-            spans: cuts.iter().map(|&(a, b)| (a * scale, b * scale)).collect(),
+            spans: cuts.clone(),
             beats: in_cuts,
         };
         beats.warning_codes.push(w.code());
@@ -701,7 +714,7 @@ pub(crate) fn conclude(
     }
     if !lost.is_empty() {
         let w = BeatWarning::ClockLost {
-            spans: lost.iter().map(|&(a, b)| (a * scale, b * scale)).collect(),
+            spans: lost.clone(),
         };
         beats.warning_codes.push(w.code());
         beats.warnings.push(w);
@@ -752,6 +765,9 @@ pub(crate) fn conclude(
         // kept: missed, whether no sound was there or it was dropped as
         // noise (counted once, though the analysis fills the same gaps).
         missed,
+        cut_s: cuts.iter().map(|&(a, b)| [a, b]).collect(),
+        cut_beats: in_cuts,
+        lost_s: lost.iter().map(|&(a, b)| [a, b]).collect(),
         extra: doubled,
         beats,
         snr_db,

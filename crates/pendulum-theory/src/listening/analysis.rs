@@ -436,6 +436,36 @@ pub(crate) fn half_beat(
     Ok(Some(0.5 * beat))
 }
 
+/// The first pass's envelopes with the sounds that are not ticks cut out
+/// ([`Gate`]), each against the floor of its own first minutes (a
+/// recording may start with a strike).
+pub(crate) struct FirstPass {
+    /// The detector's envelope, gated.
+    pub(crate) gated: Vec<f32>,
+    /// The wide band's, gated.
+    pub(crate) wide: Vec<f32>,
+    /// The spans cut from the detector's, s.
+    pub(crate) cuts: Vec<(f64, f64)>,
+    /// The detector's envelope's floor, for the gate of the later passes.
+    pub(crate) floor: Option<f64>,
+}
+
+impl FirstPass {
+    /// The first pass's envelope `env` and wide-band envelope `wide`, at
+    /// `env_rate` values a second, gated.
+    pub(crate) fn of(env: &[f32], wide: &[f32], env_rate: f64) -> Self {
+        let floor = Gate::floor_of(env, env_rate);
+        let (gated, cuts) = Gate::apply(env, env_rate, floor);
+        let (wide, _) = Gate::apply(wide, env_rate, Gate::floor_of(wide, env_rate));
+        Self {
+            gated,
+            wide,
+            cuts,
+            floor,
+        }
+    }
+}
+
 /// What the passes over a recording heard, for [`conclude`].
 pub(crate) struct Heard {
     /// The tracker's onsets and levels.
@@ -479,12 +509,12 @@ pub fn listen<S: SampleSource>(
         })
         .map_err(ListenFailure::Source)?;
     let env_rate = envelope_rate(&env, rate);
-    // Sounds that are not ticks cut out ([`Gate`]), against the floor of
-    // the first minutes (a recording may start with a strike).
-    let floor = Gate::floor_of(&env.values, env_rate);
-    let (gated, first_cuts) = Gate::apply(&env.values, env_rate, floor);
-    let wide_floor = Gate::floor_of(&wide.values, env_rate);
-    let (wide, _) = Gate::apply(&wide.values, env_rate, wide_floor);
+    let FirstPass {
+        gated,
+        wide,
+        cuts: first_cuts,
+        floor,
+    } = FirstPass::of(&env.values, &wide.values, env_rate);
     let beat = first_beat(&gated, env_rate, input, &checked)?;
     // Pass 2: each beat's onset on the envelope, streamed (a recording
     // within the first pass is not read again).

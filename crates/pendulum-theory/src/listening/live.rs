@@ -21,8 +21,8 @@
 //! command line's pipe test, which compares the two whole).
 
 use super::analysis::{
-    check, check_every, conclude, first_beat, half_beat, listen, Checked, Heard, ListenInput,
-    Listening, Oscillator, SliceSource, ENVELOPE_BLOCK,
+    check, check_every, conclude, first_beat, half_beat, listen, Checked, FirstPass, Heard,
+    ListenInput, Listening, Oscillator, SliceSource, ENVELOPE_BLOCK,
 };
 use super::detect::{envelope_rate, Envelope, Gate, OnsetTracker, Refiner};
 use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
@@ -127,13 +127,9 @@ impl LiveListener {
         env.push(samples);
         wide.push(samples);
         let env_rate = envelope_rate(&env, rate);
-        let floor = Gate::floor_of(&env.values, env_rate);
-        let (gated, _) = Gate::apply(&env.values, env_rate, floor);
-        let (wide, _) = Gate::apply(
-            &wide.values,
-            env_rate,
-            Gate::floor_of(&wide.values, env_rate),
-        );
+        let FirstPass {
+            gated, wide, floor, ..
+        } = FirstPass::of(&env.values, &wide.values, env_rate);
         let track = |beat: f64| {
             let mut tracker = OnsetTracker::new(env_rate, beat);
             for block in gated.chunks(ENVELOPE_BLOCK) {

@@ -27,6 +27,8 @@ pub const GATE_LOUD_DB: f64 = 12.0;
 /// The share of the ticks' level (see [`Gate::tick_level`]) a loud
 /// block's median must pass as well: −6 dB.
 pub const TICK_SHARE: f64 = 0.5;
+/// The quantile of the blocks' largest values that is the ticks' level.
+const TICK_QUANTILE: f64 = 0.9;
 /// Blocks whose medians set the floor (30 s).
 const HISTORY: usize = 120;
 /// The quantile of the medians that is the floor.
@@ -79,8 +81,10 @@ impl Gate {
     /// percentile of its blocks' medians.
     pub fn floor_of(values: &[f32], rate: f64) -> Option<f64> {
         let block = ((GATE_BLOCK_S * rate).round() as usize).max(1);
-        let mut medians: Vec<f64> = values.chunks_exact(block).map(median_of).collect();
-        quantile(&mut medians)
+        quantile(
+            values.chunks_exact(block).map(median_of).collect(),
+            FLOOR_QUANTILE,
+        )
     }
 
     /// The whole of `values` through a gate: the gated values and the spans
@@ -93,19 +97,16 @@ impl Gate {
         (out, spans)
     }
 
-    /// The floor now.
+    /// The floor now: the quantile of the recent medians, or the floor
+    /// given while fewer than eight blocks have come (and the lower of the
+    /// two until the history is full: a loud start is not the floor).
     fn floor(&self) -> Option<f64> {
-        if self.history.len() >= 8 || self.seed.is_none() {
-            let mut medians: Vec<f64> = self.history.iter().copied().collect();
-            let own = quantile(&mut medians);
-            match (own, self.seed) {
-                // (Early on, the lower of the two: a loud start is not
-                // the floor.)
-                (Some(o), Some(s)) if self.history.len() < HISTORY => Some(o.min(s)),
-                (o, s) => o.or(s),
-            }
-        } else {
-            self.seed
+        let own = (self.history.len() >= 8 || self.seed.is_none())
+            .then(|| quantile(self.history.iter().copied().collect(), FLOOR_QUANTILE))
+            .flatten();
+        match (own, self.seed) {
+            (Some(o), Some(s)) if self.history.len() < HISTORY => Some(o.min(s)),
+            (o, s) => o.or(s),
         }
     }
 
@@ -114,13 +115,9 @@ impl Gate {
     /// four, a slow tower clock's 2 s beat in one of eight); `None` before
     /// eight blocks.
     fn tick_level(&self) -> Option<f64> {
-        if self.tops.len() < 8 {
-            return None;
-        }
-        let mut tops: Vec<f64> = self.tops.iter().copied().collect();
-        let k = ((tops.len() - 1) as f64 * 0.9).round() as usize;
-        let (_, v, _) = tops.select_nth_unstable_by(k, f64::total_cmp);
-        Some(*v)
+        (self.tops.len() >= 8)
+            .then(|| quantile(self.tops.iter().copied().collect(), TICK_QUANTILE))
+            .flatten()
     }
 
     /// Feeds envelope values; returns those let out.
@@ -208,12 +205,12 @@ fn median_of(values: &[f32]) -> f64 {
     super::median(&mut v)
 }
 
-/// The [`FLOOR_QUANTILE`] of `values` (reordered); `None` if empty.
-fn quantile(values: &mut [f64]) -> Option<f64> {
+/// The `q` quantile of `values` (the nearest rank); `None` if empty.
+fn quantile(mut values: Vec<f64>, q: f64) -> Option<f64> {
     if values.is_empty() {
         return None;
     }
-    let k = ((values.len() - 1) as f64 * FLOOR_QUANTILE).round() as usize;
+    let k = ((values.len() - 1) as f64 * q).round() as usize;
     let (_, v, _) = values.select_nth_unstable_by(k, f64::total_cmp);
     Some(*v)
 }

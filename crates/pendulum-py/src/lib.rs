@@ -543,14 +543,7 @@ fn clock_log(
         pulse_width_s: owned(&pulse_width, "pulse_width")?,
         flag_width_m: flag_width,
         gate_radius_m: gate_radius,
-        nominal: match (bph, period) {
-            (Some(_), Some(_)) => {
-                return Err(PyValueError::new_err("give bph or period, not both"))
-            }
-            (Some(b), None) => Some(pendulum_theory::period::Nominal::BeatsPerHour(b)),
-            (None, Some(p)) => Some(pendulum_theory::period::Nominal::Period(p)),
-            (None, None) => None,
-        },
+        nominal: nominal_of(bph, period)?,
         beat_s: beat,
         station,
         tides,
@@ -662,16 +655,10 @@ fn fit_photogate(
     bph: Option<f64>,
     period: Option<f64>,
 ) -> PyResult<String> {
-    use pendulum_theory::fitting::beat_log::Nominal;
     use pendulum_theory::fitting::photogate::{analyse, GateInput};
     let time = values(&time, "time")?;
     let gate = gate.as_ref().map(|g| values(g, "gate")).transpose()?;
-    let nominal = match (bph, period) {
-        (Some(_), Some(_)) => return Err(PyValueError::new_err("give bph or period, not both")),
-        (Some(b), None) => Some(Nominal::BeatsPerHour(b)),
-        (None, Some(p)) => Some(Nominal::Period(p)),
-        (None, None) => None,
-    };
+    let nominal = nominal_of(bph, period)?;
     answer(py.detach(|| {
         analyse(&GateInput {
             time,
@@ -747,14 +734,9 @@ fn fit_beats(
         crutch,
         amplitude,
     )?;
-    use pendulum_theory::fitting::beat_log::{analyse, Nominal};
+    use pendulum_theory::fitting::beat_log::analyse;
     let time = values(&time, "time")?;
-    let nominal = match (bph, period) {
-        (Some(_), Some(_)) => return Err(PyValueError::new_err("give bph or period, not both")),
-        (Some(b), None) => Some(Nominal::BeatsPerHour(b)),
-        (None, Some(p)) => Some(Nominal::Period(p)),
-        (None, None) => None,
-    };
+    let nominal = nominal_of(bph, period)?;
     answer(py.detach(|| {
         analyse(time, nominal).and_then(|mut beats| {
             beats.advise(&known, None, None, None)?;
@@ -1032,17 +1014,12 @@ fn listen<'py>(
         crutch,
         amplitude,
     )?;
-    use pendulum_theory::fitting::beat_log::Nominal;
     use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput, Oscillator};
     let samples = samples
         .as_slice()
         .map_err(|_| PyValueError::new_err("samples: must be contiguous"))?;
     let input = ListenInput {
-        nominal: match (period, bph) {
-            (Some(p), _) => Some(Nominal::Period(p)),
-            (None, Some(b)) => Some(Nominal::BeatsPerHour(b)),
-            (None, None) => None,
-        },
+        nominal: nominal_of(bph, period)?,
         sample_rate_error_ppm,
         lift_angle,
         oscillator: oscillator
@@ -1110,6 +1087,21 @@ fn period_table(
     match table(&input) {
         Ok(rows) if matches!(amplitudes, Amplitudes::One(_)) => answer(Ok(rows[0])),
         result => answer(result),
+    }
+}
+
+/// The nominal beat from `bph` or `period` (s), at most one of them: the
+/// CLI refuses both, and so does every function here that takes them.
+fn nominal_of(
+    bph: Option<f64>,
+    period: Option<f64>,
+) -> PyResult<Option<pendulum_theory::period::Nominal>> {
+    use pendulum_theory::period::Nominal;
+    match (bph, period) {
+        (Some(_), Some(_)) => Err(PyValueError::new_err("give bph or period, not both")),
+        (Some(b), None) => Ok(Some(Nominal::BeatsPerHour(b))),
+        (None, Some(p)) => Ok(Some(Nominal::Period(p))),
+        (None, None) => Ok(None),
     }
 }
 

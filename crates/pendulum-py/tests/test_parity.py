@@ -862,6 +862,10 @@ def test_listen_noise_and_bad_arrays():
         pt.listen(np.zeros(100, dtype=np.float32), 44100.5)
     with pytest.raises(ValueError, match="sample_rate: must be a whole number"):
         pt.listen(np.zeros(100, dtype=np.float32), 0)
+    # Both nominal beats refused, as the CLI refuses --bph with --period
+    # (listen took the period and said nothing).
+    with pytest.raises(ValueError, match="give bph or period, not both"):
+        pt.listen(np.zeros(44100, dtype=np.float32), 44100, bph=3600, period=2.0)
 
 
 # --- period -------------------------------------------------------------------

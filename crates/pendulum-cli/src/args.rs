@@ -13,7 +13,7 @@ use crate::units::{
 use clap::{Args, Parser, Subcommand};
 use pendulum_theory::clock::analysis as clock;
 use pendulum_theory::compound::datasheet as sheet;
-use pendulum_theory::listening::synth::TickRecording;
+use pendulum_theory::listening::synth::{Interference, TickRecording};
 use pendulum_theory::period::table as period_table;
 use pendulum_theory::train::analysis as train_analysis;
 
@@ -370,6 +370,61 @@ pub struct TrainSpec {
 
 /// Reads `W,W,…:P,P,…` (the counts' sense, one pinion fewer than wheels
 /// and none zero, is the library's to judge, as for every caller).
+/// `--drop`: a time in ms, or `clock`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DropArg {
+    /// Where a pendulum clock of the beat has it.
+    Clock,
+    /// This many ms.
+    Ms(f64),
+}
+
+fn parse_drop(text: &str) -> Result<DropArg, String> {
+    if text.trim() == "clock" {
+        return Ok(DropArg::Clock);
+    }
+    text.parse::<Milliseconds>()
+        .map(|m| DropArg::Ms(m.0))
+        .map_err(|e| format!("{e}, or `clock`"))
+}
+
+/// `T:X` of `--strike`, `--chime` and `--handling`: a time and a count
+/// (or a second time).
+fn split_at_time(text: &str, what: &str) -> Result<(f64, String), String> {
+    let (at, rest) = text
+        .split_once(':')
+        .ok_or(format!("expected T:{what}, e.g. 240:6"))?;
+    let at = at.parse::<Time>().map_err(|e| e.to_string())?.0;
+    Ok((at, rest.trim().to_string()))
+}
+
+fn count_of(text: &str, what: &str) -> Result<u32, String> {
+    text.parse::<u32>()
+        .map_err(|_| format!("{what} must be a whole number, got '{text}'"))
+}
+
+fn parse_strike(text: &str) -> Result<Interference, String> {
+    let (at_s, n) = split_at_time(text, "N")?;
+    Ok(Interference::Strike {
+        at_s,
+        blows: count_of(&n, "the blows")?,
+    })
+}
+
+fn parse_chime(text: &str) -> Result<Interference, String> {
+    let (at_s, n) = split_at_time(text, "N")?;
+    Ok(Interference::Chime {
+        at_s,
+        notes: count_of(&n, "the notes")?,
+    })
+}
+
+fn parse_handling(text: &str) -> Result<Interference, String> {
+    let (at_s, d) = split_at_time(text, "D")?;
+    let for_s = d.parse::<Time>().map_err(|e| e.to_string())?.0;
+    Ok(Interference::Handling { at_s, for_s })
+}
+
 fn parse_train(text: &str) -> Result<TrainSpec, String> {
     let counts = |part: &str| -> Result<Vec<u32>, String> {
         if part.trim().is_empty() {
@@ -541,6 +596,30 @@ pub struct SynthTicksArgs {
     pub hum_db: Option<Decibels>,
     #[arg(long, value_name = "F", allow_hyphen_values = true, help = with_default("Fraction of ticks left out", TickRecording::DEFAULT.missing))]
     pub missing: Option<Fraction>,
+    /// The drop's time after the unlocking, ms, or `clock` for where a
+    /// pendulum clock of this beat has it (a 1.5° lift crossed at a 2.5°
+    /// swing)
+    /// [default: 8-20 ms from the seed, a watch's].
+    #[arg(long, value_name = "D", allow_hyphen_values = true, value_parser = parse_drop)]
+    pub drop: Option<DropArg>,
+    #[arg(long, value_name = "P", allow_hyphen_values = true, help = with_default("How fast the swing changes, % an hour (negative: the arc falls)", TickRecording::DEFAULT.arc_change_percent_per_hour))]
+    pub arc_change: Option<Number>,
+    #[arg(long, value_name = "E", allow_hyphen_values = true, help = with_default("A wheel's periodic error: ticks early and late by up to E, ms", TickRecording::DEFAULT.periodic_error_ms))]
+    pub periodic_error: Option<Milliseconds>,
+    #[arg(long, value_name = "T", allow_hyphen_values = true, help = with_default("The periodic error's period, s (a seconds clock's escape wheel: 60 s)", TickRecording::DEFAULT.periodic_error_period_s))]
+    pub periodic_error_period: Option<Time>,
+    /// The clock strikes N blows from T s (e.g. `240:6`); repeat for more.
+    #[arg(long, value_name = "T:N", allow_hyphen_values = true, value_parser = parse_strike)]
+    pub strike: Vec<Interference>,
+    /// A chime of N notes from T s (e.g. `60:16`); repeat for more.
+    #[arg(long, value_name = "T:N", allow_hyphen_values = true, value_parser = parse_chime)]
+    pub chime: Vec<Interference>,
+    /// The recorder handled from T s for D s (e.g. `0:10`); repeat for
+    /// more.
+    #[arg(long, value_name = "T:D", allow_hyphen_values = true, value_parser = parse_handling)]
+    pub handling: Vec<Interference>,
+    #[arg(long, value_name = "DB", allow_hyphen_values = true, help = with_default("The strikes', chimes' and handling's peak over a tick's, dB", pendulum_theory::listening::synth::DEFAULT_INTERFERENCE_DB))]
+    pub interference_db: Option<Decibels>,
     #[arg(long, allow_hyphen_values = true, value_name = "N", help = with_default("Seed of every random choice (the tick's sound too)", TickRecording::DEFAULT.seed))]
     pub seed: Option<u64>,
     /// Write the true tick times to this CSV file (time_s).

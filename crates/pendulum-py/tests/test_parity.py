@@ -832,6 +832,13 @@ LISTEN = {
     "oscillator_unknown": ([], {"oscillator": "spring"}),
     "missing_40_percent": (["--missing", "0.4", "--rate", "-20", "--duration", "2min"],
                            {"bph": 3600.0}),
+    # The clock doctor's findings (issue 45), and sounds that are not ticks.
+    "wheel_error": (["--duration", "5min", "--periodic-error", "1ms", "--snr-db", "24",
+                     "--seed", "3"], {"bph": 3600.0}),
+    "arc_falls": (["--duration", "10min", "--drop", "clock", "--arc-change", "-20",
+                   "--seed", "4"], {"bph": 3600.0, "lift_angle": math.radians(1.5)}),
+    "hum": (["--hum-db", "-6"], {}),
+    "strike_at_start": (["--duration", "2min", "--strike", "2:6"], {}),
 }
 LISTEN_UNITS = {"bph": "", "period": "s", "sample_rate_error_ppm": "", "lift_angle": "rad",
                 "oscillator": "", "every": "s"}

@@ -481,15 +481,28 @@ pub fn advise(clock: &Clockwork) -> Result<Vec<Advice>, Refusal> {
             .beat_error_standard_error_s
             .filter(|s| s.is_finite())
             .unwrap_or(0.0);
-        let worth = match oscillator {
-            Oscillator::Pendulum => PENDULUM_BEAT_ERROR_FRACTION * beat,
-            Oscillator::Balance => BALANCE_BEAT_ERROR_S,
-        };
-        if be >= worth && be > 3.0 * be_se {
+        if worth_setting(oscillator, beat, be, be_se) {
             advice.push(set_in_beat(clock, oscillator, beat, be));
         }
     }
     Ok(advice)
+}
+
+/// Whether a beat error `be` s (standard error `be_se` s) of `oscillator`
+/// beating every `beat` s is worth setting: at least
+/// [`PENDULUM_BEAT_ERROR_FRACTION`] of the beat (a pendulum) or
+/// [`BALANCE_BEAT_ERROR_S`] (a balance), and three standard errors from
+/// none.
+pub fn worth_setting(oscillator: Oscillator, beat: f64, be: f64, be_se: f64) -> bool {
+    be >= beat_error_worth_setting(oscillator, beat) && be > 3.0 * be_se
+}
+
+/// The least beat error worth setting, s: see [`worth_setting`].
+pub fn beat_error_worth_setting(oscillator: Oscillator, beat: f64) -> f64 {
+    match oscillator {
+        Oscillator::Pendulum => PENDULUM_BEAT_ERROR_FRACTION * beat,
+        Oscillator::Balance => BALANCE_BEAT_ERROR_S,
+    }
 }
 
 /// How to bring `clock`, gaining `rate` s/day (standard error `se`), to

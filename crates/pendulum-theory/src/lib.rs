@@ -58,6 +58,7 @@ pub mod elliptic;
 pub mod energy;
 pub mod error;
 pub mod exact;
+pub mod findings;
 pub mod fitting;
 pub mod forces;
 pub mod gas;

@@ -262,9 +262,10 @@ fn a_clock_that_stops_is_warned_with_the_time() {
 
 /// Issue 45: a long-case clock striking six in the middle and at the end;
 /// a bracket clock's chime and strike. Whole recordings were refused, or
-/// the clock lost after the strike with no word. (A strike in the first
-/// seconds and handling at the start are not heard through yet: the
-/// tracker learns the ticks' level from its first beats.)
+/// the clock lost after the strike with no word. A strike in the first
+/// seconds and the recorder handled for its first 10 s (the tracker
+/// learnt the ticks' level from the first beats, which were the strike's
+/// or the cut's).
 #[test]
 fn strikes_and_chimes_are_cut_and_the_clock_followed() {
     let long_case = TickRecording {
@@ -288,6 +289,7 @@ fn strikes_and_chimes_are_cut_and_the_clock_followed() {
         scope.spawn(|| {
             heard_through("six at 240 s", &long_case, &strike(240.0), 18.0);
             heard_through("six at 120 s", &long_case, &strike(120.0), 18.0);
+            heard_through("six at 2 s", &long_case, &strike(2.0), 18.0);
         });
         scope.spawn(|| {
             let chime = [
@@ -301,6 +303,201 @@ fn strikes_and_chimes_are_cut_and_the_clock_followed() {
                 },
             ];
             heard_through("chime and eight", &bracket, &chime, 20.0);
+            let handled = [Interference::Handling {
+                at_s: 0.0,
+                for_s: 10.0,
+            }];
+            heard_through("handled 0-10 s", &long_case, &handled, 10.0);
+            heard_through("bracket handled 0-10 s", &bracket, &handled, 10.0);
         });
     });
+}
+
+/// The findings of `spec` heard with its beat rate given (and the lift's
+/// 1.5° when the drop is a clock's), with `change` applied to the samples.
+fn findings_of(
+    spec: &TickRecording,
+    change: impl Fn(&mut Vec<f32>),
+) -> Vec<pendulum_theory::findings::Finding> {
+    let mut rec = synthesize(spec);
+    change(&mut rec.samples);
+    let heard = listen_to_samples(
+        &rec.samples,
+        f64::from(spec.sample_rate),
+        &ListenInput {
+            nominal: Some(Nominal::BeatsPerHour(spec.beats_per_hour)),
+            lift_angle: spec.drop_ms.map(|_| 1.5f64.to_radians()),
+            ..ListenInput::default()
+        },
+    )
+    .unwrap_or_else(|e| panic!("{spec:?}: refused: {e}"));
+    heard.findings
+}
+
+/// Issue 45, item 3: a seconds clock whose escape wheel turns once a
+/// minute with a ±1 ms error: found at its period and named; a bracket
+/// clock's 30 s error found at its period, not named (its train is not
+/// known); the amplitude within 15% (the detector's onsets follow a
+/// displacement of a millisecond by some 90%: measured on the truth).
+#[test]
+fn a_wheel_s_periodic_error_is_named_by_its_period() {
+    use pendulum_theory::findings::Finding;
+    let cases = [(3600.0, 60.0, Some(30)), (7200.0, 30.0, None)];
+    for (bph, period, teeth) in cases {
+        let spec = TickRecording {
+            beats_per_hour: bph,
+            duration: 300.0,
+            rate_s_per_day: 15.0,
+            snr_db: 24.0,
+            periodic_error_ms: 1.0,
+            periodic_error_period_s: period,
+            seed: 3,
+            ..TickRecording::DEFAULT
+        };
+        let found = findings_of(&spec, |_| ());
+        let wheel = found.iter().find_map(|f| match *f {
+            Finding::PeriodicError {
+                period_s,
+                amplitude_ms,
+                escape_teeth,
+                ..
+            } => Some((period_s, amplitude_ms, escape_teeth)),
+            _ => None,
+        });
+        let (p, a, t) = wheel.unwrap_or_else(|| panic!("{bph}: none in {found:?}"));
+        assert!((p / period - 1.0).abs() < 0.02, "{bph}: period {p}");
+        assert!((a - 1.0).abs() < 0.15, "{bph}: amplitude {a}");
+        assert_eq!(t, teeth, "{bph}");
+        // The same clock without the error: no such finding.
+        let clean = findings_of(
+            &TickRecording {
+                periodic_error_ms: 0.0,
+                ..spec
+            },
+            |_| (),
+        );
+        assert!(clean.is_empty(), "{bph}: {clean:?}");
+    }
+}
+
+/// Issue 45, item 3: a seconds clock whose swing falls 20% an hour (its
+/// drop coming later after each unlocking): found, with the fall over
+/// the recording (−3.3% in 10 min) and when it would stop (the swing
+/// 2.5° falling to the lift's half, 0.75°, 0.7/0.2 h from the start:
+/// 3.33 h after the end).
+#[test]
+fn a_falling_arc_is_found_with_when_the_clock_stops() {
+    use pendulum_theory::findings::Finding;
+    use pendulum_theory::listening::synth::typical_drop_ms;
+    let spec = TickRecording {
+        duration: 600.0,
+        drop_ms: Some(typical_drop_ms(1.0)),
+        arc_change_percent_per_hour: -20.0,
+        seed: 4,
+        ..TickRecording::DEFAULT
+    };
+    let found = findings_of(&spec, |_| ());
+    let fall = found.iter().find_map(|f| match *f {
+        Finding::ArcFalls {
+            change_percent,
+            stops_in_h,
+            ..
+        } => Some((change_percent, stops_in_h)),
+        _ => None,
+    });
+    let (change, stops) = fall.unwrap_or_else(|| panic!("none in {found:?}"));
+    let truth = -20.0 * 598.0 / 3600.0;
+    assert!((change - truth).abs() < 0.5, "{change} against {truth}");
+    assert!((stops / 3.33 - 1.0).abs() < 0.1, "{stops}");
+}
+
+/// Hum, clipping and noise are found where they are, each alone; and no
+/// finding at all on clean recordings of clocks in good order (a finding
+/// that fires on them teaches users to skip the list): pendulum clocks
+/// with a clock's drop and watches, a little rate, beat error under what
+/// is worth setting, 24 to 35 dB.
+#[test]
+fn findings_come_where_their_cause_is_and_nowhere_else() {
+    use pendulum_theory::findings::Finding;
+    let clean = [
+        (3600.0, 24.0, 0.5, 1),
+        (3600.0, 35.0, -3.0, 2),
+        (5400.0, 28.0, 0.6, 3),
+        (7200.0, 30.0, -0.4, 4),
+        (18_000.0, 30.0, 0.1, 5),
+        (21_600.0, 26.0, -0.2, 6),
+        (28_800.0, 32.0, 0.3, 7),
+    ];
+    std::thread::scope(|scope| {
+        for (bph, snr, be, seed) in clean {
+            scope.spawn(move || {
+                let beat = 3600.0 / bph;
+                let spec = TickRecording {
+                    beats_per_hour: bph,
+                    duration: 120.0,
+                    rate_s_per_day: 4.0 - seed as f64,
+                    beat_error_ms: be,
+                    snr_db: snr,
+                    drop_ms: (bph < 10_000.0)
+                        .then(|| pendulum_theory::listening::synth::typical_drop_ms(beat)),
+                    seed,
+                    ..TickRecording::DEFAULT
+                };
+                let found = findings_of(&spec, |_| ());
+                assert!(found.is_empty(), "{bph} bph seed {seed}: {found:?}");
+            });
+        }
+    });
+    let spec = TickRecording {
+        duration: 60.0,
+        seed: 9,
+        ..TickRecording::DEFAULT
+    };
+    let codes =
+        |found: Vec<Finding>| -> Vec<&'static str> { found.iter().map(Finding::code).collect() };
+    let hum = findings_of(
+        &TickRecording {
+            hum_db: -6.0,
+            ..spec
+        },
+        |_| (),
+    );
+    assert_eq!(codes(hum), ["hum"]);
+    // Played four times too loud: the ticks' peaks cut at full scale.
+    let clipped = findings_of(&spec, |s| {
+        s.iter_mut().for_each(|x| *x = (4.0 * *x).clamp(-1.0, 1.0))
+    });
+    assert_eq!(codes(clipped), ["clipped"]);
+    let noisy = findings_of(
+        &TickRecording {
+            snr_db: 9.0,
+            ..spec
+        },
+        |_| (),
+    );
+    assert_eq!(codes(noisy), ["noisy"]);
+}
+
+/// Open (issue 45): a long-case clock in a quieter room (30 dB) striking
+/// six at 240 s. The bell's beating partials, heard for 20 s after the
+/// last blow, had set the beat search on 0.094 s (the whole recording
+/// refused); the beat search now cuts the tails too and finds the clock,
+/// but the tracker still misses 16 of the 279 ticks in the tail, where
+/// the bell is under half a tick's loudness. Run with `--ignored`.
+#[test]
+#[ignore = "open in issue 45: ticks in a bell's quiet tail are missed (16 of 279)"]
+fn ticks_in_a_bell_s_tail_are_followed() {
+    let quiet = TickRecording {
+        duration: 300.0,
+        rate_s_per_day: 12.0,
+        beat_error_ms: 1.5,
+        snr_db: 30.0,
+        seed: 4,
+        ..TickRecording::DEFAULT
+    };
+    let strike = [Interference::Strike {
+        at_s: 240.0,
+        blows: 6,
+    }];
+    heard_through("six at 240 s, 30 dB", &quiet, &strike, 18.0);
 }

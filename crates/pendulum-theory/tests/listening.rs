@@ -105,6 +105,7 @@ fn spec(bph: f64, sample_rate: u32, snr_db: f64, seed: u64) -> TickRecording {
         hum_db: -30.0,
         missing: 0.0,
         seed,
+        ..TickRecording::DEFAULT
     }
 }
 

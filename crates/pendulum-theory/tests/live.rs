@@ -43,6 +43,7 @@ fn recording(bph: f64, sample_rate: u32, beat_error_ms: f64, rate_change: f64) -
         hum_db: -30.0,
         missing: 0.05,
         seed: 11,
+        ..TickRecording::DEFAULT
     }
 }
 

@@ -234,14 +234,23 @@ pub fn known(args: &crate::args::AdviceArgs) -> Result<pendulum_theory::advice::
     })
 }
 
+/// The findings in plain words, one to a line, under "What it shows:"
+/// (nothing when there are none).
+pub fn findings_text(findings: &[pendulum_theory::findings::Finding]) -> String {
+    listed("What it shows:", findings.iter().map(|f| f.sentence()))
+}
+
 /// The advice as the text's last lines: "What to do:" and one line each.
 pub fn advice_text(advice: &[pendulum_theory::advice::Advice]) -> String {
-    if advice.is_empty() {
+    listed("What to do:", advice.iter().map(|a| a.sentence()))
+}
+
+/// `heading` and each of `lines` as a dashed item under it; nothing when
+/// there are no lines.
+fn listed(heading: &str, lines: impl Iterator<Item = String>) -> String {
+    let items: String = lines.map(|l| format!("  - {l}\n")).collect();
+    if items.is_empty() {
         return String::new();
     }
-    let mut out = String::from("What to do:\n");
-    for a in advice {
-        out.push_str(&format!("  - {}\n", a.sentence()));
-    }
-    out
+    format!("{heading}\n{items}")
 }

@@ -1,14 +1,17 @@
 //! `pendulum synth ticks`: a recording of a ticking clock with known truth.
 
 use super::common;
-use crate::args::SynthTicksArgs;
+use crate::args::{DropArg, SynthTicksArgs};
 use crate::audio::{pcm16, wav_header};
 use crate::error::CliError;
 use crate::file::{AtomicFile, CsvFile};
 use crate::output::num;
 use crate::units::or_default;
 use crate::work;
-use pendulum_theory::listening::synth::{Synthesizer, TickRecording};
+use pendulum_theory::listening::synth::{
+    check_interference, typical_drop_ms, Interference, Synthesizer, TickRecording,
+    DEFAULT_INTERFERENCE_DB,
+};
 
 pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
     // Each input not given is the library's.
@@ -27,13 +30,32 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
         reverb_s: args.reverb.map_or(d.reverb_s, |t| t.0),
         hum_db: or_default(args.hum_db, d.hum_db),
         missing: or_default(args.missing, d.missing),
+        drop_ms: match args.drop {
+            None => d.drop_ms,
+            Some(DropArg::Ms(ms)) => Some(ms),
+            Some(DropArg::Clock) => Some(typical_drop_ms(
+                3600.0 / or_default(args.bph, d.beats_per_hour),
+            )),
+        },
+        arc_change_percent_per_hour: or_default(args.arc_change, d.arc_change_percent_per_hour),
+        periodic_error_ms: or_default(args.periodic_error, d.periodic_error_ms),
+        periodic_error_period_s: args
+            .periodic_error_period
+            .map_or(d.periodic_error_period_s, |t| t.0),
         seed: args.seed.unwrap_or(d.seed),
     };
     spec.check().map_err(|e| common::refused(&e))?;
+    let interference: Vec<Interference> = [&args.strike, &args.chime, &args.handling]
+        .into_iter()
+        .flatten()
+        .copied()
+        .collect();
+    let level_db = or_default(args.interference_db, DEFAULT_INTERFERENCE_DB);
+    check_interference(&interference, spec.duration, level_db).map_err(|e| common::refused(&e))?;
     let (bph, duration, sample_rate) = (spec.beats_per_hour, spec.duration, spec.sample_rate);
     // The samples are made and written a block at a time: an hour at
     // 48 kHz is 345 MB of WAV but a few MB of memory.
-    let mut recording = Synthesizer::new(&spec);
+    let mut recording = Synthesizer::new(&spec).interfere(&interference, level_db);
     let header = wav_header(recording.len() as u64, sample_rate).ok_or_else(|| {
         CliError::flag(
             "--duration",

@@ -192,36 +192,40 @@ fn advice_flags_are_refused_by_name() {
     );
 }
 
-/// The README's listening example: its advice lines are what the binary
-/// prints for the recording the README says how to make.
+/// The README's listening examples: the lines they show (the warnings,
+/// findings and advice that end the text) are what the binary prints for
+/// the recording the README says, just before, how to make.
 #[test]
 fn the_readme_shows_what_the_binary_says() {
     let readme =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md")).unwrap();
-    let start = readme.find("<!-- advice-example:").expect("the marker");
-    let block = &readme[start..];
-    let block = &block[block.find("```text\n").unwrap() + 8..];
-    let block = &block[..block.find("```").unwrap()];
-    let shown: Vec<&str> = block.lines().skip_while(|l| *l != "What to do:").collect();
-    assert!(shown.len() >= 3, "{block}");
-    let make = readme[..start]
-        .rfind("`pendulum synth ticks clock.wav")
-        .map(|i| &readme[i + 1..])
-        .and_then(|s| s.find('`').map(|j| &s[..j]))
-        .unwrap();
-    let dir = tempfile::tempdir().unwrap();
-    let mut args: Vec<&str> = make.split_whitespace().skip(1).collect();
-    let wav = dir.path().join("clock.wav");
-    let wav = wav.to_str().unwrap();
-    args[2] = wav;
-    pendulum().args(&args).assert().success();
-    let marker = &readme[start + "<!-- advice-example:".len()..];
-    let marker = &marker[..marker.find("-->").unwrap()];
-    let listen: Vec<&str> = marker
-        .split_whitespace()
-        .map(|a| if a == "clock.wav" { wav } else { a })
-        .collect();
-    let text = text(&listen);
-    let printed: Vec<&str> = text.lines().skip_while(|l| *l != "What to do:").collect();
-    assert_eq!(printed, shown);
+    for tag in ["<!-- advice-example:", "<!-- doctor-example:"] {
+        let start = readme.find(tag).expect("the marker");
+        let block = &readme[start..];
+        let block = &block[block.find("```text\n").unwrap() + 8..];
+        let block = &block[..block.find("```").unwrap()];
+        // After the command and the "…" that stands for the figures.
+        let shown: Vec<&str> = block.lines().skip_while(|l| *l != "…").skip(1).collect();
+        assert!(shown.len() >= 3, "{tag} {block}");
+        let make = readme[..start]
+            .rfind("`pendulum synth ticks clock.wav")
+            .map(|i| &readme[i + 1..])
+            .and_then(|s| s.find('`').map(|j| &s[..j]))
+            .unwrap();
+        let dir = tempfile::tempdir().unwrap();
+        let mut args: Vec<&str> = make.split_whitespace().skip(1).collect();
+        let wav = dir.path().join("clock.wav");
+        let wav = wav.to_str().unwrap();
+        args[2] = wav;
+        pendulum().args(&args).assert().success();
+        let marker = &readme[start + tag.len()..];
+        let marker = &marker[..marker.find("-->").unwrap()];
+        let listen: Vec<&str> = marker
+            .split_whitespace()
+            .map(|a| if a == "clock.wav" { wav } else { a })
+            .collect();
+        let text = text(&listen);
+        let printed: Vec<&str> = text.lines().skip_while(|l| *l != shown[0]).collect();
+        assert_eq!(printed, shown, "{tag}");
+    }
 }

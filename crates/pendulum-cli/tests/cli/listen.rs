@@ -117,6 +117,29 @@ fn what_is_not_a_clock_recording_is_refused_in_one_line() {
         &["synth", "ticks", short.to_str().unwrap(), "--bph", "100"],
         "--bph",
     );
+    // The doctor's inputs to the generator, each refused by its flag and
+    // nothing written.
+    let never = dir.path().join("never.wav");
+    let out = never.to_str().unwrap();
+    for (flag, value) in [
+        ("--strike", "400:6"),
+        ("--strike", "10:0"),
+        ("--strike", "ten:6"),
+        ("--chime", "-1:4"),
+        ("--handling", "0:-1s"),
+        ("--drop", "900ms"),
+        ("--drop", "nan"),
+        ("--arc-change", "-5000"),
+        ("--periodic-error", "200ms"),
+        ("--periodic-error-period", "1s"),
+        ("--interference-db", "100"),
+    ] {
+        let said = refuses(
+            &["synth", "ticks", out, "--duration", "60s", flag, value],
+            flag,
+        );
+        assert!(!never.exists(), "{flag} {value}: {said}");
+    }
 }
 
 #[test]

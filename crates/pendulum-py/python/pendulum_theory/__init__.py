@@ -607,7 +607,10 @@ def listen(samples, sample_rate, *, bph=None, period=None, sample_rate_error_ppm
     ``windows`` and ``window_totals`` in the result).
     Returns the command's ``--json`` object as a dict (without its
     ``file`` and ``channel``) and the ticks kept as a dict of arrays
-    (time_s, side, amplitude). Its ``advice`` takes ``length``,
+    (time_s, side, amplitude). Its ``findings`` list what the recording
+    shows (``out_of_beat``, ``periodic_error``, ``arc_falls``,
+    ``rate_wanders``, ``noisy``, ``clipped``, ``hum``, each with its
+    figures), as the command's. Its ``advice`` takes ``length``,
     ``parts``, ``nut_pitch``, ``nut_tpi``, ``nut_divisions``, ``crutch``
     and ``amplitude`` as :func:`fit_beats` does."""
     result, (time, side, level) = _native.listen(

@@ -17,6 +17,7 @@ pub mod decay;
 pub mod frames;
 pub mod gyroscope;
 pub mod period_table;
+pub mod periodic;
 pub mod photogate;
 pub mod quality;
 pub mod rundown;

@@ -18,11 +18,14 @@ use super::detect::{
     beat_period, clean, envelope_rate, Coarse, Envelope, Gate, MedianSound, OnsetTracker, Refiner,
     Tick, Timing,
 };
+use super::doctor::findings;
 use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
+use super::quality::{Measured, Quality};
 use super::windows::{windows, Window, WindowInput, WindowTotals, MIN_WINDOW_BEATS};
 use super::{check_nominal_period, BEAT_RANGE_S};
 use crate::analysis::{require_finite, require_finite_sample, Refusal};
 use crate::error::format_significant;
+use crate::findings::Finding;
 use crate::fitting::beat_log::{check_nominal, BeatWarning, Beats, Nominal, REPEATS_EXACTLY_S};
 use crate::fitting::beats::{BeatAnalysis, BeatStream};
 use crate::lift::amplitude_from_lift;
@@ -197,6 +200,9 @@ pub struct Listening {
     /// The windows' rates summed up.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub window_totals: Option<WindowTotals>,
+    /// What the recording shows, with its evidence, meaning and remedy
+    /// ([`Finding`]).
+    pub findings: Vec<Finding>,
     /// The ticks kept, their times rescaled by the sound card's error.
     #[serde(skip)]
     pub ticks: Vec<Tick>,
@@ -442,6 +448,8 @@ pub(crate) fn half_beat(
 pub(crate) struct FirstPass {
     /// The detector's envelope, gated.
     pub(crate) gated: Vec<f32>,
+    /// The same with the loud sounds' tails cut too, for the beat search.
+    pub(crate) searched: Vec<f32>,
     /// The wide band's, gated.
     pub(crate) wide: Vec<f32>,
     /// The spans cut from the detector's, s.
@@ -455,10 +463,12 @@ impl FirstPass {
     /// `env_rate` values a second, gated.
     pub(crate) fn of(env: &[f32], wide: &[f32], env_rate: f64) -> Self {
         let floor = Gate::floor_of(env, env_rate);
-        let (gated, cuts) = Gate::apply(env, env_rate, floor);
-        let (wide, _) = Gate::apply(wide, env_rate, Gate::floor_of(wide, env_rate));
+        let (gated, cuts) = Gate::apply(env, env_rate, floor, false);
+        let (searched, _) = Gate::apply(env, env_rate, floor, true);
+        let (wide, _) = Gate::apply(wide, env_rate, Gate::floor_of(wide, env_rate), true);
         Self {
             gated,
+            searched,
             wide,
             cuts,
             floor,
@@ -482,6 +492,8 @@ pub(crate) struct Heard {
     pub(crate) sample_rate: u32,
     /// The spans cut out as not ticks ([`Gate`]), s.
     pub(crate) cuts: Vec<(f64, f64)>,
+    /// Clipping and hum, where the samples were all seen.
+    pub(crate) quality: Option<Measured>,
 }
 
 /// Listens to `source`: see the module notes.
@@ -511,11 +523,12 @@ pub fn listen<S: SampleSource>(
     let env_rate = envelope_rate(&env, rate);
     let FirstPass {
         gated,
+        searched,
         wide,
         cuts: first_cuts,
         floor,
     } = FirstPass::of(&env.values, &wide.values, env_rate);
-    let beat = first_beat(&gated, env_rate, input, &checked)?;
+    let beat = first_beat(&searched, env_rate, input, &checked)?;
     // Pass 2: each beat's onset on the envelope, streamed (a recording
     // within the first pass is not read again).
     let track = |source: &mut S, beat: f64| -> Result<_, ListenFailure<S::Error>> {
@@ -544,14 +557,18 @@ pub fn listen<S: SampleSource>(
     };
     let (mut coarse, mut samples, mut cuts) = track(source, beat)?;
     let mut beat = beat;
-    if let Some(half) = half_beat(&gated, &wide, env_rate, &coarse, beat, input)? {
+    if let Some(half) = half_beat(&searched, &wide, env_rate, &coarse, beat, input)? {
         beat = half;
         (coarse, samples, cuts) = track(source, beat)?;
     }
     // Pass 3: each tick refined on the samples.
     let mut refiner = Refiner::new(rate, &coarse);
+    let mut quality = Quality::new(rate);
     source
-        .read(None, &mut |block| refiner.push(block))
+        .read(None, &mut |block| {
+            refiner.push(block);
+            quality.push(block);
+        })
         .map_err(ListenFailure::Source)?;
     // (What the refiner and the clean-up drop is counted below as missed.)
     let (ticks, _, sounds) = refiner.finish_with_sounds();
@@ -563,6 +580,7 @@ pub fn listen<S: SampleSource>(
         beat,
         sample_rate,
         cuts,
+        quality: Some(quality.finish()),
     };
     Ok(conclude(heard, &checked, input)?)
 }
@@ -584,6 +602,7 @@ pub(crate) fn conclude(
         beat,
         sample_rate,
         cuts,
+        quality,
     } = heard;
     let (nominal, ppm) = (checked.nominal, checked.ppm);
     let rate = f64::from(sample_rate);
@@ -666,8 +685,9 @@ pub(crate) fn conclude(
     };
     // Beats inside the spans cut are not missed: they are said with the
     // spans.
-    let in_cuts = beats_in_cuts(&ticks, &cuts, beat);
+    let (in_cuts, beside_cuts) = beats_in_cuts(&ticks, &cuts, beat, duration);
     let missed = missed.saturating_sub(in_cuts);
+    let in_cuts = in_cuts + beside_cuts;
     let lost = lost_spans(&ticks, &cuts, beat, duration);
     let scale = 1.0 / (1.0 + ppm * 1e-6);
     for t in &mut ticks {
@@ -810,9 +830,11 @@ pub(crate) fn conclude(
         amplitude_first_order_deg: lifted(&|x| x.first_order),
         windows,
         window_totals,
+        findings: Vec::new(),
         ticks,
         sounds,
     };
+    listening.findings = findings(&listening, &coarse.spacings, quality);
     listening.advise(&crate::advice::Known::default())?;
     Ok(listening)
 }
@@ -962,20 +984,31 @@ pub const LOST_S: f64 = 5.0;
 pub const LOST_BEATS: f64 = 8.0;
 
 /// The beats missing between consecutive `ticks` (numbered by the
-/// tracker) whose times, at `beat` s from the tick before, fall in a span
-/// of `cuts`.
-fn beats_in_cuts(ticks: &[Tick], cuts: &[(f64, f64)], beat: f64) -> usize {
-    ticks
+/// tracker), and before the first and after the last within the
+/// recording's `duration` s, whose times, at `beat` s from the tick
+/// heard beside them, fall in a span of `cuts` (a strike at the start is
+/// cut before the tracker takes the clock up): (between the ticks, before
+/// and after them).
+fn beats_in_cuts(ticks: &[Tick], cuts: &[(f64, f64)], beat: f64, duration: f64) -> (usize, usize) {
+    let cut = |t: f64| cuts.iter().any(|&(a, b)| t >= a && t <= b);
+    let between: usize = ticks
         .windows(2)
         .map(|w| {
             (w[0].beat + 1..w[1].beat)
-                .filter(|&k| {
-                    let t = w[0].time + (k - w[0].beat) as f64 * beat;
-                    cuts.iter().any(|&(a, b)| t >= a && t <= b)
-                })
+                .filter(|&k| cut(w[0].time + (k - w[0].beat) as f64 * beat))
                 .count()
         })
-        .sum()
+        .sum();
+    let (Some(first), Some(last)) = (ticks.first(), ticks.last()) else {
+        return (0, 0);
+    };
+    let before = (1..=(first.time / beat).floor() as usize)
+        .filter(|&m| cut(first.time - m as f64 * beat))
+        .count();
+    let after = (1..=((duration - last.time) / beat).floor() as usize)
+        .filter(|&m| cut(last.time + m as f64 * beat))
+        .count();
+    (between, before + after)
 }
 
 /// The stretches of a recording `duration` s long, after its first tick,

@@ -26,6 +26,7 @@ use super::analysis::{
 };
 use super::detect::{envelope_rate, Envelope, Gate, OnsetTracker, Refiner};
 use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
+use super::quality::Quality;
 use super::windows::{window_of, Window, WindowInput, CLEAN_REACH};
 use crate::analysis::Refusal;
 use crate::fitting::beats::nearest_standard;
@@ -56,6 +57,8 @@ struct Following {
     gate: Gate,
     tracker: OnsetTracker,
     refiner: Refiner,
+    /// Clipping and hum.
+    quality: Quality,
     beat: f64,
     /// The beat the windows' rates are against, s.
     nominal_beat: Option<f64>,
@@ -128,7 +131,11 @@ impl LiveListener {
         wide.push(samples);
         let env_rate = envelope_rate(&env, rate);
         let FirstPass {
-            gated, wide, floor, ..
+            gated,
+            searched,
+            wide,
+            floor,
+            ..
         } = FirstPass::of(&env.values, &wide.values, env_rate);
         let track = |beat: f64| {
             let mut tracker = OnsetTracker::new(env_rate, beat);
@@ -137,9 +144,9 @@ impl LiveListener {
             }
             tracker.finish()
         };
-        let mut beat = first_beat(&gated, env_rate, &self.input, &self.checked)?;
+        let mut beat = first_beat(&searched, env_rate, &self.input, &self.checked)?;
         let mut coarse = track(beat);
-        if let Some(half) = half_beat(&gated, &wide, env_rate, &coarse, beat, &self.input)? {
+        if let Some(half) = half_beat(&searched, &wide, env_rate, &coarse, beat, &self.input)? {
             beat = half;
             coarse = track(beat);
         }
@@ -151,6 +158,7 @@ impl LiveListener {
             gate: Gate::new(env_rate, floor),
             tracker: OnsetTracker::following(env_rate, beat, coarse.rule),
             refiner: Refiner::following(rate, coarse.timing, coarse.drops),
+            quality: Quality::new(rate),
             beat,
             nominal_beat: self
                 .checked
@@ -223,6 +231,7 @@ impl LiveListener {
             mut gate,
             mut tracker,
             mut refiner,
+            quality,
             beat,
             ..
         } = f;
@@ -242,6 +251,7 @@ impl LiveListener {
                 beat,
                 sample_rate: self.sample_rate,
                 cuts,
+                quality: Some(quality.finish()),
             },
             &self.checked,
             &self.input,
@@ -259,5 +269,6 @@ impl Following {
         let onsets = self.tracker.take_onsets();
         self.refiner.push_onsets(&onsets, self.tracker.horizon());
         self.refiner.push(block);
+        self.quality.push(block);
     }
 }

@@ -74,7 +74,9 @@ pub fn check_nominal_period(period: f64, as_beat_rate: bool) -> Result<(), Input
 
 pub mod analysis;
 pub mod detect;
+mod doctor;
 pub mod filter;
 pub mod live;
+pub mod quality;
 pub mod synth;
 pub mod windows;

@@ -41,8 +41,33 @@ pub struct TickRecording {
     /// Probability that a tick is missing (the clock skipped, or a knock
     /// covered it), 0 to 1.
     pub missing: f64,
+    /// The time from the unlocking to the drop at the start, ms: a
+    /// pendulum clock's crossing of its lift is a large share of its beat
+    /// ([`typical_drop_ms`]); none: the sound's own, 8 to 20 ms from the
+    /// seed (a watch's).
+    pub drop_ms: Option<f64>,
+    /// How fast the swing changes, % an hour (negative: the arc falls, as
+    /// a clock's running down or drying out): the swing at time t is
+    /// `1 + arc_change t / 100 h` times the first, and the drop's time the
+    /// crossing of the same lift at that swing
+    /// (`sin(π Δ / 2b) = h / A`, `b` the beat).
+    pub arc_change_percent_per_hour: f64,
+    /// A wheel's periodic error: each tick early or late by this much at
+    /// most, ms (the time warp `t + e sin(2π t / P)`).
+    pub periodic_error_ms: f64,
+    /// Its period `P`, s (a seconds clock's escape wheel: 60 s).
+    pub periodic_error_period_s: f64,
     /// Seed of every random choice.
     pub seed: u64,
+}
+
+/// The drop's time after the unlocking in a pendulum clock of beat `beat`
+/// s, ms: the time to cross a lift of 1.5° whole at a swing of 2.5°
+/// either side (`2 asin(h/A) b / π`, a Graham escapement's usual figures):
+/// 194 ms in a seconds clock, 97 ms at 7,200 beats an hour. (A watch's
+/// balance crosses its lift in a few ms.)
+pub fn typical_drop_ms(beat: f64) -> f64 {
+    2.0 * (0.75_f64 / 2.5).asin() * beat / std::f64::consts::PI * 1e3
 }
 
 impl TickRecording {
@@ -60,6 +85,10 @@ impl TickRecording {
         reverb_s: 0.3,
         hum_db: -30.0,
         missing: 0.0,
+        drop_ms: None,
+        arc_change_percent_per_hour: 0.0,
+        periodic_error_ms: 0.0,
+        periodic_error_period_s: 60.0,
         seed: 1,
     };
     /// The longest recording, s (a WAV file holds at most 4 GiB).
@@ -127,6 +156,51 @@ impl TickRecording {
         }
         crate::analysis::require_finite("snr_db", self.snr_db)?;
         crate::analysis::require_finite("hum_db", self.hum_db)?;
+        let beat_ms = 3.6e6 / bph;
+        if let Some(drop) = self.drop_ms {
+            let drop = crate::analysis::require_finite("drop", drop)?;
+            if !(drop > 0.0 && drop < 0.45 * beat_ms) {
+                return Err(Refusal::field(
+                    "drop",
+                    format!(
+                        "must be between 0 and 45% of the beat ({} ms), got {} ms",
+                        n(0.45 * beat_ms, 3),
+                        n(drop, 6)
+                    ),
+                ));
+            }
+        }
+        let arc = crate::analysis::require_finite("arc_change", self.arc_change_percent_per_hour)?;
+        let end = 1.0 + arc * self.duration / 3600.0 / 100.0;
+        if !(0.5..=2.0).contains(&end) {
+            return Err(Refusal::field(
+                "arc_change",
+                "must keep the swing between half and twice the first to the end of the recording",
+            ));
+        }
+        let error = crate::analysis::require_finite("periodic_error", self.periodic_error_ms)?;
+        if error.abs() > 0.1 * beat_ms {
+            return Err(Refusal::field(
+                "periodic_error",
+                format!(
+                    "must be within a tenth of the beat ({} ms), got {} ms",
+                    n(0.1 * beat_ms, 3),
+                    n(error, 6)
+                ),
+            ));
+        }
+        let period =
+            crate::analysis::require_finite("periodic_error_period", self.periodic_error_period_s)?;
+        if period < 4.0 * beat_ms * 1e-3 {
+            return Err(Refusal::field(
+                "periodic_error_period",
+                format!(
+                    "must be at least four beats ({} s), got {} s",
+                    n(4.0 * beat_ms * 1e-3, 3),
+                    n(period, 6)
+                ),
+            ));
+        }
         Ok(())
     }
 }
@@ -140,8 +214,10 @@ pub struct Synthesized {
     pub ticks: Vec<f64>,
     /// The times of the ticks left out, s.
     pub missing: Vec<f64>,
-    /// The time from each tick's onset to its drop's, s.
+    /// The time from each tick's onset to its drop's at the start, s.
     pub drop_delay: f64,
+    /// The same for each tick present (it changes with the swing), s.
+    pub drops: Vec<f64>,
     /// Where the interference is loud: its RMS over half a tick's over
     /// the tick's first ms (from s, to s).
     pub loud: Vec<(f64, f64)>,
@@ -184,6 +260,65 @@ pub enum Interference {
         /// For, s.
         for_s: f64,
     },
+}
+
+/// The level of [`Interference`] over a tick's peak that `synth ticks`
+/// takes when none is given, dB: a strike near the clock.
+pub const DEFAULT_INTERFERENCE_DB: f64 = 18.0;
+
+/// Checks `interference` for a recording of `duration` s at `level_db`:
+/// each within the recording, 1 to 100 blows or notes, handling of a
+/// positive time, the level within ±60 dB of a tick's. The error names the
+/// field (`strike`, `chime`, `handling`, `interference_db`).
+pub fn check_interference(
+    interference: &[Interference],
+    duration: f64,
+    level_db: f64,
+) -> Result<(), crate::analysis::Refusal> {
+    use crate::analysis::{require_finite, Refusal};
+    use crate::error::format_significant as n;
+    let level = require_finite("interference_db", level_db)?;
+    if level.abs() > 60.0 {
+        return Err(Refusal::field(
+            "interference_db",
+            format!(
+                "must be within ±60 dB of a tick's peak, got {} dB",
+                n(level, 6)
+            ),
+        ));
+    }
+    for item in interference {
+        let (field, at, count) = match *item {
+            Interference::Strike { at_s, blows } => ("strike", at_s, Some(blows)),
+            Interference::Chime { at_s, notes } => ("chime", at_s, Some(notes)),
+            Interference::Handling { at_s, for_s } => {
+                if !(for_s > 0.0 && for_s.is_finite()) {
+                    return Err(Refusal::field(
+                        "handling",
+                        format!("must last longer than 0 s, got {} s", n(for_s, 6)),
+                    ));
+                }
+                ("handling", at_s, None)
+            }
+        };
+        if !(at >= 0.0 && at < duration) {
+            return Err(Refusal::field(
+                field,
+                format!(
+                    "must start within the recording (0 to {} s), got {} s",
+                    n(duration, 6),
+                    n(at, 6)
+                ),
+            ));
+        }
+        if let Some(c) = count.filter(|c| !(1..=100).contains(c)) {
+            return Err(Refusal::field(
+                field,
+                format!("must have 1 to 100 blows or notes, got {c}"),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Handling noise: its spans, its own random stream and its low-pass
@@ -386,13 +521,13 @@ pub struct Synthesizer {
     position: usize,
     tick: Sound,
     drop: Sound,
-    /// The time from each tick's onset to its drop's, s.
+    /// The time from each tick's onset to its drop's at the start, s.
     pub drop_delay: f64,
     drop_gain: f64,
     /// Room echoes: delay s, gain.
     echoes: Vec<(f64, f64)>,
-    /// Every tick present: onset s, gain.
-    events: Vec<(f64, f64)>,
+    /// Every tick present: onset s, gain, the drop's delay s.
+    events: Vec<(f64, f64, f64)>,
     /// The first event that can still sound.
     first_live: usize,
     /// How long after its onset an event's sounds last, s.
@@ -550,7 +685,8 @@ impl Synthesizer {
         let length = (spec.duration * rate).max(0.0) as usize;
         let tick = Sound::random(&mut random, rate, 3);
         let drop = Sound::random(&mut random, rate, 3);
-        let drop_delay = random.between(8e-3, 20e-3);
+        let drawn = random.between(8e-3, 20e-3);
+        let drop_delay = spec.drop_ms.map_or(drawn, |d| d * 1e-3);
         let drop_gain = random.between(0.4, 0.8);
         let echoes: Vec<(f64, f64)> = if spec.reverb_s > 0.0 {
             (0..40)
@@ -565,6 +701,17 @@ impl Synthesizer {
         };
         let nominal = 3600.0 / spec.beats_per_hour;
         let beat = nominal / (1.0 + spec.rate_s_per_day / 86_400.0);
+        // The drop at time t: the same lift crossed at the swing then
+        // (sin(π Δ / 2b) = h / A, A scaled by the arc's change).
+        let arc = spec.arc_change_percent_per_hour / 100.0 / 3600.0;
+        let drop_at = |first: f64, t: f64| -> f64 {
+            if arc == 0.0 {
+                return first;
+            }
+            let w = std::f64::consts::PI / nominal;
+            let edge = (0.5 * w * first).sin() / (1.0 + arc * t);
+            2.0 * edge.min(1.0).asin() / w
+        };
         // The time of beat k from the first: the beats counted, k, are the
         // integral of (1 + rate(t) / 86,400) / nominal over t, a quadratic
         // in t with a linearly changing rate, solved in the form that does
@@ -582,8 +729,13 @@ impl Synthesizer {
             } else {
                 0.0
             };
-            let t = start + elapsed(k as f64) + shift;
-            if t + drop_delay + drop.length() >= spec.duration {
+            let clean = start + elapsed(k as f64);
+            let wheel = spec.periodic_error_ms
+                * 1e-3
+                * (std::f64::consts::TAU * clean / spec.periodic_error_period_s).sin();
+            let t = clean + shift + wheel;
+            let delay = drop_at(drop_delay, t);
+            if t + delay + drop.length() >= spec.duration {
                 break;
             }
             k += 1;
@@ -592,10 +744,11 @@ impl Synthesizer {
                 continue;
             }
             ticks.push(t);
-            events.push((t, random.between(0.9, 1.1)));
+            events.push((t, random.between(0.9, 1.1), delay));
         }
         let longest_echo = echoes.iter().map(|e| e.0).fold(0.0, f64::max);
-        let span = drop_delay + tick.length().max(drop.length()) + longest_echo;
+        let latest_drop = events.iter().map(|e| e.2).fold(drop_delay, f64::max);
+        let span = latest_drop + tick.length().max(drop.length()) + longest_echo;
         let hum_phase = random.between(0.0, std::f64::consts::TAU);
         Self {
             rate,
@@ -649,18 +802,18 @@ impl Synthesizer {
         {
             self.first_live += 1;
         }
-        for &(t, gain) in self.events[self.first_live..]
+        for &(t, gain, drop_delay) in self.events[self.first_live..]
             .iter()
             .take_while(|e| e.0 <= end_time)
         {
             let mut sounds: Vec<(f64, f64, &Sound)> = vec![
                 (t, gain, &self.tick),
-                (t + self.drop_delay, gain * self.drop_gain, &self.drop),
+                (t + drop_delay, gain * self.drop_gain, &self.drop),
             ];
             for &(delay, g) in &self.echoes {
                 sounds.push((t + delay, gain * g, &self.tick));
                 sounds.push((
-                    t + self.drop_delay + delay,
+                    t + drop_delay + delay,
                     gain * self.drop_gain * g,
                     &self.drop,
                 ));
@@ -706,6 +859,7 @@ pub fn synthesize_with(
         ticks: synth.ticks,
         missing: synth.missing,
         drop_delay: synth.drop_delay,
+        drops: synth.events.iter().map(|e| e.2).collect(),
         loud: synth.loud,
     }
 }
@@ -748,6 +902,7 @@ mod tests {
             hum_db: -30.0,
             missing: 0.1,
             seed: 7,
+            ..TickRecording::DEFAULT
         };
         let whole = synthesize(&spec).samples;
         let mut synth = Synthesizer::new(&spec);
@@ -777,6 +932,7 @@ mod tests {
             hum_db: -40.0,
             missing: 0.0,
             seed: 1,
+            ..TickRecording::DEFAULT
         };
         let s = synthesize(&spec);
         assert_eq!(s.samples.len(), 160_000);

@@ -185,6 +185,7 @@ pub(super) fn render(r: &ListenJson, channels: usize, printed: Option<usize>) ->
     if let (Some(totals), None) = (&r.listening.window_totals, printed) {
         out.push_str(&windows(r, totals));
     }
+    out.push_str(&super::super::common::findings_text(&r.listening.findings));
     out.push_str(&super::super::common::advice_text(
         &r.listening.beats.advice,
     ));

@@ -10,7 +10,10 @@
 //! voice or rubbing fills the block. The floor is the 20th percentile of the
 //! medians of the last 30 s of blocks not cut (a quantile, so that a strike
 //! at the start, given a floor from the first minutes, does not set it).
-//! A loud block is cut with one block on either side (a strike's attack
+//! For the beat search its tail is cut too, while blocks stand
+//! [`GATE_QUIET_DB`] over the floor (for [`GATE_TAIL_S`] at most). A loud
+//! block is cut with one block on
+//! either side (a strike's attack
 //! inside the block before, its tail in the block after); a cut block's
 //! values are the floor, flat: no sound in it, nothing for the tracker to
 //! take for a tick, and the tracker, finding no tick there, widens its
@@ -24,6 +27,15 @@ pub const GATE_BLOCK_S: f64 = 0.25;
 /// A block's median over the floor above which it is cut, dB (of the
 /// envelope's amplitude).
 pub const GATE_LOUD_DB: f64 = 12.0;
+/// After a loud block, blocks stay cut while their median stands more
+/// than this over the floor, dB: a bell's tail, its partials beating a few
+/// times a second, otherwise leaves a rhythm that the beat search takes
+/// for the clock's (a strike of six at the default level gave a beat of
+/// 0.094 s for a seconds clock).
+pub const GATE_QUIET_DB: f64 = 6.0;
+/// The longest a tail is cut after the last loud block, s (a room that
+/// stays louder after a door is not cut for ever: its floor follows).
+pub const GATE_TAIL_S: f64 = 15.0;
 /// The share of the ticks' level (see [`Gate::tick_level`]) a loud
 /// block's median must pass as well: −6 dB.
 pub const TICK_SHARE: f64 = 0.5;
@@ -46,6 +58,10 @@ pub struct Gate {
     held: VecDeque<(Vec<f32>, bool)>,
     /// Whether the block let out last was loud.
     last_loud: bool,
+    /// Whether loud sounds' tails are cut ([`GATE_QUIET_DB`]).
+    tails: bool,
+    /// Blocks since the last loud one, while its tail is still cut.
+    tail: Option<usize>,
     /// Medians of the last blocks not loud.
     history: VecDeque<f64>,
     /// The largest values of the same blocks.
@@ -63,12 +79,22 @@ impl Gate {
     /// known beforehand ([`Gate::floor_of`] of the first minutes), keeps a
     /// recording that starts with a strike from taking it for the floor.
     pub fn new(rate: f64, floor: Option<f64>) -> Self {
+        Self::cutting(rate, floor, false)
+    }
+
+    /// [`Gate::new`], and with `tails` each loud sound's tail cut too
+    /// ([`GATE_QUIET_DB`]): for the beat search, which a bell's beating
+    /// partials mislead; the ticks are followed through the tail, where
+    /// they stand over it.
+    pub fn cutting(rate: f64, floor: Option<f64>, tails: bool) -> Self {
         Self {
             rate,
             block: ((GATE_BLOCK_S * rate).round() as usize).max(1),
             filling: Vec::new(),
             held: VecDeque::new(),
             last_loud: false,
+            tails,
+            tail: None,
             history: VecDeque::new(),
             tops: VecDeque::new(),
             seed: floor.filter(|f| f.is_finite() && *f > 0.0),
@@ -87,10 +113,15 @@ impl Gate {
         )
     }
 
-    /// The whole of `values` through a gate: the gated values and the spans
-    /// cut, s.
-    pub fn apply(values: &[f32], rate: f64, floor: Option<f64>) -> (Vec<f32>, Vec<(f64, f64)>) {
-        let mut gate = Self::new(rate, floor);
+    /// The whole of `values` through a gate (cutting `tails` or not): the
+    /// gated values and the spans cut, s.
+    pub fn apply(
+        values: &[f32],
+        rate: f64,
+        floor: Option<f64>,
+        tails: bool,
+    ) -> (Vec<f32>, Vec<(f64, f64)>) {
+        let mut gate = Self::cutting(rate, floor, tails);
         let mut out = gate.push(values);
         out.extend(gate.finish());
         let spans = gate.spans_s();
@@ -135,6 +166,21 @@ impl Gate {
                     m > f * 10f64.powf(GATE_LOUD_DB / 20.0)
                         && self.tick_level().is_none_or(|t| m > TICK_SHARE * t)
                 });
+                // A loud sound's tail, cut while it stands over the floor
+                // (GATE_QUIET_DB), for GATE_TAIL_S at most.
+                let longest = (GATE_TAIL_S / GATE_BLOCK_S) as usize;
+                let ringing = self.tails
+                    && !loud
+                    && self.tail.is_some_and(|n| n < longest)
+                    && self
+                        .floor()
+                        .is_some_and(|f| m > f * 10f64.powf(GATE_QUIET_DB / 20.0));
+                self.tail = match (loud, ringing) {
+                    (true, _) => Some(0),
+                    (false, true) => self.tail.map(|n| n + 1),
+                    (false, false) => None,
+                };
+                let loud = loud || ringing;
                 if !loud {
                     self.history.push_back(m);
                     self.tops.push_back(top);
@@ -231,7 +277,7 @@ mod tests {
         for v in &mut values[60_000..70_000] {
             *v = 50.0;
         }
-        let (out, spans) = Gate::apply(&values, rate, None);
+        let (out, spans) = Gate::apply(&values, rate, None, false);
         assert_eq!(out.len(), values.len());
         assert_eq!(spans, vec![(29.75, 35.25)]);
         assert!(out[..59_500] == values[..59_500]);
@@ -250,9 +296,9 @@ mod tests {
         }
         let floor = Gate::floor_of(&values, rate);
         assert_eq!(floor, Some(1.0));
-        let (_, spans) = Gate::apply(&values, rate, floor);
+        let (_, spans) = Gate::apply(&values, rate, floor, false);
         assert_eq!(spans, vec![(0.0, 5.25)]);
-        let (_, unseeded) = Gate::apply(&values, rate, None);
+        let (_, unseeded) = Gate::apply(&values, rate, None, false);
         assert!(unseeded.is_empty() || unseeded[0].0 > 0.0);
     }
 }

@@ -15,6 +15,13 @@ const PROFILE_BEFORE: f64 = 0.005;
 /// The band-pass's settling at the start of a recording, s: no tick is
 /// looked for before it.
 const SETTLE: f64 = 0.01;
+
+/// Beats the lock folds the envelope over (fewer in a short recording).
+const LOCK_CYCLES: usize = 16;
+
+/// A run of one envelope value this long, s, is not sound: the gate's cut
+/// (its values all the floor) or digital silence.
+const FLAT_RUN_S: f64 = 0.02;
 /// Onsets over which the local beat is fitted.
 const LOCAL_BEATS: usize = 32;
 /// Beats of a side missed in a row (the other side's found) after which
@@ -715,8 +722,8 @@ impl OnsetTracker {
     /// side at its own phase).
     fn lock(&mut self, buffered: f64) -> Option<f64> {
         let width = (self.beat * self.rate).round() as usize;
-        let cycles = ((buffered - SETTLE) / self.beat).floor().min(16.0) as usize;
-        if width < 4 || cycles == 0 {
+        let cycles = self.heard_cycles(buffered, LOCK_CYCLES);
+        if width < 4 || cycles.is_empty() {
             return None;
         }
         let first = self.index(SETTLE);
@@ -726,8 +733,9 @@ impl OnsetTracker {
         let last = self.offset + self.values.len();
         let mut profile = vec![0.0_f64; width];
         for (j, p) in profile.iter_mut().enumerate() {
-            let cells: Vec<f64> = (0..cycles)
-                .map(|c| at(c, j))
+            let cells: Vec<f64> = cycles
+                .iter()
+                .map(|&c| at(c, j))
                 .filter(|&i| i < last)
                 .map(|i| self.at(i))
                 .collect();
@@ -770,14 +778,15 @@ impl OnsetTracker {
         // both shows two humps, each half as high as the sounds.
         let reach = (0.2 * width as f64) as isize;
         let sides = [0usize, 1].map(|parity| {
-            if cycles < 2 {
+            let own: Vec<usize> = cycles.iter().copied().filter(|c| c % 2 == parity).collect();
+            if own.is_empty() {
                 return phase as isize;
             }
             let side: Vec<f64> = (0..width)
                 .map(|j| {
-                    let cells: Vec<f64> = (parity..cycles)
-                        .step_by(2)
-                        .map(|c| at(c, j))
+                    let cells: Vec<f64> = own
+                        .iter()
+                        .map(|&c| at(c, j))
                         .filter(|&i| i < last)
                         .map(|i| self.at(i))
                         .collect();
@@ -797,8 +806,9 @@ impl OnsetTracker {
         // The typical tick: the median of each beat's maximum within 3 ms
         // of its side's onset (not the louder drop's peak after it).
         let near = (0.003 * self.rate) as isize;
-        let mut maxima: Vec<f64> = (0..cycles)
-            .filter_map(|c| {
+        let mut maxima: Vec<f64> = cycles
+            .iter()
+            .filter_map(|&c| {
                 let from = at(c, 0) as isize + sides[c % 2];
                 let a = (from - near).max(self.offset as isize) as usize;
                 let b = ((from + near).max(0) as usize).min(last);
@@ -807,6 +817,35 @@ impl OnsetTracker {
             .collect();
         self.typical = [median(&mut maxima); 2];
         Some(SETTLE + phase as f64 / self.rate)
+    }
+
+    /// The first `most` whole beats buffered by `buffered` s (counted
+    /// from [`SETTLE`]) that hold sound: a beat with a run of
+    /// [`FLAT_RUN_S`] of one value in it was cut by the gate (a strike, a
+    /// knock, handling) or is digital silence, and would teach the lock a
+    /// tick's level and phase that are not the clock's.
+    fn heard_cycles(&self, buffered: f64, most: usize) -> Vec<usize> {
+        let whole = ((buffered - SETTLE) / self.beat).floor().max(0.0) as usize;
+        let first = self.index(SETTLE);
+        let last = self.offset + self.values.len();
+        let run = ((FLAT_RUN_S * self.rate).round() as usize).max(2);
+        (0..whole)
+            .filter(|&c| {
+                let a = first + (c as f64 * self.beat * self.rate).round() as usize;
+                let b =
+                    (first + ((c + 1) as f64 * self.beat * self.rate).round() as usize).min(last);
+                let (mut same, mut previous) = (0usize, f32::NAN);
+                for &v in &self.values[a.max(self.offset) - self.offset..b.max(a) - self.offset] {
+                    same = if v == previous { same + 1 } else { 1 };
+                    previous = v;
+                    if same >= run {
+                        return false;
+                    }
+                }
+                a < b
+            })
+            .take(most)
+            .collect()
     }
 
     /// How long after an onset the drop is looked for, s: up to nearly
@@ -871,8 +910,13 @@ impl OnsetTracker {
         }
         let buffered = (self.offset + self.values.len()) as f64 / self.rate;
         if self.locked.is_none() {
+            // Eight beats heard, or 2 s of them (16 beats at most); beats
+            // cut or silent are not counted.
             let span = (8.0 * self.beat).max(2.0).min(16.0 * self.beat);
-            if buffered < span + SETTLE && !end {
+            let wanted = (span / self.beat).round() as usize;
+            if !end
+                && (buffered < span + SETTLE || self.heard_cycles(buffered, wanted).len() < wanted)
+            {
                 return;
             }
             self.refresh_floor();

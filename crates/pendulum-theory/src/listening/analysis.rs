@@ -536,6 +536,7 @@ pub fn listen<S: SampleSource>(
         let (samples, cuts) = if pushed < span {
             // (In blocks, as a longer recording's come: the noise floor
             // follows the recording rather than being its last seconds'.)
+            tracker.cut(&first_cuts);
             for block in gated.chunks(ENVELOPE_BLOCK) {
                 tracker.push(block);
             }
@@ -546,11 +547,15 @@ pub fn listen<S: SampleSource>(
             source
                 .read(None, &mut |block| {
                     env.push(block);
-                    tracker.push(&gate.push(&env.values));
+                    let gated = gate.push(&env.values);
+                    tracker.cut(&gate.spans_s());
+                    tracker.push(&gated);
                     env.values.clear();
                 })
                 .map_err(ListenFailure::Source)?;
-            tracker.push(&gate.finish());
+            let rest = gate.finish();
+            tracker.cut(&gate.spans_s());
+            tracker.push(&rest);
             (env.samples, gate.spans_s())
         };
         Ok((tracker.finish(), samples, cuts))

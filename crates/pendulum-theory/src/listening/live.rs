@@ -135,10 +135,11 @@ impl LiveListener {
             searched,
             wide,
             floor,
-            ..
+            cuts,
         } = FirstPass::of(&env.values, &wide.values, env_rate);
         let track = |beat: f64| {
             let mut tracker = OnsetTracker::new(env_rate, beat);
+            tracker.cut(&cuts);
             for block in gated.chunks(ENVELOPE_BLOCK) {
                 tracker.push(block);
             }
@@ -235,8 +236,10 @@ impl LiveListener {
             beat,
             ..
         } = f;
-        tracker.push(&gate.finish());
+        let rest = gate.finish();
         let cuts = gate.spans_s();
+        tracker.cut(&cuts);
+        tracker.push(&rest);
         let given = tracker.handed();
         let coarse = tracker.finish();
         refiner.push_onsets(&coarse.onsets[given..], 0.0);
@@ -264,6 +267,7 @@ impl Following {
     fn push(&mut self, block: &[f32]) {
         self.env.push(block);
         let gated = self.gate.push(&self.env.values);
+        self.tracker.cut(&self.gate.spans_s());
         self.tracker.push(&gated);
         self.env.values.clear();
         let onsets = self.tracker.take_onsets();

@@ -18,10 +18,6 @@ const SETTLE: f64 = 0.01;
 
 /// Beats the lock folds the envelope over (fewer in a short recording).
 const LOCK_CYCLES: usize = 16;
-
-/// A run of one envelope value this long, s, is not sound: the gate's cut
-/// (its values all the floor) or digital silence.
-const FLAT_RUN_S: f64 = 0.02;
 /// Onsets over which the local beat is fitted.
 const LOCAL_BEATS: usize = 32;
 /// Beats of a side missed in a row (the other side's found) after which
@@ -105,6 +101,11 @@ pub struct OnsetTracker {
     fixed: Option<Option<EventRule>>,
     /// Live: onsets put through the rule so far.
     applied: usize,
+    /// The spans cut out of the envelope as not ticks (by the gate), s:
+    /// the lock learns nothing from the beats in them.
+    cuts: Vec<(f64, f64)>,
+    /// Whether the last value sampled for the floor was in a cut.
+    after_cut: bool,
     /// Live: the onsets the rule kept, not yet through the line filters
     /// but for their first `emitted`.
     timed: Vec<(u64, f64)>,
@@ -244,6 +245,8 @@ impl OnsetTracker {
             spacings: Vec::new(),
             fixed: None,
             applied: 0,
+            cuts: Vec::new(),
+            after_cut: false,
             timed: Vec::new(),
             emitted: 0,
             settled: Vec::new(),
@@ -263,6 +266,13 @@ impl OnsetTracker {
             fixed: Some(rule),
             ..Self::new(rate, beat)
         }
+    }
+
+    /// The spans cut out of the envelope so far, s (from the gate that
+    /// feeds the tracker: [`super::Gate::spans_s`]); given before the
+    /// values they cover are pushed.
+    pub fn cut(&mut self, spans: &[(f64, f64)]) {
+        spans.clone_into(&mut self.cuts);
     }
 
     /// Live ([`Self::following`]): the onsets settled since the last call,
@@ -388,6 +398,18 @@ impl OnsetTracker {
     pub fn push(&mut self, values: &[f32]) {
         for (i, &v) in values.iter().enumerate() {
             if (self.total + i) % 8 == 0 {
+                // The floor is learnt outside the cuts, and afresh after
+                // each: a loud sound's tail raises it for a while, and the
+                // ticks stand over the tail, not over the room before it.
+                let t = (self.total + i) as f64 / self.rate;
+                if self.cuts.iter().any(|&(a, b)| t >= a && t < b) {
+                    self.after_cut = true;
+                    continue;
+                }
+                if std::mem::take(&mut self.after_cut) {
+                    self.floor_sample.clear();
+                    self.floor_updated = 0;
+                }
                 self.floor_sample.push_back(v);
                 if self.floor_sample.len() as f64 > 10.0 * self.rate / 8.0 {
                     self.floor_sample.pop_front();
@@ -635,7 +657,8 @@ impl OnsetTracker {
     }
 
     fn refresh_floor(&mut self) {
-        if self.floors.is_empty() || self.total >= self.floor_updated + self.rate as usize {
+        let due = self.floors.is_empty() || self.total >= self.floor_updated + self.rate as usize;
+        if due && !self.floor_sample.is_empty() {
             self.floor = self.current_floor();
             // (From the values below the median only: the ticks and the
             // room's tail lie above it.)
@@ -820,29 +843,16 @@ impl OnsetTracker {
     }
 
     /// The first `most` whole beats buffered by `buffered` s (counted
-    /// from [`SETTLE`]) that hold sound: a beat with a run of
-    /// [`FLAT_RUN_S`] of one value in it was cut by the gate (a strike, a
-    /// knock, handling) or is digital silence, and would teach the lock a
+    /// from [`SETTLE`]) outside the spans cut ([`Self::cut`]): a beat cut
+    /// by the gate (a strike, a knock, handling) would teach the lock a
     /// tick's level and phase that are not the clock's.
     fn heard_cycles(&self, buffered: f64, most: usize) -> Vec<usize> {
         let whole = ((buffered - SETTLE) / self.beat).floor().max(0.0) as usize;
-        let first = self.index(SETTLE);
-        let last = self.offset + self.values.len();
-        let run = ((FLAT_RUN_S * self.rate).round() as usize).max(2);
         (0..whole)
             .filter(|&c| {
-                let a = first + (c as f64 * self.beat * self.rate).round() as usize;
-                let b =
-                    (first + ((c + 1) as f64 * self.beat * self.rate).round() as usize).min(last);
-                let (mut same, mut previous) = (0usize, f32::NAN);
-                for &v in &self.values[a.max(self.offset) - self.offset..b.max(a) - self.offset] {
-                    same = if v == previous { same + 1 } else { 1 };
-                    previous = v;
-                    if same >= run {
-                        return false;
-                    }
-                }
-                a < b
+                let a = SETTLE + c as f64 * self.beat;
+                let b = a + self.beat;
+                self.cuts.iter().all(|&(from, to)| to <= a || from >= b)
             })
             .take(most)
             .collect()

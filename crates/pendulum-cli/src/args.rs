@@ -102,8 +102,8 @@ Ctrl-C stops a run with its files complete (exit status 130).")]
   pendulum listen clock.wav
   pendulum listen phone.m4a --bph 3600 --ticks ticks.csv --json
 
-Formats: WAV, FLAC, Ogg Vorbis, MP3, AAC in M4A (symphonia). The louder channel is used
-unless --channel says otherwise.")]
+Formats: WAV, FLAC, Ogg Vorbis, MP3, AAC in M4A (symphonia). The channel whose ticks stand
+out clearest is used unless --channel says otherwise.")]
     Listen(ListenArgs),
     /// Synthetic data with known truth, to check a setup.
     #[command(after_help = "Examples:
@@ -508,8 +508,8 @@ pub struct ListenArgs {
     /// The nominal period (two beats).
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub period: Option<Time>,
-    /// The channel to listen to, from 1 [default: the louder; the first
-    /// on standard input].
+    /// The channel to listen to, from 1 [default: the one whose ticks
+    /// stand out clearest; the first on standard input].
     #[arg(long, allow_hyphen_values = true, value_name = "N")]
     pub channel: Option<usize>,
     /// The sound card's clock error, ppm (positive: its clock runs fast).

@@ -369,27 +369,28 @@ fn mp4_priming(path: &Path) -> Option<(u64, u32)> {
     None
 }
 
-/// The louder channel of `path` over its first ten seconds (0-based),
-/// from one decoding of those seconds.
-pub fn louder_channel(path: &Path) -> Result<usize, CliError> {
+/// The channel of `path` (0-based) whose ticks stand out clearest over
+/// its first thirty seconds, by the library's
+/// [`pendulum_theory::listening::channels::clearest_channel`], from one
+/// decoding of those seconds.
+pub fn clearest_channel(path: &Path) -> Result<usize, CliError> {
     let header = info(path)?;
     if header.channels < 2 {
         return Ok(0);
     }
-    let mut energy = vec![0.0_f64; header.channels];
-    let ten_seconds = 10 * u64::from(header.sample_rate);
-    decode_frames(path, Extent::Frames(ten_seconds), |frames, count| {
+    let mut channels = vec![Vec::new(); header.channels];
+    let thirty_seconds = 30 * u64::from(header.sample_rate);
+    decode_frames(path, Extent::Frames(thirty_seconds), |frames, count| {
         for frame in frames.chunks_exact(count) {
-            for (e, &x) in energy.iter_mut().zip(frame) {
-                *e += f64::from(x) * f64::from(x);
+            for (c, &x) in channels.iter_mut().zip(frame) {
+                c.push(x);
             }
         }
     })?;
-    Ok(energy
-        .iter()
-        .enumerate()
-        .max_by(|a, b| a.1.total_cmp(b.1))
-        .map_or(0, |(i, _)| i))
+    Ok(pendulum_theory::listening::channels::clearest_channel(
+        &channels,
+        f64::from(header.sample_rate),
+    ))
 }
 
 /// The 44-byte header of a 16-bit mono PCM WAV file of `samples` samples

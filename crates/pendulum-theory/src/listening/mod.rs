@@ -73,6 +73,7 @@ pub fn check_nominal_period(period: f64, as_beat_rate: bool) -> Result<(), Input
 }
 
 pub mod analysis;
+pub mod channels;
 pub mod detect;
 mod doctor;
 pub mod filter;

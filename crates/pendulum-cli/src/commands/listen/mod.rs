@@ -9,7 +9,7 @@ mod text;
 
 use super::common;
 use crate::args::ListenArgs;
-use crate::audio::{info, louder_channel, FileSource};
+use crate::audio::{clearest_channel, info, FileSource};
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output;
@@ -48,7 +48,7 @@ struct ReferenceJson {
 /// The sound card's error measured on `path` (`--reference`).
 fn reference(path: &std::path::Path) -> Result<ReferenceJson, CliError> {
     let file = path.display().to_string();
-    let channel = louder_channel(path)?;
+    let channel = clearest_channel(path)?;
     let mut source = FileSource {
         path,
         channel,
@@ -104,7 +104,7 @@ pub fn run(args: &ListenArgs) -> Result<String, CliError> {
     let channel = match args.channel {
         Some(0) => return Err(CliError::flag("--channel", "channels count from 1")),
         Some(c) => c - 1,
-        None => louder_channel(&args.file)?,
+        None => clearest_channel(&args.file)?,
     };
     let info = info(&args.file)?;
     let mut source = FileSource {

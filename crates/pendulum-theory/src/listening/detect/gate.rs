@@ -245,6 +245,30 @@ impl Gate {
     }
 }
 
+/// How far the ticks stand out of an envelope `values` at `rate`: the
+/// ticks' level (the 90th percentile of the blocks' largest values) over
+/// the floor (the 20th percentile of their medians), as the gate measures
+/// both; `None` for fewer than eight blocks or a silent floor. Noise, however
+/// loud, has its blocks' peaks a few times their medians; a clock's ticks
+/// stand tens of times over the room.
+pub fn prominence(values: &[f32], rate: f64) -> Option<f64> {
+    let block = ((GATE_BLOCK_S * rate).round() as usize).max(1);
+    let blocks: Vec<&[f32]> = values.chunks_exact(block).collect();
+    if blocks.len() < 8 {
+        return None;
+    }
+    let tops = blocks
+        .iter()
+        .map(|b| b.iter().fold(0.0_f64, |a, &v| a.max(f64::from(v))))
+        .collect();
+    let floor = quantile(
+        blocks.iter().map(|b| median_of(b)).collect(),
+        FLOOR_QUANTILE,
+    )?;
+    let ticks = quantile(tops, TICK_QUANTILE)?;
+    (floor > 0.0).then(|| ticks / floor)
+}
+
 /// The median of a block.
 fn median_of(values: &[f32]) -> f64 {
     let mut v: Vec<f64> = values.iter().map(|&x| f64::from(x)).collect();

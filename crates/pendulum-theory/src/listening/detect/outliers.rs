@@ -4,6 +4,8 @@ use super::{median, Tick};
 
 /// Neighbours of the same side on each side of a tick that predict it.
 const REACH: u64 = 20;
+/// The midpoints (nearest first) whose median predicts a tick.
+const NEAREST: usize = 3;
 /// A tick farther than this from its prediction is not the tick, s.
 const OFF: f64 = 2e-3;
 
@@ -21,9 +23,10 @@ const OFF: f64 = 2e-3;
 ///   neighbouring peak of its correlation when that peak is nearer the
 ///   prediction and at least half as strong.
 ///
-/// The prediction of beat `k` is the median of the midpoints of the ticks
-/// `k - d` and `k + d` of its side (free of the rate and of its slow
-/// drift), or, near the ends of the recording, of the ticks of its side
+/// The prediction of beat `k` is the median of the nearest three
+/// midpoints of the ticks `k - d` and `k + d` of its side (free of the
+/// rate and of its slow drift, and of a wheel's periodic error to a few
+/// per cent), or, near the ends of the recording, of the ticks of its side
 /// carried over at the beat of all ticks (their least-squares slope).
 /// Returns the ticks kept, how many were dropped, and how many moved.
 pub fn clean(mut ticks: Vec<Tick>) -> (Vec<Tick>, usize, usize) {
@@ -52,6 +55,11 @@ pub fn clean(mut ticks: Vec<Tick>) -> (Vec<Tick>, usize, usize) {
         ticks.iter().map(|t| (t.beat, t.time)).collect();
     let predict = |t: &Tick| -> Option<f64> {
         let k = t.beat;
+        // The nearest three: a wheel's periodic error bends the ticks'
+        // line, and the midpoints of far neighbours (twenty beats either
+        // way, a third of a seconds clock's minute) fall short of a bend's
+        // top by half its height, enough to "correct" a tick by a ringing
+        // period towards the straight line.
         let mut midpoints: Vec<f64> = (1..=REACH / 2)
             .filter_map(|d| {
                 let d = 2 * d;
@@ -59,6 +67,7 @@ pub fn clean(mut ticks: Vec<Tick>) -> (Vec<Tick>, usize, usize) {
                 let after = times.get(&(k + d))?;
                 Some(0.5 * (before + after))
             })
+            .take(NEAREST)
             .collect();
         if midpoints.len() >= 3 {
             return Some(median(&mut midpoints));

@@ -594,6 +594,8 @@ pub struct SynthTicksArgs {
     pub reverb: Option<Time>,
     #[arg(long, value_name = "DB", allow_hyphen_values = true, help = with_default("Mains hum against a tick's peak, dB", TickRecording::DEFAULT.hum_db))]
     pub hum_db: Option<Decibels>,
+    #[arg(long, value_name = "DB", allow_hyphen_values = true, help = with_default("The tock's level against the tick's, dB (-10: a third)", TickRecording::DEFAULT.tock_db))]
+    pub tock_db: Option<Decibels>,
     #[arg(long, value_name = "F", allow_hyphen_values = true, help = with_default("Fraction of ticks left out", TickRecording::DEFAULT.missing))]
     pub missing: Option<Fraction>,
     /// The drop's time after the unlocking, ms, or `clock` for where a

@@ -839,6 +839,7 @@ LISTEN = {
                    "--seed", "4"], {"bph": 3600.0, "lift_angle": math.radians(1.5)}),
     "hum": (["--hum-db", "-6"], {}),
     "strike_at_start": (["--duration", "2min", "--strike", "2:6"], {}),
+    "weak_tock": (["--bph", "21600", "--duration", "30s", "--tock-db", "-10"], {}),
 }
 LISTEN_UNITS = {"bph": "", "period": "s", "sample_rate_error_ppm": "", "lift_angle": "rad",
                 "oscillator": "", "every": "s"}

@@ -503,3 +503,57 @@ fn ticks_in_a_bell_s_tail_are_followed() {
     }];
     heard_through("six at 240 s, 30 dB", &quiet, &strike, 18.0);
 }
+
+/// Issue 45, item 4: a tock a third of the tick (−10 dB) was read at half
+/// the beat (a 21,600 watch at 10,801 bph, beat error 0.01 ms) with no
+/// warning. Watches and clocks with a weak tock: read at their beat, or
+/// refused with the reason; never half.
+#[test]
+fn a_weak_tock_never_halves_the_beat() {
+    let cases = [
+        (21_600.0, -10.0, 30.0, 21),
+        (28_800.0, -10.0, 26.0, 22),
+        (18_000.0, -12.0, 30.0, 23),
+        (3600.0, -10.0, 26.0, 24),
+        (7200.0, -14.0, 30.0, 25),
+    ];
+    std::thread::scope(|scope| {
+        for (bph, tock_db, snr_db, seed) in cases {
+            scope.spawn(move || {
+                let spec = TickRecording {
+                    beats_per_hour: bph,
+                    duration: if bph > 10_000.0 { 30.0 } else { 120.0 },
+                    rate_s_per_day: 6.0,
+                    beat_error_ms: 0.4,
+                    snr_db,
+                    tock_db,
+                    seed,
+                    ..TickRecording::DEFAULT
+                };
+                let rec = synthesize(&spec);
+                let heard = listen_to_samples(&rec.samples, 44_100.0, &ListenInput::default());
+                match heard {
+                    Ok(h) => {
+                        let read = h.beats.beats_per_hour;
+                        assert!(
+                            (read / bph - 1.0).abs() < 1e-3,
+                            "{bph} bph, tock {tock_db} dB: read at {read}"
+                        );
+                        assert!(
+                            (h.beats.beat_error_ms - 0.4).abs() < 0.1,
+                            "{bph}: beat error {}",
+                            h.beats.beat_error_ms
+                        );
+                    }
+                    Err(e) => {
+                        let said = e.to_string();
+                        assert!(
+                            said.contains("tock"),
+                            "{bph}: refused without the reason: {said}"
+                        );
+                    }
+                }
+            });
+        }
+    });
+}

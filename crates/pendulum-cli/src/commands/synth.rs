@@ -30,6 +30,7 @@ pub fn run(args: &SynthTicksArgs) -> Result<String, CliError> {
         reverb_s: args.reverb.map_or(d.reverb_s, |t| t.0),
         hum_db: or_default(args.hum_db, d.hum_db),
         missing: or_default(args.missing, d.missing),
+        tock_db: or_default(args.tock_db, d.tock_db),
         drop_ms: match args.drop {
             None => d.drop_ms,
             Some(DropArg::Ms(ms)) => Some(ms),

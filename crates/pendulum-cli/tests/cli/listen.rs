@@ -133,6 +133,7 @@ fn what_is_not_a_clock_recording_is_refused_in_one_line() {
         ("--periodic-error", "200ms"),
         ("--periodic-error-period", "1s"),
         ("--interference-db", "100"),
+        ("--tock-db", "50"),
     ] {
         let said = refuses(
             &["synth", "ticks", out, "--duration", "60s", flag, value],

@@ -1078,8 +1078,10 @@ fn onset_scatter(coarse: &Coarse) -> Option<f64> {
 }
 
 /// A sound between two ticks this large against a tick's rise over the
-/// floor is the other side of a beat half as long: a quarter.
-pub const HALF_BEAT_RISE: f64 = 0.25;
+/// floor is the other side of a beat half as long: an eighth (−18 dB). (A
+/// quarter read a watch whose tock is a third of its tick, −10 dB on the
+/// sound and 0.16-0.26 of the rise on the envelope, at half its beat.)
+pub const HALF_BEAT_RISE: f64 = 0.12;
 
 /// Whether a sound stands between consecutive ticks: the envelope (the
 /// first pass's, at `rate` values a second: the detector's band, or the

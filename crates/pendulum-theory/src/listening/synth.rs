@@ -52,6 +52,10 @@ pub struct TickRecording {
     /// crossing of the same lift at that swing
     /// (`sin(π Δ / 2b) = h / A`, `b` the beat).
     pub arc_change_percent_per_hour: f64,
+    /// The tock's level against the tick's, dB (a watch's or a clock's
+    /// two pallets often sound unlike: −10 dB is a tock a third of the
+    /// tick).
+    pub tock_db: f64,
     /// A wheel's periodic error: each tick early or late by this much at
     /// most, ms (the time warp `t + e sin(2π t / P)`).
     pub periodic_error_ms: f64,
@@ -86,6 +90,7 @@ impl TickRecording {
         hum_db: -30.0,
         missing: 0.0,
         drop_ms: None,
+        tock_db: 0.0,
         arc_change_percent_per_hour: 0.0,
         periodic_error_ms: 0.0,
         periodic_error_period_s: 60.0,
@@ -156,6 +161,13 @@ impl TickRecording {
         }
         crate::analysis::require_finite("snr_db", self.snr_db)?;
         crate::analysis::require_finite("hum_db", self.hum_db)?;
+        let tock = crate::analysis::require_finite("tock_db", self.tock_db)?;
+        if !(-40.0..=40.0).contains(&tock) {
+            return Err(Refusal::field(
+                "tock_db",
+                format!("must be within ±40 dB of the tick, got {} dB", n(tock, 6)),
+            ));
+        }
         let beat_ms = 3.6e6 / bph;
         if let Some(drop) = self.drop_ms {
             let drop = crate::analysis::require_finite("drop", drop)?;
@@ -721,6 +733,7 @@ impl Synthesizer {
             |k: f64| 2.0 * k / (1.0 / beat + (1.0 / (beat * beat) + 4.0 * quadratic * k).sqrt());
         // The first tick a little after the start, as a recording begins.
         let start = random.between(0.05, 0.05 + beat);
+        let tock_gain = 10f64.powf(spec.tock_db / 20.0);
         let (mut ticks, mut missing, mut events) = (Vec::new(), Vec::new(), Vec::new());
         let mut k = 0_u64;
         loop {
@@ -744,7 +757,8 @@ impl Synthesizer {
                 continue;
             }
             ticks.push(t);
-            events.push((t, random.between(0.9, 1.1), delay));
+            let side = if k % 2 == 0 { tock_gain } else { 1.0 };
+            events.push((t, side * random.between(0.9, 1.1), delay));
         }
         let longest_echo = echoes.iter().map(|e| e.0).fold(0.0, f64::max);
         let latest_drop = events.iter().map(|e| e.2).fold(drop_delay, f64::max);

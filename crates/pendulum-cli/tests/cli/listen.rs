@@ -235,6 +235,61 @@ fn encode(ffmpeg: &std::path::Path, from: &std::path::Path, to: &std::path::Path
     assert!(status.success(), "ffmpeg {codec:?}");
 }
 
+/// A watch through a phone's codecs, as tg's users record one: GSM (8
+/// kHz, 13 kbit/s, decoded back to WAV) and AAC at 8 kHz and 12 kbit/s in
+/// M4A, heard at its beat and rate, with and without the beat given (an
+/// attempt to read weak tocks halved these).
+#[test]
+fn a_watch_through_phone_codecs_is_heard() {
+    let Some(ffmpeg) = ffmpeg() else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let wav = dir.path().join("watch.wav");
+    pendulum()
+        .args(["synth", "ticks", wav.to_str().unwrap(), "--bph", "28800"])
+        .args([
+            "--duration",
+            "60s",
+            "--rate",
+            "5",
+            "--beat-error",
+            "0.3",
+            "--seed",
+            "31",
+        ])
+        .assert()
+        .success();
+    let gsm = dir.path().join("watch.gsm");
+    let decoded = dir.path().join("gsm.wav");
+    let aac = dir.path().join("aac.m4a");
+    encode(
+        &ffmpeg,
+        &wav,
+        &gsm,
+        &["-ar", "8000", "-ac", "1", "-c:a", "libgsm"],
+    );
+    encode(&ffmpeg, &gsm, &decoded, &[]);
+    encode(
+        &ffmpeg,
+        &wav,
+        &aac,
+        &["-ar", "8000", "-c:a", "aac", "-b:a", "12k"],
+    );
+    for file in [&decoded, &aac] {
+        for given in [&[][..], &["--bph", "28800"][..]] {
+            let mut args = vec!["listen", file.to_str().unwrap()];
+            args.extend_from_slice(given);
+            let v = json(&args);
+            assert!(
+                (f(&v, "beats_per_hour") / 28_800.0 - 1.0).abs() < 1e-3,
+                "{v}"
+            );
+            assert!((f(&v, "rate_s_per_day") - 5.0).abs() < 0.1, "{v}");
+        }
+    }
+}
+
 /// The same recording in every format a phone or a sound editor writes:
 /// WAV as 8-, 24- and 32-bit integers and 32-bit floats, FLAC, Ogg Vorbis,
 /// MP3 and AAC in M4A. Each is heard back to the acceptance bounds, with

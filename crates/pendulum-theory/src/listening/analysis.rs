@@ -1078,10 +1078,12 @@ fn onset_scatter(coarse: &Coarse) -> Option<f64> {
 }
 
 /// A sound between two ticks this large against a tick's rise over the
-/// floor is the other side of a beat half as long: an eighth (−18 dB). (A
-/// quarter read a watch whose tock is a third of its tick, −10 dB on the
-/// sound and 0.16-0.26 of the rise on the envelope, at half its beat.)
-pub const HALF_BEAT_RISE: f64 = 0.12;
+/// floor is the other side of a beat half as long: a quarter. (An eighth
+/// read a watch whose tock is a third of its tick, 0.16-0.26 of the rise,
+/// at its beat, but halved watches whose room echoes or phone codec's
+/// smear stand 0.12-0.21 of the rise between the ticks: the rise alone
+/// cannot tell them apart; see `a_weak_tock_never_halves_the_beat`.)
+pub const HALF_BEAT_RISE: f64 = 0.25;
 
 /// Whether a sound stands between consecutive ticks: the envelope (the
 /// first pass's, at `rate` values a second: the detector's band, or the

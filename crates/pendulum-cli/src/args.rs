@@ -291,9 +291,21 @@ pub struct LogArgs {
     #[arg(long, value_name = "DATETIME")]
     pub start: Option<String>,
     /// The clock's design: its predicted temperature, pressure and
-    /// humidity coefficients beside the measured ones.
+    /// humidity coefficients beside the measured ones, and the pendulum
+    /// the advice moves.
     #[arg(long, value_name = "FILE")]
     pub design: Option<InputPath>,
+    /// The pendulum's length, for the advice's move of the bob [default:
+    /// the simple pendulum of the log's beat, said].
+    #[arg(
+        long,
+        value_name = "L",
+        allow_hyphen_values = true,
+        conflicts_with = "design"
+    )]
+    pub length: Option<Length>,
+    #[command(flatten)]
+    pub nut: NutArgs,
     /// A file of times (one a line, s or ISO 8601) at which the rate
     /// stepped: a regulation, a weight added, a rewinding.
     #[arg(long, value_name = "FILE")]
@@ -1092,7 +1104,7 @@ pub struct PendulumArgs {
 }
 
 /// The rating nut's thread: shared by `regulate` and the advice.
-#[derive(Debug, Args)]
+#[derive(Debug, Default, Args)]
 pub struct NutArgs {
     /// The rating nut's thread pitch (e.g. 0.7mm), for its turns.
     #[arg(long, allow_hyphen_values = true, value_name = "P")]

@@ -464,7 +464,7 @@ fn tide(
 
 /// The clock-log analysis (the CLI's `log`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, values_, kind, temperature, pressure, humidity, amplitude, pulse_width, flag_width, gate_radius, epoch, latitude, longitude, height, tides, events, bin, beat, bph, period, force, stability, wheels, pinions, arbor_turns_per_hour))]
+#[pyo3(signature = (time, values_, kind, temperature, pressure, humidity, amplitude, pulse_width, flag_width, gate_radius, epoch, latitude, longitude, height, tides, events, bin, beat, bph, period, force, stability, wheels, pinions, arbor_turns_per_hour, length, parts, nut_pitch, nut_tpi, nut_divisions))]
 #[allow(clippy::too_many_arguments)]
 fn clock_log(
     py: Python<'_>,
@@ -493,8 +493,14 @@ fn clock_log(
     wheels: Option<Vec<i64>>,
     pinions: Option<Vec<i64>>,
     arbor_turns_per_hour: Option<f64>,
+    length: Option<f64>,
+    parts: Option<&str>,
+    nut_pitch: Option<f64>,
+    nut_tpi: Option<f64>,
+    nut_divisions: Option<i64>,
 ) -> PyResult<String> {
     use pendulum_theory::clock_log::{analyse, LogColumn, LogInput, LogKind, TrainInput};
+    let known = known_of(length, parts, nut_pitch, nut_tpi, nut_divisions, None, None)?;
     use pendulum_theory::tide::Station;
     let kind = match kind {
         "offset" => LogKind::Offset,
@@ -565,7 +571,12 @@ fn clock_log(
             }
         }),
     };
-    answer(py.detach(|| analyse(&input)))
+    answer(py.detach(|| {
+        analyse(&input).and_then(|mut r| {
+            r.advise(&known)?;
+            Ok(r)
+        })
+    }))
 }
 
 /// The run-down analysis (the CLI's `fit decay`) as JSON.

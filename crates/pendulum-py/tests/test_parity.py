@@ -1670,6 +1670,11 @@ def _log_cases():
         "train_half_periods": (t, half, {"kind": "half_periods", "train": ([15], [])}),
         "train_zero_teeth": (t, offset, {"train": ([64, 0, 30], [8, 8])}),
         "train_pinions_mismatch": (t, offset, {"train": ([64, 60, 30], [8])}),
+        "rates_length_nut": (t, rate, {"kind": "rate", "length": 0.994, "nut_tpi": 32.0}),
+        "half_periods_nut_divisions": (t, half, {"kind": "half_periods", "nut_pitch": 0.0007,
+                                                 "nut_divisions": 20}),
+        "offsets_beat_length_negative": (t, offset, {"beat": 1.0, "length": -1.0}),
+        "rates_nut_tpi_zero": (t, rate, {"kind": "rate", "length": 1.0, "nut_tpi": 0.0}),
     }
 
 
@@ -1705,6 +1710,11 @@ def test_clock_log(name, tmp_path):
         if flag in kw:
             args += [f"--{flag}", cli_value(kw[flag], "" if flag == "bph" else "s")]
     extra = {k: kw[k] for k in ["bin", "beat", "bph"] if k in kw}
+    for key, unit in [("length", "m"), ("nut_pitch", "m"), ("nut_tpi", ""), ("nut_divisions", None)]:
+        if key in kw:
+            flag = "--" + key.replace("_", "-")
+            args += [flag, str(kw[key]) if unit is None else cli_value(kw[key], unit)]
+            extra[key] = kw[key]
     if "train" in kw:
         wheels, pinions = kw["train"]
         args += ["--train", ",".join(map(str, wheels)) + ":" + ",".join(map(str, pinions))]

@@ -497,6 +497,14 @@ pub fn worth_setting(oscillator: Oscillator, beat: f64, be: f64, be_se: f64) -> 
     be >= beat_error_worth_setting(oscillator, beat) && be > 3.0 * be_se
 }
 
+/// The split of a beat's two intervals, %, the longer first, for a beat
+/// error `be` s (half their difference) of a mean beat `beat` s:
+/// `50 (1 ± be/beat)`.
+pub fn split_percent(be: f64, beat: f64) -> [f64; 2] {
+    let half = 50.0 * be.abs() / beat;
+    [50.0 + half, 50.0 - half]
+}
+
 /// The least beat error worth setting, s: see [`worth_setting`].
 pub fn beat_error_worth_setting(oscillator: Oscillator, beat: f64) -> f64 {
     match oscillator {
@@ -590,10 +598,9 @@ fn set_in_beat(clock: &Clockwork, oscillator: Oscillator, beat: f64, be: f64) ->
                 Some(Regulated::Design(d, _)) => d.pendulum.properties().equivalent_length,
                 None => length_of_beat(beat),
             };
-            let long = 50.0 * (1.0 + be / beat);
             Advice::SetInBeat {
                 beat_error_ms: be * 1e3,
-                split_percent: [long, 100.0 - long],
+                split_percent: split_percent(be, beat),
                 crutch_deg: offset.to_degrees(),
                 bob_m: offset * length,
                 crutch_pin_m: clock.known.crutch_m.map(|c| offset * c),

@@ -342,6 +342,8 @@ fn log_section(
         tides: args.longitude.is_some(),
         start: None,
         design: args.design.clone(),
+        length: None,
+        nut: crate::args::NutArgs::default(),
         events: args.events.clone(),
         bin: None,
         beat: None,

@@ -224,3 +224,72 @@ fn a_daily_cycle_is_said_once_and_intervals_are_bars() {
     assert!(svg.contains("68% interval as a bar"), "legend");
     assert!(!svg.contains("interval, low"), "legend");
 }
+
+/// `log` ends in advice (issue 45, item 2): the rate at the log's end as
+/// the move of the bob and the nut's turns, checked by hand: a simple
+/// pendulum of length L gaining r s/day beats `1 + r/86,400` times too
+/// often and T ∝ √L, so `ΔL = L ((1 + r/86,400)² − 1)` (about
+/// `2 L r / 86,400`), the nut's turns that over its pitch; the direction from the sign (a gaining clock's bob goes down,
+/// the nut anticlockwise seen from below). With no length the log's own
+/// beat gives the simple pendulum `g (b/π)²`, said; with neither, no
+/// advice and the text says what to give.
+#[test]
+fn a_log_ends_in_the_move_of_the_bob() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut noise = Normal(0x5eed_0045);
+    for (rate, length, pitch_mm) in [(-8.0, 1.2, 1.0), (5.0, 0.994, 0.5), (-0.9, 0.25, 0.7)] {
+        // Thirty days of hourly rates, white noise of 0.3 s/day.
+        let mut text = String::from("time_s,rate_s_per_day\n");
+        for i in 0..720 {
+            let r: f64 = rate + 0.3 * noise.next();
+            text.push_str(&format!("{},{r:.4}\n", 3600 * i));
+        }
+        let path = write(dir.path(), "rates.csv", &text);
+        let (l, p) = (format!("{length}m"), format!("{pitch_mm}mm"));
+        let v = json(&["log", &path, "--length", &l, "--nut-pitch", &p]);
+        let a = &v;
+        let end = a["rate_at_end_s_per_day"].as_f64().unwrap();
+        assert!((end - rate).abs() < 0.5, "{end} against {rate}");
+        let advice = &a["advice"][0];
+        assert_eq!(advice["code"], "regulate", "{advice}");
+        let shift = (length * ((1.0 + end / 86_400.0).powi(2) - 1.0)).abs();
+        let got = advice["bob_shift_m"].as_f64().unwrap();
+        assert!((got / shift - 1.0).abs() < 1e-9, "{got} against {shift}");
+        let turns = advice["nut_turns"].as_f64().unwrap();
+        assert!((turns / (shift / (pitch_mm * 1e-3)) - 1.0).abs() < 1e-9);
+        let (bob, nut) = if end > 0.0 {
+            ("lower", "anticlockwise")
+        } else {
+            ("raise", "clockwise")
+        };
+        assert_eq!(advice["bob"], bob, "{advice}");
+        assert_eq!(advice["nut_turn"], nut, "{advice}");
+        assert_eq!(advice["length_from_beat"], false);
+        // No length and no beat: no advice, and the text says so.
+        let v = json(&["log", &path]);
+        assert_eq!(v["advice"], serde_json::json!([]), "{v}");
+        let said = crate::util::text(&["log", &path]);
+        assert!(said.contains("give --length or --design"), "{said}");
+    }
+    // Half periods: the log's own beat, 1.0 s less a gain of 3 s/day.
+    let mut text = String::from("time_s,half_period_s\n");
+    let beat = 1.0 / (1.0 + 3.0 / 86_400.0);
+    let mut t = 0.0;
+    for _ in 0..20_000 {
+        let b = beat + 2e-5 * noise.next();
+        t += b;
+        text.push_str(&format!("{t:.7},{b:.8}\n"));
+    }
+    let path = write(dir.path(), "halves.csv", &text);
+    let v = json(&["log", &path, "--bph", "3600"]);
+    let a = &v;
+    let advice = &a["advice"][0];
+    assert_eq!(advice["code"], "regulate", "{advice}");
+    assert_eq!(advice["bob"], "lower");
+    assert_eq!(advice["length_from_beat"], true);
+    let b = a["beat_s"].as_f64().unwrap();
+    let simple = 9.80665 * (b / std::f64::consts::PI).powi(2);
+    assert!((advice["length_m"].as_f64().unwrap() / simple - 1.0).abs() < 1e-9);
+    let end = a["rate_at_end_s_per_day"].as_f64().unwrap();
+    assert!((end - 3.0).abs() < 0.3, "{end}");
+}

@@ -832,7 +832,8 @@ def tide(latitude, longitude, time, *, height=0.0, force=False):
 def clock_log(time, values, *, kind="offset", temperature=None, pressure_hpa=None, humidity=None,
               amplitude_deg=None, pulse_width=None, flag_width=None, gate_radius=None, epoch=None, latitude=None, longitude=None, height=0.0,
               tides=False, events=None, bin=None, beat=None, bph=None, period=None,
-              force=False, stability=True, wheels=None, pinions=None, arbor_turns_per_hour=None):
+              force=False, stability=True, wheels=None, pinions=None, arbor_turns_per_hour=None,
+              length=None, parts=None, nut_pitch=None, nut_tpi=None, nut_divisions=None):
     """A clock's log, the CLI's ``log``, the same library call: ``time``
     (s, increasing; ``epoch`` the Unix time of 0, for the tides),
     ``values`` offsets (s, ``kind="offset"``), rates (s/day,
@@ -842,10 +843,13 @@ def clock_log(time, values, *, kind="offset", temperature=None, pressure_hpa=Non
     ``pulse_width`` (s) with ``flag_width`` and ``gate_radius`` (m) gives
     the amplitude exactly; ``wheels`` and ``pinions`` (the CLI's
     ``--train W,…:P,…``) mark the wheels' periods and fold the rate over
-    each. Returns the CLI's JSON as a dict (rate_s_per_day,
-    drift_s_per_day_per_day, coefficients, standard_errors, terms,
-    temperature_lag_s, stability, residual_stability, spectrum, folds,
-    swing, warnings, …)."""
+    each. The pendulum's ``length`` (m) or a design's ``parts``, and the
+    nut's ``nut_pitch`` (m), ``nut_tpi`` or ``nut_divisions``, turn the
+    rate at the log's end into the ``advice`` (else the simple pendulum of
+    the log's beat, said; none when the log has no beat). Returns the
+    CLI's JSON as a dict (rate_s_per_day, drift_s_per_day_per_day,
+    coefficients, standard_errors, terms, temperature_lag_s, stability,
+    residual_stability, spectrum, folds, swing, warnings, advice, …)."""
     def optional(x):
         return None if x is None else _array(x)
     return _json.loads(_native.clock_log(
@@ -855,7 +859,9 @@ def clock_log(time, values, *, kind="offset", temperature=None, pressure_hpa=Non
         _number(longitude), float(height), bool(tides), optional(events), _number(bin),
         _number(beat), _number(bph), _number(period), bool(force), bool(stability),
         _teeth("wheels", wheels), _teeth("pinions", pinions),
-        _number(arbor_turns_per_hour)))
+        _number(arbor_turns_per_hour),
+        **{k: v for k, v in _known(length, parts, nut_pitch, nut_tpi, nut_divisions, None,
+                                   None).items() if k not in ("crutch", "amplitude")}))
 
 
 # Every public function refuses a boolean where it takes a number.

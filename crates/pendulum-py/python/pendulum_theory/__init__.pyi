@@ -295,4 +295,9 @@ def clock_log(
     wheels: Optional[Sequence[int]] = ...,
     pinions: Optional[Sequence[int]] = ...,
     arbor_turns_per_hour: Optional[float] = ...,
+    length: Optional[float] = ...,
+    parts: Optional[Any] = ...,
+    nut_pitch: Optional[float] = ...,
+    nut_tpi: Optional[float] = ...,
+    nut_divisions: Optional[int] = ...,
 ) -> dict[str, Any]: ...

@@ -36,6 +36,10 @@ const SEARCH_KNOTS: usize = 200_000;
 /// Analyses a clock's log.
 pub fn analyse(input: &LogInput) -> Result<LogResult, Refusal> {
     let mut prepared = prepare(input)?;
+    let beat_s = match prepared.kind {
+        LogKind::HalfPeriods => Some(mean(&prepared.values)),
+        _ => input.beat_s,
+    };
     let mut warnings = std::mem::take(&mut prepared.warnings);
     let series = binned(&mut prepared, &mut warnings)?;
     let bins = &series.bins;
@@ -157,7 +161,7 @@ pub fn analyse(input: &LogInput) -> Result<LogResult, Refusal> {
     warnings.extend(checked);
     let (rate, rate_var) = mean_level(&fitted, &bins.rate, &x, &bins.weight);
     let names = design.names(&choice);
-    assemble(Assembly {
+    let mut result = assemble(Assembly {
         input,
         prepared: &prepared,
         series: &series,
@@ -171,7 +175,10 @@ pub fn analyse(input: &LogInput) -> Result<LogResult, Refusal> {
         rate: (rate, rate_var.sqrt() * widen),
         widen,
         warnings,
-    })
+    })?;
+    result.beat_s = beat_s;
+    result.advise(&crate::advice::Known::default())?;
+    Ok(result)
 }
 
 fn not_independent() -> Refusal {
@@ -896,6 +903,8 @@ fn assemble(a: Assembly) -> Result<LogResult, Refusal> {
         folds: found.folds,
         swing: found.swing,
         beat_error_s: found.beat_error_s,
+        beat_s: None,
+        advice: Vec::new(),
         per_bin,
         partials,
         weather_per_bin,

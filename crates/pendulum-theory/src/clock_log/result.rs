@@ -430,6 +430,16 @@ pub struct LogResult {
     /// For half periods: the beat error, s (alternate half periods
     /// differ by twice it).
     pub beat_error_s: Option<f64>,
+    /// The clock's beat, when the log gives it: the half periods' mean,
+    /// or the beat a reference comparison slips by as given, s.
+    pub beat_s: Option<f64>,
+    /// What to do ([`crate::advice`]): the rate at the log's end
+    /// ([`LogResult::rate_at_end_s_per_day`]) as the move of the bob and
+    /// the turns of the nut, and for half periods the beat error as the
+    /// move at the crutch; from the pendulum known
+    /// ([`LogResult::advise`]), else the simple pendulum of the beat.
+    /// Empty when neither the beat nor the pendulum is known.
+    pub advice: Vec<crate::advice::Advice>,
     /// Per bin: centre time (s), rate, model with the walk, residual
     /// (s/day).
     #[serde(skip)]
@@ -462,4 +472,52 @@ pub struct Partial {
     pub at_mean: f64,
     /// The variable's mean.
     pub mean: f64,
+}
+
+impl LogResult {
+    /// The standard error of [`LogResult::rate_at_end_s_per_day`], s/day:
+    /// the mean rate's (the walk's uncertainty included) and the drift's
+    /// over the time from the bins' mean to the log's end, added in
+    /// quadrature (the two are uncorrelated about the bins' mean, the
+    /// drift's zero).
+    pub fn rate_at_end_standard_error_s_per_day(&self) -> f64 {
+        let end = self.per_bin.last().map_or(self.reference_time_s, |b| b[0]);
+        let days = (end - self.reference_time_s) / 86_400.0;
+        let drift = self.drift_standard_error_s_per_day_per_day.unwrap_or(0.0) * days;
+        self.rate_standard_error_s_per_day.hypot(drift)
+    }
+
+    /// Fills [`LogResult::advice`] from the rate at the log's end and
+    /// `known`: the beat is the log's ([`LogResult::beat_s`]) or, when it
+    /// has none, the beat of the pendulum known (`π √(L/g)` of its
+    /// equivalent length, standard gravity). Refused when the regulation
+    /// cannot be figured (a nut's thread out of range, a design's part
+    /// not found).
+    pub fn advise(&mut self, known: &crate::advice::Known) -> Result<(), crate::analysis::Refusal> {
+        crate::advice::check(known)?;
+        let beat = match (self.beat_s, &known.pendulum) {
+            (Some(b), _) => b,
+            (None, Some(pendulum)) => {
+                let length = crate::compound::regulate::regulate(pendulum, 0.0, known.nut, None)?
+                    .equivalent_length_m;
+                std::f64::consts::PI * (length / crate::pendulum::STANDARD_GRAVITY).sqrt()
+            }
+            (None, None) => {
+                self.advice.clear();
+                return Ok(());
+            }
+        };
+        self.advice = crate::advice::advise(&crate::advice::Clockwork {
+            rate_s_per_day: Some(self.rate_at_end_s_per_day),
+            rate_standard_error_s_per_day: Some(self.rate_at_end_standard_error_s_per_day()),
+            beat_s: beat,
+            beat_error_s: self.beat_error_s.map(f64::abs),
+            beat_error_standard_error_s: None,
+            oscillator: None,
+            amplitude_rad: None,
+            lift_rad: None,
+            known: known.clone(),
+        })?;
+        Ok(())
+    }
 }

@@ -738,7 +738,7 @@ pub(crate) fn conclude(
             format_significant(a.mean_beat, 4)
         )));
     }
-    let in_beat_percent = in_beat(&a);
+    let in_beat_percent = crate::advice::split_percent(a.beat_error_ms * 1e-3, a.mean_beat);
     let (mean_beat, doubled) = (a.mean_beat, a.repaired.doubled);
     let mut beats = Beats::of(a);
     if differ {
@@ -1078,25 +1078,46 @@ fn onset_scatter(coarse: &Coarse) -> Option<f64> {
 }
 
 /// A sound between two ticks this large against a tick's rise over the
-/// floor is the other side of a beat half as long: a quarter. (An eighth
-/// read a watch whose tock is a third of its tick, 0.16-0.26 of the rise,
-/// at its beat, but halved watches whose room echoes or phone codec's
-/// smear stand 0.12-0.21 of the rise between the ticks: the rise alone
-/// cannot tell them apart; see `a_weak_tock_never_halves_the_beat`.)
+/// floor is the other side of a beat half as long: a quarter.
 pub const HALF_BEAT_RISE: f64 = 0.25;
+
+/// A sound between two ticks from this much of a tick's rise up to
+/// [`HALF_BEAT_RISE`] is the other side of the beat (a weak tock) when it
+/// is the one sound of its size between them ([`HALF_BEAT_ALONE`]) and
+/// stands where a beat error under [`OUT_OF_BEAT`] puts it: an eighth.
+/// Measured: tocks 10-14 dB under their ticks, 3,600 to 28,800 beats an
+/// hour, stand 0.16-0.26 of the rise at 0.50-0.505 of the way with no
+/// other sound over 0.20 of theirs; a room's echoes and a phone codec's
+/// smear stand 0.12-0.21 of the rise at 0.36-0.52 of the way, with other
+/// echoes 0.40-0.81 of them (a reflection is a copy of the tick: its level
+/// and shape alone cannot tell it from a tock; that it comes with others
+/// can).
+pub const HALF_BEAT_WEAK_RISE: f64 = 0.125;
+
+/// See [`HALF_BEAT_WEAK_RISE`]: every other sound between the ticks
+/// (away from the candidate and its own drop) under this fraction of it.
+pub const HALF_BEAT_ALONE: f64 = 0.45;
+
+/// See [`HALF_BEAT_WEAK_RISE`]: a weak sound between the ticks is taken
+/// for the other side of the beat only where a beat error under this
+/// fraction of the beat puts it (from 45% to 55% of the way): a clock
+/// out of beat by a tenth of its beat is near stopping, and a room's
+/// echoes fall anywhere.
+pub const HALF_BEAT_WEAK_OUT_OF_BEAT: f64 = 0.1;
 
 /// Whether a sound stands between consecutive ticks: the envelope (the
 /// first pass's, at `rate` values a second: the detector's band, or the
 /// wide band) from 30% to 70% of the way from each onset to the next
 /// (`coarse`'s, consecutive beats only), averaged over the pairs on the
-/// fraction of the way, peaks more than [`HALF_BEAT_RISE`] of the ticks'
-/// rise over the same average's median (the ticks' rise: the mean of the
-/// envelope's largest value within 10 ms of each onset) and six robust
-/// standard deviations above that median, and not within 3 ms of a beat's
-/// own second sound (the drop, 16 ms after the unlocking: a third of the
-/// way at 72,000 beats an hour). Aligned on the onsets, the other side of
-/// a clock out of beat stays at one fraction whatever the rate; noise and
-/// a room's reverberation average flat.
+/// fraction of the way, peaks six robust standard deviations above that
+/// average's median and more than [`HALF_BEAT_RISE`] of the ticks' rise
+/// over it (the ticks' rise: the mean of the envelope's largest value
+/// within 10 ms of each onset), or more than [`HALF_BEAT_WEAK_RISE`] of it
+/// alone and near the middle; and not within 3 ms of a beat's own second
+/// sound (the drop, 16 ms after the unlocking: a third of the way at
+/// 72,000 beats an hour). Aligned on the onsets, the other side of a clock
+/// out of beat stays at one fraction whatever the rate; noise and a room's
+/// reverberation average flat.
 fn sound_between_ticks(envelope: &[f32], rate: f64, coarse: &super::detect::Coarse) -> bool {
     let pairs: Vec<(f64, f64)> = coarse
         .onsets
@@ -1148,7 +1169,27 @@ fn sound_between_ticks(envelope: &[f32], rate: f64, coarse: &super::detect::Coar
         .flatten()
         .any(|d| (after - d).abs() < 0.003);
     let peak = top - centre;
-    !drop && peak >= HALF_BEAT_RISE * rise && peak >= 6.0 * spread
+    if drop || peak < 6.0 * spread || peak < HALF_BEAT_WEAK_RISE * rise {
+        return false;
+    }
+    if peak >= HALF_BEAT_RISE * rise {
+        return true;
+    }
+    // Weak: where a beat error under OUT_OF_BEAT of the half beat puts the
+    // other side, and no other sound near its size (away from it and from
+    // where its own drop follows it).
+    let delays: Vec<f64> = coarse.drops.iter().flatten().copied().collect();
+    let near = |t: f64| {
+        let from = (t - after).abs();
+        from <= 0.003 || delays.iter().any(|d| (from - d).abs() <= 0.003)
+    };
+    let others = profile
+        .iter()
+        .enumerate()
+        .filter(|&(j, _)| !near((0.3 + 0.4 * j as f64 / (bins - 1) as f64) * typical))
+        .fold(0.0_f64, |m, (_, &p)| m.max(p - centre));
+    (after / typical - 0.5).abs() < 0.5 * HALF_BEAT_WEAK_OUT_OF_BEAT
+        && others < HALF_BEAT_ALONE * peak
 }
 
 /// The beat analysis of ticks numbered by the tracker: its stream given
@@ -1170,12 +1211,6 @@ pub(crate) fn analyse_ticks(
         stream.push_numbered(t.beat, t.time)?;
     }
     stream.finish(nominal)
-}
-
-/// The split of the tick and tock intervals, %.
-fn in_beat(a: &BeatAnalysis) -> [f64; 2] {
-    let half = 50.0 * a.beat_error_ms * 1e-3 / a.mean_beat;
-    [50.0 + half, 50.0 - half]
 }
 
 /// The largest signal to noise said, dB: a floor of digital silence (a

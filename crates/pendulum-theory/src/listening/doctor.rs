@@ -25,10 +25,9 @@ pub(crate) fn findings(
     let be = b.beat_error_ms.abs() * 1e-3;
     let be_se = b.beat_error_se_ms.unwrap_or(0.0) * 1e-3;
     if worth_setting(heard.oscillator, beat, be, be_se) {
-        let long = 50.0 * (1.0 + be / beat);
         out.push(Finding::OutOfBeat {
             beat_error_ms: be * 1e3,
-            split_percent: [long, 100.0 - long],
+            split_percent: crate::advice::split_percent(be, beat),
             limit_ms: beat_error_worth_setting(heard.oscillator, beat) * 1e3,
         });
     }

@@ -13,6 +13,7 @@ use pendulum_theory::clock_log::terms::columns;
 use pendulum_theory::clock_log::{
     analyse, LogColumn, LogInput, LogKind, LogResult, LogWarning, Source, TrainInput, TERMS,
 };
+use pendulum_theory::compound::regulate::Regulated;
 use pendulum_theory::period::Nominal;
 use pendulum_theory::stability::StabilityRow;
 use pendulum_theory::tide::Station;
@@ -243,7 +244,20 @@ pub(crate) fn analyse_file(args: &LogArgs) -> Result<Analysed, CliError> {
             arbor_turns_per_hour: args.arbor_turns_per_hour.map(|n| n.0),
         }),
     };
-    let result = analyse(&input).map_err(|r| refused(&r, &file, &table.lines, skip))?;
+    let mut result = analyse(&input).map_err(|r| refused(&r, &file, &table.lines, skip))?;
+    let pendulum = match (input.design, args.length) {
+        (Some(d), _) => Some(Regulated::Design(d, None)),
+        (None, Some(l)) => Some(Regulated::Length(l.0)),
+        (None, None) => None,
+    };
+    let known = pendulum_theory::advice::Known {
+        pendulum,
+        nut: args.nut.nut(),
+        ..Default::default()
+    };
+    result
+        .advise(&known)
+        .map_err(|e| crate::commands::common::refused(&e))?;
     Ok(Analysed {
         file,
         format: table.format,
@@ -450,6 +464,13 @@ pub(crate) fn text(file: &str, r: &LogResult) -> String {
     out.push_str(&periodic(r));
     for w in &r.warnings {
         out.push_str(&format!("warning: {}\n", warning(w, r.epoch_unix_s)));
+    }
+    if r.advice.is_empty() && r.beat_s.is_none() {
+        out.push_str(
+            "(For the move of the bob that brings it to time, give --length or --design.)\n",
+        );
+    } else {
+        out.push_str(&crate::commands::common::advice_text(&r.advice));
     }
     out
 }

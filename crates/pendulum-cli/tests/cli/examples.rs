@@ -583,6 +583,37 @@ fn examples() -> Vec<(&'static str, Check)> {
             },
         ),
         (
+            "pendulum log examples/clock-log.csv --length 0.994m --nut-tpi 32",
+            |r| {
+                // The rate at the log's end into the bob's move, by hand: a
+                // clock gaining r s/day beats (1 + r/86,400) times too often,
+                // and T ∝ √L, so ΔL = L ((1 + r/86,400)² − 1); the nut's
+                // turns that over its pitch, 25.4/32 mm.
+                let rate = r.line("Rate ");
+                let end: f64 = rate
+                    .split("; ")
+                    .nth(1)
+                    .and_then(|t| t.split_whitespace().next())
+                    .unwrap()
+                    .parse()
+                    .unwrap();
+                let shift_mm = 994.0 * ((1.0 + end / 86_400.0).powi(2) - 1.0);
+                let advice = r.line("- gaining");
+                assert!(advice.contains("lower the bob"), "{advice}");
+                assert!(advice.contains("anticlockwise seen from below"), "{advice}");
+                let said = |after: &str| -> f64 {
+                    advice.split(after).nth(1).unwrap().split_whitespace().next().unwrap()
+                        .trim_end_matches(':')
+                        .parse()
+                        .unwrap()
+                };
+                let mm = said("lower the bob ");
+                assert!((mm / shift_mm - 1.0).abs() < 5e-3, "{mm} mm against {shift_mm}");
+                let turns: f64 = advice.split(" mm: ").nth(1).unwrap().split_whitespace().next().unwrap().parse().unwrap();
+                assert!((turns / (shift_mm / (25.4 / 32.0)) - 1.0).abs() < 5e-3, "{turns} turns");
+            },
+        ),
+        (
             "pendulum log examples/clock-log.csv --events examples/clock-events.csv --plot clock.svg",
             |r| {
                 // The generator's daily temperature swing of 1.5 °C, through

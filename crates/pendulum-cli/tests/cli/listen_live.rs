@@ -137,8 +137,21 @@ fn a_pipe_gives_the_files_totals() {
         bytes.clone(),
         None,
     );
-    let (last, windows) = lines.split_last().unwrap();
+    let (last, printed) = lines.split_last().unwrap();
     assert_eq!(last["file"], "-");
+    // A first, provisional reading before the windows: the beat rate
+    // within 0.1% of the file's, once.
+    let first: Vec<&Value> = printed
+        .iter()
+        .filter_map(|l| l.get("provisional"))
+        .collect();
+    assert_eq!(first.len(), 1, "{printed:?}");
+    assert!((f(first[0], "beats_per_hour") / f(&file, "beats_per_hour") - 1.0).abs() < 1e-3);
+    assert!(printed[0].get("provisional").is_some(), "{printed:?}");
+    let windows: Vec<&Value> = printed
+        .iter()
+        .filter(|l| l.get("window").is_some())
+        .collect();
     assert!(!windows.is_empty(), "{lines:?}");
     for (w, whole) in windows.iter().zip(file["windows"].as_array().unwrap()) {
         // (The rate and beat error as the totals; the noise floor under
@@ -184,7 +197,7 @@ fn fed_at_a_pace_the_windows_come_as_they_complete() {
     // whole recording had been fed by then.
     let mut seen = Vec::new();
     let mut byte = [0u8; 1];
-    while String::from_utf8_lossy(&seen).lines().count() < 3 {
+    while String::from_utf8_lossy(&seen).lines().count() < 4 {
         assert_eq!(stdout.read(&mut byte).unwrap(), 1, "no window printed");
         seen.push(byte[0]);
     }
@@ -196,7 +209,9 @@ fn fed_at_a_pace_the_windows_come_as_they_complete() {
         early,
         "the first window came only after the end of the input:\n{text}"
     );
-    assert!(text.starts_with("Every 5 s\n"), "{text}");
+    assert!(text.starts_with("First "), "{text}");
+    assert!(text.contains(" beats/hour, rate "), "{text}");
+    assert!(text.contains("\nEvery 5 s\n"), "{text}");
     assert!(text.contains("\nRate "), "{text}");
     // The totals, once more through JSON at twice that pace.
     piped(

@@ -45,9 +45,15 @@ pub(crate) fn findings(
             escape_teeth: usual_escape_wheel(p.period_s, beat),
         });
     }
+    // (Beat k at its time in the recording: the ticks' line through the
+    // first tick, the tracker's numbers counting from it.)
+    let zero = heard
+        .ticks
+        .first()
+        .map_or(0.0, |t| t.time - t.beat as f64 * beat);
     let drops: Vec<(f64, f64)> = spacings
         .iter()
-        .map(|&(k, d)| (k as f64 * beat, d))
+        .map(|&(k, d)| (zero + k as f64 * beat, d))
         .collect();
     if let Some(trend) = arc_trend(&drops, beat) {
         if trend.change < -ARC_FALL_PERCENT / 100.0 && trend.sigma > ARC_SIGMA {

@@ -34,6 +34,43 @@ use crate::fitting::beats::nearest_standard;
 /// Seconds of sound learnt before the ticks are followed.
 pub const LEARN_S: f64 = 30.0;
 
+/// While the first [`LEARN_S`] are learnt, a provisional reading is tried
+/// after this many seconds and every as many after (a watch beats 40 to
+/// 160 times in them; a seconds clock's comes when the learning ends).
+pub const PROVISIONAL_S: f64 = 8.0;
+
+/// The fewest beats a provisional reading is given from.
+pub const PROVISIONAL_BEATS: usize = 24;
+
+/// How long after a window's end its ticks are awaited beyond it for the
+/// clean-up (each tick checked against its side's neighbours,
+/// [`CLEAN_REACH`] beats either way in a file), s, if less: past
+/// its end the clean-up's predictions are carried from the ticks before
+/// (on a steady clock the same to microseconds), and a window is printed
+/// within a few seconds of its end, not a minute.
+pub const WINDOW_WAIT_S: f64 = 0.5;
+
+/// A first reading while the listener learns, from the envelope's onsets
+/// of the seconds heard so far (each to a fraction of a millisecond, where
+/// the windows and the end time each tick to microseconds): a provisional
+/// beat and rate, refined as the listening goes on.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Provisional {
+    /// The seconds of sound it is from.
+    pub after_s: f64,
+    /// Beats heard in them.
+    pub beats: usize,
+    /// The beat rate heard, beats an hour.
+    pub beats_per_hour: f64,
+    /// The rate against the nominal beat (given, or the standard one
+    /// within 2%), s/day; `None` without one.
+    pub rate_s_per_day: Option<f64>,
+    /// Its standard error, s/day.
+    pub rate_se_s_per_day: Option<f64>,
+    /// The beat error, ms.
+    pub beat_error_ms: f64,
+}
+
 /// A recording listened to as it comes: [`LiveListener::push`] its
 /// samples, then [`LiveListener::finish`].
 pub struct LiveListener {
@@ -43,6 +80,19 @@ pub struct LiveListener {
     /// Samples pushed.
     samples: u64,
     stage: Stage,
+    /// Provisional readings tried.
+    tries: usize,
+    /// A provisional reading not yet taken, and whether one was given.
+    provisional: Option<Provisional>,
+    read: bool,
+}
+
+/// What the first seconds give: the beat, the tracker's pass over them at
+/// it, and the envelope's floor.
+struct Learnt {
+    beat: f64,
+    coarse: super::detect::Coarse,
+    floor: Option<f64>,
 }
 
 enum Stage {
@@ -80,7 +130,16 @@ impl LiveListener {
             sample_rate,
             samples: 0,
             stage: Stage::Learning(Vec::new()),
+            tries: 0,
+            provisional: None,
+            read: false,
         })
+    }
+
+    /// The provisional reading, once, when the first seconds give one
+    /// (see [`Provisional`]); `None` before and after.
+    pub fn take_provisional(&mut self) -> Option<Provisional> {
+        self.provisional.take()
     }
 
     /// The recording's length so far, s.
@@ -105,25 +164,90 @@ impl LiveListener {
         }
         self.samples += block.len() as u64;
         let rate = f64::from(self.sample_rate);
-        match &mut self.stage {
+        let heard = match &mut self.stage {
             Stage::Learning(kept) => {
                 kept.extend_from_slice(block);
-                if (kept.len() as f64) < LEARN_S * rate {
-                    return Ok(Vec::new());
-                }
-                let kept = std::mem::take(kept);
-                let mut following = self.learn(&kept)?;
-                following.push(&kept);
-                self.stage = Stage::Following(Box::new(following));
+                kept.len() as f64 / rate
             }
-            Stage::Following(f) => f.push(block),
+            Stage::Following(f) => {
+                f.push(block);
+                return Ok(self.completed(false));
+            }
+        };
+        if heard < LEARN_S {
+            if !self.read && heard >= (self.tries + 1) as f64 * PROVISIONAL_S {
+                self.tries += 1;
+                if let Stage::Learning(kept) = &self.stage {
+                    // (Refused here is not refused: more seconds may tell.)
+                    if let Ok(learnt) = self.first_seconds(kept) {
+                        self.provide(&learnt, heard);
+                    }
+                }
+            }
+            return Ok(Vec::new());
         }
+        let Stage::Learning(kept) = &mut self.stage else {
+            unreachable!("learning until here")
+        };
+        let kept = std::mem::take(kept);
+        let learnt = self.first_seconds(&kept)?;
+        if !self.read {
+            self.provide(&learnt, heard);
+        }
+        let mut following = self.learn(learnt)?;
+        following.push(&kept);
+        self.stage = Stage::Following(Box::new(following));
         Ok(self.completed(false))
     }
 
-    /// The first seconds learnt: the beat, its half, the rule of one event
-    /// a beat (as [`listen`] finds them on a file's first minutes).
-    fn learn(&self, samples: &[f32]) -> Result<Following, Refusal> {
+    /// Keeps the provisional reading of `learnt` from `heard` s, if its
+    /// onsets give one ([`PROVISIONAL_BEATS`] at least).
+    fn provide(&mut self, learnt: &Learnt, heard: f64) {
+        let onsets = &learnt.coarse.onsets;
+        if onsets.len() < PROVISIONAL_BEATS {
+            return;
+        }
+        let mut stream =
+            crate::fitting::beats::BeatStream::filling_up_to(super::analysis::MAX_FILLED_BEATS)
+                .with_beat(learnt.beat);
+        if onsets
+            .iter()
+            .any(|&(k, t)| stream.push_numbered(k, t).is_err())
+        {
+            return;
+        }
+        let Ok(a) = stream.finish(self.nominal_beat(learnt.beat)) else {
+            return;
+        };
+        if !(a.mean_beat.is_finite() && a.mean_beat > 0.0) {
+            return;
+        }
+        self.provisional = Some(Provisional {
+            after_s: heard,
+            beats: onsets.len(),
+            beats_per_hour: 3600.0 / a.mean_beat,
+            rate_s_per_day: a.rate_s_per_day.filter(|r| r.is_finite()),
+            rate_se_s_per_day: a
+                .rate_s_per_day
+                .map(|_| a.rate_se_s_per_day)
+                .filter(|s| s.is_finite()),
+            beat_error_ms: a.beat_error_ms,
+        });
+        self.read = true;
+    }
+
+    /// The beat the rates are against: half the period given, or the
+    /// standard beat near `beat`.
+    fn nominal_beat(&self, beat: f64) -> Option<f64> {
+        self.checked
+            .nominal
+            .map(|p| 0.5 * p)
+            .or_else(|| nearest_standard(beat))
+    }
+
+    /// The first seconds: the beat and its half (as [`listen`] finds them
+    /// on a file's first minutes) and the tracker's pass at that beat.
+    fn first_seconds(&self, samples: &[f32]) -> Result<Learnt, Refusal> {
         let rate = f64::from(self.sample_rate);
         let mut env = Envelope::new(rate);
         let mut wide = Envelope::with_filter(rate, BandPass::from(WIDE_HIGH_PASS_HZ, rate));
@@ -151,6 +275,23 @@ impl LiveListener {
             beat = half;
             coarse = track(beat);
         }
+        Ok(Learnt {
+            beat,
+            coarse,
+            floor,
+        })
+    }
+
+    /// The listening set up from the first seconds `learnt`: the beat, the
+    /// rule of one event a beat, the gate's floor.
+    fn learn(&self, learnt: Learnt) -> Result<Following, Refusal> {
+        let rate = f64::from(self.sample_rate);
+        let env_rate = envelope_rate(&Envelope::new(rate), rate);
+        let Learnt {
+            beat,
+            coarse,
+            floor,
+        } = learnt;
         if let Some(every) = self.input.every {
             check_every(every, beat)?;
         }
@@ -161,11 +302,7 @@ impl LiveListener {
             refiner: Refiner::following(rate, coarse.timing, coarse.drops),
             quality: Quality::new(rate),
             beat,
-            nominal_beat: self
-                .checked
-                .nominal
-                .map(|p| 0.5 * p)
-                .or_else(|| nearest_standard(beat)),
+            nominal_beat: self.nominal_beat(beat),
             oscillator: self
                 .input
                 .oscillator
@@ -182,7 +319,7 @@ impl LiveListener {
         };
         let scale = 1.0 / (1.0 + self.checked.ppm * 1e-6);
         let duration = self.samples as f64 / f64::from(self.sample_rate) * scale;
-        let reach = (CLEAN_REACH as f64 + 1.0) * f.beat;
+        let reach = ((CLEAN_REACH as f64 + 1.0) * f.beat).min(WINDOW_WAIT_S);
         let mut out = Vec::new();
         loop {
             let start = f.next_window as f64 * every;

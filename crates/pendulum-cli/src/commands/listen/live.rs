@@ -1,7 +1,9 @@
 //! `pendulum listen -`: listening live to standard input. The samples go
 //! to the library's live listener ([`LiveListener`]) as they come; each
 //! window of `--every` is printed as it completes (a table row, or a JSON
-//! line `{"window": …}` with `--json`); the end of the input or Ctrl-C
+//! line `{"window": …}` with `--json`), after a first, provisional reading
+//! within the first seconds (a line, or `{"provisional": …}`); the end of
+//! the input or Ctrl-C
 //! ends the listening, and the whole result is printed as for a file.
 
 use super::text::{live_heading, live_row};
@@ -12,7 +14,7 @@ use crate::interrupt;
 use crate::output;
 use crate::stream::{open, Block, Encoding, Given, Layout};
 use pendulum_theory::listening::analysis::ListenInput;
-use pendulum_theory::listening::live::LiveListener;
+use pendulum_theory::listening::live::{LiveListener, Provisional};
 use pendulum_theory::listening::windows::Window;
 use serde::Serialize;
 use std::io::Write;
@@ -23,6 +25,12 @@ use std::time::Duration;
 #[derive(Serialize)]
 struct WindowLine<'a> {
     window: &'a Window,
+}
+
+/// The first reading printed as a JSON line.
+#[derive(Serialize)]
+struct ProvisionalLine<'a> {
+    provisional: &'a Provisional,
 }
 
 /// Listens to standard input until its end or Ctrl-C.
@@ -57,8 +65,19 @@ pub(super) fn listen(args: &ListenArgs, input: &ListenInput) -> Result<Heard, Cl
         .iter()
         .any(|p| p.as_deref().is_some_and(crate::file::is_stdout));
     let mut printed = 0usize;
-    let mut print = |windows: Vec<Window>| -> Result<(), CliError> {
+    let mut print = |first: Option<Provisional>, windows: Vec<Window>| -> Result<(), CliError> {
         let mut text = String::new();
+        // (With --json and no --every the output is one document.)
+        if let Some(p) = first
+            .as_ref()
+            .filter(|_| !args.json || args.every.is_some())
+        {
+            if args.json {
+                text.push_str(&output::json_line(&ProvisionalLine { provisional: p })?);
+            } else {
+                text.push_str(&provisional_line(p));
+            }
+        }
         for w in &windows {
             if args.json {
                 text.push_str(&output::json_line(&WindowLine { window: w })?);
@@ -84,7 +103,10 @@ pub(super) fn listen(args: &ListenArgs, input: &ListenInput) -> Result<Heard, Cl
     interrupt::stop_is_handled();
     loop {
         match blocks.recv_timeout(Duration::from_millis(200)) {
-            Ok(Block::Samples(samples)) => print(listener.push(&samples).map_err(refused)?)?,
+            Ok(Block::Samples(samples)) => {
+                let windows = listener.push(&samples).map_err(refused)?;
+                print(listener.take_provisional(), windows)?;
+            }
             Ok(Block::Failed(reason)) => return Err(CliError::other(reason)),
             Err(RecvTimeoutError::Timeout) => {}
             Err(RecvTimeoutError::Disconnected) => break,
@@ -101,4 +123,21 @@ pub(super) fn listen(args: &ListenArgs, input: &ListenInput) -> Result<Heard, Cl
         result,
         printed: input.every.map(|_| printed),
     })
+}
+
+/// The first reading in words, marked as provisional.
+fn provisional_line(p: &Provisional) -> String {
+    use crate::output::num;
+    let rate = match (p.rate_s_per_day, p.rate_se_s_per_day) {
+        (Some(r), Some(se)) => format!(", rate {} ± {} s/day", num(r, 3), num(se, 2)),
+        (Some(r), None) => format!(", rate {} s/day", num(r, 3)),
+        _ => String::new(),
+    };
+    format!(
+        "First {} s: {} beats/hour{rate}, beat error {} ms (provisional, from {} beats; each tick is timed finer as the listening goes on)\n",
+        num(p.after_s, 3),
+        num(p.beats_per_hour, 7),
+        num(p.beat_error_ms, 2),
+        p.beats
+    )
 }

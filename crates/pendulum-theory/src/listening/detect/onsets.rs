@@ -140,10 +140,30 @@ impl EventRule {
 /// Live: onsets settled a batch at a time, once this many more have come
 /// ([`LIVE_CONTEXT`] on either side of a batch for the line filters, whose
 /// lines reach [`LINE_REACH`] beats of a side either way, one after the
-/// other).
+/// other), or [`LIVE_BATCH_S`] of beats if fewer.
 const LIVE_BATCH: usize = 16;
-/// Live: onsets either side of a batch the line filters see.
+/// Live: onsets either side of a batch the line filters see, or
+/// [`LIVE_CONTEXT_S`] of beats if fewer (at least one).
 const LIVE_CONTEXT: usize = 4 * LINE_REACH + 4;
+/// Live: the longest a batch waits to fill, s.
+const LIVE_BATCH_S: f64 = 0.5;
+/// Live: the longest stretch of beats after a batch its line filters wait
+/// for, s: the lines then reach their [`LINE_REACH`] beats before a
+/// batch's last beats and fewer after (a median of a side's ten beats
+/// before and one or more after keeps to the line as well on a steady
+/// clock), so that a seconds clock's beats are handed on within a few
+/// seconds, not 60.
+const LIVE_CONTEXT_S: f64 = 1.0;
+
+/// Live: the batch and the context for beats of `beat` s ([`LIVE_BATCH`],
+/// [`LIVE_CONTEXT`]).
+fn live_sizes(beat: f64) -> (usize, usize) {
+    let beats = |s: f64| (s / beat).ceil().max(0.0) as usize;
+    (
+        beats(LIVE_BATCH_S).clamp(1, LIVE_BATCH),
+        beats(LIVE_CONTEXT_S).clamp(1, LIVE_CONTEXT),
+    )
+}
 
 /// The sounds of a beat around the one followed: the earliest sound before
 /// it and the loudest after it (within [`PAIR_REACH`] of a beat, 0.25 s at
@@ -331,10 +351,11 @@ impl OnsetTracker {
             return;
         };
         let n = self.timed.len();
-        if !end && n < self.emitted + LIVE_BATCH + LIVE_CONTEXT {
+        let (batch, context) = live_sizes(self.beat);
+        if !end && n < self.emitted + batch + context {
             return;
         }
-        let upto = if end { n } else { n - LIVE_CONTEXT };
+        let upto = if end { n } else { n - context };
         if upto <= self.emitted {
             return;
         }

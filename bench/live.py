@@ -66,7 +66,7 @@ def peak_kb(path):
 def main():
     with tempfile.TemporaryDirectory() as d:
         for name, bph, seconds, every in [("watch", 28800, 60, "10s"),
-                                          ("seconds clock", 3600, 180, "30s")]:
+                                          ("seconds clock", 3600, 330, "30s")]:
             wav = os.path.join(d, "rec.wav")
             synth(wav, bph, seconds, 45)
             lines = paced(wav, every)

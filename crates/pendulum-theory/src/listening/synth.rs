@@ -171,16 +171,16 @@ impl TickRecording {
         let beat_ms = 3.6e6 / bph;
         if let Some(drop) = self.drop_ms {
             let drop = crate::analysis::require_finite("drop", drop)?;
-            if !(drop > 0.0 && drop < 0.45 * beat_ms) {
-                return Err(Refusal::field(
-                    "drop",
-                    format!(
-                        "must be between 0 and 45% of the beat ({} ms), got {} ms",
-                        n(0.45 * beat_ms, 3),
-                        n(drop, 6)
-                    ),
-                ));
-            }
+            within(
+                drop > 0.0 && drop < 0.45 * beat_ms,
+                "drop",
+                format!(
+                    "between 0 and 45% of the beat ({} ms)",
+                    n(0.45 * beat_ms, 3)
+                ),
+                drop,
+                "ms",
+            )?;
         }
         let arc = crate::analysis::require_finite("arc_change", self.arc_change_percent_per_hour)?;
         let end = 1.0 + arc * self.duration / 3600.0 / 100.0;
@@ -191,30 +191,44 @@ impl TickRecording {
             ));
         }
         let error = crate::analysis::require_finite("periodic_error", self.periodic_error_ms)?;
-        if error.abs() > 0.1 * beat_ms {
-            return Err(Refusal::field(
-                "periodic_error",
-                format!(
-                    "must be within a tenth of the beat ({} ms), got {} ms",
-                    n(0.1 * beat_ms, 3),
-                    n(error, 6)
-                ),
-            ));
-        }
+        within(
+            error.abs() <= 0.1 * beat_ms,
+            "periodic_error",
+            format!("within a tenth of the beat ({} ms)", n(0.1 * beat_ms, 3)),
+            error,
+            "ms",
+        )?;
         let period =
             crate::analysis::require_finite("periodic_error_period", self.periodic_error_period_s)?;
-        if period < 4.0 * beat_ms * 1e-3 {
-            return Err(Refusal::field(
-                "periodic_error_period",
-                format!(
-                    "must be at least four beats ({} s), got {} s",
-                    n(4.0 * beat_ms * 1e-3, 3),
-                    n(period, 6)
-                ),
-            ));
-        }
-        Ok(())
+        within(
+            period >= 4.0 * beat_ms * 1e-3,
+            "periodic_error_period",
+            format!("at least four beats ({} s)", n(4.0 * beat_ms * 1e-3, 3)),
+            period,
+            "s",
+        )
     }
+}
+
+/// A refusal of `field`, "must be `limits`, got `value` `unit`", unless
+/// it is `inside` them.
+fn within(
+    inside: bool,
+    field: &'static str,
+    limits: String,
+    value: f64,
+    unit: &str,
+) -> Result<(), crate::analysis::Refusal> {
+    if inside {
+        return Ok(());
+    }
+    Err(crate::analysis::Refusal::field(
+        field,
+        format!(
+            "must be {limits}, got {} {unit}",
+            crate::error::format_significant(value, 6)
+        ),
+    ))
 }
 
 /// A synthesised recording.

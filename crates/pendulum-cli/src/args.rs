@@ -296,7 +296,9 @@ pub struct LogArgs {
     #[arg(long, value_name = "FILE")]
     pub design: Option<InputPath>,
     /// The pendulum's length, for the advice's move of the bob [default:
-    /// the simple pendulum of the log's beat, said].
+    /// the simple pendulum of the log's beat (half periods, or --beat),
+    /// said; a log of offsets or rates without --beat has no advice
+    /// without it].
     #[arg(
         long,
         value_name = "L",

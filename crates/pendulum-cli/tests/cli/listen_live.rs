@@ -300,3 +300,19 @@ fn bad_streams_are_refused() {
         "finite",
     );
 }
+
+/// Windows too short for the clock's beat are refused when the learning
+/// ends, and the first reading, which comes sooner, is not printed before
+/// that refusal: nothing on standard output (a trial found the
+/// provisional line there above the error).
+#[test]
+fn a_refused_window_prints_nothing_first() {
+    let dir = tempfile::tempdir().unwrap();
+    let wav = recording(dir.path(), "clock.wav", "3600", "60s");
+    let bytes = std::fs::read(&wav).unwrap();
+    for json in [&[][..], &["--json"][..]] {
+        let mut args = vec!["listen", "-", "--every", "1s"];
+        args.extend_from_slice(json);
+        refuses_given(&args, &bytes, "--every");
+    }
+}

@@ -103,8 +103,8 @@ pub fn regulate(
                 return Err(Refusal::field(
                     "nut_pitch",
                     format!(
-                        "must lie between 0.01 mm and 50 mm, got {} m",
-                        format_significant(p, 6)
+                        "must lie between 0.01 mm and 50 mm, got {} mm",
+                        format_significant(p * 1e3, 6)
                     ),
                 ));
             }
@@ -114,7 +114,10 @@ pub fn regulate(
             if !(TPI_RANGE.0..=TPI_RANGE.1).contains(&tpi) {
                 return Err(Refusal::field(
                     "nut_tpi",
-                    "must lie between 0.5 and 2540 threads per inch",
+                    format!(
+                        "must lie between 0.5 and 2540 threads per inch, got {}",
+                        format_significant(tpi, 6)
+                    ),
                 ));
             }
             Some(0.0254 / tpi)

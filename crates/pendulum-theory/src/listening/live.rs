@@ -204,7 +204,13 @@ impl LiveListener {
     /// onsets give one ([`PROVISIONAL_BEATS`] at least).
     fn provide(&mut self, learnt: &Learnt, heard: f64) {
         let onsets = &learnt.coarse.onsets;
-        if onsets.len() < PROVISIONAL_BEATS {
+        // (Windows the beat refuses are refused when the learning ends:
+        // nothing is said before that refusal.)
+        let refused = self
+            .input
+            .every
+            .is_some_and(|every| check_every(every, learnt.beat).is_err());
+        if onsets.len() < PROVISIONAL_BEATS || refused {
             return;
         }
         let mut stream =

@@ -102,10 +102,18 @@ pub fn regulate(
             if !(PITCH_RANGE_M.0..=PITCH_RANGE_M.1).contains(&p) {
                 return Err(Refusal::field(
                     "nut_pitch",
-                    format!(
-                        "must lie between 0.01 mm and 50 mm, got {} mm",
-                        format_significant(p * 1e3, 6)
-                    ),
+                    // (In mm, where the pitch in mm is a number: 1e308 m
+                    // is not.)
+                    match p * 1e3 {
+                        mm if mm.is_finite() => format!(
+                            "must lie between 0.01 mm and 50 mm, got {} mm",
+                            format_significant(mm, 6)
+                        ),
+                        _ => format!(
+                            "must lie between 0.01 mm and 50 mm, got {} m",
+                            format_significant(p, 6)
+                        ),
+                    },
                 ));
             }
             Some(p)

@@ -354,6 +354,13 @@ pub fn length_of_beat(beat: f64) -> f64 {
     crate::STANDARD_GRAVITY * (beat / PI).powi(2)
 }
 
+/// The beat of a simple pendulum `length` m long (half its small-angle
+/// period), s: `π √(l/g)` at standard gravity, [`length_of_beat`]'s
+/// inverse.
+pub fn beat_of_length(length: f64) -> f64 {
+    PI * (length / crate::STANDARD_GRAVITY).sqrt()
+}
+
 /// The simple pendulum beating `bph` times an hour, m, for regulation
 /// given the beat alone: refused above
 /// [`crate::oscillator::BALANCE_ABOVE_BPH`] (a balance's beat,

@@ -490,18 +490,17 @@ impl LogResult {
     /// Fills [`LogResult::advice`] from the rate at the log's end and
     /// `known`: the beat is the log's ([`LogResult::beat_s`]) or, when it
     /// has none, the beat of the pendulum known (`π √(L/g)` of its
-    /// equivalent length, standard gravity). Refused when the regulation
+    /// equivalent length, standard gravity: [`crate::advice::beat_of_length`]). Refused when the regulation
     /// cannot be figured (a nut's thread out of range, a design's part
     /// not found).
     pub fn advise(&mut self, known: &crate::advice::Known) -> Result<(), crate::analysis::Refusal> {
         crate::advice::check(known)?;
         let beat = match (self.beat_s, &known.pendulum) {
             (Some(b), _) => b,
-            (None, Some(pendulum)) => {
-                let length = crate::compound::regulate::regulate(pendulum, 0.0, known.nut, None)?
-                    .equivalent_length_m;
-                std::f64::consts::PI * (length / crate::pendulum::STANDARD_GRAVITY).sqrt()
-            }
+            (None, Some(pendulum)) => crate::advice::beat_of_length(
+                crate::compound::regulate::regulate(pendulum, 0.0, known.nut, None)?
+                    .equivalent_length_m,
+            ),
             (None, None) => {
                 self.advice.clear();
                 return Ok(());

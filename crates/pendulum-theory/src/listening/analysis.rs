@@ -1131,13 +1131,14 @@ fn sound_between_ticks(envelope: &[f32], rate: f64, coarse: &super::detect::Coar
     }
     let typical = pairs.iter().map(|(a, b)| b - a).sum::<f64>() / pairs.len() as f64;
     let bins = ((0.4 * typical * rate).round() as usize).clamp(8, 20_000);
+    // Bin j's fraction of the way from one onset to the next.
+    let fraction = |j: usize| 0.3 + 0.4 * j as f64 / (bins - 1) as f64;
     let mut profile = vec![0.0; bins];
     let mut tick = 0.0;
     let reach = (0.01 * rate).ceil() as usize;
     for &(a, b) in &pairs {
         for (j, p) in profile.iter_mut().enumerate() {
-            let fraction = 0.3 + 0.4 * j as f64 / (bins - 1) as f64;
-            let i = ((a + fraction * (b - a)) * rate).round() as usize;
+            let i = ((a + fraction(j) * (b - a)) * rate).round() as usize;
             *p += f64::from(envelope[i.min(envelope.len() - 1)]);
         }
         let i = ((a * rate).round().max(0.0) as usize).min(envelope.len() - 1);
@@ -1162,7 +1163,7 @@ fn sound_between_ticks(envelope: &[f32], rate: f64, coarse: &super::detect::Coar
     let Some((at, &top)) = profile.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
         return false;
     };
-    let after = (0.3 + 0.4 * at as f64 / (bins - 1) as f64) * typical;
+    let after = fraction(at) * typical;
     let drop = coarse
         .drops
         .iter()
@@ -1186,7 +1187,7 @@ fn sound_between_ticks(envelope: &[f32], rate: f64, coarse: &super::detect::Coar
     let others = profile
         .iter()
         .enumerate()
-        .filter(|&(j, _)| !near((0.3 + 0.4 * j as f64 / (bins - 1) as f64) * typical))
+        .filter(|&(j, _)| !near(fraction(j) * typical))
         .fold(0.0_f64, |m, (_, &p)| m.max(p - centre));
     (after / typical - 0.5).abs() < 0.5 * HALF_BEAT_WEAK_OUT_OF_BEAT
         && others < HALF_BEAT_ALONE * peak
@@ -1202,13 +1203,24 @@ pub(crate) fn analyse_ticks(
     fallback: f64,
     nominal: Option<f64>,
 ) -> Result<BeatAnalysis, crate::fitting::beats::BeatError> {
-    let numbered = match (ticks.first(), ticks.last()) {
-        (Some(a), Some(b)) if b.beat > a.beat => (b.time - a.time) / (b.beat - a.beat) as f64,
+    let numbered: Vec<(u64, f64)> = ticks.iter().map(|t| (t.beat, t.time)).collect();
+    analyse_numbered(&numbered, fallback, nominal)
+}
+
+/// [`analyse_ticks`] of `(beat number, time s)` pairs (a tracker's
+/// onsets, or ticks).
+pub(crate) fn analyse_numbered(
+    beats: &[(u64, f64)],
+    fallback: f64,
+    nominal: Option<f64>,
+) -> Result<BeatAnalysis, crate::fitting::beats::BeatError> {
+    let numbered = match (beats.first(), beats.last()) {
+        (Some(a), Some(b)) if b.0 > a.0 => (b.1 - a.1) / (b.0 - a.0) as f64,
         _ => fallback,
     };
     let mut stream = BeatStream::filling_up_to(MAX_FILLED_BEATS).with_beat(numbered);
-    for t in ticks {
-        stream.push_numbered(t.beat, t.time)?;
+    for &(k, t) in beats {
+        stream.push_numbered(k, t)?;
     }
     stream.finish(nominal)
 }

@@ -213,16 +213,8 @@ impl LiveListener {
         if onsets.len() < PROVISIONAL_BEATS || refused {
             return;
         }
-        let mut stream =
-            crate::fitting::beats::BeatStream::filling_up_to(super::analysis::MAX_FILLED_BEATS)
-                .with_beat(learnt.beat);
-        if onsets
-            .iter()
-            .any(|&(k, t)| stream.push_numbered(k, t).is_err())
-        {
-            return;
-        }
-        let Ok(a) = stream.finish(self.nominal_beat(learnt.beat)) else {
+        let nominal = self.nominal_beat(learnt.beat);
+        let Ok(a) = super::analysis::analyse_numbered(onsets, learnt.beat, nominal) else {
             return;
         };
         if !(a.mean_beat.is_finite() && a.mean_beat > 0.0) {

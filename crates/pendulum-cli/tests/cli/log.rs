@@ -293,3 +293,31 @@ fn a_log_ends_in_the_move_of_the_bob() {
     let end = a["rate_at_end_s_per_day"].as_f64().unwrap();
     assert!((end - 3.0).abs() < 0.3, "{end}");
 }
+
+/// A daily log read to the millisecond (eight readings of a clock gaining
+/// 0.5 s/day, the last digit wandering by ±2 ms): most day-to-day steps
+/// are equal, so the median of their deviations is nothing, and every
+/// other step stood "infinitely" out: two of them were undone as whole
+/// beats the reference slipped, the scatter went with them, and the rate
+/// came out 0.502 ± 8e-17 s/day. The scale now falls back to the standard
+/// deviation where the median's is below the readings' rounding: no jump,
+/// and an error bar the size of the scatter (a least-squares line through
+/// the readings: ± about 0.0005 s/day).
+#[test]
+fn a_daily_log_read_to_the_millisecond_keeps_its_scatter() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("time_s,offset_s\n");
+    for d in 0..8 {
+        let wobble = 0.002 * ((d * 7) % 3) as f64 - 0.002;
+        text.push_str(&format!("{},{:.4}\n", d * 86_400, 0.5 * d as f64 + wobble));
+    }
+    let path = write(dir.path(), "daily.csv", &text);
+    let v = json(&["log", &path]);
+    assert_eq!(v["wraps"], serde_json::json!([]), "{v}");
+    let (rate, se) = (
+        f(&v, "rate_s_per_day"),
+        f(&v, "rate_standard_error_s_per_day"),
+    );
+    assert!(se > 1e-4 && se < 0.01, "{rate} ± {se}");
+    assert!((rate - 0.5).abs() < 3.0 * se, "{rate} ± {se}");
+}

@@ -67,6 +67,23 @@ fn median(v: &mut [f64]) -> f64 {
     *v.select_nth_unstable_by(h, f64::total_cmp).1
 }
 
+/// The robust standard deviation of `deviations` about `centre`: 1.4826
+/// times their median absolute deviation, or, where that is no more than
+/// the values' rounding (more than half of them equal to the last bits: a
+/// short log, or readings to a few digits, whose scale by the median is
+/// zero or 1e-17 and makes every other value an outlier), their standard
+/// deviation. `None` when both are nothing (all the values equal).
+fn robust_scale(deviations: &mut [f64], centre: f64) -> Option<f64> {
+    let finite = || deviations.iter().copied().filter(|d| d.is_finite());
+    let size = finite().fold(centre.abs(), |m, d| m.max(d.abs()));
+    let n = finite().count() as f64;
+    let sd = (finite().map(|d| (d - centre).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+    let mut spread: Vec<f64> = finite().map(|d| (d - centre).abs()).collect();
+    let mad = 1.4826 * median(&mut spread);
+    let scale = if mad > 1e-12 * size { mad } else { sd };
+    (scale.is_finite() && scale > 1e-12 * size).then_some(scale)
+}
+
 /// Blocks of this many samples make the local level.
 const BLOCK: usize = 64;
 
@@ -126,11 +143,9 @@ pub fn find_accidents(times: &[f64], x: &[f64]) -> Vec<Accident> {
     let stride = (m / 200_000).max(1);
     let mut sample: Vec<f64> = scaled.iter().step_by(stride).copied().collect();
     let centre = median(&mut sample);
-    let mut spread: Vec<f64> = sample.iter().map(|s| (s - centre).abs()).collect();
-    let scale = 1.4826 * median(&mut spread);
-    if scale.is_nan() || scale <= 0.0 {
+    let Some(scale) = robust_scale(&mut sample, centre) else {
         return Vec::new();
-    }
+    };
     let out_of_line: Vec<usize> = (0..m)
         .filter(|&k| ((scaled[k] - centre) / scale).abs() > SIGMAS)
         .collect();
@@ -213,16 +228,10 @@ pub fn frequency_outliers(rates: &[f64]) -> Vec<(usize, f64)> {
         .map(|(r, l)| r - l)
         .collect();
     let stride = (n / 200_000).max(1);
-    let mut spread: Vec<f64> = deviation
-        .iter()
-        .step_by(stride)
-        .filter(|d| d.is_finite())
-        .map(|d| d.abs())
-        .collect();
-    let scale = 1.4826 * median(&mut spread);
-    if scale.is_nan() || scale <= 0.0 {
+    let mut spread: Vec<f64> = deviation.iter().step_by(stride).copied().collect();
+    let Some(scale) = robust_scale(&mut spread, 0.0) else {
         return Vec::new();
-    }
+    };
     (0..n)
         .filter(|&i| (deviation[i] / scale).abs() > SIGMAS)
         .map(|i| (i, deviation[i]))

@@ -15,8 +15,8 @@
 //! unlocking to the drop into an amplitude ([`crate::lift`]).
 
 use super::detect::{
-    beat_period, clean, envelope_rate, Coarse, Envelope, Gate, MedianSound, OnsetTracker, Refiner,
-    Tick, Timing,
+    beat_period, clean, envelope_rate, Coarse, Envelope, Gate, MedianSound, OnsetTracker, Refined,
+    Refiner, Tick, Timing,
 };
 use super::doctor::findings;
 use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
@@ -480,8 +480,15 @@ impl FirstPass {
 pub(crate) struct Heard {
     /// The tracker's onsets and levels.
     pub(crate) coarse: Coarse,
-    /// The ticks refined (not yet cleaned).
+    /// The ticks refined and cleaned ([`clean`]; the sides not yet
+    /// aligned).
     pub(crate) ticks: Vec<Tick>,
+    /// Their offsets from the tracker's onsets, for the alignment of the
+    /// sides.
+    pub(crate) sides: SideOffsets,
+    /// The windows, where they were cut as the recording went on (live);
+    /// `None`: cut here from the ticks.
+    pub(crate) windows: Option<Vec<Window>>,
     /// The median tick and tock.
     pub(crate) sounds: Option<[MedianSound; 2]>,
     /// The recording's length, s.
@@ -576,10 +583,15 @@ pub fn listen<S: SampleSource>(
         })
         .map_err(ListenFailure::Source)?;
     // (What the refiner and the clean-up drop is counted below as missed.)
-    let (ticks, _, sounds) = refiner.finish_with_sounds();
+    let (refined, _, sounds) = refiner.finish_with_sounds();
+    let (kept, _, _) = clean(refined);
+    let mut sides = SideOffsets::default();
+    let ticks = kept.iter().map(|r| sides.add(r)).collect();
     let heard = Heard {
         coarse,
         ticks,
+        sides,
+        windows: None,
         sounds,
         duration: samples as f64 / rate,
         beat,
@@ -601,7 +613,9 @@ pub(crate) fn conclude(
 ) -> Result<Listening, Refusal> {
     let Heard {
         coarse,
-        ticks,
+        mut ticks,
+        sides,
+        windows: cut,
         sounds,
         duration,
         beat,
@@ -615,12 +629,9 @@ pub(crate) fn conclude(
     let differ = sounds
         .as_ref()
         .is_some_and(|pair| !super::detect::one_sound(pair, rate));
-    let ticks = if differ {
-        align_sides(ticks, &coarse.onsets)
-    } else {
-        ticks
-    };
-    let (mut ticks, _, _) = clean(ticks);
+    if differ {
+        sides.align(&mut ticks);
+    }
     if ticks.len() < MIN_TICKS {
         return Err(too_few(ticks.len(), duration, beat, snr_db));
     }
@@ -786,17 +797,23 @@ pub(crate) fn conclude(
     let (windows, window_totals) = match input.every {
         Some(every) => {
             check_every(every, mean_beat)?;
-            let (w, totals) = windows(&WindowInput {
-                ticks: &ticks,
-                levels: &coarse.levels,
-                spacings: &coarse.spacings,
-                every,
-                duration: duration * scale,
-                nominal_beat: beats.nominal_beat_s,
-                lift_angle: input.lift_angle,
-                oscillator,
-                scale,
-            });
+            let (w, totals) = match cut {
+                Some(w) => {
+                    let totals = super::windows::totals(&w, every);
+                    (w, totals)
+                }
+                None => windows(&WindowInput {
+                    ticks: &ticks,
+                    levels: &coarse.levels,
+                    spacings: &coarse.spacings,
+                    every,
+                    duration: duration * scale,
+                    nominal_beat: beats.nominal_beat_s,
+                    lift_angle: input.lift_angle,
+                    oscillator,
+                    scale,
+                }),
+            };
             if let Some(ratio) = totals.rate_scatter_over_se.filter(|&r| r > RATE_WANDERS) {
                 let w = BeatWarning::RateWanders { ratio };
                 beats.warning_codes.push(w.code());
@@ -949,37 +966,62 @@ pub const LOOP_BEATS: u64 = 256;
 /// the sides' median offsets differ by more than three standard errors (a
 /// sound's start on the envelope has its own bias of a tenth of a ms or
 /// so, which the median sounds' starts need not take). A shift common to
-/// both sides changes neither the rate nor the beat error.
-fn align_sides(mut ticks: Vec<Tick>, onsets: &[(u64, f64)]) -> Vec<Tick> {
-    let coarse: std::collections::HashMap<u64, f64> = onsets.iter().copied().collect();
-    let mut offsets: [Vec<f64>; 2] = Default::default();
-    for t in &ticks {
-        if let Some(c) = coarse.get(&t.beat) {
-            offsets[usize::from(t.side)].push(t.time - c);
+/// both sides changes neither the rate nor the beat error; nor does it
+/// change which ticks the clean-up keeps (each tick is predicted from its
+/// own side's), so the offsets are those of the ticks kept, gathered as
+/// they are (4 bytes a tick: listening live keeps them for the hours).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct SideOffsets([Vec<f32>; 2]);
+
+impl SideOffsets {
+    /// Takes the offset of a tick kept, and gives the tick.
+    pub(crate) fn add(&mut self, r: &Refined) -> Tick {
+        self.0[usize::from(r.tick.side.min(1))].push((r.tick.time - r.onset) as f32);
+        r.tick
+    }
+
+    /// The shift of the tocks that aligns them on the ticks (see
+    /// [`SideOffsets`]), s: 0 where the sides agree within three standard
+    /// errors.
+    pub(crate) fn shift(&self) -> f64 {
+        if self.0.iter().any(|o| o.len() < MIN_TICKS) {
+            return 0.0;
+        }
+        // Each side's median offset and its standard error (1.25 times the
+        // mean's, from the median absolute deviation).
+        let [(tick, a), (tock, b)] = [0, 1].map(|side| {
+            let o: Vec<f64> = self.0[side].iter().map(|&x| f64::from(x)).collect();
+            let m = super::detect::median_of(&o);
+            let deviations: Vec<f64> = o.iter().map(|x| (x - m).abs()).collect();
+            let mad = super::detect::median_of(&deviations);
+            (m, 1.25 * 1.4826 * mad / (o.len() as f64).sqrt())
+        });
+        let shift = tick - tock;
+        if shift.abs() <= 3.0 * a.hypot(b) {
+            0.0
+        } else {
+            shift
         }
     }
-    if offsets.iter().any(|o| o.len() < MIN_TICKS) {
-        return ticks;
+
+    /// Ticks kept so far.
+    pub(crate) fn len(&self) -> usize {
+        self.0[0].len() + self.0[1].len()
     }
-    // Each side's median offset and its standard error (1.25 times the
-    // mean's, from the median absolute deviation).
-    let [(tick, a), (tock, b)] = offsets.map(|o| {
-        let m = super::detect::median_of(&o);
-        let deviations: Vec<f64> = o.iter().map(|x| (x - m).abs()).collect();
-        let mad = super::detect::median_of(&deviations);
-        (m, 1.25 * 1.4826 * mad / (o.len() as f64).sqrt())
-    });
-    let shift = tick - tock;
-    if shift.abs() <= 3.0 * a.hypot(b) {
-        return ticks;
+
+    /// Moves the tocks of `ticks` by [`Self::shift`].
+    pub(crate) fn align(&self, ticks: &mut [Tick]) {
+        shift_tocks(ticks, self.shift());
     }
-    for t in ticks.iter_mut().filter(|t| t.side == 1) {
-        t.time += shift;
-        for alternative in t.alternatives.iter_mut().flatten() {
-            alternative.0 += shift;
+}
+
+/// Moves the tocks of `ticks` by `shift` s.
+pub(crate) fn shift_tocks(ticks: &mut [Tick], shift: f64) {
+    if shift != 0.0 {
+        for t in ticks.iter_mut().filter(|t| t.side == 1) {
+            t.time += shift;
         }
     }
-    ticks
 }
 
 /// The longest stretch with no tick heard that is not a clock lost: the

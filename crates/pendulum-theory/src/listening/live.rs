@@ -21,10 +21,12 @@
 //! command line's pipe test, which compares the two whole).
 
 use super::analysis::{
-    check, check_every, conclude, first_beat, half_beat, listen, Checked, FirstPass, Heard,
-    ListenInput, Listening, Oscillator, SliceSource, ENVELOPE_BLOCK,
+    check, check_every, conclude, first_beat, half_beat, listen, shift_tocks, Checked, FirstPass,
+    Heard, ListenInput, Listening, Oscillator, SideOffsets, SliceSource, ENVELOPE_BLOCK,
 };
-use super::detect::{envelope_rate, Envelope, Gate, OnsetTracker, Refiner};
+use super::detect::{
+    envelope_rate, one_sound, Cleaner, Envelope, Gate, OnsetTracker, Refined, Refiner, Tick,
+};
 use super::filter::{BandPass, WIDE_HIGH_PASS_HZ};
 use super::quality::Quality;
 use super::windows::{window_of, Window, WindowInput, CLEAN_REACH};
@@ -109,11 +111,25 @@ struct Following {
     refiner: Refiner,
     /// Clipping and hum.
     quality: Quality,
+    /// Samples per second.
+    rate: f64,
     beat: f64,
     /// The beat the windows' rates are against, s.
     nominal_beat: Option<f64>,
     oscillator: Oscillator,
-    /// The next window to complete.
+    /// The ticks refined, cleaned as they come.
+    cleaner: Cleaner,
+    /// The ticks kept, and their offsets from the tracker's onsets.
+    ticks: Vec<Tick>,
+    sides: SideOffsets,
+    /// Whether the two sides sound different (known once their median
+    /// sounds are): the tocks are then aligned on the ticks.
+    differ: Option<bool>,
+    /// The shift of the tocks, and the ticks it was found from (found
+    /// again when they have grown by a tenth).
+    shift: (usize, f64),
+    /// The windows cut so far, and the next to complete.
+    windows: Vec<Window>,
     next_window: usize,
 }
 
@@ -171,7 +187,7 @@ impl LiveListener {
             }
             Stage::Following(f) => {
                 f.push(block);
-                return Ok(self.completed(false));
+                return Ok(self.completed());
             }
         };
         if heard < LEARN_S {
@@ -197,7 +213,7 @@ impl LiveListener {
         let mut following = self.learn(learnt)?;
         following.push(&kept);
         self.stage = Stage::Following(Box::new(following));
-        Ok(self.completed(false))
+        Ok(self.completed())
     }
 
     /// Keeps the provisional reading of `learnt` from `heard` s, if its
@@ -299,58 +315,58 @@ impl LiveListener {
             tracker: OnsetTracker::following(env_rate, beat, coarse.rule),
             refiner: Refiner::following(rate, coarse.timing, coarse.drops),
             quality: Quality::new(rate),
+            rate,
             beat,
             nominal_beat: self.nominal_beat(beat),
             oscillator: self
                 .input
                 .oscillator
                 .unwrap_or_else(|| Oscillator::of_beat(beat)),
+            cleaner: Cleaner::new(),
+            ticks: Vec::new(),
+            sides: SideOffsets::default(),
+            differ: None,
+            shift: (0, 0.0),
+            windows: Vec::new(),
             next_window: 0,
         })
     }
 
     /// The windows whose ticks, and the ticks the clean-up needs around
-    /// them, are all refined (all that are left at the `end`).
-    fn completed(&mut self, end: bool) -> Vec<Window> {
-        let (Some(every), Stage::Following(f)) = (self.input.every, &mut self.stage) else {
+    /// them, are all refined; each kept for the end.
+    fn completed(&mut self) -> Vec<Window> {
+        let Stage::Following(f) = &self.stage else {
             return Vec::new();
         };
-        let scale = 1.0 / (1.0 + self.checked.ppm * 1e-6);
-        let duration = self.samples as f64 / f64::from(self.sample_rate) * scale;
-        let reach = ((CLEAN_REACH as f64 + 1.0) * f.beat).min(WINDOW_WAIT_S);
-        let mut out = Vec::new();
-        loop {
-            let start = f.next_window as f64 * every;
-            let last = (f.next_window as f64 + 1.0) * every;
-            let whole = last / scale + reach <= f.refiner.refined_until();
-            if !(whole || end && start < duration) {
-                break;
-            }
-            let ticks = f.refiner.ticks();
-            let from = ticks.partition_point(|t| t.time < start / scale - reach);
-            let to = ticks.partition_point(|t| t.time < last / scale + reach);
-            let input = WindowInput {
-                ticks: &[],
-                levels: f.tracker.levels(),
-                spacings: f.tracker.spacings(),
-                every,
-                duration: if whole { last } else { duration },
-                nominal_beat: f.nominal_beat,
-                lift_angle: self.input.lift_angle,
-                oscillator: f.oscillator,
-                scale,
-            };
-            out.push(window_of(&input, ticks[from..to].to_vec(), f.next_window));
-            f.next_window += 1;
+        let cutting = Cutting::of(self, f.beat, false);
+        let Stage::Following(f) = &mut self.stage else {
+            unreachable!("following")
+        };
+        let Some(cutting) = cutting else {
+            // (No window needs a level.)
+            f.tracker.let_go_levels(u64::MAX);
+            return Vec::new();
+        };
+        let out = f.cut(&cutting, None);
+        // (The levels of the windows cut are let go of.)
+        let next = f.next_window as f64 * cutting.every / cutting.scale - cutting.reach;
+        let from = f.ticks.partition_point(|t| t.time < next);
+        if let Some(t) = f.ticks.get(from) {
+            f.tracker.let_go_levels(t.beat);
         }
         out
     }
 
     /// Ends the recording: the whole of it analysed, as [`listen`] would a
-    /// file of it (a recording shorter than [`LEARN_S`] is one).
+    /// file of it (a recording shorter than [`LEARN_S`] is one), but for
+    /// the windows, which are those cut as it went and the last.
     pub fn finish(self) -> Result<Listening, Refusal> {
         let rate = f64::from(self.sample_rate);
-        let f = match self.stage {
+        let cutting = match &self.stage {
+            Stage::Following(f) => Cutting::of(&self, f.beat, true),
+            Stage::Learning(_) => None,
+        };
+        let mut f = match self.stage {
             Stage::Learning(kept) => {
                 let mut source = SliceSource {
                     samples: &kept,
@@ -363,33 +379,39 @@ impl LiveListener {
             }
             Stage::Following(f) => *f,
         };
+        let rest = f.gate.finish();
+        let cuts = f.gate.spans_s();
         let Following {
-            mut gate,
-            mut tracker,
-            mut refiner,
-            quality,
-            beat,
-            ..
-        } = f;
-        let rest = gate.finish();
-        let cuts = gate.spans_s();
+            tracker, refiner, ..
+        } = &mut f;
+        let mut tracker = std::mem::replace(tracker, OnsetTracker::new(rate, 1.0));
         tracker.cut(&cuts);
         tracker.push(&rest);
-        let given = tracker.handed();
         let coarse = tracker.finish();
-        refiner.push_onsets(&coarse.onsets[given..], 0.0);
+        let mut refiner = std::mem::replace(
+            refiner,
+            Refiner::following(rate, coarse.timing, coarse.drops),
+        );
+        refiner.push_onsets(&coarse.onsets, 0.0);
         refiner.push(&[]);
-        let (ticks, _, sounds) = refiner.finish_with_sounds();
+        let (refined, _, sounds) = refiner.finish_with_sounds();
+        f.differ = sounds.as_ref().map(|pair| !one_sound(pair, rate));
+        f.take(refined, true);
+        if let Some(c) = cutting {
+            f.cut(&c, Some(&coarse));
+        }
         conclude(
             Heard {
-                coarse,
-                ticks,
+                ticks: f.ticks,
+                sides: f.sides,
+                windows: self.input.every.map(|_| f.windows),
                 sounds,
                 duration: self.samples as f64 / rate,
-                beat,
+                beat: f.beat,
                 sample_rate: self.sample_rate,
                 cuts,
-                quality: Some(quality.finish()),
+                quality: Some(f.quality.finish()),
+                coarse,
             },
             &self.checked,
             &self.input,
@@ -397,8 +419,40 @@ impl LiveListener {
     }
 }
 
+/// What the windows are cut by.
+#[derive(Clone, Copy)]
+struct Cutting {
+    every: f64,
+    /// The sound card's time scale (see [`WindowInput::scale`]).
+    scale: f64,
+    /// The recording's length so far, rescaled, s.
+    duration: f64,
+    /// How long after a window's end its ticks are awaited, s.
+    reach: f64,
+    lift_angle: Option<f64>,
+    /// Whether the recording has ended (the last windows are cut).
+    end: bool,
+}
+
+impl Cutting {
+    /// For `listener` at the beat `beat` s, or at its `end`, if it cuts
+    /// windows.
+    fn of(listener: &LiveListener, beat: f64, end: bool) -> Option<Self> {
+        let scale = 1.0 / (1.0 + listener.checked.ppm * 1e-6);
+        Some(Self {
+            every: listener.input.every?,
+            scale,
+            duration: listener.duration() * scale,
+            reach: ((CLEAN_REACH as f64 + 1.0) * beat).min(WINDOW_WAIT_S),
+            lift_angle: listener.input.lift_angle,
+            end,
+        })
+    }
+}
+
 impl Following {
-    /// A block through the envelope, the tracker and the refiner.
+    /// A block through the envelope, the tracker, the refiner and the
+    /// clean-up.
     fn push(&mut self, block: &[f32]) {
         self.env.push(block);
         let gated = self.gate.push(&self.env.values);
@@ -409,5 +463,155 @@ impl Following {
         self.refiner.push_onsets(&onsets, self.tracker.horizon());
         self.refiner.push(block);
         self.quality.push(block);
+        let refined = self.refiner.take_ticks();
+        self.take(refined, false);
+    }
+
+    /// The windows `c` completes (with the levels and spacings of the
+    /// tracker's end, if `given`, else the tracker's so far), each kept
+    /// for the end.
+    fn cut(&mut self, c: &Cutting, given: Option<&super::detect::Coarse>) -> Vec<Window> {
+        let mut out = Vec::new();
+        loop {
+            let start = self.next_window as f64 * c.every;
+            let last = (self.next_window as f64 + 1.0) * c.every;
+            let whole = last / c.scale + c.reach <= self.refiner.refined_until();
+            if !(whole || c.end && start < c.duration) {
+                break;
+            }
+            // The ticks kept, and those the clean-up has not decided yet,
+            // decided as if none came after them.
+            let from = self
+                .ticks
+                .partition_point(|t| t.time < start / c.scale - c.reach);
+            let to = self
+                .ticks
+                .partition_point(|t| t.time < last / c.scale + c.reach);
+            let mut ticks = self.ticks[from..to].to_vec();
+            if to == self.ticks.len() {
+                ticks.extend(self.cleaner.provisional().iter().map(|r| r.tick));
+            }
+            if self.differ == Some(true) {
+                if c.end || self.sides.len() * 10 > self.shift.0 * 11 {
+                    self.shift = (self.sides.len(), self.sides.shift());
+                }
+                shift_tocks(&mut ticks, self.shift.1);
+            }
+            let (levels, spacings) = match given {
+                Some(coarse) => (&coarse.levels[..], &coarse.spacings[..]),
+                None => (self.tracker.levels(), self.tracker.spacings()),
+            };
+            let input = WindowInput {
+                ticks: &[],
+                levels,
+                spacings,
+                every: c.every,
+                duration: if whole && !c.end {
+                    last
+                } else {
+                    c.duration.min(last)
+                },
+                nominal_beat: self.nominal_beat,
+                lift_angle: c.lift_angle,
+                oscillator: self.oscillator,
+                scale: c.scale,
+            };
+            let window = window_of(&input, &ticks, self.next_window);
+            self.windows.push(window.clone());
+            out.push(window);
+            self.next_window += 1;
+        }
+        out
+    }
+
+    /// Ticks refined, through the clean-up (all decided at the `end`);
+    /// those kept are kept.
+    fn take(&mut self, refined: Vec<Refined>, end: bool) {
+        for r in refined {
+            self.cleaner.push(r);
+        }
+        if end {
+            self.cleaner.finish();
+        }
+        for r in self.cleaner.take() {
+            self.ticks.push(self.sides.add(&r));
+        }
+        if self.differ.is_none() {
+            self.differ = self
+                .refiner
+                .sounds()
+                .map(|pair| !one_sound(&pair, self.rate));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A watch's ticks, cheaply: a 3 kHz burst falling by e every 0.4 ms
+    /// each beat, its tocks 0.3 ms late, in a little noise.
+    fn watch(rate: u32, bph: f64, seconds: f64) -> Vec<f32> {
+        let beat = 3600.0 / bph;
+        let mut noise = 0x2545_f491_4f6c_dd1d_u64;
+        (0..(seconds * f64::from(rate)) as usize)
+            .map(|i| {
+                let t = i as f64 / f64::from(rate);
+                let k = (t / beat).floor();
+                let late = if k as u64 % 2 == 1 { 3e-4 } else { 0.0 };
+                let u = t - k * beat - late;
+                noise ^= noise << 13;
+                noise ^= noise >> 7;
+                noise ^= noise << 17;
+                let hiss = (noise >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+                let tick = if u >= 0.0 {
+                    (u * 3e3 * std::f64::consts::TAU).sin() * (-u / 4e-4).exp()
+                } else {
+                    0.0
+                };
+                (0.5 * tick + 0.01 * hiss) as f32
+            })
+            .collect()
+    }
+
+    /// What is held a beat (the tracker's onsets and levels, the refiner's
+    /// onsets, the clean-up's ticks) does not grow with the recording: the
+    /// most over 36,000 beats is the most over the first 18,000 (before
+    /// the clean-up and the trimming of the tracker, six entries a beat
+    /// were held to the end); only what the end needs of each tick kept
+    /// grows.
+    #[test]
+    fn what_is_held_does_not_grow_with_the_hours() {
+        let rate = 8000;
+        let samples = watch(rate, 72_000.0, 1800.0);
+        for every in [None, Some(60.0)] {
+            let input = ListenInput {
+                every,
+                ..ListenInput::default()
+            };
+            let mut listener = LiveListener::new(rate, &input).expect("input");
+            let mut most = [0; 2];
+            let half = samples.len() / 2;
+            for (i, block) in samples.chunks(4000).enumerate() {
+                listener.push(block).expect("push");
+                if let Stage::Following(f) = &listener.stage {
+                    let held = f.tracker.held() + f.refiner.held() + f.cleaner.held();
+                    let m = &mut most[usize::from(i * 4000 >= half)];
+                    *m = (*m).max(held);
+                }
+            }
+            let end = listener.finish().expect("finish");
+            assert!(
+                end.ticks.len() > 35_000,
+                "{every:?}: {} ticks",
+                end.ticks.len()
+            );
+            assert!(
+                most[1] <= most[0] + most[0] / 10,
+                "{every:?}: at most {} entries held in the first 15 minutes, {} in the next",
+                most[0],
+                most[1]
+            );
+        }
     }
 }

@@ -98,6 +98,12 @@ pub fn windows(input: &WindowInput) -> (Vec<Window>, WindowTotals) {
         rest = later;
         out.push(window(input, here, start, end));
     }
+    let totals = totals(&out, input.every);
+    (out, totals)
+}
+
+/// The rates of windows of `every` s summed up.
+pub fn totals(out: &[Window], every: f64) -> WindowTotals {
     let rates: Vec<f64> = out.iter().filter_map(|w| w.rate_s_per_day).collect();
     let n = rates.len() as f64;
     let mean = (n > 0.0).then(|| rates.iter().sum::<f64>() / n);
@@ -112,33 +118,33 @@ pub fn windows(input: &WindowInput) -> (Vec<Window>, WindowTotals) {
         let chi2: f64 = weighed.iter().map(|(r, s)| ((r - m) / s).powi(2)).sum();
         (chi2 / (weighed.len() - 1) as f64).sqrt()
     });
-    let totals = WindowTotals {
-        every_s: input.every,
+    WindowTotals {
+        every_s: every,
         windows_with_rate: rates.len(),
         rate_mean_s_per_day: mean,
         rate_mean_se_s_per_day: se,
         rate_scatter_over_se: scatter,
-    };
-    (out, totals)
+    }
 }
 
-/// Window `index` (from `index` to `index + 1` times `every`, s), given
-/// ticks that reach at least [`CLEAN_REACH`] beats beyond it either way
-/// (or the recording's ends), not yet cleaned nor rescaled: cleaned
-/// ([`super::detect::clean`]) as the whole recording's ticks are (each
-/// tick is checked against the ticks of its side within 20 beats), so
-/// that a window analysed while the recording goes on is the one
-/// analysed at its end.
-pub(crate) fn window_of(input: &WindowInput, ticks: Vec<Tick>, index: usize) -> Window {
+/// Window `index` (from `index` to `index + 1` times `every`, s) of
+/// `ticks` cleaned ([`super::detect::clean`], as the whole recording's
+/// are: live, by [`super::detect::Cleaner`] as they come, its last ones
+/// provisionally) and aligned, not yet rescaled: so that a window analysed
+/// while the recording goes on is the one a file of it gives.
+pub(crate) fn window_of(input: &WindowInput, ticks: &[Tick], index: usize) -> Window {
     let (start, end) = (
         index as f64 * input.every,
         ((index + 1) as f64 * input.every).min(input.duration),
     );
-    let (mut ticks, _, _) = super::detect::clean(ticks);
-    for t in &mut ticks {
-        t.time *= input.scale;
-    }
-    ticks.retain(|t| t.time >= start && t.time < end);
+    let ticks: Vec<Tick> = ticks
+        .iter()
+        .map(|t| Tick {
+            time: t.time * input.scale,
+            ..*t
+        })
+        .filter(|t| t.time >= start && t.time < end)
+        .collect();
     window(input, &ticks, start, end)
 }
 

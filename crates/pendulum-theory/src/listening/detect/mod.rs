@@ -45,9 +45,9 @@ pub mod refine;
 pub use envelope::{envelope_rate, Envelope, ENVELOPE_RATE};
 pub use gate::Gate;
 pub use onsets::{second_sound, EventRule, OnsetTracker, Timing};
-pub use outliers::clean;
+pub use outliers::{clean, Cleaner};
 pub use period::beat_period;
-pub use refine::{one_sound, MedianSound, Refiner, Tick};
+pub use refine::{one_sound, MedianSound, Refined, Refiner, Tick};
 
 /// Coarse onsets, s, with the beat numbers they belong to.
 #[derive(Clone, Debug, PartialEq)]

@@ -110,9 +110,10 @@ pub struct OnsetTracker {
     /// but for their first `emitted`.
     timed: Vec<(u64, f64)>,
     emitted: usize,
-    /// Live: the onsets settled, and how many of them were handed out.
+    /// Live: the onsets settled and not yet handed out, and the time of
+    /// the last handed out, s.
     settled: Vec<(u64, f64)>,
-    handed: usize,
+    horizon: f64,
     /// Each side's times from the unlocking to the drop, s.
     side_delays: [Vec<f64>; 2],
 }
@@ -270,7 +271,7 @@ impl OnsetTracker {
             timed: Vec::new(),
             emitted: 0,
             settled: Vec::new(),
-            handed: 0,
+            horizon: 0.0,
             side_delays: Default::default(),
         }
     }
@@ -296,23 +297,52 @@ impl OnsetTracker {
     }
 
     /// Live ([`Self::following`]): the onsets settled since the last call,
-    /// in order of beat.
+    /// in order of beat. What is handed out is let go of here (but for
+    /// the onsets the local beat and the rule still read): the tracker's
+    /// memory does not grow with the hours.
     pub fn take_onsets(&mut self) -> Vec<(u64, f64)> {
         self.settle_ready(false);
-        let new = self.settled[self.handed..].to_vec();
-        self.handed = self.settled.len();
+        let new = std::mem::take(&mut self.settled);
+        if let Some(&(_, t)) = new.last() {
+            self.horizon = t;
+        }
+        let read = self.applied.min(self.pending.map_or(usize::MAX, |p| p.2));
+        let done = read.saturating_sub(LOCAL_BEATS);
+        if done > 4096 {
+            self.onsets.drain(..done);
+            self.neighbours.drain(..done);
+            self.applied -= done;
+            if let Some(p) = &mut self.pending {
+                p.2 -= done;
+            }
+        }
         new
-    }
-
-    /// Live: how many onsets were handed out.
-    pub fn handed(&self) -> usize {
-        self.handed
     }
 
     /// The earliest time a beat not yet handed out can have, s: the last
     /// handed out (beats come in order).
     pub fn horizon(&self) -> f64 {
-        self.settled[..self.handed].last().map_or(0.0, |o| o.1)
+        self.horizon
+    }
+
+    /// Live: entries held a beat each (onsets, their neighbours, those
+    /// timed and settled, levels): what must not grow with the hours.
+    #[cfg(test)]
+    pub(crate) fn held(&self) -> usize {
+        self.onsets.len()
+            + self.neighbours.len()
+            + self.timed.len()
+            + self.settled.len()
+            + self.levels.len()
+    }
+
+    /// Live: the levels of beats before `beat` are not needed (their
+    /// windows are done).
+    pub fn let_go_levels(&mut self, beat: u64) {
+        let done = self.levels.partition_point(|l| l.0 < beat);
+        if done > 4096 {
+            self.levels.drain(..done);
+        }
     }
 
     /// The tick levels so far: (beat, peak, floor).

@@ -16,6 +16,18 @@ pub struct Tick {
     pub amplitude: f64,
     /// Normalised correlation with its side's median sound.
     pub correlation: f64,
+}
+
+/// A tick as the refiner gives it, before the clean-up
+/// ([`super::clean`]) keeps it or not: with what the clean-up and the
+/// alignment of the sides need, let go of once it is kept.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Refined {
+    /// The tick.
+    pub tick: Tick,
+    /// The tracker's onset it was refined from, s (the same rule on both
+    /// sides: see [`crate::listening::analysis`]'s alignment of the sides).
+    pub onset: f64,
     /// The times (s) the other peaks of the correlation would give (the
     /// eight strongest), with their correlation relative to the best: one
     /// or more ringing periods either side (see [`super::clean`]).
@@ -53,7 +65,9 @@ pub struct Refiner {
     /// samples, and the quiet window before it).
     waiting: Vec<Waiting>,
     templates: Option<[Template; 2]>,
-    ticks: Vec<Tick>,
+    ticks: Vec<Refined>,
+    /// Live: onsets before `coarse[0]` let go of.
+    let_go: usize,
     rejected: usize,
     pre: usize,
     length: usize,
@@ -69,6 +83,8 @@ pub struct Refiner {
 /// A window waiting for the templates.
 struct Waiting {
     beat: u64,
+    /// The tracker's onset, s.
+    onset: f64,
     start: u64,
     window: Vec<f32>,
     /// The same length of sound ending [`QUIET_GAP`] before the window:
@@ -234,10 +250,38 @@ impl Refiner {
         self.horizon = Some(horizon);
     }
 
-    /// The ticks refined so far (none until each side's median sound is
-    /// built, from its first 128 ticks).
-    pub fn ticks(&self) -> &[Tick] {
+    /// The ticks refined so far and not taken (none until each side's
+    /// median sound is built, from its first 128 ticks).
+    pub fn ticks(&self) -> &[Refined] {
         &self.ticks
+    }
+
+    /// Live: the ticks refined since the last call, in order of beat; the
+    /// onsets they came from are let go of.
+    pub fn take_ticks(&mut self) -> Vec<Refined> {
+        if self.next > 4096 {
+            self.coarse.drain(..self.next - 1);
+            self.let_go += self.next - 1;
+            self.next = 1;
+        }
+        std::mem::take(&mut self.ticks)
+    }
+
+    /// Live: onsets and ticks held (see [`super::OnsetTracker::held`]).
+    #[cfg(test)]
+    pub(crate) fn held(&self) -> usize {
+        self.coarse.len() + self.ticks.len() + self.waiting.len()
+    }
+
+    /// Each side's median sound, once built (from its first 128 ticks).
+    pub fn sounds(&self) -> Option<[MedianSound; 2]> {
+        self.templates.as_ref().map(|t| {
+            t.clone().map(|t| MedianSound {
+                samples: t.samples,
+                shown: t.shown,
+                onset: t.onset,
+            })
+        })
     }
 
     /// Live: the time, s, up to which the onsets given are refined (their
@@ -289,6 +333,7 @@ impl Refiner {
             waiting: Vec::new(),
             templates: None,
             ticks: Vec::new(),
+            let_go: 0,
             rejected: 0,
             pre,
             length: pre + post,
@@ -329,6 +374,7 @@ impl Refiner {
             self.next += 1;
             self.take(Waiting {
                 beat,
+                onset,
                 start,
                 window,
                 quiet: quiet.flatten(),
@@ -359,7 +405,7 @@ impl Refiner {
         match &self.templates {
             Some(_) => {
                 let span = w.window.len().min(self.length + 2 * self.search);
-                self.refine(w.beat, w.start, &w.window[..span]);
+                self.refine(&w, &w.window[..span]);
             }
             None => {
                 self.waiting.push(w);
@@ -485,7 +531,7 @@ impl Refiner {
         self.templates = Some([tick, tock]);
         for w in std::mem::take(&mut self.waiting) {
             let span = w.window.len().min(span);
-            self.refine(w.beat, w.start, &w.window[..span]);
+            self.refine(&w, &w.window[..span]);
         }
     }
 
@@ -524,7 +570,8 @@ impl Refiner {
             .collect()
     }
 
-    fn refine(&mut self, beat: u64, start: u64, window: &[f32]) {
+    fn refine(&mut self, w: &Waiting, window: &[f32]) {
+        let (beat, start) = (w.beat, w.start);
         let side = (beat % 2) as usize;
         let Some(templates) = &self.templates else {
             return;
@@ -548,12 +595,15 @@ impl Refiner {
             self.rejected += 1;
             return;
         }
-        self.ticks.push(Tick {
-            beat,
-            time: (start as f64 + lag + template.onset) / self.rate,
-            side: side as u8,
-            amplitude,
-            correlation,
+        self.ticks.push(Refined {
+            tick: Tick {
+                beat,
+                time: (start as f64 + lag + template.onset) / self.rate,
+                side: side as u8,
+                amplitude,
+                correlation,
+            },
+            onset: w.onset,
             alternatives: found
                 .neighbours
                 .map(|n| n.map(|(l, r)| ((start as f64 + l + template.onset) / self.rate, r))),
@@ -563,24 +613,18 @@ impl Refiner {
     /// Ends the pass: the ticks, and how many coarse onsets were dropped as
     /// noise. Short records (fewer than 128 ticks a side) build the
     /// templates from what they have.
-    pub fn finish(self) -> (Vec<Tick>, usize) {
+    pub fn finish(self) -> (Vec<Refined>, usize) {
         let refined = self.finish_with_sounds();
         (refined.0, refined.1)
     }
 
     /// [`Refiner::finish`], with the median tick and tock sounds (for a
     /// picture of them).
-    pub fn finish_with_sounds(mut self) -> (Vec<Tick>, usize, Option<[MedianSound; 2]>) {
+    pub fn finish_with_sounds(mut self) -> (Vec<Refined>, usize, Option<[MedianSound; 2]>) {
         if self.templates.is_none() && !self.waiting.is_empty() {
             self.build();
         }
-        let sounds = self.templates.as_ref().map(|t| {
-            t.clone().map(|t| MedianSound {
-                samples: t.samples,
-                shown: t.shown,
-                onset: t.onset,
-            })
-        });
+        let sounds = self.sounds();
         (self.ticks, self.rejected, sounds)
     }
 }

@@ -1,0 +1,103 @@
+// The glue between the page and the library's WebAssembly exports
+// (crates/pendulum-wasm): JSON requests in, the command line's --json
+// keys out. A refusal comes back as a PendulumError carrying the command
+// line's sentence and the field it is about.
+
+export class PendulumError extends Error {
+  constructor(error) {
+    super(error.message);
+    this.field = error.field;
+    this.flag = error.flag;
+  }
+}
+
+let wasm = null;
+const encoder = new TextEncoder();
+const decoder = new TextDecoder();
+
+/** Loads the module once (from the page's own files: offline once cached). */
+export async function load(url = new URL("pendulum.wasm", import.meta.url)) {
+  if (wasm) return;
+  const response = await fetch(url);
+  const { instance } = await WebAssembly.instantiate(await response.arrayBuffer(), {});
+  wasm = instance.exports;
+}
+
+function put(bytes) {
+  const ptr = wasm.pendulum_alloc(bytes.length);
+  new Uint8Array(wasm.memory.buffer, ptr, bytes.length).set(bytes);
+  return [ptr, bytes.length];
+}
+
+function putSamples(samples) {
+  const bytes = samples.length * 4;
+  const ptr = wasm.pendulum_alloc(bytes);
+  new Float32Array(wasm.memory.buffer, ptr, samples.length).set(samples);
+  return [ptr, bytes];
+}
+
+function reply(ptr) {
+  const length = new DataView(wasm.memory.buffer).getUint32(ptr, true);
+  const text = decoder.decode(new Uint8Array(wasm.memory.buffer, ptr + 4, length));
+  wasm.pendulum_free(ptr, length + 4);
+  const parsed = JSON.parse(text);
+  if (parsed.error) throw new PendulumError(parsed.error);
+  return parsed;
+}
+
+const take = (ptr) => reply(ptr).ok;
+
+/** One request: `{command: "period", length_m: 0.994, amplitude_deg: 2}`. */
+export function call(request) {
+  const [ptr, len] = put(encoder.encode(JSON.stringify(request)));
+  try {
+    return take(wasm.pendulum_call(ptr, len));
+  } finally {
+    wasm.pendulum_free(ptr, len);
+  }
+}
+
+/**
+ * A whole recording: `listen` of its samples (mono Float32Array). Returns
+ * `{result, words, ticks}`: the command line's JSON, the sentences its
+ * text ends with (warnings, findings, advice), and the ticks by column.
+ */
+export function listen(samples, sampleRate, options = {}) {
+  const [optr, olen] = put(encoder.encode(JSON.stringify(options)));
+  const [sptr, slen] = putSamples(samples);
+  try {
+    const r = reply(wasm.pendulum_listen(optr, olen, sptr, samples.length, sampleRate));
+    return { result: r.ok, words: r.words, ticks: r.ticks };
+  } finally {
+    wasm.pendulum_free(sptr, slen);
+    wasm.pendulum_free(optr, olen);
+  }
+}
+
+/** Listening as the samples come: push blocks, then finish. */
+export class Live {
+  constructor(sampleRate, options = {}) {
+    const [ptr, len] = put(encoder.encode(JSON.stringify(options)));
+    try {
+      this.handle = take(wasm.pendulum_live_new(ptr, len, sampleRate)).handle;
+    } finally {
+      wasm.pendulum_free(ptr, len);
+    }
+  }
+
+  /** The windows the samples complete, and a first reading once. */
+  push(samples) {
+    const [ptr, bytes] = putSamples(samples);
+    try {
+      return take(wasm.pendulum_live_push(this.handle, ptr, samples.length));
+    } finally {
+      wasm.pendulum_free(ptr, bytes);
+    }
+  }
+
+  /** The whole recording's analysis, as `listen` returns it. */
+  finish() {
+    const r = reply(wasm.pendulum_live_finish(this.handle));
+    return { result: r.ok, words: r.words, ticks: r.ticks };
+  }
+}

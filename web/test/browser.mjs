@@ -1,0 +1,216 @@
+// The page in a real browser (Debian's chromium through the DevTools
+// protocol, puppeteer-core): every calculator against the command line's
+// --json, recordings opened in the timegrapher against `pendulum listen`,
+// the microphone (a WAV given to chromium as a fake microphone) against
+// the same, a reload offline, and no console errors. Screenshots of each
+// room at a phone's and a laptop's width go to $SHOTS if set.
+//
+//   node web/test/browser.mjs            (after web/build.sh and cargo build --release)
+import puppeteer from "puppeteer-core";
+import { execFileSync } from "node:child_process";
+import { createServer } from "node:http";
+import { mkdtempSync, readFileSync, existsSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join, extname, resolve } from "node:path";
+
+const root = resolve(new URL("../..", import.meta.url).pathname);
+const dist = join(root, "web/dist");
+const bin = join(root, "target/release/pendulum");
+const browserPath = ["/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"].find(existsSync);
+if (!browserPath) throw new Error("the page's browser tests need chromium (apt-get install chromium)");
+const work = mkdtempSync(join(tmpdir(), "pendulum-web-"));
+let failures = 0;
+const check = (ok, what) => {
+  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
+  if (!ok) failures++;
+};
+const cli = (...args) => JSON.parse(execFileSync(bin, [...args, "--json"], { encoding: "utf8" }));
+
+// A static server of web/dist (a service worker needs http).
+const types = { ".html": "text/html", ".js": "text/javascript", ".css": "text/css", ".wasm": "application/wasm", ".svg": "image/svg+xml", ".webmanifest": "application/manifest+json" };
+const server = createServer((req, res) => {
+  const path = join(dist, decodeURIComponent(new URL(req.url, "http://x").pathname).replace(/\/$/, "/index.html"));
+  if (!path.startsWith(dist) || !existsSync(path)) { res.writeHead(404); res.end(); return; }
+  res.writeHead(200, { "content-type": types[extname(path)] ?? "application/octet-stream" });
+  res.end(readFileSync(path));
+});
+await new Promise((r) => server.listen(0, "127.0.0.1", r));
+const base = `http://127.0.0.1:${server.address().port}/`;
+
+function launch(extra = []) {
+  return puppeteer.launch({
+    executablePath: browserPath,
+    headless: true,
+    args: ["--no-sandbox", "--disable-gpu", "--use-fake-ui-for-media-stream", ...extra],
+  });
+}
+
+async function open(browser, hash, width = 1280, height = 800) {
+  const page = await browser.newPage();
+  const errors = [];
+  page.on("console", (m) => { if (m.type() === "error") errors.push(m.text()); });
+  page.on("pageerror", (e) => errors.push(String(e)));
+  await page.setViewport({ width, height });
+  await page.goto(base + "index.html" + hash);
+  await page.waitForSelector("body[data-ready]", { timeout: 20000 });
+  return { page, errors };
+}
+
+/**
+ * Where two JSON values differ (paths): numbers to 1e-12 of their size
+ * (the browser's sin, log and the like are Rust's own, the binary's
+ * glibc's: they differ in the last bit or two), all else exactly.
+ */
+function differences(a, b, path = "") {
+  if (Array.isArray(a) && Array.isArray(b)) {
+    if (a.length !== b.length) return [`${path} (length ${a.length}, ${b.length})`];
+    return a.flatMap((x, i) => differences(x, b[i], `${path}[${i}]`));
+  }
+  if (a && b && typeof a === "object" && typeof b === "object") {
+    const keys = new Set([...Object.keys(a), ...Object.keys(b)]);
+    return [...keys].flatMap((k) => (k in a && k in b ? differences(a[k], b[k], `${path}.${k}`) : [`${path}.${k} (only in ${k in a ? "the page" : "the command line"})`]));
+  }
+  const near = typeof a === "number" && typeof b === "number" && Math.abs(a - b) <= 1e-12 * Math.max(Math.abs(a), Math.abs(b));
+  return a === b || near ? [] : [`${path} (${JSON.stringify(a)}, ${JSON.stringify(b)})`];
+}
+
+const value = (page, selector) => page.$eval(selector, (el) => (el.dataset.value === undefined ? null : Number(el.dataset.value)));
+
+// ---- Calculators: equal to the command line to the last digit ----------
+const calculators = [
+  { command: "period", fields: { length_m: "0.99362", amplitude_deg: "3", latitude_deg: "" },
+    args: ["period", "--length", "0.99362m", "--amplitude", "3deg"], keys: ["period_s", "circular_error_s_per_day", "beats_per_hour"] },
+  { command: "period", fields: { length_m: "0.2485", amplitude_deg: "12", latitude_deg: "48.2" },
+    args: ["period", "--length", "0.2485m", "--amplitude", "12deg", "--latitude", "48.2deg"], keys: ["period_s", "circular_error_s_per_day", "g_m_s2"] },
+  { command: "length", fields: { bph: "5400", amplitude_deg: "4", latitude_deg: "" },
+    args: ["length", "--bph", "5400", "--amplitude", "4deg"], keys: ["length_m", "period_s"] },
+  { command: "regulate", fields: { rate_s_per_day: "-42", length_m: "0.994", nut_tpi: "32" },
+    args: ["regulate", "--rate", "-42", "--length", "0.994m", "--nut-tpi", "32"], keys: ["shift_m", "nut_turns"] },
+  { command: "gravity", fields: { latitude_deg: "35.68", height_m: "40" },
+    args: ["gravity", "--latitude", "35.68deg", "--height", "40m"], keys: ["g_m_s2"] },
+  { command: "damped", fields: { length_m: "0.994", amplitude_deg: "5", q: "3000" },
+    args: ["damped", "--length", "0.994m", "--amplitude", "5deg", "--q", "3000"], keys: ["damped_period_s", "decay_time_s", "q_factor"] },
+];
+
+const browser = await launch();
+{
+  const { page, errors } = await open(browser, "#calculators");
+  for (const c of calculators) {
+    const form = `form[data-command="${c.command}"]`;
+    for (const [name, text] of Object.entries(c.fields)) {
+      await page.$eval(`${form} input[name="${name}"]`, (el, t) => { el.value = t; el.dispatchEvent(new Event("input", { bubbles: true })); }, text);
+    }
+    const expected = cli(...c.args);
+    for (const key of c.keys) {
+      const got = await value(page, `${form} [data-key="${key}"]`);
+      check(got === expected[key], `${c.args.join(" ")}: ${key} page ${got}, command line ${expected[key]}`);
+    }
+  }
+  // Whole answers: the page's library against the binary, every key.
+  for (const c of calculators) {
+    const request = { command: c.command };
+    for (const [name, text] of Object.entries(c.fields)) if (text !== "") request[name] = Number(text);
+    const page_json = await page.evaluate(async (r) => {
+      const m = await import("./pendulum.js");
+      await m.load();
+      return m.call(r);
+    }, request);
+    const diff = differences(page_json, cli(...c.args));
+    check(diff.length === 0, `${c.args.join(" ")}: the whole answer the command line's${diff.length ? ` (differs at ${diff.slice(0, 5).join(", ")})` : ""}`);
+  }
+  // A refusal reads as the command line's sentence.
+  await page.$eval(`form[data-command="period"] input[name="length_m"]`, (el) => { el.value = "-1"; el.dispatchEvent(new Event("input", { bubbles: true })); });
+  const refusal = await page.$eval(`form[data-command="period"] dd.error`, (el) => el.textContent);
+  check(/^--length: must be positive, got -1/.test(refusal), `a negative length refused: "${refusal}"`);
+  check(errors.length === 0, `no console errors on the calculators (${errors.join("; ")})`);
+  await page.close();
+}
+
+// ---- Timegrapher: a recording opened ----------------------------------
+const recordings = [
+  { name: "seconds-clock", bph: 3600, seconds: 240, every: "60" },
+  { name: "bracket-clock", bph: 5400, seconds: 180, every: "60" },
+  { name: "watch", bph: 28800, seconds: 60, every: "10" },
+];
+for (const r of recordings) {
+  r.path = join(work, `${r.name}.wav`);
+  execFileSync(bin, ["synth", "ticks", r.path, "--bph", String(r.bph), "--duration", `${r.seconds}s`, "--rate", "7", "--beat-error", "0.8", "--seed", "5"]);
+}
+{
+  const { page, errors } = await open(browser, "#timegrapher");
+  for (const r of recordings) {
+    await page.evaluate(() => { delete document.body.dataset.heard; });
+    await page.$eval(`#listen-form input[name="every_s"]`, (el, t) => { el.value = t; }, r.every);
+    const input = await page.$("#listen-file");
+    await input.uploadFile(r.path);
+    await page.waitForSelector("body[data-heard]", { timeout: 120000 });
+    const expected = cli("listen", r.path, "--every", `${r.every}s`);
+    const rate = await value(page, "#out-rate");
+    const beatError = await value(page, "#out-beat-error");
+    const se = expected.rate_s_per_day_se ?? expected.rate_se_s_per_day;
+    check(Math.abs(rate - expected.rate_s_per_day) <= se, `${r.name}: rate page ${rate}, command line ${expected.rate_s_per_day} ± ${se}`);
+    check(Math.abs(beatError - expected.beat_error_ms) <= (expected.beat_error_se_ms ?? 0.01), `${r.name}: beat error page ${beatError}, command line ${expected.beat_error_ms}`);
+    // The whole result, but for the file's name and channel (the page
+    // has no file on disk).
+    const whole = JSON.parse(await page.$eval("#whole-json", (el) => el.textContent));
+    const { file, channel, ...listened } = expected;
+    const diff = differences(whole, listened);
+    check(diff.length === 0, `${r.name}: the whole result the command line's${diff.length ? ` (differs at ${diff.slice(0, 5).join(", ")})` : ""}`);
+    const rows = await page.$$eval("#windows tbody tr", (tr) => tr.length);
+    check(rows === expected.windows.length, `${r.name}: ${rows} windows shown, the command line's ${expected.windows.length}`);
+  }
+  check(errors.length === 0, `no console errors in the timegrapher (${errors.join("; ")})`);
+  // Offline: the page comes back from its cache.
+  await page.waitForFunction(() => navigator.serviceWorker?.controller || navigator.serviceWorker.ready, { timeout: 20000 });
+  await page.evaluate(() => navigator.serviceWorker.ready);
+  await page.reload();
+  await page.waitForSelector("body[data-ready]", { timeout: 20000 });
+  await page.setOfflineMode(true);
+  await page.reload();
+  const offline = await page.waitForSelector("body[data-ready]", { timeout: 20000 }).then(() => true, () => false);
+  check(offline, "a reload offline still works");
+  await page.close();
+}
+
+// ---- Screenshots ----------------------------------------------------------
+if (process.env.SHOTS) {
+  for (const [label, width, height] of [["phone", 390, 844], ["laptop", 1280, 860]]) {
+    for (const room of ["timegrapher", "calculators"]) {
+      const { page } = await open(browser, `#${room}`, width, height);
+      if (room === "timegrapher") {
+        await (await page.$("#listen-file")).uploadFile(recordings[2].path);
+        await page.waitForSelector("body[data-heard]", { timeout: 120000 });
+      }
+      await page.screenshot({ path: join(process.env.SHOTS, `${room}-${label}.png`), fullPage: true });
+      await page.close();
+    }
+  }
+}
+await browser.close();
+
+// ---- The microphone: a recording played as a fake microphone --------------
+{
+  const watch = recordings[2];
+  const mic = await launch(["--use-fake-device-for-media-stream", `--use-file-for-fake-audio-capture=${watch.path}%noloop`]);
+  const { page, errors } = await open(mic, "#timegrapher");
+  await page.$eval(`#listen-form input[name="every_s"]`, (el) => { el.value = "10"; });
+  await page.click("#mic-start");
+  await new Promise((r) => setTimeout(r, 52000));
+  await page.click("#mic-stop");
+  await page.waitForSelector("body[data-heard]", { timeout: 30000 }).catch(() => {});
+  const expected = cli("listen", watch.path);
+  const rate = await value(page, "#out-rate");
+  const shown = await page.$eval("#listen-error", (el) => (el.hidden ? "" : el.textContent));
+  const fed = await page.evaluate(() => `${document.body.dataset.micS} s fed, ${document.body.dataset.micGaps} gaps filled`);
+  const se = expected.rate_se_s_per_day;
+  // (Fewer seconds than the file: the standard error allowed is ×3.)
+  check(rate !== null && Math.abs(rate - expected.rate_s_per_day) <= 3 * se + 0.05, `microphone: rate ${rate}, the file's ${expected.rate_s_per_day} ± ${se} (${fed}) ${shown}`);
+  check(errors.length === 0, `no console errors listening to the microphone (${errors.join("; ")})`);
+  await mic.close();
+}
+server.close();
+if (failures) {
+  console.error(`${failures} browser check(s) failed`);
+  process.exit(1);
+}
+console.log("all browser checks passed");

@@ -237,6 +237,37 @@ function strip(ticks, beat) {
 }
 
 let lastStrip = null;
+let lastTicks = null;
+
+/** Offers `blob` as a download named `name`. */
+function download(blob, name) {
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(blob);
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 10000);
+}
+
+/** The ticks as the command line's --ticks file writes them. */
+export function ticksCsv(ticks) {
+  const rows = ["time_s,side,sound_level,amplitude"];
+  for (let i = 0; i < ticks.time_s.length; i++) {
+    rows.push(`${ticks.time_s[i]},${ticks.side[i]},${ticks.sound_level[i]},${ticks.sound_level[i]}`);
+  }
+  return rows.join("\n") + "\n";
+}
+
+/** 16-bit mono WAV of Int16Array `parts` at `rate` Hz. */
+export function wavBlob(parts, rate) {
+  const bytes = parts.reduce((n, p) => n + p.byteLength, 0);
+  const head = new DataView(new ArrayBuffer(44));
+  const text = (at, s) => [...s].forEach((c, i) => head.setUint8(at + i, c.charCodeAt(0)));
+  text(0, "RIFF"); head.setUint32(4, 36 + bytes, true); text(8, "WAVE");
+  text(12, "fmt "); head.setUint32(16, 16, true); head.setUint16(20, 1, true); head.setUint16(22, 1, true);
+  head.setUint32(24, rate, true); head.setUint32(28, rate * 2, true); head.setUint16(32, 2, true); head.setUint16(34, 16, true);
+  text(36, "data"); head.setUint32(40, bytes, true);
+  return new Blob([head, ...parts], { type: "audio/wav" });
+}
 
 function render(heard) {
   const r = heard.result;
@@ -246,6 +277,8 @@ function render(heard) {
   for (const w of r.windows ?? []) addWindow(w);
   words(heard.words);
   lastStrip = [heard.ticks, r.nominal_beat_s ?? r.mean_beat_s];
+  lastTicks = heard.ticks;
+  $("#save-ticks").disabled = !heard.ticks?.time_s.length;
   strip(...lastStrip);
   $("#whole-json").textContent = JSON.stringify(r, null, 2);
   document.body.dataset.heard = "1";
@@ -314,7 +347,7 @@ async function openRecording(file) {
 // is filled with silence of its length, so that the ticks after it keep
 // their times: the beats in it are missed, not misnumbered, and the gap
 // is said with the result.
-const mic = { stream: null, worker: null, stop: null, heard: 0, gaps: [], rate: 0 };
+const mic = { stream: null, worker: null, stop: null, heard: 0, gaps: [], rate: 0, parts: [] };
 
 function onWorker({ data }) {
   if (data.type === "pushed") {
@@ -350,7 +383,9 @@ async function startMic() {
   });
   mic.stream = stream;
   mic.gaps = [];
+  mic.parts = [];
   mic.heard = 0;
+  $("#save-recording").disabled = true;
   const track = stream.getAudioTracks()[0];
   mic.worker?.terminate();
   mic.worker = new Worker("listener-worker.js", { type: "module" });
@@ -366,6 +401,9 @@ async function startMic() {
       started = true;
     }
     mic.heard += samples.length / sampleRate;
+    // (Kept at 16 bits for the recording's file: an hour at 48 kHz is
+    // 345 MB.)
+    mic.parts.push(Int16Array.from(samples, (x) => Math.max(-32768, Math.min(32767, Math.round(x * 32768)))));
     // (What was fed, for a reader of the page: seconds, and gaps filled.)
     document.body.dataset.micS = mic.heard.toFixed(3);
     document.body.dataset.micGaps = String(mic.gaps.length);
@@ -412,6 +450,7 @@ function stopMic(finish = true) {
   $("#mic-start").disabled = false;
   $("#mic-stop").disabled = true;
   if (finish && mic.worker) mic.worker.postMessage({ type: "finish" });
+  $("#save-recording").disabled = mic.parts.length === 0;
 }
 
 // ---- Start -----------------------------------------------------------------
@@ -432,12 +471,16 @@ async function main() {
     form.addEventListener("submit", (e) => e.preventDefault());
     calculate(form);
   }
+  // (For the bench: the calculators' first answers are on the page.)
+  performance.mark("first-answer");
   $("#listen-file").addEventListener("change", (e) => {
     const file = e.target.files[0];
     if (file) openRecording(file).catch((err) => error(String(err)));
   });
   $("#mic-start").addEventListener("click", () => startMic().catch((err) => error(`The microphone: ${err.message ?? err}`)));
   $("#mic-stop").addEventListener("click", () => stopMic());
+  $("#save-ticks").addEventListener("click", () => download(new Blob([ticksCsv(lastTicks)], { type: "text/csv" }), "ticks.csv"));
+  $("#save-recording").addEventListener("click", () => download(wavBlob(mic.parts, mic.rate), "recording.wav"));
   if ("serviceWorker" in navigator && location.protocol !== "file:") {
     navigator.serviceWorker.register("sw.js").catch(() => {});
   }

@@ -159,6 +159,22 @@ for (const r of recordings) {
     const rows = await page.$$eval("#windows tbody tr", (tr) => tr.length);
     check(rows === expected.windows.length, `${r.name}: ${rows} windows shown, the command line's ${expected.windows.length}`);
   }
+  // The ticks saved: the command line's --ticks file, cell for cell.
+  {
+    const last = recordings[recordings.length - 1];
+    const downloads = mkdtempSync(join(tmpdir(), "pendulum-downloads-"));
+    const client = await page.createCDPSession();
+    await client.send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: downloads });
+    await page.click("#save-ticks");
+    const saved = join(downloads, "ticks.csv");
+    for (let i = 0; i < 100 && !existsSync(saved); i++) await new Promise((r) => setTimeout(r, 100));
+    const theirs = join(work, "ticks.csv");
+    execFileSync(bin, ["listen", last.path, "--every", `${last.every}s`, "--ticks", theirs]);
+    const rows = (f) => readFileSync(f, "utf8").trim().split("\n").map((l) => l.split(","));
+    const [a, b] = [existsSync(saved) ? rows(saved) : [], rows(theirs)];
+    const cells = a.length === b.length && a.every((row, i) => row.every((c, j) => c === b[i][j] || Math.abs(Number(c) - Number(b[i][j])) <= 1e-12 * Math.abs(Number(c))));
+    check(cells, `${last.name}: the ticks saved (${a.length} rows) are the command line's --ticks file (${b.length} rows)`);
+  }
   check(errors.length === 0, `no console errors in the timegrapher (${errors.join("; ")})`);
   // Offline: the page comes back from its cache.
   await page.waitForFunction(() => navigator.serviceWorker?.controller || navigator.serviceWorker.ready, { timeout: 20000 });
@@ -195,7 +211,7 @@ await browser.close();
   const { page, errors } = await open(mic, "#timegrapher");
   await page.$eval(`#listen-form input[name="every_s"]`, (el) => { el.value = "10"; });
   await page.click("#mic-start");
-  await new Promise((r) => setTimeout(r, 52000));
+  await new Promise((r) => setTimeout(r, 42000));
   await page.click("#mic-stop");
   await page.waitForSelector("body[data-heard]", { timeout: 30000 }).catch(() => {});
   const expected = cli("listen", watch.path);

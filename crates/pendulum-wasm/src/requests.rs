@@ -404,12 +404,15 @@ impl Words {
 }
 
 /// The ticks kept, by column (the command line's `--ticks` file's
-/// numbers), for the page's paper strip.
+/// numbers, and each tick's beat), for the page's paper strip and its
+/// ticks file.
 #[derive(Serialize)]
 pub struct TickColumns {
     pub beat: Vec<u64>,
     pub time_s: Vec<f64>,
     pub side: Vec<u8>,
+    /// The band-passed sound's peak, full scale 1.
+    pub sound_level: Vec<f64>,
 }
 
 impl TickColumns {
@@ -418,6 +421,7 @@ impl TickColumns {
             beat: l.ticks.iter().map(|t| t.beat).collect(),
             time_s: l.ticks.iter().map(|t| t.time).collect(),
             side: l.ticks.iter().map(|t| t.side).collect(),
+            sound_level: l.ticks.iter().map(|t| t.amplitude).collect(),
         }
     }
 }

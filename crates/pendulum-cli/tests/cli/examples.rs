@@ -1082,6 +1082,12 @@ const RUN_BY_CI: &[(&str, &str)] = &[
         "apt-get install -y -qq chromium ffmpeg",
     ),
     ("pip install ./crates/pendulum-py", "pip\" install"),
+    // The page and its browser tests (web/).
+    ("bash web/build.sh", "bash web/build.sh"),
+    (
+        "(cd web/test && npm ci) && node web/test/browser.mjs",
+        "node web/test/browser.mjs",
+    ),
     // tests/test_quickstart.py runs it.
     ("python examples/python/quickstart.py", "pytest"),
 ];

@@ -1,7 +1,7 @@
 // The page: three rooms over one library (pendulum.js → pendulum.wasm).
 // Every figure shown carries its JSON key and its value at full precision
 // (data-key, data-value); the text beside it is rounded for reading.
-import { load, call, listen, PendulumError } from "./pendulum.js";
+import { load, call, listen, clearestChannel, PendulumError } from "./pendulum.js";
 
 const $ = (selector, root = document) => root.querySelector(selector);
 const $$ = (selector, root = document) => [...root.querySelectorAll(selector)];
@@ -328,13 +328,20 @@ async function openRecording(file) {
   if (!decoded) {
     const ctx = new AudioContext();
     const audio = await ctx.decodeAudioData(buffer);
-    decoded = { rate: audio.sampleRate, channels: [audio.getChannelData(0)] };
+    decoded = { rate: audio.sampleRate, channels: Array.from({ length: audio.numberOfChannels }, (_, c) => audio.getChannelData(c)) };
     ctx.close();
   }
   $("#listen-note").textContent = `Listening to ${file.name}…`;
   await new Promise((r) => setTimeout(r, 20));
   try {
-    render(listen(decoded.channels[0], decoded.rate, options()));
+    // The channel whose ticks stand out clearest, as the command line's.
+    const channel = clearestChannel(decoded.channels, decoded.rate);
+    document.body.dataset.channel = String(channel + 1);
+    const heard = listen(decoded.channels[channel], decoded.rate, options());
+    render(heard);
+    if (decoded.channels.length > 1) {
+      $("#listen-note").textContent += ` Channel ${channel + 1} of ${decoded.channels.length} (its ticks stand out clearest).`;
+    }
   } catch (e) {
     error(e instanceof PendulumError ? e.message : String(e));
     $("#listen-note").textContent = "";

@@ -74,6 +74,23 @@ export function listen(samples, sampleRate, options = {}) {
   }
 }
 
+/**
+ * The channel (from 0) whose ticks stand out clearest, from the first
+ * 30 s of each (Float32Arrays), as the command line chooses for a file.
+ */
+export function clearestChannel(channels, sampleRate) {
+  if (channels.length < 2) return 0;
+  const frames = Math.min(30 * sampleRate, ...channels.map((c) => c.length));
+  const all = new Float32Array(frames * channels.length);
+  channels.forEach((c, i) => all.set(c.subarray(0, frames), i * frames));
+  const [ptr, bytes] = putSamples(all);
+  try {
+    return take(wasm.pendulum_clearest(ptr, frames, channels.length, sampleRate)).channel;
+  } finally {
+    wasm.pendulum_free(ptr, bytes);
+  }
+}
+
 /** Listening as the samples come: push blocks, then finish. */
 export class Live {
   constructor(sampleRate, options = {}) {

@@ -9,7 +9,7 @@
 import puppeteer from "puppeteer-core";
 import { execFileSync } from "node:child_process";
 import { createServer } from "node:http";
-import { mkdtempSync, readFileSync, existsSync } from "node:fs";
+import { mkdtempSync, readFileSync, writeFileSync, existsSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, extname, resolve } from "node:path";
 
@@ -174,6 +174,34 @@ for (const r of recordings) {
     const [a, b] = [existsSync(saved) ? rows(saved) : [], rows(theirs)];
     const cells = a.length === b.length && a.every((row, i) => row.every((c, j) => c === b[i][j] || Math.abs(Number(c) - Number(b[i][j])) <= 1e-12 * Math.abs(Number(c))));
     check(cells, `${last.name}: the ticks saved (${a.length} rows) are the command line's --ticks file (${b.length} rows)`);
+  }
+  // Stereo with a louder channel of noise: the clearer channel is taken,
+  // as the command line takes it.
+  {
+    const mono = readFileSync(recordings[2].path);
+    const frames = (mono.length - 44) / 2;
+    const stereo = Buffer.alloc(44 + frames * 4);
+    mono.copy(stereo, 0, 0, 44);
+    stereo.writeUInt32LE(36 + frames * 4, 4);
+    stereo.writeUInt16LE(2, 22);
+    stereo.writeUInt32LE(mono.readUInt32LE(24) * 4, 28);
+    stereo.writeUInt16LE(4, 32);
+    stereo.writeUInt32LE(frames * 4, 40);
+    let seed = 12345;
+    for (let i = 0; i < frames; i++) {
+      seed = (seed * 1103515245 + 12345) % 2147483648;
+      stereo.writeInt16LE(Math.round((seed / 2147483648 - 0.5) * 40000), 44 + 4 * i);
+      stereo.writeInt16LE(mono.readInt16LE(44 + 2 * i), 44 + 4 * i + 2);
+    }
+    const path = join(work, "stereo.wav");
+    writeFileSync(path, stereo);
+    await page.evaluate(() => { delete document.body.dataset.heard; });
+    await (await page.$("#listen-file")).uploadFile(path);
+    await page.waitForSelector("body[data-heard]", { timeout: 120000 });
+    const expected = cli("listen", path, "--every", "10s");
+    const channel = await page.evaluate(() => Number(document.body.dataset.channel));
+    const rate = await value(page, "#out-rate");
+    check(channel === expected.channel && rate === expected.rate_s_per_day, `stereo, channel 1 noise: the page took channel ${channel} (rate ${rate}), the command line channel ${expected.channel} (rate ${expected.rate_s_per_day})`);
   }
   check(errors.length === 0, `no console errors in the timegrapher (${errors.join("; ")})`);
   // Offline: the page comes back from its cache.

@@ -76,6 +76,24 @@ pub unsafe extern "C" fn pendulum_listen(
     reply(&requests::listen(options, samples, sample_rate))
 }
 
+/// The channel (from 0) whose ticks stand out clearest, of `channels`
+/// channels of `frames` samples each at `samples`, one channel after
+/// another (the first 30 s of a recording, as the command line takes):
+/// the reply's `ok` is `{"channel": n}`.
+///
+/// # Safety
+/// The pointer and lengths must describe memory from [`pendulum_alloc`].
+#[no_mangle]
+pub unsafe extern "C" fn pendulum_clearest(
+    samples: *const f32,
+    frames: usize,
+    channels: usize,
+    sample_rate: u32,
+) -> *mut u8 {
+    let all = std::slice::from_raw_parts(samples, frames * channels);
+    reply(&requests::clearest(all, frames, sample_rate))
+}
+
 /// A live listener at `sample_rate` Hz with the options of the JSON at
 /// `options`: the reply's `ok` is `{"handle": n}`.
 ///

@@ -447,6 +447,16 @@ pub fn listen(options: &[u8], samples: &[f32], sample_rate: u32) -> String {
     heard_reply(heard)
 }
 
+/// The clearest of the channels laid one after another in `all`, each
+/// `frames` long ([`pendulum_theory::listening::channels::clearest_channel`],
+/// as the command line chooses for a file).
+pub fn clearest(all: &[f32], frames: usize, sample_rate: u32) -> String {
+    let channels: Vec<Vec<f32>> = all.chunks(frames.max(1)).map(<[f32]>::to_vec).collect();
+    let channel =
+        pendulum_theory::listening::channels::clearest_channel(&channels, f64::from(sample_rate));
+    reply_of::<Value>(Ok(serde_json::json!({ "channel": channel })))
+}
+
 /// A live listener.
 pub fn live_new(options: &[u8], sample_rate: u32) -> Result<LiveListener, Failure> {
     let input = ListenOptions::parse(options)?;

@@ -60,12 +60,23 @@ function route() {
 
 // ---- Calculators ---------------------------------------------------------
 
+/** A field's number (a decimal comma read as a point); refused in the
+ * field's own words when it is not a finite number. */
+function number(input) {
+  const text = input.value.trim();
+  const value = Number(text.replace(",", "."));
+  if (!Number.isFinite(value)) {
+    const label = input.closest("label")?.firstChild?.textContent.trim() ?? input.name;
+    throw new PendulumError({ field: input.name, flag: null, message: `${label}: must be a finite number, got ${text}` });
+  }
+  return value;
+}
+
 function request(form) {
   const req = { command: form.dataset.command };
   for (const input of $$("input", form)) {
-    const text = input.value.trim().replace(",", ".");
-    if (text === "") continue;
-    req[input.name] = Number(text);
+    if (input.value.trim() === "") continue;
+    req[input.name] = number(input);
   }
   return req;
 }
@@ -111,8 +122,7 @@ function options() {
   const form = $("#listen-form");
   const o = {};
   for (const name of ["bph", "lift_angle_deg", "every_s"]) {
-    const text = form.elements[name].value.trim().replace(",", ".");
-    if (text !== "") o[name] = Number(text);
+    if (form.elements[name].value.trim() !== "") o[name] = number(form.elements[name]);
   }
   return o;
 }
@@ -381,6 +391,8 @@ function onWorker({ data }) {
 
 async function startMic() {
   error(null);
+  // (Refused before the microphone is asked for.)
+  const opts = options();
   $("#windows tbody").replaceChildren();
   $("#windows").hidden = true;
   $("#words").replaceChildren();
@@ -403,7 +415,7 @@ async function startMic() {
   let started = false;
   const feed = (samples, sampleRate) => {
     if (!started) {
-      mic.worker.postMessage({ type: "start", rate: sampleRate, options: options() });
+      mic.worker.postMessage({ type: "start", rate: sampleRate, options: opts });
       mic.rate = sampleRate;
       started = true;
     }

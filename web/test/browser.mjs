@@ -122,6 +122,10 @@ const browser = await launch();
   await page.$eval(`form[data-command="period"] input[name="length_m"]`, (el) => { el.value = "-1"; el.dispatchEvent(new Event("input", { bubbles: true })); });
   const refusal = await page.$eval(`form[data-command="period"] dd.error`, (el) => el.textContent);
   check(/^--length: must be positive, got -1/.test(refusal), `a negative length refused: "${refusal}"`);
+  // A field that is not a number is refused in its own words.
+  await page.$eval(`form[data-command="period"] input[name="length_m"]`, (el) => { el.value = "abc"; el.dispatchEvent(new Event("input", { bubbles: true })); });
+  const notNumber = await page.$eval(`form[data-command="period"] dd.error`, (el) => el.textContent);
+  check(notNumber === "Length, m: must be a finite number, got abc", `a length of "abc" refused: "${notNumber}"`);
   check(errors.length === 0, `no console errors on the calculators (${errors.join("; ")})`);
   await page.close();
 }

@@ -86,7 +86,7 @@ pub fn regulate(
         return Err(Refusal::field(
             "rate",
             format!(
-                "must be less than a day a day, got {} s/day",
+                "must be under 86400 s/day either way (a day a day), got {} s/day",
                 format_significant(r, 6)
             ),
         ));

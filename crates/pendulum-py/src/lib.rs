@@ -1107,13 +1107,8 @@ fn nominal_of(
     bph: Option<f64>,
     period: Option<f64>,
 ) -> PyResult<Option<pendulum_theory::period::Nominal>> {
-    use pendulum_theory::period::Nominal;
-    match (bph, period) {
-        (Some(_), Some(_)) => Err(PyValueError::new_err("give bph or period, not both")),
-        (Some(b), None) => Ok(Some(Nominal::BeatsPerHour(b))),
-        (None, Some(p)) => Ok(Some(Nominal::Period(p))),
-        (None, None) => Ok(None),
-    }
+    pendulum_theory::period::Nominal::given(bph, period)
+        .map_err(|r| PyValueError::new_err(r.to_string()))
 }
 
 /// The length for a period or a beat rate (the CLI's `length`) as JSON.

@@ -357,12 +357,7 @@ impl ListenOptions {
             serde_json::from_slice(json)
                 .map_err(|e| Failure::request(format!("the options: {e}")))?
         };
-        let nominal = match (o.bph, o.period_s) {
-            (Some(_), Some(_)) => return Err(Failure::request("give --bph or --period, not both")),
-            (Some(b), None) => Some(Nominal::BeatsPerHour(b)),
-            (None, Some(p)) => Some(Nominal::Period(p)),
-            (None, None) => None,
-        };
+        let nominal = Nominal::given(o.bph, o.period_s)?;
         let oscillator = match o.oscillator.as_deref() {
             None => None,
             Some("pendulum") => Some(Oscillator::Pendulum),
@@ -552,7 +547,7 @@ mod tests {
             r["error"]["message"]
                 .as_str()
                 .unwrap()
-                .contains("--bph or --period"),
+                .contains("give bph or period, not both"),
             "{r}"
         );
     }

@@ -148,7 +148,9 @@ pub(crate) fn window_of(input: &WindowInput, ticks: &[Tick], index: usize) -> Wi
     window(input, &ticks, start, end)
 }
 
-/// Beats either way of a window whose ticks its clean-up sees.
+/// Live, beats past a window's end whose ticks are awaited before it is
+/// cut (at most [`super::live::WINDOW_WAIT_S`]): its last ticks are
+/// decided by the clean-up with these after them.
 pub const CLEAN_REACH: u64 = 24;
 
 fn window(input: &WindowInput, ticks: &[Tick], start: f64, end: f64) -> Window {

@@ -400,6 +400,23 @@ pub enum Nominal {
 }
 
 impl Nominal {
+    /// The beat given as a beat rate (`bph`) or a period, or neither;
+    /// both is refused (the command line's flags conflict, Python and the
+    /// page say so in these words).
+    pub fn given(
+        bph: Option<f64>,
+        period: Option<f64>,
+    ) -> Result<Option<Self>, crate::analysis::Refusal> {
+        match (bph, period) {
+            (Some(_), Some(_)) => Err(crate::analysis::Refusal::data(
+                "give bph or period, not both",
+            )),
+            (Some(b), None) => Ok(Some(Nominal::BeatsPerHour(b))),
+            (None, Some(p)) => Ok(Some(Nominal::Period(p))),
+            (None, None) => Ok(None),
+        }
+    }
+
     /// The input's field name.
     pub fn field(self) -> &'static str {
         match self {

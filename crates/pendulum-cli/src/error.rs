@@ -85,6 +85,27 @@ impl fmt::Display for CliError {
 
 impl std::error::Error for CliError {}
 
+/// A file's refusal: said of the flag of the reading option it concerns
+/// (`run` as `--run`), else as it is.
+impl From<pendulum_data::ReadError> for CliError {
+    fn from(e: pendulum_data::ReadError) -> Self {
+        // The library's field names that are not their flag's.
+        const FLAGS: [(&str, &str); 4] = [
+            ("length_standard_error", "--length-uncertainty"),
+            ("pendulum_length", "--length"),
+            ("pendulum_length_standard_error", "--length-uncertainty"),
+            ("time", "FILE"),
+        ];
+        match e.option {
+            Some(option) => match FLAGS.iter().find(|(o, _)| *o == option) {
+                Some((_, flag)) => Self::flag(flag, e.message),
+                None => Self::flag(&format!("--{}", option.replace('_', "-")), e.message),
+            },
+            None => Self::other(e.message),
+        }
+    }
+}
+
 /// Collapses clap's multi-line error into one line: its message and tips,
 /// without the usage block (`--help` shows that).
 pub fn one_line_clap_error(error: &clap::Error) -> String {

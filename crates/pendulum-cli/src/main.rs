@@ -17,10 +17,8 @@ mod output;
 mod paths;
 mod plot;
 mod stream;
-mod tracker;
 mod units;
 mod work;
-mod workbook;
 
 use clap::error::ErrorKind;
 use clap::{CommandFactory, FromArgMatches};

@@ -38,23 +38,7 @@ pub enum Dimension {
     Level,
 }
 
-/// A unit's spellings and its size in SI: a value `v` in it is
-/// `v × si + offset` in the dimension's base unit (the offset is only
-/// temperature's: kelvin and °F against °C).
-struct Unit {
-    names: &'static [&'static str],
-    si: f64,
-    offset: f64,
-}
-
-/// A unit with no offset.
-const fn unit(names: &'static [&'static str], si: f64) -> Unit {
-    Unit {
-        names,
-        si,
-        offset: 0.0,
-    }
-}
+use pendulum_data::units::{unit, Unit, PRESSURE};
 
 const LENGTH: &[Unit] = &[
     unit(&["m"], 1.0),
@@ -112,17 +96,6 @@ const ENERGY: &[Unit] = &[
     unit(&["J"], 1.0),
     unit(&["mJ"], 1e-3),
     unit(&["uJ", "µJ"], 1e-6),
-];
-
-const PRESSURE: &[Unit] = &[
-    unit(&["Pa"], 1.0),
-    unit(&["hPa", "mbar"], 100.0),
-    unit(&["kPa"], 1000.0),
-    unit(&["bar"], 100_000.0),
-    unit(&["atm"], 101_325.0),
-    // The conventional inch and millimetre of mercury.
-    unit(&["inHg"], 3386.389),
-    unit(&["mmHg", "Torr"], 133.322_387_415),
 ];
 
 const TEMPERATURE: &[Unit] = &[
@@ -422,17 +395,6 @@ pub fn parse_in(text: &str, dimension: Dimension, bare: &str) -> Result<f64, Uni
         Some(u) => (number * u.si + u.offset - bare_offset) / bare_si,
     };
     finite(trimmed, value)
-}
-
-/// The size in SI of `unit` of `dimension` in any case, from the table
-/// the flags read: a file's header (read in lower case) takes the units
-/// the flags take (`pressure_bar` as `--pressure 1bar`).
-pub fn si_factor(dimension: Dimension, unit: &str) -> Option<f64> {
-    dimension
-        .units()
-        .iter()
-        .find(|u| u.names.iter().any(|n| n.eq_ignore_ascii_case(unit)))
-        .map(|u| u.si)
 }
 
 fn lookup(dimension: Dimension, unit: &str) -> Option<&'static Unit> {

@@ -285,7 +285,9 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
             _ => Role::Time,
         };
         match (&file, which) {
-            (Some(table), Some((_, i))) => table.error_at(i, role, reason).of_flag("--drive-file"),
+            (Some(table), Some((_, i))) => {
+                CliError::from(table.error_at(i, role, reason)).of_flag("--drive-file")
+            }
             _ => CliError::other(reason),
         }
     };

@@ -1,42 +1,17 @@
 //! `pendulum fit decay`: which damping, and how much, from a run-down.
 
 use super::common;
-use super::measured::{
-    declared_degrees, has_track, read_options, rebuild_times, track_of, track_roles, Positions,
-};
+use super::measured::{opener, positions, read_options};
 use crate::args::FitDecayArgs;
-use crate::data::{need, read_table, Format, Found, Role, RATE_ROLES};
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use crate::work;
-use pendulum_theory::fitting::decay::{swings_to_time, DecayFit, DecayModel};
-use pendulum_theory::fitting::frames::longest_run;
-use pendulum_theory::fitting::rundown::{
-    analyse, RunDown, RunDownInput, RunDownWarning, SECONDS_PER_ROW,
-};
-use pendulum_theory::fitting::tracked::TimeRebuilt;
-use pendulum_theory::fitting::turning::{turning_points, Turns};
-use serde::Serialize;
-
-/// What the command prints as JSON: the file read, then the analysis.
-#[derive(Serialize)]
-struct DecayJson {
-    file: String,
-    /// What was read.
-    format: Format,
-    /// With a track: the zero of the swing removed from the turning angles.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    zero_offset_rad: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    turning_points_file: Option<String>,
-    /// A track's times, written rounded, rebuilt on their frame grid.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    time_rebuilt: Option<TimeRebuilt>,
-    #[serde(flatten)]
-    analysis: RunDown,
-}
+use pendulum_data::fits::{decay, Decay, DecayJson, DecayOptions};
+use pendulum_theory::fitting::decay::{DecayFit, DecayModel};
+use pendulum_theory::fitting::rundown::SECONDS_PER_ROW;
+use pendulum_theory::fitting::turning::Turns;
 
 pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
     let plot = args
@@ -57,188 +32,41 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         (None, Some(path)) => Some(crate::design::read(path)?.properties().effective_mass()),
         (None, None) => None,
     };
-    let period = args.period.map(|t| t.0);
-    let options = read_options(&args.read)?;
-    // A track (angle, or x and y, against time) to find the amplitudes in;
-    // else a column of amplitudes. A track wins: Tracker files carry
-    // per-frame columns a user may have called "amp".
-    let rate = options.frame_rate;
-    let choose = |found: &[Found]| {
-        if has_track(found, rate.is_some()) {
-            track_roles(found, rate.is_some())
-        } else if found.iter().any(|f| f.role == Role::Amplitude) {
-            need(&[&[Role::Time, Role::Swing], &[Role::Amplitude]])(found)
-        } else if found.iter().any(|f| RATE_ROLES.contains(&f.role)) {
-            Err(
-                "no amplitude column, nor a track: a gyroscope's angular velocity is fitted \
-                 by fit trajectory (its damping laws and Q)"
-                    .to_string(),
-            )
-        } else {
-            Err(
-                "no amplitude column (amplitude_deg, amplitude (rad), …), nor a track \
-                 (time with angle, or with x and y)"
-                    .to_string(),
-            )
-        }
-    };
-    let mut table = read_table(&args.file, &options, &choose)?;
-    let file = table.file.clone();
-    let format = table.format.clone();
-    if args.length_uncertainty.is_some() && pendulum.is_none() {
-        return Err(CliError::flag(
-            "--length-uncertainty",
-            "is the uncertainty of --length (or of --design's length): give the length too",
-        ));
-    }
-    let input = RunDownInput {
-        model: args.model.as_deref(),
-        period,
-        length: pendulum.map(|p| p.length_m()),
+    let options = DecayOptions {
+        read: read_options(&args.read)?,
+        positions: positions(&args.read)?,
+        model: args.model.clone(),
+        period: args.period.map(|t| t.0),
+        length: pendulum.map(|p| (p.length_m(), p.g_m_s2())),
         length_standard_error: args.length_uncertainty.map(|l| l.0),
-        g: pendulum.map(|p| p.g_m_s2()),
         mass,
         force: args.read.force,
-        ..RunDownInput::default()
     };
-    let mut rebuilt = None;
-    let mut left_out = None;
-    let flags = [
-        ("time", "FILE"),
-        ("g", "--g"),
-        ("length_standard_error", "--length-uncertainty"),
-    ];
-    let (analysis, time, amplitude, turns_found) = if table.column(Role::Amplitude).is_some() {
-        // Out of order times named as the file has them (the library sees
-        // them less the first).
-        table.require_increasing(Role::Time)?;
-        let amplitude = table.column(Role::Amplitude).unwrap_or(&[]).to_vec();
-        let first = table.values[0].clone();
-        // A swing is a half period: with --period each takes half of it;
-        // else half the exact period at its amplitude, from the length.
-        let time = match (table.roles[0] == Role::Swing, period, pendulum.as_ref()) {
-            (false, _, _) => first,
-            (true, Some(p), _) => first.iter().map(|s| (s - first[0]) * 0.5 * p).collect(),
-            (true, None, Some(p)) => swings_to_time(p, &first, &amplitude),
-            (true, None, None) => {
-                return Err(CliError::flag(
-                    "--length",
-                    format!(
-                        "is needed to turn the swing column of {file} into time (or \
-                         --period: a swing is half of it)"
-                    ),
-                ))
-            }
-        };
-        // g comes from a track's turning times: a table of amplitudes
-        // gives none for the length's uncertainty to go in.
-        if args.length_uncertainty.is_some() {
-            return Err(CliError::flag(
-                "--length-uncertainty",
-                format!(
-                    "goes in g, which {file} (amplitudes, no times of turning points) does not \
-                     give: g comes from a track (angle, or x and y, against time)"
-                ),
-            ));
-        }
-        let declared = declared_degrees(&table, Role::Amplitude, args.read.angle_unit.as_deref());
-        let _spinner = work::Spinner::start(
-            format!("fitting {} rows", time.len()),
-            time.len() as f64 * SECONDS_PER_ROW,
-        );
-        let analysis = analyse(&RunDownInput {
-            time: &time,
-            amplitude: &amplitude,
-            declared_degrees: declared,
-            ..input
-        })
-        .map_err(|r| {
-            CliError::refused(&r, &flags, &|at, reason| match at {
-                Some((field, i)) => {
-                    let role = if field == "amplitude" {
-                        Role::Amplitude
-                    } else {
-                        table.roles[0]
-                    };
-                    table.error_at(i, role, reason)
-                }
-                None => CliError::other(format!("{file}: {reason}")),
-            })
-        })?;
-        (analysis, time, amplitude, None)
-    } else {
-        let declared = declared_degrees(&table, Role::Angle, args.read.angle_unit.as_deref());
-        rebuilt = rebuild_times(&args.file, &options, &mut table, &choose)?;
-        let track = track_of(table, &Positions::of(&args.read)?, rate)?;
-        // A record in pieces: its longest run (turning points across a
-        // gap are no swing's).
-        let (kept, others) = longest_run(&track.time);
-        if !others.is_empty() {
-            left_out = Some(RunDownWarning::SamplesLeftOut {
-                kept: [track.time[kept.start], track.time[kept.end - 1]],
-                left: others
-                    .iter()
-                    .map(|r| [track.time[r.start], track.time[r.end - 1], r.len() as f64])
-                    .collect(),
-            });
-        }
-        let track_time = track.time[kept.clone()].to_vec();
-        let track_angle = track.angle[kept].to_vec();
-        let found = turning_points(&track_time, &track_angle);
-        if found.turns.len() < 4 {
-            // A short table of angles is more likely a list of amplitudes
-            // under an angle's name than a track.
-            let hint = if track_time.len() < 200 {
-                format!(
-                    " (the file was read as a track of angle against time, {} rows of {}; if \
-                     its angles are the amplitudes of successive swings, call that column \
-                     amplitude: --columns with amplitude_rad or amplitude_deg in its place)",
-                    track_time.len(),
-                    track.table.names.join(", ")
-                )
-            } else {
-                String::new()
-            };
-            return Err(CliError::other(format!(
-                "{file}: only {} turning points found in the track; a decay needs more \
-                 swings{hint}",
-                found.turns.len()
-            )));
-        }
-        let time: Vec<f64> = found.turns.iter().map(|t| t.time).collect();
-        let amplitude: Vec<f64> = found.turns.iter().map(|t| t.amplitude).collect();
-        let count = found.half_swings();
-        let analysis = analyse(&RunDownInput {
-            time: &time,
-            amplitude: &amplitude,
-            turning_half_period: found.half_period(),
-            turning_count: Some(&count),
-            declared_degrees: declared,
-            ..input
-        })
-        .map_err(|r| {
-            CliError::refused(&r, &flags, &|at, reason| match at {
-                Some((_, i)) => CliError::other(format!(
-                    "{file}: turning point {} (at {} s): {reason}",
-                    i + 1,
-                    num(time[i], 8)
-                )),
-                None => CliError::other(format!("{file}: {reason}")),
-            })
-        })?;
-        (analysis, time, amplitude, Some(found))
-    };
-    let turning_points_file = match (&args.turning_points, &turns_found) {
+    let mut spinner = None;
+    let fitted = decay(&opener(&args.file), &options, &mut |rows| {
+        spinner = Some(work::Spinner::start(
+            format!("fitting {rows} rows"),
+            rows as f64 * SECONDS_PER_ROW,
+        ));
+    })?;
+    let Decay {
+        mut json,
+        time,
+        amplitude,
+        turns,
+    } = fitted;
+    json.turning_points_file = match (&args.turning_points, &turns) {
         (Some(path), Some(found)) => Some(write_turns(path, found)?),
         (Some(_), None) => {
             return Err(CliError::flag(
                 "--turning-points",
-                format!("{file} holds amplitudes already, not a track"),
+                format!("{} holds amplitudes already, not a track", json.file),
             ))
         }
         _ => None,
     };
     if let Some(target) = &plot {
+        let analysis = &json.analysis;
         let best = analysis
             .fits
             .iter()
@@ -248,20 +76,11 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
             &figure(&time, &amplitude, &analysis.fits, best.map(|f| f.model)),
         )?;
     }
-    let mut analysis = analysis;
-    analysis.warnings.extend(left_out);
-    let result = DecayJson {
-        file,
-        time_rebuilt: rebuilt.as_ref().map(TimeRebuilt::from),
-        format,
-        zero_offset_rad: turns_found.as_ref().map(|t| t.offset),
-        turning_points_file,
-        analysis,
-    };
+    drop(spinner);
     if args.json {
-        output::json(&result)
+        output::json(&json)
     } else {
-        Ok(text(&result))
+        Ok(text(&json))
     }
 }
 

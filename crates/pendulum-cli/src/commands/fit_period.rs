@@ -1,56 +1,12 @@
 //! `pendulum fit period`: a table of periods against amplitude or length.
 
 use crate::args::FitPeriodArgs;
-use crate::data::{read_table, Format, Found, ReadOptions, Role};
+use crate::data::ReadOptions;
 use crate::error::CliError;
 use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
-use pendulum_theory::fitting::period_table::{analyse, Against, PeriodTable, PeriodTableInput};
-use serde::Serialize;
-
-/// What the command prints as JSON: the file read, then the analysis.
-#[derive(Serialize)]
-struct PeriodJson {
-    file: String,
-    /// What was read.
-    format: Format,
-    #[serde(flatten)]
-    analysis: PeriodTable,
-}
-
-/// The columns of a period table: the period (a column named for it, or a
-/// time column), then what is there of its uncertainty, the amplitude (or
-/// an angle) and the length.
-fn choose(found: &[Found]) -> Result<Vec<Role>, String> {
-    let has = |r: Role| found.iter().any(|f| f.role == r);
-    let period = if has(Role::Period) {
-        Role::Period
-    } else if has(Role::Time) {
-        Role::Time
-    } else {
-        return Err("no period column (period_s, T (s), …)".to_string());
-    };
-    let mut roles = vec![period];
-    if has(Role::PeriodError) {
-        roles.push(Role::PeriodError);
-    }
-    if has(Role::Amplitude) {
-        roles.push(Role::Amplitude);
-    } else if has(Role::Angle) {
-        roles.push(Role::Angle);
-    }
-    if has(Role::Length) {
-        roles.push(Role::Length);
-    }
-    if roles.len() == 1 || roles == [period, Role::PeriodError] {
-        return Err(
-            "no amplitude or length column to fit the periods against (amplitude_deg, \
-             length_m, …)"
-                .to_string(),
-        );
-    }
-    Ok(roles)
-}
+use pendulum_data::fits::{periods, PeriodOptions, Periods};
+use pendulum_theory::fitting::period_table::{Against, PeriodTable};
 
 pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
     let plot = args
@@ -58,64 +14,27 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
         .as_deref()
         .map(|p| Target::new(p, "--plot"))
         .transpose()?;
-    let options = ReadOptions {
-        angle_unit: super::measured::angle_unit(args.angle_unit.as_deref()),
-        columns: super::measured::columns(args.columns.as_deref()),
-        frame_rate: None,
-        // Periods are not times from a start.
-        absolute_time: true,
-        run: None,
-        tick_rate: None,
-        no_columns_flag: false,
-        refuse_blank: false,
-    };
-    let table = read_table(&args.file, &options, &choose)?;
-    let file = table.file.clone();
-    let period = table.values[0].clone();
-    let amplitude = table
-        .column(Role::Amplitude)
-        .or_else(|| table.column(Role::Angle))
-        .map(|a| a.iter().map(|v| v.abs()).collect::<Vec<f64>>());
-    let analysis = analyse(&PeriodTableInput {
-        period: &period,
-        period_standard_error: table.column(Role::PeriodError),
-        amplitude: amplitude.as_deref(),
-        length: table.column(Role::Length),
+    let options = PeriodOptions {
+        read: ReadOptions {
+            angle_unit: super::measured::angle_unit(args.angle_unit.as_deref()),
+            columns: super::measured::columns(args.columns.as_deref()),
+            ..ReadOptions::default()
+        },
         pendulum_length: args.length.map(|l| l.0),
         pendulum_length_standard_error: args.length_uncertainty.map(|l| l.0),
         bob_radius: args.bob_radius.map(|l| l.0),
-        force: false,
-    })
-    .map_err(|r| {
-        CliError::refused(
-            &r,
-            &[
-                ("pendulum_length", "--length"),
-                ("pendulum_length_standard_error", "--length-uncertainty"),
-            ],
-            &|at, reason| match at {
-                Some((field, i)) => {
-                    let role = match field {
-                        "period_standard_error" => Role::PeriodError,
-                        "amplitude" if table.column(Role::Amplitude).is_some() => Role::Amplitude,
-                        "amplitude" => Role::Angle,
-                        "length" => Role::Length,
-                        _ => table.roles[0],
-                    };
-                    table.error_at(i, role, reason)
-                }
-                None => CliError::other(format!("{file}: {reason}")),
-            },
-        )
-    })?;
-    if let Some(target) = &plot {
-        render(target, &figure(&analysis, &period, amplitude.as_deref()))?;
-    }
-    let result = PeriodJson {
-        file,
-        format: table.format.clone(),
-        analysis,
     };
+    let Periods {
+        json: result,
+        period,
+        amplitude,
+    } = periods(&super::measured::opener(&args.file), &options)?;
+    if let Some(target) = &plot {
+        render(
+            target,
+            &figure(&result.analysis, &period, amplitude.as_deref()),
+        )?;
+    }
     if args.json {
         return output::json(&result);
     }

@@ -2,38 +2,14 @@
 //! from a tracked angle.
 
 use super::common;
-use super::measured::{read_track, PivotJson};
+use super::measured::{opener, positions, read_options};
 use crate::args::FitTrajectoryArgs;
-use crate::data::Format;
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num};
 use crate::plot::{render, Figure, Panel, Series, Target};
-use pendulum_theory::fitting::tracked::{
-    analyse, LengthSource, TimeRebuilt, Track, TrackInput, SECONDS_PER_ROW,
-};
-use serde::Serialize;
-
-/// What the command prints as JSON: the file read, then the analysis.
-#[derive(Serialize)]
-struct TrajectoryJson {
-    file: String,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    residuals_file: Option<String>,
-    /// What was read.
-    format: Format,
-    /// The pivot, when the angles came from x/y positions.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pivot: Option<PivotJson>,
-    /// The radius of the circle the bob traced (`--pivot fit`), file units.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    track_radius: Option<f64>,
-    /// Its standard error, carried into g's.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    track_radius_standard_error: Option<f64>,
-    #[serde(flatten)]
-    analysis: Track,
-}
+use pendulum_data::fits::{trajectory, Trajectory, TrajectoryOptions};
+use pendulum_theory::fitting::tracked::{LengthSource, SECONDS_PER_ROW};
 
 pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
     let plot = args
@@ -47,80 +23,40 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             Some(common::pendulum_of(l, d.as_deref(), &common::gravity_default()?)?.length_m())
         }
     };
-    if args.length_uncertainty.is_some() && given_length.is_none() {
-        return Err(CliError::flag(
-            "--length-uncertainty",
-            "is the uncertainty of --length (or of --design's length): give the length too",
-        ));
-    }
-    let track =
-        read_track(&args.file, &args.read)?.window(args.from.map(|t| t.0), args.to.map(|t| t.0))?;
-    // Without --length, a fitted pivot's radius is the length (in the
-    // file's units, which Tracker calibrates to metres).
-    let length = match (given_length, track.track_radius) {
-        (Some(l), _) if args.design.is_some() => Some((l, LengthSource::Design)),
-        (Some(l), _) => Some((l, LengthSource::Given)),
-        (None, Some(r)) => Some((r, LengthSource::TrackRadius)),
-        (None, None) => None,
+    let source = if args.design.is_some() {
+        LengthSource::Design
+    } else {
+        LengthSource::Given
     };
-    let rate = !track.angular_velocity.is_empty();
-    let (time, theta) = (&track.time, &track.angle);
-    let axes: Vec<&[f64]> = track.angular_velocity.iter().map(Vec::as_slice).collect();
-    let file = track.table.file.clone();
-    let _spinner = crate::work::Spinner::start(
-        format!("fitting {} rows", time.len()),
-        time.len() as f64 * SECONDS_PER_ROW,
-    );
-    let analysis = analyse(&TrackInput {
-        time,
-        angle: theta,
-        angular_velocity: &axes,
-        model: args.model.as_deref(),
-        length,
-        length_standard_error: match given_length {
-            Some(_) => args.length_uncertainty.map(|l| l.0),
-            None => track.track_radius_error,
-        },
+    let options = TrajectoryOptions {
+        read: read_options(&args.read)?,
+        positions: positions(&args.read)?,
+        from: args.from.map(|t| t.0),
+        to: args.to.map(|t| t.0),
+        model: args.model.clone(),
+        length: given_length.map(|l| (l, source)),
+        length_standard_error: args.length_uncertainty.map(|l| l.0),
         force: args.read.force,
-        angle_from_positions: track.pivot.is_some(),
-        declared_degrees: super::measured::declared_degrees(
-            &track.table,
-            crate::data::Role::Angle,
-            args.read.angle_unit.as_deref(),
-        ),
-    })
-    .map_err(|r| {
-        let flags = [
-            ("time", "FILE"),
-            ("length_standard_error", "--length-uncertainty"),
-        ];
-        CliError::refused(&r, &flags, &|at, reason| match at {
-            Some((_, i)) => CliError::other(format!("{file}: sample {}: {reason}", i + 1)),
-            None => CliError::other(format!("{file}: {reason}")),
-        })
+    };
+    let mut spinner = None;
+    let Trajectory {
+        json: mut result,
+        values,
+        rate,
+    } = trajectory(&opener(&args.file), &options, &mut |rows| {
+        spinner = Some(crate::work::Spinner::start(
+            format!("fitting {rows} rows"),
+            rows as f64 * SECONDS_PER_ROW,
+        ));
     })?;
-    let mut analysis = analysis;
-    if analysis.time_rebuilt.is_none() {
-        analysis.time_rebuilt = track.time_rebuilt.as_ref().map(TimeRebuilt::from);
-    }
-    // The samples fitted: after a gap, from the run fitted on, at their
-    // times as fitted (rebuilt where they were written rounded).
-    let rows = analysis.first_row..analysis.first_row + analysis.time.len();
+    let analysis = &result.analysis;
     if let Some(target) = &plot {
-        // The rate about the swing's axis, as fitted.
-        let values: Vec<f64> = match &analysis.gyroscope_axis {
-            Some(d) => rows
-                .clone()
-                .map(|i| axes.iter().zip(d).map(|(a, c)| a[i] * c).sum())
-                .collect(),
-            None => theta[rows.clone()].to_vec(),
-        };
         render(
             target,
             &figure(&analysis.time, &values, &analysis.residuals, rate),
         )?;
     }
-    let residuals_file = match &args.residuals {
+    result.residuals_file = match &args.residuals {
         Some(path) => {
             let header = if rate {
                 "time_s,residual_rad_s"
@@ -135,15 +71,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         }
         None => None,
     };
-    let result = TrajectoryJson {
-        file,
-        residuals_file,
-        format: track.table.format.clone(),
-        pivot: track.pivot.clone(),
-        track_radius: track.track_radius,
-        track_radius_standard_error: track.track_radius_error,
-        analysis,
-    };
+    drop(spinner);
     if args.json {
         return output::json(&result);
     }

@@ -11,13 +11,6 @@ use std::io::Cursor;
 /// Extensions read as workbooks.
 pub const EXTENSIONS: [&str; 5] = ["xls", "xlsx", "xlsm", "xlsb", "ods"];
 
-/// Whether a path names a workbook, by its extension.
-pub fn is_workbook(path: &std::path::Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| EXTENSIONS.iter().any(|w| e.eq_ignore_ascii_case(w)))
-}
-
 /// A sheet, as table text.
 #[derive(Debug)]
 pub struct Sheet {

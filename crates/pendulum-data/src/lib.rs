@@ -1,0 +1,120 @@
+//! Measurement files as people have them, read from text and bytes into
+//! the pendulum library's columns: CSV and semicolon files with decimal
+//! commas, Tracker's exports and projects (`.trk`), phyphox's CSV and
+//! workbooks, loggers' tables with date-times. No file system: the command
+//! line opens a file and hands its reader here; the browser page hands
+//! the bytes of a dropped file or a pasted table. Both therefore read a
+//! file the same way and refuse it in the same words.
+
+pub mod fits;
+pub mod measured;
+pub mod table;
+pub mod tracker;
+pub mod units;
+pub mod workbook;
+
+pub use table::{
+    need, read_table, stream_table, AngleUnit, Choose, Format, Found, ReadOptions, Role, Table,
+    DEG, RATE_ROLES,
+};
+
+use std::fmt;
+use std::io::BufRead;
+
+/// A refusal of a file: its sentence, which names the file (and where it
+/// can the line, the column and the separator), and the reading option it
+/// concerns, if one (`run`, `frame_rate`, `columns`: the command line says
+/// it of `--run`, the page of its field).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ReadError {
+    /// The reading option the refusal concerns (`ReadOptions`' field name).
+    pub option: Option<&'static str>,
+    /// The sentence.
+    pub message: String,
+}
+
+impl ReadError {
+    /// A refusal of the file itself.
+    pub fn other(message: impl Into<String>) -> Self {
+        Self {
+            option: None,
+            message: message.into(),
+        }
+    }
+
+    /// A refusal of a reading option's value.
+    pub fn option(option: &'static str, message: impl Into<String>) -> Self {
+        Self {
+            option: Some(option),
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for ReadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for ReadError {}
+
+/// How a file's bytes are laid out, told by its name's extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Layout {
+    /// Lines of text: CSV, semicolon, tab or space separated.
+    Text,
+    /// A spreadsheet workbook (`.xls`, `.xlsx`, `.xlsm`, `.xlsb`, `.ods`).
+    Workbook,
+    /// A Tracker project (`.trk`, XML).
+    TrackerProject,
+}
+
+impl Layout {
+    /// The layout of a file called `name`, by its extension.
+    pub fn of_name(name: &str) -> Layout {
+        let extension = name
+            .rsplit_once('.')
+            .map(|(_, e)| e)
+            .filter(|e| !e.contains(['/', '\\']));
+        match extension {
+            Some(e)
+                if workbook::EXTENSIONS
+                    .iter()
+                    .any(|w| e.eq_ignore_ascii_case(w)) =>
+            {
+                Layout::Workbook
+            }
+            Some(e) if e.eq_ignore_ascii_case("trk") => Layout::TrackerProject,
+            _ => Layout::Text,
+        }
+    }
+}
+
+/// A file to read: its name as the user gave it (for messages, and its
+/// layout) and its bytes, as a reader.
+pub struct Source<'a> {
+    /// The name said in messages (`run.csv`, `pasted table`).
+    pub name: String,
+    /// How its bytes are laid out.
+    pub layout: Layout,
+    /// Its bytes.
+    pub reader: Box<dyn BufRead + 'a>,
+}
+
+impl<'a> Source<'a> {
+    /// A file called `name`, its layout told by its extension.
+    pub fn new(name: impl Into<String>, reader: impl BufRead + 'a) -> Self {
+        let name = name.into();
+        Source {
+            layout: Layout::of_name(&name),
+            name,
+            reader: Box::new(reader),
+        }
+    }
+
+    /// Bytes in memory (a dropped file, a pasted table).
+    pub fn bytes(name: impl Into<String>, bytes: &'a [u8]) -> Self {
+        Source::new(name, bytes)
+    }
+}

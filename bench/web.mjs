@@ -3,7 +3,8 @@
 // calculators' first answers, and the live listener's pace on an hour of
 // a 28,800 bph watch at 48 kHz pushed in blocks of 0.1 s, as the
 // microphone gives them (the blocks converted from the WAV's 16 bits
-// one at a time, as they come).
+// one at a time, as they come); and the lab's fits of the real Tracker
+// projects in the page beside the binary's on the same files.
 //
 //   bash web/build.sh && cargo build --release && (cd web/test && npm ci)
 //   node bench/web.mjs
@@ -21,12 +22,13 @@ const work = mkdtempSync(join(tmpdir(), "pendulum-bench-"));
 const wasm = readFileSync(join(dist, "pendulum.wasm"));
 console.log(`module: ${(wasm.length / 1e6).toFixed(2)} MB, ${(gzipSync(wasm, { level: 9 }).length / 1e6).toFixed(2)} MB gzipped`);
 
+const real = join(root, "crates/pendulum-cli/tests/data/real");
 const hour = join(work, "hour.wav");
 execFileSync(join(root, "target/release/pendulum"), ["synth", "ticks", hour, "--bph", "28800", "--duration", "1h", "--sample-rate", "48000", "--rate", "5", "--beat-error", "0.6", "--seed", "3"]);
 const types = { ".html": "text/html", ".js": "text/javascript", ".css": "text/css", ".wasm": "application/wasm", ".svg": "image/svg+xml" };
 const server = createServer((req, res) => {
   const name = new URL(req.url, "http://x").pathname;
-  const path = name === "/hour.wav" ? hour : join(dist, name === "/" ? "index.html" : name);
+  const path = name === "/hour.wav" ? hour : name.startsWith("/real/") ? join(real, name.slice(6)) : join(dist, name === "/" ? "index.html" : name);
   if (!existsSync(path)) { res.writeHead(404); res.end(); return; }
   res.writeHead(200, { "content-type": types[extname(path)] ?? "application/octet-stream", "content-length": statSync(path).size });
   createReadStream(path).pipe(res);
@@ -75,5 +77,32 @@ const result = await page.evaluate(async () => {
   return { seconds: (performance.now() - start) / 1000, heard: pcm.length / rate, windows, rate: end.result.rate_s_per_day, beats: end.result.beats, missed: end.result.missed };
 });
 console.log(`an hour of a 28,800 bph watch at 48 kHz, live in 0.1 s blocks: ${result.seconds.toFixed(2)} s (${(result.heard / result.seconds).toFixed(0)} times real time), ${result.beats} beats, ${result.missed} missed, rate ${result.rate.toFixed(5)} s/day (truth 5), ${result.windows} windows printed as they came`);
+
+// The lab: each fit in the page (the file's bytes already fetched) and by
+// the binary (its whole run, from its start), three times each.
+const fits = [
+  ["decay", "pendulum_fullPeriod.trk", {}, []],
+  ["trajectory", "pendulum_length2.trk", { pivot: "fit" }, ["--pivot", "fit"]],
+];
+for (const [fit, file, options, args] of fits) {
+  const ms = await page.evaluate(async (fit, file, options) => {
+    const m = await import("./pendulum.js");
+    const bytes = new Uint8Array(await (await fetch(`real/${file}`)).arrayBuffer());
+    const times = [];
+    for (let i = 0; i < 3; i++) {
+      const start = performance.now();
+      m.fit({ fit, file_name: file, ...options }, bytes);
+      times.push(performance.now() - start);
+    }
+    return Math.min(...times);
+  }, fit, file, options);
+  const cliTimes = [];
+  for (let i = 0; i < 3; i++) {
+    const start = process.hrtime.bigint();
+    execFileSync(join(root, "target/release/pendulum"), ["fit", fit, join(real, file), ...args, "--json"]);
+    cliTimes.push(Number(process.hrtime.bigint() - start) / 1e6);
+  }
+  console.log(`lab: fit ${fit} ${file} in the page ${ms.toFixed(0)} ms, the binary ${Math.min(...cliTimes).toFixed(0)} ms`);
+}
 await browser.close();
 server.close();

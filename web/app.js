@@ -2,6 +2,7 @@
 // Every figure shown carries its JSON key and its value at full precision
 // (data-key, data-value); the text beside it is rounded for reading.
 import { load, call, listen, clearestChannel, PendulumError } from "./pendulum.js";
+import { setUpLab } from "./lab.js";
 
 const $ = (selector, root = document) => root.querySelector(selector);
 const $$ = (selector, root = document) => [...root.querySelectorAll(selector)];
@@ -18,6 +19,7 @@ export function fmt(value, digits = 6) {
 }
 
 const UNITS = [
+  ["_rad_per_s", "rad/s"], ["_per_rad_s", "1/(rad·s)"], ["_per_rad", "1/rad"], ["_per_s", "1/s"],
   ["_s_per_day", "s/day"], ["_m_s2", "m/s²"], ["_rad_s", "rad/s"], ["_deg", "°"],
   ["_rad", "rad"], ["_ms", "ms"], ["_m", "m"], ["_s", "s"], ["_hz", "Hz"],
   ["_kg", "kg"], ["_j", "J"], ["_w", "W"], ["_db", "dB"], ["_ppm", "ppm"],
@@ -30,6 +32,11 @@ const NAMES = {
   q_factor: "Q", decay_time_s: "Decay time (amplitude to 1/e)",
   amplitude_half_life_s: "Amplitude half-life",
   amplitude_loss_per_period_rad: "Amplitude lost a period",
+  omega_rad_s: "ω from the turning points", omega_n_rad_s: "ω₀, natural", zeta: "ζ, damping ratio",
+  q_factor: "Q", amplitude0_rad: "Starting amplitude", amplitude_rad: "Amplitude",
+  decay_rate_per_s: "Decay rate", offset_rad: "Zero offset", phase_rad: "Phase",
+  small_angle_period_s: "Small-angle period", circular_error_coefficient: "Circular-error coefficient",
+  residual_rms_s: "Residual rms",
 };
 
 /** A key's words and unit: `circular_error_s_per_day` → ["Circular error", "s/day"]. */
@@ -167,24 +174,26 @@ function addWindow(w) {
   $("tbody", table).append(row);
 }
 
+/** Sentences under a heading in `box` (nothing when there are none). */
+function listed(box, title, items) {
+  if (!items?.length) return;
+  const h = document.createElement("h2");
+  h.textContent = title;
+  const ul = document.createElement("ul");
+  for (const item of items) {
+    const li = document.createElement("li");
+    li.textContent = item;
+    ul.append(li);
+  }
+  box.append(h, ul);
+}
+
 function words(w) {
   const box = $("#words");
   box.replaceChildren();
-  const list = (title, items) => {
-    if (!items?.length) return;
-    const h = document.createElement("h2");
-    h.textContent = title;
-    const ul = document.createElement("ul");
-    for (const item of items) {
-      const li = document.createElement("li");
-      li.textContent = item;
-      ul.append(li);
-    }
-    box.append(h, ul);
-  };
-  list("Warnings", w?.warnings);
-  list("What it shows", w?.findings);
-  list("What to do", w?.advice);
+  listed(box, "Warnings", w?.warnings);
+  listed(box, "What it shows", w?.findings);
+  listed(box, "What to do", w?.advice);
 }
 
 /** Round steps for an axis over `span`: 1, 2 or 5 times a power of ten. */
@@ -490,6 +499,7 @@ async function main() {
     form.addEventListener("submit", (e) => e.preventDefault());
     calculate(form);
   }
+  setUpLab({ number, named, show, download, listed });
   // (For the bench: the calculators' first answers are on the page.)
   performance.mark("first-answer");
   $("#listen-file").addEventListener("change", (e) => {

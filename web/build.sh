@@ -20,7 +20,7 @@ fi
 # (Its own target directory: the two toolchains' builds do not mix.)
 RUSTC=/usr/bin/rustc RUSTC_BOOTSTRAP=1 \
   CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_LINKER=wasm-ld \
-  CARGO_PROFILE_RELEASE_DEBUG=false CARGO_PROFILE_RELEASE_OPT_LEVEL=s \
+  CARGO_PROFILE_RELEASE_DEBUG=false CARGO_PROFILE_RELEASE_STRIP=symbols CARGO_PROFILE_RELEASE_OPT_LEVEL=s \
   /usr/bin/cargo build --release --locked -q -p pendulum-wasm \
     --target wasm32-unknown-unknown -Zbuild-std=std,panic_abort \
     --target-dir target/wasm
@@ -28,7 +28,7 @@ dist=web/dist
 rm -rf "$dist"
 mkdir -p "$dist"
 cp target/wasm/wasm32-unknown-unknown/release/pendulum_wasm.wasm "$dist/pendulum.wasm"
-cp web/index.html web/style.css web/app.js web/pendulum.js web/capture-worklet.js web/listener-worker.js \
+cp web/index.html web/style.css web/app.js web/lab.js web/figure.js web/pendulum.js web/capture-worklet.js web/listener-worker.js \
   web/manifest.webmanifest web/icon.svg "$dist/"
 # The cache is named after what it holds, so that a new build replaces it.
 version=$(cat "$dist"/* | sha256sum | cut -c1-12)

@@ -19,8 +19,27 @@ const decoder = new TextDecoder();
 export async function load(url = new URL("pendulum.wasm", import.meta.url)) {
   if (wasm) return;
   const response = await fetch(url);
-  const { instance } = await WebAssembly.instantiate(await response.arrayBuffer(), {});
+  const module = await WebAssembly.compile(await response.arrayBuffer());
+  const instance = await WebAssembly.instantiate(module, unused(module));
   wasm = instance.exports;
+}
+
+/**
+ * The module's imports, none of which the library calls: the workbook
+ * reader's zip crate links getrandom's browser backend (for encrypted
+ * archives, which a measurement workbook never is), and with it
+ * wasm-bindgen's placeholders. Each is a function that throws, so a call
+ * would be an error with its name, never a silent wrong answer.
+ */
+function unused(module) {
+  const imports = {};
+  for (const { module: from, name } of WebAssembly.Module.imports(module)) {
+    imports[from] ??= {};
+    imports[from][name] = () => {
+      throw new Error(`pendulum.wasm called ${from}.${name}, which the page does not provide`);
+    };
+  }
+  return imports;
 }
 
 function put(bytes) {
@@ -88,6 +107,25 @@ export function clearestChannel(channels, sampleRate) {
     return take(wasm.pendulum_clearest(ptr, frames, channels.length, sampleRate)).channel;
   } finally {
     wasm.pendulum_free(ptr, bytes);
+  }
+}
+
+/**
+ * A measurement file fitted as the lab's `fit decay`, `fit trajectory` or
+ * `fit period` (`request.fit`), its bytes a Uint8Array. Returns
+ * `{result, figure, warnings, notes}`: the command line's JSON, its plot
+ * as panels of series, the warnings' sentences, and what the reader left
+ * out.
+ */
+export function fit(request, bytes) {
+  const [rptr, rlen] = put(encoder.encode(JSON.stringify(request)));
+  const [fptr, flen] = put(bytes);
+  try {
+    const r = reply(wasm.pendulum_fit(rptr, rlen, fptr, flen));
+    return { result: r.ok, figure: r.figure, warnings: r.warnings, notes: r.notes };
+  } finally {
+    wasm.pendulum_free(fptr, flen);
+    wasm.pendulum_free(rptr, rlen);
   }
 }
 

@@ -1,7 +1,7 @@
 // Offline: the page's files are cached when it is installed, and served
 // from the cache first (a new build changes VERSION, set by build.sh).
 const VERSION = "pendulum-dev";
-const FILES = ["./", "index.html", "style.css", "app.js", "pendulum.js", "pendulum.wasm", "listener-worker.js",
+const FILES = ["./", "index.html", "style.css", "app.js", "lab.js", "figure.js", "pendulum.js", "pendulum.wasm", "listener-worker.js",
   "capture-worklet.js", "manifest.webmanifest", "icon.svg"];
 
 self.addEventListener("install", (e) => {

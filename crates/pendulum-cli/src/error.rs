@@ -89,18 +89,8 @@ impl std::error::Error for CliError {}
 /// (`run` as `--run`), else as it is.
 impl From<pendulum_data::ReadError> for CliError {
     fn from(e: pendulum_data::ReadError) -> Self {
-        // The library's field names that are not their flag's.
-        const FLAGS: [(&str, &str); 4] = [
-            ("length_standard_error", "--length-uncertainty"),
-            ("pendulum_length", "--length"),
-            ("pendulum_length_standard_error", "--length-uncertainty"),
-            ("time", "FILE"),
-        ];
-        match e.option {
-            Some(option) => match FLAGS.iter().find(|(o, _)| *o == option) {
-                Some((_, flag)) => Self::flag(flag, e.message),
-                None => Self::flag(&format!("--{}", option.replace('_', "-")), e.message),
-            },
+        match e.flag() {
+            Some(flag) => Self::flag(&flag, e.message),
             None => Self::other(e.message),
         }
     }

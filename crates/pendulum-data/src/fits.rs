@@ -8,6 +8,7 @@
 //! by the library's field name (`length_standard_error`; `time` for the
 //! file's times as a whole), or of the file's line and column.
 
+use crate::figure::{Figure, Panel, Series, TIME_AXIS};
 use crate::measured::{
     declared_degrees, has_track, rebuild_times, track_of, track_roles, Open, PivotJson, Positions,
     Track,
@@ -16,9 +17,9 @@ use crate::table::{need, read_table, Format, Found, ReadOptions, Role, RATE_ROLE
 use crate::ReadError;
 use pendulum_theory::analysis::{Place, Refusal};
 use pendulum_theory::error::format_significant as num;
-use pendulum_theory::fitting::decay::swings_to_time;
+use pendulum_theory::fitting::decay::{swings_to_time, DecayFit, DecayModel};
 use pendulum_theory::fitting::frames::longest_run;
-use pendulum_theory::fitting::period_table::{self, PeriodTable, PeriodTableInput};
+use pendulum_theory::fitting::period_table::{self, Against, PeriodTable, PeriodTableInput};
 use pendulum_theory::fitting::rundown::{self, RunDown, RunDownInput, RunDownWarning};
 use pendulum_theory::fitting::tracked::{self, LengthSource, TimeRebuilt, TrackInput};
 use pendulum_theory::fitting::turning::{turning_points, Turns};
@@ -559,4 +560,185 @@ pub fn periods(open: &Open<'_>, options: &PeriodOptions) -> Result<Periods, Read
         period,
         amplitude,
     })
+}
+
+impl Decay {
+    /// The amplitudes over the fitted laws (the preferred one wide), and
+    /// the preferred law's residuals.
+    pub fn figure(&self) -> Figure {
+        let analysis = &self.json.analysis;
+        let best = analysis
+            .fits
+            .iter()
+            .find(|f| Some(f.model.name()) == analysis.preferred);
+        decay_figure(
+            &self.time,
+            &self.amplitude,
+            &analysis.fits,
+            best.map(|f| f.model),
+        )
+    }
+}
+
+impl Trajectory {
+    /// The values fitted over the fitted motion, and the residuals.
+    pub fn figure(&self) -> Figure {
+        let a = &self.json.analysis;
+        trajectory_figure(&a.time, &self.values, &a.residuals, self.rate)
+    }
+}
+
+impl Periods {
+    /// The periods over the fitted law, and the residuals.
+    pub fn figure(&self) -> Figure {
+        periods_figure(&self.json.analysis, &self.period, self.amplitude.as_deref())
+    }
+}
+
+/// The data with every fitted law, and the preferred law's residuals.
+fn decay_figure(
+    time: &[f64],
+    amplitude: &[f64],
+    fits: &[DecayFit],
+    best: Option<DecayModel>,
+) -> Figure {
+    let data: Vec<(f64, f64)> = time
+        .iter()
+        .zip(amplitude)
+        .map(|(t, a)| (*t, a.to_degrees()))
+        .collect();
+    let (t0, t1) = (time[0], time[time.len() - 1]);
+    let mut curves = vec![Series::dots("measured", data)];
+    for f in fits {
+        let curve = (0..=300)
+            .map(|i| {
+                let t = t0 + (t1 - t0) * f64::from(i) / 300.0;
+                (t, f.model.amplitude(t, &f.fit.parameters).to_degrees())
+            })
+            // A law whose amplitude reaches zero has stopped the
+            // pendulum: its curve ends there.
+            .filter(|p: &(f64, f64)| p.1 >= 0.0)
+            .collect();
+        // The preferred law wide and first, the others thin over it (and
+        // dashed where they run along it): each stays visible.
+        if Some(f.model) == best {
+            curves.insert(
+                1,
+                Series::line(format!("{} (preferred)", f.model.name()), curve).strong(),
+            );
+        } else {
+            curves.push(Series::line(f.model.name(), curve).light());
+        }
+    }
+    let mut panels = vec![Panel::new(
+        "Amplitude decay and the fitted laws",
+        TIME_AXIS,
+        "amplitude (°)",
+        curves,
+    )
+    .log_y_beyond(1.5)];
+    if let Some(f) = fits.iter().find(|f| Some(f.model) == best) {
+        let residuals = time
+            .iter()
+            .zip(&f.fit.residuals)
+            .map(|(t, r)| (*t, r.to_degrees()))
+            .collect();
+        panels.push(Panel::new(
+            format!("Residuals of the preferred law ({})", f.model.name()),
+            TIME_AXIS,
+            "measured − fitted (°)",
+            vec![Series::dots("residual", residuals)],
+        ));
+    }
+    Figure { panels }
+}
+
+/// The tracked angle (or angular velocity) with the fitted curve (the
+/// data less the residuals), and the residuals.
+fn trajectory_figure(time: &[f64], theta: &[f64], residuals: &[f64], rate: bool) -> Figure {
+    let (title, unit, residual_unit) = if rate {
+        (
+            "Angular velocity and the fitted motion's",
+            "angular velocity (°/s)",
+            "measured − fitted (°/s)",
+        )
+    } else {
+        (
+            "Tracked angle and the fitted motion",
+            "angle (°)",
+            "measured − fitted (°)",
+        )
+    };
+    let deg = |v: f64| v.to_degrees();
+    let data = time.iter().zip(theta).map(|(t, y)| (*t, deg(*y))).collect();
+    let fitted = time
+        .iter()
+        .zip(theta.iter().zip(residuals))
+        .map(|(t, (y, r))| (*t, deg(y - r)))
+        .collect();
+    let res = time
+        .iter()
+        .zip(residuals)
+        .map(|(t, r)| (*t, deg(*r)))
+        .collect();
+    Figure {
+        panels: vec![
+            Panel::new(
+                title,
+                TIME_AXIS,
+                unit,
+                vec![
+                    Series::dots("measured", data),
+                    Series::line("fitted", fitted),
+                ],
+            ),
+            Panel::new(
+                "Residuals",
+                TIME_AXIS,
+                residual_unit,
+                vec![Series::dots("residual", res)],
+            ),
+        ],
+    }
+}
+
+/// The periods measured, as points, above the fitted law.
+fn periods_figure(a: &PeriodTable, period: &[f64], amplitude: Option<&[f64]>) -> Figure {
+    let (x, label): (Vec<f64>, &str) = match (a.against, amplitude) {
+        (Against::Length, _) => (a.equivalent_length.clone(), "length (m)"),
+        (_, Some(amp)) => (
+            amp.iter().map(|v| v.to_degrees()).collect(),
+            "amplitude (°)",
+        ),
+        (_, None) => ((1..=period.len()).map(|i| i as f64).collect(), "row"),
+    };
+    let mut order: Vec<usize> = (0..x.len()).collect();
+    order.sort_by(|&i, &j| x[i].total_cmp(&x[j]));
+    let data = order.iter().map(|&i| (x[i], period[i])).collect();
+    let fitted = order.iter().map(|&i| (x[i], a.fitted_period[i])).collect();
+    let residuals = order
+        .iter()
+        .map(|&i| (x[i], (period[i] - a.fitted_period[i]) * 1e3))
+        .collect();
+    let law = match a.against {
+        Against::Length => "fitted: T² = 4π² (L + offset) / g",
+        Against::Amplitude => "fitted: the exact law, T₀ · 2K(sin²(A/2))/π",
+        Against::Repeats => "fitted: their mean",
+    };
+    Figure {
+        panels: vec![
+            Panel::new(
+                "Measured periods and the fitted law",
+                label,
+                "period (s)",
+                vec![Series::dots("measured", data), Series::line(law, fitted)],
+            ),
+            Panel::new(
+                "Residuals",
+                label,
+                "measured − fitted (ms)",
+                vec![Series::dots("residual", residuals)],
+            ),
+        ],
+    }
 }

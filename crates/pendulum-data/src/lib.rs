@@ -6,6 +6,7 @@
 //! the bytes of a dropped file or a pasted table. Both therefore read a
 //! file the same way and refuse it in the same words.
 
+pub mod figure;
 pub mod fits;
 pub mod measured;
 pub mod table;
@@ -49,6 +50,51 @@ impl ReadError {
             message: message.into(),
         }
     }
+}
+
+/// The library's field names that are not their command-line flag's
+/// (`--` and the name with hyphens): one table for every front end.
+const FLAGS: [(&str, &str); 4] = [
+    ("length_standard_error", "--length-uncertainty"),
+    ("pendulum_length", "--length"),
+    ("pendulum_length_standard_error", "--length-uncertainty"),
+    ("time", "FILE"),
+];
+
+impl ReadError {
+    /// The command line's flag for the option, if one.
+    pub fn flag(&self) -> Option<String> {
+        let option = self.option?;
+        Some(match FLAGS.iter().find(|(o, _)| *o == option) {
+            Some((_, flag)) => flag.to_string(),
+            None => format!("--{}", option.replace('_', "-")),
+        })
+    }
+
+    /// The command line's sentence: the flag, then the message.
+    pub fn sentence(&self) -> String {
+        match self.flag() {
+            Some(flag) => format!("{flag}: {}", self.message),
+            None => self.message.clone(),
+        }
+    }
+}
+
+/// The run of a file whose times restart, counted from 1.
+pub fn run_number(n: u64) -> Result<usize, ReadError> {
+    match n {
+        0 => Err(ReadError::option(
+            "run",
+            "must be at least 1 (the first run), got 0",
+        )),
+        n => Ok(usize::try_from(n).unwrap_or(usize::MAX)),
+    }
+}
+
+/// A frame rate to rebuild times from, checked by the library.
+pub fn frame_rate(fps: f64) -> Result<f64, ReadError> {
+    pendulum_theory::fitting::track::frame_rate(fps)
+        .map_err(|e| ReadError::option("frame_rate", e.reason))
 }
 
 impl fmt::Display for ReadError {

@@ -338,8 +338,8 @@ pub struct Format {
     /// the swing's axis among them).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub angular_velocity_columns: Vec<String>,
-    /// The file lines of rows dropped for going back in time to repeat an
-    /// earlier row cell for cell.
+    /// The file lines of rows dropped for repeating an earlier row (cell
+    /// for cell, or its readings under another time) out of time order.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub repeated_rows_dropped: Option<Vec<u64>>,
     /// The first and last times fitted (`--from`, `--to`), s from the
@@ -512,7 +512,7 @@ pub fn read_table(
     }
     let mut format = format;
     if let Some(k) = roles.iter().position(|&r| r == Role::Time) {
-        let dropped = drop_repeated_rows(&mut values, &mut lines, k);
+        let dropped = drop_repeated_rows(&mut values, &mut lines, k, !options.refuse_blank);
         if !dropped.is_empty() {
             format.repeated_rows_dropped = Some(dropped);
         }
@@ -533,29 +533,61 @@ pub fn read_table(
 /// How far back a row out of time order is looked for as a copy.
 const REPEAT_LOOKBACK: usize = 10;
 
-/// Rows whose time does not advance and that repeat, cell for cell (time
-/// and readings), one of the [`REPEAT_LOOKBACK`] rows before them (a
-/// logger's buffer written twice: 10 of the 12 faults of a real
-/// 18,000-row phyphox file) are dropped: they hold nothing new, and every
-/// analysis needs times in order. Returns their file lines. A row out of
-/// order with a time or a reading of its own (a schedule's repeated
-/// factor under an earlier time) is left for the time check to name.
-fn drop_repeated_rows(values: &mut [Vec<f64>], lines: &mut Vec<u64>, time: usize) -> Vec<u64> {
+/// Rows whose time does not advance and that repeat, cell for cell, one
+/// of the [`REPEAT_LOOKBACK`] rows before them (a logger's buffer written
+/// twice: 11 of the 12 faults of a real 18,000-row phyphox gyroscope
+/// file) are dropped: they hold nothing new, and every analysis needs
+/// times in order. With `restamped`, a row whose readings (two or more
+/// columns beside the time) repeat such a row's under a time of its own
+/// is a copy too (the twelfth: a sample written again under the next
+/// stamp, which runs back). Returns their file lines. A row out of order
+/// with a reading of its own, or a schedule's repeated setting under an
+/// earlier time (`restamped` false), is left for the time check to name.
+fn drop_repeated_rows(
+    values: &mut [Vec<f64>],
+    lines: &mut Vec<u64>,
+    time: usize,
+    restamped: bool,
+) -> Vec<u64> {
+    let restamped = restamped && values.len() >= 3;
     let rows = lines.len();
     let mut keep = vec![true; rows];
-    let mut last_kept: Option<usize> = None;
+    // Whether row `i` copies a kept row of the few before it: cell for
+    // cell, or (restamped) its readings under another time.
+    let copies = |keep: &[bool], i: usize| {
+        (i.saturating_sub(REPEAT_LOOKBACK)..i)
+            .filter(|&j| keep[j])
+            .any(|j| {
+                values
+                    .iter()
+                    .enumerate()
+                    .all(|(c, v)| v[j] == v[i] || (restamped && c == time))
+            })
+    };
+    let mut kept: Vec<usize> = Vec::new();
     for i in 0..rows {
-        let back = last_kept.is_some_and(|j| values[time][i] <= values[time][j]);
+        let back = kept
+            .last()
+            .is_some_and(|&j| values[time][i] <= values[time][j]);
         if back {
-            let repeats = (i.saturating_sub(REPEAT_LOOKBACK)..i)
-                .filter(|&j| keep[j])
-                .any(|j| values.iter().all(|v| v[j] == v[i]));
-            if repeats {
+            if copies(&keep, i) {
                 keep[i] = false;
                 continue;
             }
+            // The copy may be the row before, written under the time this
+            // one then takes again: that row goes, when this one follows
+            // the row before it.
+            let j = kept[kept.len() - 1];
+            let before = kept.len().checked_sub(2).map(|k| kept[k]);
+            if restamped
+                && copies(&keep, j)
+                && before.is_none_or(|b| values[time][i] > values[time][b])
+            {
+                keep[j] = false;
+                kept.pop();
+            }
         }
-        last_kept = Some(i);
+        kept.push(i);
     }
     if keep.iter().all(|&k| k) {
         return Vec::new();
@@ -1791,6 +1823,33 @@ pub fn headerless_width(reader: impl BufRead) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A phone's copies of a sample, as a real phyphox export has them:
+    /// under the same time (dropped), under the time before (the copy
+    /// runs back: dropped), and under the next time, which the next
+    /// sample then takes again (the copy is the row before: dropped, the
+    /// sample kept); a schedule's repeated setting under an earlier time
+    /// is left for the time check.
+    #[test]
+    fn copies_of_a_sample_are_dropped_wherever_their_time_puts_them() {
+        let t = vec![0.0, 0.01, 0.02, 0.02, 0.03, 0.02, 0.04, 0.05, 0.05, 0.07];
+        let a = vec![1.0, 2.0, 3.0, 3.0, 4.0, 4.0, 5.0, 5.0, 6.0, 7.0];
+        let b = vec![9.0, 8.0, 7.0, 7.0, 6.0, 6.0, 5.0, 5.0, 4.0, 3.0];
+        let lines: Vec<u64> = (1..=10).collect();
+        let mut values = vec![t.clone(), a.clone(), b.clone()];
+        let mut kept = lines.clone();
+        let dropped = drop_repeated_rows(&mut values, &mut kept, 0, true);
+        assert_eq!(dropped, vec![4, 6, 8]);
+        assert_eq!(values[0], vec![0.0, 0.01, 0.02, 0.03, 0.04, 0.05, 0.07]);
+        assert_eq!(values[1], vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
+        // A schedule: only the exact copy goes.
+        let mut values = vec![t, a, b];
+        let mut kept = lines;
+        assert_eq!(
+            drop_repeated_rows(&mut values, &mut kept, 0, false),
+            vec![4]
+        );
+    }
 
     #[test]
     fn header_names_with_units() {

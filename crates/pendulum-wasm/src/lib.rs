@@ -14,6 +14,7 @@
 //! The requests and their answers are [`requests`]; a live listener is
 //! held here by a handle between calls.
 
+pub mod lab;
 pub mod requests;
 
 use pendulum_theory::listening::live::LiveListener;
@@ -55,6 +56,23 @@ pub unsafe extern "C" fn pendulum_free(ptr: *mut u8, len: usize) {
 pub unsafe extern "C" fn pendulum_call(ptr: *const u8, len: usize) -> *mut u8 {
     let request = std::slice::from_raw_parts(ptr, len);
     reply(&requests::answer(request))
+}
+
+/// Fits the measurement file of `file_len` bytes at `file` with the
+/// options of the JSON at `request` ([`lab::fit`]).
+///
+/// # Safety
+/// The pointers and lengths must describe memory from [`pendulum_alloc`].
+#[no_mangle]
+pub unsafe extern "C" fn pendulum_fit(
+    request: *const u8,
+    request_len: usize,
+    file: *const u8,
+    file_len: usize,
+) -> *mut u8 {
+    let request = std::slice::from_raw_parts(request, request_len);
+    let file = std::slice::from_raw_parts(file, file_len);
+    reply(&lab::fit(request, file))
 }
 
 /// Listens to `n` samples at `ptr` (32-bit floats), at `sample_rate` Hz,

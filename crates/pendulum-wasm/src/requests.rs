@@ -52,7 +52,8 @@ impl From<Refusal> for Failure {
 }
 
 impl Failure {
-    fn request(message: impl Into<String>) -> Self {
+    /// A refusal of the request itself (its JSON).
+    pub fn request(message: impl Into<String>) -> Self {
         Self {
             field: None,
             flag: None,
@@ -87,7 +88,8 @@ pub struct Gravity {
 }
 
 impl Gravity {
-    fn resolve(&self) -> Result<pendulum_theory::gravity::Resolved, Failure> {
+    /// g, as the command line resolves its flags.
+    pub fn resolve(&self) -> Result<pendulum_theory::gravity::Resolved, Failure> {
         Ok(pendulum_theory::gravity::resolve(
             self.g_m_s2,
             self.latitude_deg,

@@ -6,10 +6,9 @@ use crate::args::FitDecayArgs;
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num};
-use crate::plot::{render, Figure, Panel, Series, Target};
+use crate::plot::{render, Target};
 use crate::work;
-use pendulum_data::fits::{decay, Decay, DecayJson, DecayOptions};
-use pendulum_theory::fitting::decay::{DecayFit, DecayModel};
+use pendulum_data::fits::{decay, DecayJson, DecayOptions};
 use pendulum_theory::fitting::rundown::SECONDS_PER_ROW;
 use pendulum_theory::fitting::turning::Turns;
 
@@ -43,39 +42,26 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
         force: args.read.force,
     };
     let mut spinner = None;
-    let fitted = decay(&opener(&args.file), &options, &mut |rows| {
+    let mut fitted = decay(&opener(&args.file), &options, &mut |rows| {
         spinner = Some(work::Spinner::start(
             format!("fitting {rows} rows"),
             rows as f64 * SECONDS_PER_ROW,
         ));
     })?;
-    let Decay {
-        mut json,
-        time,
-        amplitude,
-        turns,
-    } = fitted;
-    json.turning_points_file = match (&args.turning_points, &turns) {
+    fitted.json.turning_points_file = match (&args.turning_points, &fitted.turns) {
         (Some(path), Some(found)) => Some(write_turns(path, found)?),
         (Some(_), None) => {
             return Err(CliError::flag(
                 "--turning-points",
-                format!("{} holds amplitudes already, not a track", json.file),
+                format!("{} holds amplitudes already, not a track", fitted.json.file),
             ))
         }
         _ => None,
     };
     if let Some(target) = &plot {
-        let analysis = &json.analysis;
-        let best = analysis
-            .fits
-            .iter()
-            .find(|f| Some(f.model.name()) == analysis.preferred);
-        render(
-            target,
-            &figure(&time, &amplitude, &analysis.fits, best.map(|f| f.model)),
-        )?;
+        render(target, &fitted.figure())?;
     }
+    let json = fitted.json;
     drop(spinner);
     if args.json {
         output::json(&json)
@@ -292,57 +278,4 @@ pub fn error_parts(parts: &pendulum_theory::fitting::ErrorParts) -> String {
                  --length-uncertainty"
             .to_string(),
     }
-}
-
-/// The data with every fitted law, and the preferred law's residuals.
-fn figure(time: &[f64], amplitude: &[f64], fits: &[DecayFit], best: Option<DecayModel>) -> Figure {
-    let data: Vec<(f64, f64)> = time
-        .iter()
-        .zip(amplitude)
-        .map(|(t, a)| (*t, a.to_degrees()))
-        .collect();
-    let (t0, t1) = (time[0], time[time.len() - 1]);
-    let mut curves = vec![Series::dots("measured", data)];
-    for f in fits {
-        let curve = (0..=300)
-            .map(|i| {
-                let t = t0 + (t1 - t0) * f64::from(i) / 300.0;
-                (t, f.model.amplitude(t, &f.fit.parameters).to_degrees())
-            })
-            // A law whose amplitude reaches zero has stopped the
-            // pendulum: its curve ends there.
-            .filter(|p: &(f64, f64)| p.1 >= 0.0)
-            .collect();
-        // The preferred law wide and first, the others thin over it (and
-        // dashed where they run along it): each stays visible.
-        if Some(f.model) == best {
-            curves.insert(
-                1,
-                Series::line(format!("{} (preferred)", f.model.name()), curve).strong(),
-            );
-        } else {
-            curves.push(Series::line(f.model.name(), curve).light());
-        }
-    }
-    let mut panels = vec![Panel::new(
-        "Amplitude decay and the fitted laws",
-        crate::plot::TIME_AXIS,
-        "amplitude (°)",
-        curves,
-    )
-    .log_y_beyond(1.5)];
-    if let Some(f) = fits.iter().find(|f| Some(f.model) == best) {
-        let residuals = time
-            .iter()
-            .zip(&f.fit.residuals)
-            .map(|(t, r)| (*t, r.to_degrees()))
-            .collect();
-        panels.push(Panel::new(
-            format!("Residuals of the preferred law ({})", f.model.name()),
-            crate::plot::TIME_AXIS,
-            "measured − fitted (°)",
-            vec![Series::dots("residual", residuals)],
-        ));
-    }
-    Figure { panels }
 }

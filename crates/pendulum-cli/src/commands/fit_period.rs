@@ -4,9 +4,9 @@ use crate::args::FitPeriodArgs;
 use crate::data::ReadOptions;
 use crate::error::CliError;
 use crate::output::{self, num};
-use crate::plot::{render, Figure, Panel, Series, Target};
-use pendulum_data::fits::{periods, PeriodOptions, Periods};
-use pendulum_theory::fitting::period_table::{Against, PeriodTable};
+use crate::plot::{render, Target};
+use pendulum_data::fits::{periods, PeriodOptions};
+use pendulum_theory::fitting::period_table::Against;
 
 pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
     let plot = args
@@ -24,17 +24,11 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
         pendulum_length_standard_error: args.length_uncertainty.map(|l| l.0),
         bob_radius: args.bob_radius.map(|l| l.0),
     };
-    let Periods {
-        json: result,
-        period,
-        amplitude,
-    } = periods(&super::measured::opener(&args.file), &options)?;
+    let fitted = periods(&super::measured::opener(&args.file), &options)?;
     if let Some(target) = &plot {
-        render(
-            target,
-            &figure(&result.analysis, &period, amplitude.as_deref()),
-        )?;
+        render(target, &fitted.figure())?;
     }
+    let result = fitted.json;
     if args.json {
         return output::json(&result);
     }
@@ -97,45 +91,4 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
         ))
     ));
     Ok(out)
-}
-
-/// The periods measured, as points, above the fitted law.
-fn figure(a: &PeriodTable, period: &[f64], amplitude: Option<&[f64]>) -> Figure {
-    let (x, label): (Vec<f64>, &str) = match (a.against, amplitude) {
-        (Against::Length, _) => (a.equivalent_length.clone(), "length (m)"),
-        (_, Some(amp)) => (
-            amp.iter().map(|v| v.to_degrees()).collect(),
-            "amplitude (°)",
-        ),
-        (_, None) => ((1..=period.len()).map(|i| i as f64).collect(), "row"),
-    };
-    let mut order: Vec<usize> = (0..x.len()).collect();
-    order.sort_by(|&i, &j| x[i].total_cmp(&x[j]));
-    let data = order.iter().map(|&i| (x[i], period[i])).collect();
-    let fitted = order.iter().map(|&i| (x[i], a.fitted_period[i])).collect();
-    let residuals = order
-        .iter()
-        .map(|&i| (x[i], (period[i] - a.fitted_period[i]) * 1e3))
-        .collect();
-    let law = match a.against {
-        Against::Length => "fitted: T² = 4π² (L + offset) / g",
-        Against::Amplitude => "fitted: the exact law, T₀ · 2K(sin²(A/2))/π",
-        Against::Repeats => "fitted: their mean",
-    };
-    Figure {
-        panels: vec![
-            Panel::new(
-                "Measured periods and the fitted law",
-                label,
-                "period (s)",
-                vec![Series::dots("measured", data), Series::line(law, fitted)],
-            ),
-            Panel::new(
-                "Residuals",
-                label,
-                "measured − fitted (ms)",
-                vec![Series::dots("residual", residuals)],
-            ),
-        ],
-    }
 }

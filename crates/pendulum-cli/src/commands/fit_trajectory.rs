@@ -7,8 +7,8 @@ use crate::args::FitTrajectoryArgs;
 use crate::error::CliError;
 use crate::file::CsvFile;
 use crate::output::{self, num};
-use crate::plot::{render, Figure, Panel, Series, Target};
-use pendulum_data::fits::{trajectory, Trajectory, TrajectoryOptions};
+use crate::plot::{render, Target};
+use pendulum_data::fits::{trajectory, TrajectoryOptions};
 use pendulum_theory::fitting::tracked::{LengthSource, SECONDS_PER_ROW};
 
 pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
@@ -39,23 +39,18 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         force: args.read.force,
     };
     let mut spinner = None;
-    let Trajectory {
-        json: mut result,
-        values,
-        rate,
-    } = trajectory(&opener(&args.file), &options, &mut |rows| {
+    let mut fitted = trajectory(&opener(&args.file), &options, &mut |rows| {
         spinner = Some(crate::work::Spinner::start(
             format!("fitting {rows} rows"),
             rows as f64 * SECONDS_PER_ROW,
         ));
     })?;
-    let analysis = &result.analysis;
     if let Some(target) = &plot {
-        render(
-            target,
-            &figure(&analysis.time, &values, &analysis.residuals, rate),
-        )?;
+        render(target, &fitted.figure())?;
     }
+    let rate = fitted.rate;
+    let result = &mut fitted.json;
+    let analysis = &result.analysis;
     result.residuals_file = match &args.residuals {
         Some(path) => {
             let header = if rate {
@@ -195,53 +190,4 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         ));
     }
     Ok(out)
-}
-
-/// The tracked angle (or angular velocity) with the fitted curve (the
-/// data less the residuals), and the residuals.
-fn figure(time: &[f64], theta: &[f64], residuals: &[f64], rate: bool) -> Figure {
-    let (title, unit, residual_unit) = if rate {
-        (
-            "Angular velocity and the fitted motion's",
-            "angular velocity (°/s)",
-            "measured − fitted (°/s)",
-        )
-    } else {
-        (
-            "Tracked angle and the fitted motion",
-            "angle (°)",
-            "measured − fitted (°)",
-        )
-    };
-    let deg = |v: f64| v.to_degrees();
-    let data = time.iter().zip(theta).map(|(t, y)| (*t, deg(*y))).collect();
-    let fitted = time
-        .iter()
-        .zip(theta.iter().zip(residuals))
-        .map(|(t, (y, r))| (*t, deg(y - r)))
-        .collect();
-    let res = time
-        .iter()
-        .zip(residuals)
-        .map(|(t, r)| (*t, deg(*r)))
-        .collect();
-    Figure {
-        panels: vec![
-            Panel::new(
-                title,
-                crate::plot::TIME_AXIS,
-                unit,
-                vec![
-                    Series::dots("measured", data),
-                    Series::line("fitted", fitted),
-                ],
-            ),
-            Panel::new(
-                "Residuals",
-                crate::plot::TIME_AXIS,
-                residual_unit,
-                vec![Series::dots("residual", res)],
-            ),
-        ],
-    }
 }

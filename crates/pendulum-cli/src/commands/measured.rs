@@ -32,13 +32,7 @@ pub fn angle_unit(unit: Option<&str>) -> Option<AngleUnit> {
 
 /// `--run N`: at least 1.
 pub fn run(n: Option<u64>) -> Result<Option<usize>, CliError> {
-    match n {
-        Some(0) => Err(CliError::flag(
-            "--run",
-            "must be at least 1 (the first run), got 0",
-        )),
-        n => Ok(n.map(|n| usize::try_from(n).unwrap_or(usize::MAX))),
-    }
+    Ok(n.map(pendulum_data::run_number).transpose()?)
 }
 
 /// `--columns a,b,c` as names.
@@ -47,11 +41,7 @@ pub fn columns(text: Option<&str>) -> Option<Vec<String>> {
 }
 
 fn frame_rate(fps: Option<crate::units::Hertz>) -> Result<Option<f64>, CliError> {
-    fps.map(|f| {
-        pendulum_theory::fitting::track::frame_rate(f.0)
-            .map_err(|e| CliError::flag("--frame-rate", e.reason))
-    })
-    .transpose()
+    Ok(fps.map(|f| pendulum_data::frame_rate(f.0)).transpose()?)
 }
 
 /// `--pivot`, `--y-down` and `--scale`.

@@ -4,34 +4,7 @@
 //! Ranges are worked out in *axis units*: the value itself on a linear
 //! axis, its base-10 logarithm on a log axis, so one rule serves both.
 
-/// How values map onto an axis.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Scale {
-    /// Equal steps for equal differences.
-    Linear,
-    /// Equal steps for equal ratios (a quantity that spans decades);
-    /// values that are not positive cannot be shown.
-    Log,
-}
-
-impl Scale {
-    /// `value` in axis units, or `None` when the axis cannot show it (not
-    /// finite; not positive on a log axis).
-    pub fn to_axis(self, value: f64) -> Option<f64> {
-        match self {
-            Scale::Linear => value.is_finite().then_some(value),
-            Scale::Log => (value.is_finite() && value > 0.0).then(|| value.log10()),
-        }
-    }
-
-    /// The value at `u` axis units.
-    pub fn value_at(self, u: f64) -> f64 {
-        match self {
-            Scale::Linear => u,
-            Scale::Log => 10_f64.powf(u),
-        }
-    }
-}
+pub use pendulum_data::figure::Scale;
 
 /// A closed interval in axis units.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -361,3 +361,41 @@ fn what_the_reader_leaves_out_is_a_warning() {
         .clone();
     assert!(!String::from_utf8(out.stderr).unwrap().contains("warning"));
 }
+
+/// Real Tracker projects (tests/data/real, MIT, from a university lab):
+/// the swing of a 39-inch string with its pivot fitted gives g near
+/// Toronto's (9.805 m/s², within two standard errors), the arc's radius
+/// near the string's length plus the bob's (0.99 m to about 1.02 m); the
+/// 80° run-down's Q is a free pendulum's in air (a few hundred), by a
+/// law that depends on the amplitude.
+#[test]
+fn real_tracker_projects_give_g_and_q() {
+    let real = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/real");
+    let swing = real.join("pendulum_length2.trk");
+    let t = json(&[
+        "fit",
+        "trajectory",
+        swing.to_str().unwrap(),
+        "--pivot",
+        "fit",
+    ]);
+    let g = f(&t["parameters"], "g_m_s2");
+    let se = f(&t["standard_errors"], "g_m_s2");
+    assert!((g - 9.805).abs() < 2.0 * se, "g {g} ± {se}");
+    let radius = f(&t, "track_radius");
+    assert!((0.99..1.03).contains(&radius), "{radius}");
+    assert_eq!(t["format"]["rows"], 152);
+    let run_down = real.join("pendulum_fullPeriod.trk");
+    let d = json(&["fit", "decay", run_down.to_str().unwrap()]);
+    assert_eq!(d["format"]["rows"], 4502);
+    let preferred = d["models"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|m| m["model"] == d["preferred"])
+        .unwrap();
+    let q = f(preferred, "q_factor");
+    assert!((200.0..600.0).contains(&q), "{q}");
+    // An 80° start: the amplitude-dependent laws, not viscous alone.
+    assert_ne!(d["preferred"], "viscous");
+}

@@ -217,6 +217,20 @@ fn a_row_repeated_out_of_time_order_is_dropped_and_named() {
         r["format"]
     );
     assert_eq!(r["points"], 2000);
+    // The copy written under a time of its own that runs back (the
+    // stamp of the row before it, as a real phyphox export has one):
+    // dropped as well.
+    let mut restamped: Vec<String> = rows.clone();
+    let mut cells: Vec<String> = rows[502].split(',').map(str::to_string).collect();
+    cells[0] = rows[501].split(',').next().unwrap().to_string();
+    restamped[502] = cells.join(",");
+    std::fs::write(&path, restamped.join("\n")).unwrap();
+    let r = json(&["fit", "trajectory", path.to_str().unwrap()]);
+    assert_eq!(
+        r["format"]["repeated_rows_dropped"][0], 503,
+        "{}",
+        r["format"]
+    );
     // The same row with its readings changed is a time out of order.
     let mut changed: Vec<String> = rows.clone();
     let mut cells: Vec<&str> = rows[502].split(',').collect();

@@ -389,7 +389,8 @@ function onWorker({ data }) {
     if (mic.gaps.length) {
       const [at, ms] = mic.gaps[0];
       const lost = mic.gaps.reduce((sum, g) => sum + g[1], 0);
-      heard.words.warnings.unshift(`The browser dropped ${fmt(lost, 3)} ms of sound in ${mic.gaps.length} gap(s) (the first at ${fmt(at, 4)} s, ${fmt(ms, 3)} ms): filled with silence of their length, their beats counted as missed.`);
+      const others = data.others.map((p) => `from ${fmt(p.start_s, 4)} s, ${fmt(p.seconds, 3)} s long: ${p.rate_s_per_day === null ? "not read" : `${fmt(p.rate_s_per_day, 4)} s/day`}`);
+      heard.words.warnings.unshift(`The browser lost sound ${mic.gaps.length} time(s) (about ${fmt(lost, 3)} ms by its clock; the first at ${fmt(at, 4)} s, ${fmt(ms, 3)} ms): the listening was cut there and each stretch read on its own. The figures are those of the longest stretch, from ${fmt(data.piece.start_s, 4)} s, ${fmt(data.piece.seconds, 3)} s long; the other stretches: ${others.join("; ")}.`);
     }
     render(heard);
   } else if (data.type === "error") {
@@ -432,7 +433,7 @@ async function startMic() {
     // (Kept at 16 bits for the recording's file: an hour at 48 kHz is
     // 345 MB.)
     mic.parts.push(Int16Array.from(samples, (x) => Math.max(-32768, Math.min(32767, Math.round(x * 32768)))));
-    // (What was fed, for a reader of the page: seconds, and gaps filled.)
+    // (What was fed, for a reader of the page: seconds, and gaps cut.)
     document.body.dataset.micS = mic.heard.toFixed(3);
     document.body.dataset.micGaps = String(mic.gaps.length);
     mic.worker.postMessage({ type: "push", samples }, [samples.buffer]);
@@ -447,10 +448,11 @@ async function startMic() {
         if (done) break;
         const n = frame.numberOfFrames, sr = frame.sampleRate;
         // (Timestamps are µs; a jump of more than a millisecond is a gap.)
+        // The samples either side have no known time between them: the
+        // listener cuts there and starts again (listener-worker.js).
         if (next !== null && frame.timestamp - next > 1000) {
-          const missing = Math.round(((frame.timestamp - next) / 1e6) * sr);
-          mic.gaps.push([mic.heard, (missing / sr) * 1e3]);
-          feed(new Float32Array(missing), sr);
+          mic.gaps.push([mic.heard, (frame.timestamp - next) / 1e3]);
+          mic.worker.postMessage({ type: "gap" });
         }
         next = frame.timestamp + (n / sr) * 1e6;
         const samples = new Float32Array(n);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference Lomb-Scargle periodograms for crates/pendulum-theory/tests/clock_log.rs,
+"""Reference Lomb-Scargle periodograms for crates/pendulum-theory/tests/all/clock_log.rs,
 computed by SciPy's scipy.signal.lombscargle with floating_mean=True (the
 generalised periodogram of Zechmeister & Kuerster 2009: a sinusoid and a
 constant fitted by least squares at each frequency).

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference values for crates/pendulum-theory/tests/oscillating_flow.rs.
+"""Reference values for crates/pendulum-theory/tests/all/oscillating_flow.rs.
 
 1. bessel.csv: the ratio K1(z)/K0(z) of modified Bessel functions of the
    second kind at z = x e^{i pi/4} (the argument of Stokes's oscillating

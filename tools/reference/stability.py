@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference stability statistics for crates/pendulum-theory/tests/stability.rs,
+"""Reference stability statistics for crates/pendulum-theory/tests/all/stability.rs,
 computed by allantools (https://github.com/aewallin/allantools, the
 library the time-and-frequency community checks against Stable32).
 

@@ -1,5 +1,5 @@
 """Values against the mpmath reference files the Rust tests use, to the
-same ulp bounds (crates/pendulum-theory/tests/reference.rs: 4 ulp for K, E
+same ulp bounds (crates/pendulum-theory/tests/all/reference.rs: 4 ulp for K, E
 and the period; 4 ε(|f| + |u f'|) for sn, cn, dn), and against SciPy on
 random arrays."""
 

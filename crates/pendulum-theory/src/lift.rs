@@ -19,7 +19,7 @@
 //! beats), which already includes the circular error; the first-order
 //! formula's error grows as `A²/16` (0.1% at 7°, 1.5% at 30°).
 //!
-//! Accuracy (`tests/reference.rs`, 300 lifts of 0.5° to 12° and amplitudes
+//! Accuracy (`tests/all/reference.rs`, 300 lifts of 0.5° to 12° and amplitudes
 //! up to 182°, mpmath at 40 digits): the crossing fraction to 4.2 ulp, the
 //! amplitude recovered from the exact fraction to 7.6e-16 relative.
 

@@ -50,7 +50,7 @@
 //! in steady flow this is `1 + 1.616 λ/a` against Stokes's drag, within
 //! 12% of Millikan's measured slip correction (Allen and Raabe, J.
 //! Aerosol Sci. 13 (1982) 537) at every Knudsen number (measured in
-//! `tests/oscillating_flow.rs`; worst near λ = a), and the boundary
+//! `tests/all/oscillating_flow.rs`; worst near λ = a), and the boundary
 //! layer's added mass is scaled by the same factor.
 
 use realfft::num_complex::Complex;

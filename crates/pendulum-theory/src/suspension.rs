@@ -72,7 +72,7 @@ use crate::analysis::{require_finite, Refusal};
 /// estimates agree to 2 ulp (16 to 64 points to 90°). Measured error: ε =
 /// 0 is the crate's AGM ([`crate::period::period_ratio`]) within 2 ulp to
 /// 150°; ε = 1 is 1; the small-angle slope is `(1 - ε)/16`; against the
-/// integrated equation of motion within 1e-12 (`tests/suspension.rs`).
+/// integrated equation of motion within 1e-12 (`tests/all/suspension.rs`).
 pub fn period_ratio(amplitude: f64, elastic_share: f64) -> f64 {
     let a = amplitude.abs();
     let e = elastic_share.clamp(0.0, 1.0);

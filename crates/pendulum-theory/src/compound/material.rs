@@ -31,7 +31,7 @@
 /// point 84 mm up inside it; the rod's 1.04 m of fall that the slug's rise
 /// must cancel, `α (1090 - 45.5 - 6) mm = 38.5 mm × 17.3e-6`, gives 0.64e-6,
 /// and the whole design in this crate's model is compensated to 0.0024
-/// s/day per °C at 0.65e-6 (`tests/materials.rs`; the sizes Hall did not
+/// s/day per °C at 0.65e-6 (`tests/all/materials.rs`; the sizes Hall did not
 /// give make it uncertain by about 0.1e-6). Annealed Invar as supplied is 1.2e-6 to 1.6e-6
 /// (Carpenter's Invar 36 datasheet; NIST's cryogenic tables): "invar
 /// annealed", 1.3e-6. Invar's expansion falls as it ages after annealing

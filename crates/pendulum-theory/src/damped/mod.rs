@@ -20,7 +20,7 @@
 //! the seed (and of any text on the damped oscillator, e.g. Thomson &
 //! Dahleh, *Theory of Vibration*, ch. 2), rearranged.
 //!
-//! Accuracy against mpmath at 30 digits (`tests/damped_reference.rs`): a
+//! Accuracy against mpmath at 30 digits (`tests/all/damped_reference.rs`): a
 //! few ulp of `|θ0| + |v0|/ω_n` over `ζ` in `[1e-7, 10]` and several
 //! hundred periods.
 

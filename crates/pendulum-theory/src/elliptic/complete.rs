@@ -10,7 +10,7 @@
 //! Special values: `K(0) = E(0) = π/2`, `K(1) = +inf`, `E(1) = 1`; NaN or `m`
 //! outside `[0, 1]` gives NaN.
 //!
-//! Accuracy (double precision, `tests/reference.rs`, mpmath at 40 digits):
+//! Accuracy (double precision, `tests/all/reference.rs`, mpmath at 40 digits):
 //! `K`: at most 2 ulp over `m` in `[0, 1)` and over amplitudes
 //! `(0, 179.9]` degrees; `E`: at most 3 ulp; `E - k'² K`: at most 4 ulp.
 

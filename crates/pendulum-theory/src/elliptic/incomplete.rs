@@ -8,7 +8,7 @@
 //! series `A^{-1/2} (1 - E₂/10 + E₃/14 + E₂²/24 - 3E₂E₃/44)` finishes.
 //! `F(φ|m) = sin φ R_F(cos²φ, 1 - m sin²φ, 1)` (DLMF 19.25.5).
 //!
-//! Accuracy (`tests/reference.rs`, mpmath at 40 digits, 412 points with
+//! Accuracy (`tests/all/reference.rs`, mpmath at 40 digits, 412 points with
 //! `φ` in `[0, π/2]` and `m` in `[0, 1 - 1e-12]`): at most 3.6 ulp.
 
 /// Carlson's `R_F(x, y, z)` for non-negative arguments, at most one zero

@@ -22,7 +22,7 @@
 //! Special values first: `m = 0` gives `(sin u, cos u, 1)` and `m = 1` gives
 //! `(tanh u, sech u, sech u)` (DLMF 22.5(ii)); NaN in any input gives NaN.
 //!
-//! Accuracy (`tests/reference.rs`, mpmath at 40 digits, `m` over `[0, 1)`
+//! Accuracy (`tests/all/reference.rs`, mpmath at 40 digits, `m` over `[0, 1)`
 //! including `1 - 1e-15`, `|u| <= 60`): each function's error is at most
 //! 4 `ε (|f| + |u f'(u)|)`: a few ulp of the value, plus the unavoidable
 //! sensitivity of a periodic function to an ulp of a large argument.

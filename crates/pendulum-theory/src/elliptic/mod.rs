@@ -17,7 +17,7 @@
 //! | [`jacobi`] | descending Landen / AGM transformation | DLMF 22.20(ii) |
 //! | [`ellipf`] | Carlson's `R_F` by duplication | DLMF 19.25.5, 19.36.1 |
 //!
-//! Accuracy, measured by `tests/reference.rs` against mpmath at 40 digits
+//! Accuracy, measured by `tests/all/reference.rs` against mpmath at 40 digits
 //! (see `tools/reference/`), is stated on each function.
 
 mod agm;

@@ -22,7 +22,7 @@
 //!
 //! Measured: a ±1 ms error turning once a minute in 5 minutes of a seconds
 //! clock at 24 dB is found at 60.0 s, 0.98-1.02 ms; the same clock with
-//! no error shows none on 40 seeds (tests in `tests/doctor.rs`).
+//! no error shows none on 40 seeds (tests in `tests/all/doctor.rs`).
 
 use nalgebra::{DMatrix, DVector};
 use realfft::RealFftPlanner;

@@ -18,7 +18,7 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 /// Computing time of a sample (nonlinear fit with its damping laws), s:
-/// measured over the 200 generated records of `tests/coverage.rs`
+/// measured over the 200 generated records of `tests/all/coverage.rs`
 /// (30 to 685,000 samples, two records at once on two cores): a median of
 /// 170 µs a sample, so about 85 µs on a core of its own; 10% of the records
 /// took more than 800 µs (short high-rate records of large swings, where

@@ -22,14 +22,14 @@
 //!   standard errors): a pendulum in air at a large swing, or on a knife
 //!   edge, decays by neither law alone, and a viscous fit to it misplaces
 //!   the first crest by tens of standard errors and g by up to fifty
-//!   (measured over the generated records of `tests/coverage.rs`).
+//!   (measured over the generated records of `tests/all/coverage.rs`).
 //!
 //! Both are fitted over growing windows: the first four periods, then
 //! twice as long each time, each fit started from the last, the last the
 //! whole record. A long record of large swings, whose period changes by
 //! up to 10% as the amplitude decays, otherwise loses the phase and lands
 //! in a false minimum (issue 23: 78-94° releases over 136-375 s, now within
-//! 3σ of the truth in g, `tests/fitting.rs`); a window too short to
+//! 3σ of the truth in g, `tests/all/fitting.rs`); a window too short to
 //! determine every parameter is passed over.
 //!
 //! A gyroscope's record (angular velocity, [`Observed::AngularVelocity`])

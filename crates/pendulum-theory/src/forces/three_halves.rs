@@ -12,7 +12,7 @@
 //! the first-order averaged law `A(τ) = (A0^{-1/2} + k B τ/(2π))^{-2}`,
 //! `B = ∫_0^π sin^{5/2} = sqrt(π) Γ(7/4)/Γ(9/4)` (within 1e-4 over 200 periods;
 //! measured 6.3e-6, DOP853 and the symplectic method), in
-//! `tests/simulation.rs`.
+//! `tests/all/simulation.rs`.
 
 use super::DragLaw;
 

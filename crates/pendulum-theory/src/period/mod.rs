@@ -12,7 +12,7 @@
 //!   `M² (E - k'²K) / (π k k')` with `M = AGM(1, k')` (DLMF 19.4.1), but
 //!   computed by differentiating the AGM iteration, free of cancellation.
 //!
-//! Measured accuracy against mpmath at 40 digits (`tests/reference.rs`), over
+//! Measured accuracy against mpmath at 40 digits (`tests/all/reference.rs`), over
 //! amplitudes from 1e-8 to 179.9 degrees: the ratio and the period within
 //! 3.2 ulp, the circular error within 3.3 ulp and its slope within 4.7 ulp.
 //!

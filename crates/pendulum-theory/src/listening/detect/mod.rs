@@ -28,7 +28,7 @@
 //!    of the same side draw is a drop sound or a noise burst: dropped,
 //!    counted; a tick timed a ringing period off is moved back.
 //!
-//! Measured on the library's synthetic recordings (tests/listening.rs and
+//! Measured on the library's synthetic recordings (tests/all/listening.rs and
 //! a grid of 36 more seeds; 20 dB, 0.3 s of reverberation, 1,800 to
 //! 72,000 beats per hour, 44.1 and 8 kHz): tick times within 0.01 to
 //! 0.04 ms RMS of the truth, none invented, none missed. In strong noise

@@ -3,7 +3,7 @@
 //! wheel patterns of known size injected into seeded noise, and Q from
 //! amplitudes that decay between impulses as the closed form says.
 
-mod common;
+use crate::common;
 
 use common::records::Rng;
 use common::Reference;

@@ -2,7 +2,7 @@
 //! Littlemore clock (aged Invar with its stainless slug), the classical
 //! zinc tube inside a steel tube, a bob held at its centre.
 
-mod common;
+use crate::common;
 
 use common::parts::{cylinder, part};
 use pendulum_theory::compound::compensate::{compensate, CompensateInput};

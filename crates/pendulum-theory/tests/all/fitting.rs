@@ -394,7 +394,7 @@ mod trajectory {
     /// CI runs the first 30 seeds (`g_coverage_ci_subset`), the 100 are
     /// run before a release with `-- --ignored`.
     #[test]
-    #[ignore = "the 100 seeds of issue 10 (about 3 CPU-minutes): cargo test --release --test fitting -- --ignored"]
+    #[ignore = "the 100 seeds of issue 10 (about 3 CPU-minutes): cargo test --release -p pendulum-theory --test all fitting:: -- --ignored"]
     fn nonlinear_g_coverage_over_100_seeds() {
         let (covered, phases_in_range) = g_coverage(0..100);
         assert!((55..=80).contains(&covered), "coverage {covered}");

@@ -5,7 +5,7 @@
 //! as a pair of doubles `hi + lo`, so errors are measured in ulp of the true
 //! value without rounding the reference first. The allowed errors are in one
 //! table, [`ALLOWED_ULP`]; each test prints the maximum it measured
-//! (`cargo test --test reference -- --nocapture`).
+//! (`cargo test --release -p pendulum-theory --test all reference:: -- --nocapture`).
 
 use pendulum_theory::elliptic::{
     ellip_e_minus_complement_k, ellipe, ellipe_modulus, ellipf, ellipk, ellipk_modulus, jacobi,
@@ -43,7 +43,7 @@ mod allowed {
 }
 use allowed as ALLOWED_ULP;
 
-mod common;
+use crate::common;
 use common::{check_all, ulp_error, Reference, Worst};
 
 #[test]

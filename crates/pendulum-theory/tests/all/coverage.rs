@@ -4,10 +4,10 @@
 //! crest's amplitude with 1σ intervals that cover the truth 55-80% of the
 //! time, or refuses or warns; and never a figure more than 5 standard
 //! errors from the truth without a warning. CI runs a fixed subset of
-//! short records; `cargo test --release --test coverage -- --ignored`
+//! short records; `cargo test --release -p pendulum-theory --test all coverage:: -- --ignored`
 //! runs the 200.
 
-mod common;
+use crate::common;
 
 use common::records::{record, Record};
 use pendulum_theory::analysis::Refusal;
@@ -211,7 +211,7 @@ fn records_whose_damping_law_was_missed() {
 }
 
 #[test]
-#[ignore = "the 200 records of issue 23 (several minutes): cargo test --release --test coverage -- --ignored"]
+#[ignore = "the 200 records of issue 23 (several minutes): cargo test --release -p pendulum-theory --test all coverage:: -- --ignored"]
 fn coverage_200() {
     check(&run(1000..1200, false), true);
 }

@@ -3,7 +3,7 @@
 //! circular error cancels the barometric error on a Westminster-like
 //! pendulum (Denison 1873), a tank at 27 hPa.
 
-mod common;
+use crate::common;
 
 use common::parts::part;
 use pendulum_theory::compound::datasheet::{datasheet, Air};

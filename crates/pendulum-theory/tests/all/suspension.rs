@@ -190,7 +190,7 @@ fn a_strip_clamped_at_both_ends_is_two_bending_lengths_shorter() {
     }
 }
 
-mod common;
+use crate::common;
 use common::parts::{cylinder, part};
 use pendulum_theory::compound::{CompoundPendulum, Placement, Shape};
 

@@ -1,7 +1,7 @@
 //! The exact undamped motion against mpmath, and the integrators against
 //! the exact motion and the closed forms of the linear theory.
 
-mod common;
+use crate::common;
 use common::{check_all, Reference, Worst};
 use pendulum_theory::damping::Damping;
 use pendulum_theory::exact::ExactSwing;

@@ -2,10 +2,10 @@
 //! conversions against mpmath at 40 digits (`tools/reference/make_reference.py`
 //! computes them from the roots of the characteristic equation in complex
 //! arithmetic, a different route from the library's real form).
-//! `cargo test --release --test damped_reference -- --nocapture` prints the
+//! `cargo test --release -p pendulum-theory --test all damped_reference:: -- --nocapture` prints the
 //! worst errors.
 
-mod common;
+use crate::common;
 use common::{check_all, ulp_error, Reference, Worst};
 use pendulum_theory::damped::DampedPendulum;
 use pendulum_theory::damping::Damping;

@@ -15,7 +15,7 @@
 //! the truth in at least 90%, and a log is refused only when it holds
 //! too few readings for a mean rate.
 
-mod common;
+use crate::common;
 
 use common::logs::{generate, Log, LogSpec, BFO, EPOCH};
 use common::records::Rng;
@@ -190,7 +190,7 @@ fn judge(seed: u64) -> Outcome {
 /// The 200 logs, run before a release (several CPU-minutes); CI runs
 /// the first 60 of them to the same thresholds.
 #[test]
-#[ignore = "the 200 logs (about 2 CPU-minutes): cargo test --release --test clock_log -- --ignored"]
+#[ignore = "the 200 logs (about 2 CPU-minutes): cargo test --release -p pendulum-theory --test all clock_log:: -- --ignored"]
 fn two_hundred_logs_of_every_kind() {
     grid(1..=200, true);
 }

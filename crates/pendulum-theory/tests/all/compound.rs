@@ -1,7 +1,7 @@
 //! The real pendulum against closed forms computed here and published
 //! figures (each test names its source).
 
-mod common;
+use crate::common;
 
 use common::parts::part;
 use pendulum_theory::compound::{CompoundPendulum, Material, Part, Placement, Shape};

@@ -25,7 +25,7 @@ adding a flag, a value or a fixture grows every family it belongs to):
   run-*     runaway work (huge durations, tiny steps, huge counts)
   late-*    errors found after an output was begun
   advice-*  absurd advice (regulate, train, clock drive files)
-  base-*    the README's examples, which must work
+  base-*    the documented examples, which must work
   misc-*    ranges, lists and words (train counts, --pivot, --columns, ...)
 
 Deterministic: no randomness except random.Random with fixed seeds.
@@ -1397,7 +1397,7 @@ def family_misc():
     add("misc-design-two-files", ["design", "seconds-steel-brass.toml", "invar-lens.toml"], "either")
 
 
-# ---- the README's examples: they must work --------------------------------------
+# ---- the documented examples: they must work ------------------------------------
 
 def family_base():
     base = [

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Example measurement files for the README's `pendulum fit` commands,
+"""Example measurement files for the book's `pendulum fit` commands,
 made with fixed seeds so they never change. Run from the repository root:
 python3 tools/examples/make_example_data.py  (standard library only)."""
 import math

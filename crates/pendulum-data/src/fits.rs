@@ -595,7 +595,13 @@ impl Periods {
     }
 }
 
-/// The data with every fitted law, and the preferred law's residuals.
+/// How many rival laws the decay figure draws beside the preferred one:
+/// more hide it (all are in the JSON and the text's table).
+const RIVALS_DRAWN: usize = 2;
+
+/// The data with the preferred law and its closest rivals (by BIC, each
+/// labelled with how much worse it fits), and the preferred law's
+/// residuals.
 fn decay_figure(
     time: &[f64],
     amplitude: &[f64],
@@ -608,9 +614,8 @@ fn decay_figure(
         .map(|(t, a)| (*t, a.to_degrees()))
         .collect();
     let (t0, t1) = (time[0], time[time.len() - 1]);
-    let mut curves = vec![Series::dots("measured", data)];
-    for f in fits {
-        let curve = (0..=300)
+    let curve_of = |f: &DecayFit| -> Vec<(f64, f64)> {
+        (0..=300)
             .map(|i| {
                 let t = t0 + (t1 - t0) * f64::from(i) / 300.0;
                 (t, f.model.amplitude(t, &f.fit.parameters).to_degrees())
@@ -618,17 +623,23 @@ fn decay_figure(
             // A law whose amplitude reaches zero has stopped the
             // pendulum: its curve ends there.
             .filter(|p: &(f64, f64)| p.1 >= 0.0)
-            .collect();
-        // The preferred law wide and first, the others thin over it (and
-        // dashed where they run along it): each stays visible.
-        if Some(f.model) == best {
-            curves.insert(
-                1,
-                Series::line(format!("{} (preferred)", f.model.name()), curve).strong(),
-            );
-        } else {
-            curves.push(Series::line(f.model.name(), curve).light());
-        }
+            .collect()
+    };
+    let preferred = fits.iter().find(|f| Some(f.model) == best);
+    let mut rivals: Vec<&DecayFit> = fits.iter().filter(|f| Some(f.model) != best).collect();
+    rivals.sort_by(|a, b| a.fit.bic.total_cmp(&b.fit.bic));
+    let mut curves = vec![Series::dots("measured", data)];
+    // The preferred law wide, the rivals thin over it in their own colours
+    // (dashed where they run along it): each stays visible.
+    if let Some(f) = preferred {
+        curves.push(Series::line(format!("{} (preferred)", f.model.name()), curve_of(f)).strong());
+    }
+    for f in rivals.iter().take(RIVALS_DRAWN) {
+        let label = match preferred.map(|p| f.fit.bic - p.fit.bic) {
+            Some(worse) if worse.is_finite() => format!("{} (BIC +{worse:.1})", f.model.name()),
+            _ => f.model.name().to_string(),
+        };
+        curves.push(Series::line(label, curve_of(f)).light());
     }
     let mut panels = vec![Panel::new(
         "Amplitude decay and the fitted laws",
@@ -670,8 +681,8 @@ fn trajectory_figure(time: &[f64], theta: &[f64], residuals: &[f64], rate: bool)
         )
     };
     let deg = |v: f64| v.to_degrees();
-    let data = time.iter().zip(theta).map(|(t, y)| (*t, deg(*y))).collect();
-    let fitted = time
+    let data: Vec<(f64, f64)> = time.iter().zip(theta).map(|(t, y)| (*t, deg(*y))).collect();
+    let fitted: Vec<(f64, f64)> = time
         .iter()
         .zip(theta.iter().zip(residuals))
         .map(|(t, (y, r))| (*t, deg(y - r)))
@@ -681,25 +692,55 @@ fn trajectory_figure(time: &[f64], theta: &[f64], residuals: &[f64], rate: bool)
         .zip(residuals)
         .map(|(t, r)| (*t, deg(*r)))
         .collect();
-    Figure {
-        panels: vec![
-            Panel::new(
-                title,
-                TIME_AXIS,
-                unit,
-                vec![
-                    Series::dots("measured", data),
-                    Series::line("fitted", fitted),
-                ],
-            ),
-            Panel::new(
-                "Residuals",
-                TIME_AXIS,
-                residual_unit,
-                vec![Series::dots("residual", res)],
-            ),
-        ],
-    }
+    let motion = |name: &str, from: f64, to: f64| {
+        let within = |p: &&(f64, f64)| p.0 >= from && p.0 <= to;
+        Panel::new(
+            name,
+            TIME_AXIS,
+            unit,
+            vec![
+                Series::dots("measured", data.iter().filter(within).copied().collect()),
+                Series::line("fitted", fitted.iter().filter(within).copied().collect()),
+            ],
+        )
+    };
+    // A long record's swings drawn whole are a band of points over the
+    // curve: its first and last swings are drawn instead, where the fit
+    // can be seen against them.
+    let mut panels = match swing_period(&fitted) {
+        Some(period) if time[time.len() - 1] - time[0] > SWINGS_SHOWN * period * 3.0 => {
+            let (t0, t1) = (time[0], time[time.len() - 1]);
+            let span = SWINGS_SHOWN * period;
+            vec![
+                motion(&format!("{title}: the first swings"), t0, t0 + span),
+                motion(&format!("{title}: the last swings"), t1 - span, t1),
+            ]
+        }
+        _ => vec![motion(title, f64::NEG_INFINITY, f64::INFINITY)],
+    };
+    panels.push(Panel::new(
+        "Residuals",
+        TIME_AXIS,
+        residual_unit,
+        vec![Series::dots("residual", res)],
+    ));
+    Figure { panels }
+}
+
+/// How many periods of a long record's start and end the trajectory
+/// figure draws.
+const SWINGS_SHOWN: f64 = 3.0;
+
+/// The period of a fitted motion from its upward crossings of its mean
+/// (none with fewer than three crossings).
+fn swing_period(curve: &[(f64, f64)]) -> Option<f64> {
+    let mean = curve.iter().map(|p| p.1).sum::<f64>() / curve.len() as f64;
+    let ups: Vec<f64> = curve
+        .windows(2)
+        .filter(|w| w[0].1 < mean && w[1].1 >= mean)
+        .map(|w| w[1].0)
+        .collect();
+    (ups.len() >= 3).then(|| (ups[ups.len() - 1] - ups[0]) / (ups.len() - 1) as f64)
 }
 
 /// The periods measured, as points, above the fitted law.

@@ -8,7 +8,9 @@
 
 pub mod figure;
 pub mod fits;
+pub mod lab;
 pub mod measured;
+pub mod request;
 pub mod table;
 pub mod tracker;
 pub mod units;

@@ -1383,8 +1383,28 @@ fn compensate(
 }
 
 /// The extension module behind the `pendulum_theory` package.
+/// The `pendulum` command on `argv` (its name first), as the binary
+/// runs it: its output on the process's standard output and error, its
+/// exit status returned. The package's console script calls it once per
+/// process (it installs the process's Ctrl-C handler).
+#[pyfunction]
+fn cli(py: Python<'_>, argv: Vec<std::ffi::OsString>) -> u8 {
+    py.detach(|| pendulum_cli::run(argv))
+}
+
+/// A measurement file's bytes fitted as `pendulum fit decay|trajectory|
+/// period FILE --json` fits it, the options a JSON request (the page's
+/// lab's keys: `pendulum_data::lab`); the reply is JSON, `{"ok": …,
+/// "figure": …, "warnings": …, "notes": …}` or `{"error": …}`.
+#[pyfunction]
+fn fit_file(py: Python<'_>, request: &str, bytes: &[u8]) -> String {
+    py.detach(|| pendulum_data::lab::fit(request.as_bytes(), bytes))
+}
+
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(cli, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_file, m)?)?;
     m.add(
         "STANDARD_GRAVITY",
         pendulum_theory::pendulum::STANDARD_GRAVITY,

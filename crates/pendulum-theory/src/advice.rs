@@ -11,7 +11,7 @@
 //!   the nut up the rod and raises the bob.
 //! * Setting in beat: the escapement's offset `δ` from the pendulum's rest
 //!   that gives the measured beat error, from the model of
-//!   [`crate::clock::escapement::out_of_beat`] inverted: a harmonic swing
+//!   [`crate::clock::escapement::OutOfBeat`] inverted: a harmonic swing
 //!   of amplitude `A` whose beats fall at the lift's edges `δ ± h` (`h`
 //!   half the lift angle) has the beat error
 //!   `(asin((δ − h)/A) + asin((δ + h)/A)) / ω`, `ω = π / b`. The longer

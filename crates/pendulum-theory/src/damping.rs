@@ -53,6 +53,20 @@ impl Damping {
     }
 
     /// From the quality factor `Q > 0`: `ζ = 1/(2Q)`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use pendulum_theory::damping::Damping;
+    ///
+    /// // A good regulator, Q = 10,000: ζ = 1/(2Q), and a logarithmic decrement
+    /// // per period of 2πζ/√(1 - ζ²).
+    /// let d = Damping::from_q(10_000.0)?;
+    /// assert_eq!(d.zeta(), 5e-5);
+    /// let delta = std::f64::consts::TAU * 5e-5 / (1.0 - 25e-10_f64).sqrt();
+    /// assert!((d.log_decrement().unwrap() - delta).abs() < 1e-18);
+    /// # Ok::<(), pendulum_theory::InputError>(())
+    /// ```
     pub fn from_q(q_factor: f64) -> Result<Self, InputError> {
         let q = require_positive(Quantity::QualityFactor, q_factor)?;
         Self::derived(Quantity::QualityFactor, q, 0.5 / q)

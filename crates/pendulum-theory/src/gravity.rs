@@ -35,6 +35,20 @@ pub const MAX_HEIGHT_M: f64 = 100_000.0;
 /// The formula is evaluated in double precision with no cancellation, so
 /// the result carries 2 ulp of rounding; the model itself is good to about
 /// 1e-4 m/s² (anomalies), which is what a user should quote.
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::gravity::normal_gravity;
+///
+/// // WGS 84's normal gravity at the equator (γ_e) and at the poles (γ_p).
+/// assert!((normal_gravity(0.0, 0.0)? - 9.780_325_335_9).abs() < 1e-12);
+/// assert!((normal_gravity(90.0, 0.0)? - 9.832_184_937_9).abs() < 1e-10);
+/// // 1000 m up, the free-air gradient takes 3.086 mm/s² off.
+/// let drop = normal_gravity(45.0, 0.0)? - normal_gravity(45.0, 1000.0)?;
+/// assert!((drop - 3.086e-3).abs() < 1e-12);
+/// # Ok::<(), pendulum_theory::InputError>(())
+/// ```
 pub fn normal_gravity(latitude_deg: f64, height_m: f64) -> Result<f64, InputError> {
     let lat = require_finite(Quantity::Latitude, latitude_deg)?;
     if !(-90.0..=90.0).contains(&lat) {

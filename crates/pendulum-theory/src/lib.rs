@@ -12,7 +12,7 @@
 //!   use: `c`, `ζ`, `Q`, logarithmic decrement, decay time.
 //! * [`damped`]: the damped linear pendulum's free vibration in all three
 //!   regimes, its turning points and the amplitude it loses per period.
-//! * [`friction`]: dry (Coulomb) friction on top of viscous damping (book
+//! * [`damped::friction`]: dry (Coulomb) friction on top of viscous damping (book
 //!   section 2-4): linear decay and the stop.
 //! * [`energy`]: stored energy, losses, power, and the impulse per beat an
 //!   escapement must give.

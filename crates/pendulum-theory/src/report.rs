@@ -153,6 +153,22 @@ impl Observer for Turns<'_> {
 /// The report of `input`. `proceed` is asked now and then during the
 /// run-down; when it answers false the report is refused as interrupted
 /// (the command line's Ctrl-C).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::report::{report, ReportInput};
+///
+/// // A seconds pendulum of Q = 1000 at the default 3°: the run-down lasts
+/// // until the swing halves, ln 2 / (ζ ω_n) with ζ = 1/(2Q): 441 s.
+/// let damping = Some(("q".to_string(), 1000.0));
+/// let input = ReportInput { length: Some(0.99362), damping, ..Default::default() };
+/// let r = report(&input, &mut || true)?;
+/// let half_life = std::f64::consts::LN_2 * 2.0 * 1000.0 / (9.80665_f64 / 0.99362).sqrt();
+/// assert!((r.rundown.wanted_s - half_life).abs() < 1e-9);
+/// assert!((r.rundown.final_amplitude_rad / 3f64.to_radians() - 0.5).abs() < 1e-3);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<Report, Refusal> {
     let g = input.g;
     let (length, sheet, design_mass) = match (&input.design, input.length) {

@@ -469,6 +469,23 @@ pub fn at(station: Station, times: &[f64], force: bool) -> Result<Vec<TideRow>, 
 /// 1900–2100, and more than [`MAX_ROWS`]; a table whose work
 /// ([`work_seconds`]) is more than a few seconds (3·10⁵ rows, or a row a
 /// month or fewer over decades) needs `force`.
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::tide::{series, Station};
+///
+/// // A day of the body tide at Greenwich, hourly from 2024-01-01 00:00 UTC.
+/// let greenwich = Station { latitude_deg: 51.4779, longitude_deg: 0.0, height_m: 46.0 };
+/// let rows = series(greenwich, 1_704_067_200.0, 1_704_153_600.0, 3600.0, false)?;
+/// assert_eq!(rows.len(), 25);
+/// let dg = rows.iter().map(|r| r.gravity_change_nm_s2);
+/// let range = dg.clone().fold(f64::MIN, f64::max) - dg.fold(f64::MAX, f64::min);
+/// // A tide's range is a few µm/s² at most; a pendulum's rate is Δg/2g of a day.
+/// assert!(range > 500.0 && range < 3500.0);
+/// assert!(rows.iter().all(|r| r.rate_s_per_day.abs() < 0.02));
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn series(
     station: Station,
     from: f64,

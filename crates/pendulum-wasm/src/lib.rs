@@ -14,7 +14,7 @@
 //! The requests and their answers are [`requests`]; a live listener is
 //! held here by a handle between calls.
 
-pub mod lab;
+use pendulum_data::lab;
 pub mod requests;
 
 use pendulum_theory::listening::live::LiveListener;

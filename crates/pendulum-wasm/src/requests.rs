@@ -5,7 +5,8 @@
 //! units their keys name (`length_m`, `amplitude_deg`); a key the request
 //! does not know is refused, as an unknown flag is.
 
-use pendulum_theory::analysis::{Place, Refusal};
+pub use pendulum_data::request::{reply_of, Failure, Gravity};
+use pendulum_theory::analysis::Refusal;
 use pendulum_theory::compound::regulate::{regulate, Nut, Regulated};
 use pendulum_theory::damped::analysis::{damped, Damped, DampedInput};
 use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput, Listening, Oscillator};
@@ -16,87 +17,6 @@ use pendulum_theory::period::table::{table, Amplitudes, PeriodInput, PeriodRow};
 use pendulum_theory::period::Nominal;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
-
-/// What went wrong, as the command line says it.
-#[derive(Debug, PartialEq, Serialize)]
-pub struct Failure {
-    /// The request's key it is about (none: the data as a whole).
-    pub field: Option<String>,
-    /// The command line's flag for it.
-    pub flag: Option<String>,
-    /// The command line's sentence, without its `error: `.
-    pub message: String,
-}
-
-impl From<Refusal> for Failure {
-    fn from(r: Refusal) -> Self {
-        match r.place {
-            Place::Field(field) | Place::Sample(field, _) => {
-                let flag = format!("--{}", field.replace('_', "-"));
-                Self {
-                    field: Some(field.to_string()),
-                    message: match r.place {
-                        Place::Sample(_, i) => format!("{flag}: sample {i}: {}", r.reason),
-                        _ => format!("{flag}: {}", r.reason),
-                    },
-                    flag: Some(flag),
-                }
-            }
-            Place::Data => Self {
-                field: None,
-                flag: None,
-                message: r.reason,
-            },
-        }
-    }
-}
-
-impl Failure {
-    /// A refusal of the request itself (its JSON).
-    pub fn request(message: impl Into<String>) -> Self {
-        Self {
-            field: None,
-            flag: None,
-            message: message.into(),
-        }
-    }
-}
-
-/// A reply: `{"ok": …}` or `{"error": …}`.
-pub fn reply_of<T: Serialize>(result: Result<T, Failure>) -> String {
-    let value = match result {
-        Ok(ok) => serde_json::to_value(ok).map(|ok| serde_json::json!({ "ok": ok })),
-        Err(error) => serde_json::to_value(error).map(|e| serde_json::json!({ "error": e })),
-    };
-    value.map_or_else(
-        |e| {
-            format!(
-                r#"{{"error":{{"field":null,"flag":null,"message":"could not encode JSON: {e}"}}}}"#
-            )
-        },
-        |v| v.to_string(),
-    )
-}
-
-/// Where g comes from, as `--g`, `--latitude` and `--height` give it.
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Gravity {
-    pub g_m_s2: Option<f64>,
-    pub latitude_deg: Option<f64>,
-    pub height_m: Option<f64>,
-}
-
-impl Gravity {
-    /// g, as the command line resolves its flags.
-    pub fn resolve(&self) -> Result<pendulum_theory::gravity::Resolved, Failure> {
-        Ok(pendulum_theory::gravity::resolve(
-            self.g_m_s2,
-            self.latitude_deg,
-            self.height_m,
-        )?)
-    }
-}
 
 /// One request, named by its `command`.
 #[derive(Debug, Deserialize)]

@@ -372,6 +372,12 @@ pub(crate) fn adev_bars(rows: &[StabilityRow]) -> Vec<(f64, f64, f64, f64)> {
         .collect()
 }
 
+/// A deviation axis's title: the fractional frequency, and what it is
+/// in seconds a day (a clockmaker's unit: 10⁻⁵ of a day is 0.864 s).
+pub(crate) fn deviation_axis(name: &str) -> String {
+    format!("{name} (fractional frequency; 10⁻⁵ = 0.864 s/day)")
+}
+
 /// The deviations against τ, log–log, the Allan deviation's interval as
 /// a bar on its point (none where a periodic signal rules).
 fn figure(s: &Stability) -> Figure {
@@ -384,7 +390,7 @@ fn figure(s: &Stability) -> Figure {
     let panel = Panel::new(
         "Frequency stability",
         "averaging time τ (s)",
-        "deviation (fractional frequency)",
+        deviation_axis("deviation"),
         vec![
             Series::line("MDEV", pick(&|r| r.mdev)).colored(1).light(),
             Series::line("HDEV", pick(&|r| r.hdev)).colored(2).light(),

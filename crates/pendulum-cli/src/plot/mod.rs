@@ -161,13 +161,15 @@ pub fn render(target: &Target, figure: &Figure) -> Result<String, CliError> {
                 .map_err(fail)?;
                 root.present().map_err(|e| fail(e.to_string()))?;
             }
-            let image = image::RgbImage::from_raw(w, h, pixels)
-                .ok_or_else(|| fail("the pixel buffer has the wrong size".into()))?;
-            let mut png = std::io::Cursor::new(Vec::new());
-            image
-                .write_to(&mut png, image::ImageOutputFormat::Png)
+            let mut png = Vec::new();
+            let mut encoder = png::Encoder::new(&mut png, w, h);
+            encoder.set_color(png::ColorType::Rgb);
+            encoder.set_depth(png::BitDepth::Eight);
+            encoder
+                .write_header()
+                .and_then(|mut writer| writer.write_image_data(&pixels))
                 .map_err(|e| fail(e.to_string()))?;
-            png.into_inner()
+            png
         }
     };
     let mut file = AtomicFile::create(&target.path, target.flag)?;

@@ -4,7 +4,7 @@
 //! offset `ω b A / 2` to first order) and its directions as a clockmaker
 //! reads them.
 
-use crate::util::{f, json, pendulum, refuses, text};
+use crate::util::{docs_files, f, json, pendulum, refuses, text};
 use std::f64::consts::PI;
 
 fn synth(dir: &std::path::Path, args: &[&str]) -> String {
@@ -192,33 +192,36 @@ fn advice_flags_are_refused_by_name() {
     );
 }
 
-/// The README's listening examples: the lines they show (the warnings,
-/// findings and advice that end the text) are what the binary prints for
-/// the recording the README says, just before, how to make.
+/// The documentation's listening examples: the lines they show (the
+/// warnings, findings and advice that end the text) are what the binary
+/// prints for the recording the same page says, just before, how to make.
 #[test]
-fn the_readme_shows_what_the_binary_says() {
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md")).unwrap();
+fn the_documentation_shows_what_the_binary_says() {
+    let docs = docs_files();
     for tag in ["<!-- advice-example:", "<!-- doctor-example:"] {
-        let start = readme.find(tag).expect("the marker");
-        let block = &readme[start..];
+        let (page, page_text) = docs
+            .iter()
+            .find(|(_, text)| text.contains(tag))
+            .unwrap_or_else(|| panic!("no page of the documentation holds {tag}"));
+        let start = page_text.find(tag).expect("the marker");
+        let block = &page_text[start..];
         let block = &block[block.find("```text\n").unwrap() + 8..];
         let block = &block[..block.find("```").unwrap()];
         // After the command and the "…" that stands for the figures.
         let shown: Vec<&str> = block.lines().skip_while(|l| *l != "…").skip(1).collect();
-        assert!(shown.len() >= 3, "{tag} {block}");
-        let make = readme[..start]
+        assert!(shown.len() >= 3, "{page}: {tag} {block}");
+        let make = page_text[..start]
             .rfind("`pendulum synth ticks clock.wav")
-            .map(|i| &readme[i + 1..])
+            .map(|i| &page_text[i + 1..])
             .and_then(|s| s.find('`').map(|j| &s[..j]))
-            .unwrap();
+            .unwrap_or_else(|| panic!("{page}: no synth ticks command before {tag}"));
         let dir = tempfile::tempdir().unwrap();
         let mut args: Vec<&str> = make.split_whitespace().skip(1).collect();
         let wav = dir.path().join("clock.wav");
         let wav = wav.to_str().unwrap();
         args[2] = wav;
         pendulum().args(&args).assert().success();
-        let marker = &readme[start + tag.len()..];
+        let marker = &page_text[start + tag.len()..];
         let marker = &marker[..marker.find("-->").unwrap()];
         let listen: Vec<&str> = marker
             .split_whitespace()
@@ -226,6 +229,6 @@ fn the_readme_shows_what_the_binary_says() {
             .collect();
         let text = text(&listen);
         let printed: Vec<&str> = text.lines().skip_while(|l| *l != shown[0]).collect();
-        assert_eq!(printed, shown, "{tag}");
+        assert_eq!(printed, shown, "{page}: {tag}");
     }
 }

@@ -1,69 +1,32 @@
-//! Every command the README's code blocks and the `--help` texts show,
-//! run as printed (through `bash`, with `pendulum` on the PATH) from a
-//! copy of the repository's `examples/` and published tables, and its
-//! output checked for what the text around it claims: a number against a
-//! truth computed here (a closed form, the generator's own parameters), a
-//! file written, a model preferred. The commands are collected from the
-//! README and from the help texts themselves, so an example added to
-//! either without an entry here fails the test; an entry no text shows
-//! any more fails it too.
+//! Every command the documentation's code blocks (README.md and the
+//! book's pages, `book/src/**/*.md`: the guides, the topics, the gallery)
+//! and the `--help` texts show, run as printed (through `bash`, with
+//! `pendulum` on the PATH) from a copy of the repository's `examples/` and
+//! published tables, and its output checked for what the text around it
+//! claims: a number against a truth computed here (a closed form, the
+//! generator's own parameters), a file written, a model preferred. The
+//! commands are collected from the documentation and from the help texts
+//! themselves, so an example added to either without an entry here fails
+//! the test; an entry no text shows any more fails it too. The gallery's
+//! commands are here too: each is checked for the figure it draws.
 //!
 //! Commands that need a microphone (`arecord`, `sox -d`, `ffmpeg -f
 //! pulse`) are run with a recording of known truth on standard input in
 //! their place; the set-up lines CI runs itself (`cargo test`, `cargo
-//! install`, `apt-get`, `pip install`) are checked to be in `.ci/run`.
+//! install`, `apt-get`, `pip install`, the page's and the book's builds)
+//! are checked to be in `.ci/run` (or `tools/test`, which it runs).
 
-use crate::util::{decode_png, system_program};
+use crate::util::{decode_png, docs_commands, normalise, repo_root, system_program};
 use serde_json::Value;
 use std::collections::BTreeSet;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::Command;
 
 const DAY: f64 = 86_400.0;
 const G0: f64 = 9.80665;
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
 fn binary() -> PathBuf {
     assert_cmd::cargo::cargo_bin("pendulum")
-}
-
-/// One line of text with its `#` comment and repeated spaces taken out.
-fn normalise(line: &str) -> String {
-    let code = match line.find(" #") {
-        Some(i) => &line[..i],
-        None => line,
-    };
-    code.split_whitespace().collect::<Vec<_>>().join(" ")
-}
-
-/// The commands of the README's `sh` code blocks (continuation lines
-/// joined).
-fn readme_commands() -> Vec<String> {
-    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    let mut commands = Vec::new();
-    let mut in_block = false;
-    let mut pending = String::new();
-    for line in readme.lines() {
-        if line.starts_with("```") {
-            in_block = line == "```sh";
-            continue;
-        }
-        if !in_block || line.trim_start().starts_with('#') || line.trim().is_empty() {
-            continue;
-        }
-        match line.trim_end().strip_suffix('\\') {
-            Some(head) => pending.push_str(head),
-            None => {
-                pending.push_str(line);
-                commands.push(normalise(&pending));
-                pending.clear();
-            }
-        }
-    }
-    commands
 }
 
 /// The help text of `pendulum PATH… --help`.
@@ -291,7 +254,7 @@ fn week_of_decay(r: &Ran, length: f64) {
 type Check = fn(&Ran);
 
 /// Every example, in the order they run (a later one may read what an
-/// earlier one wrote, as a reader of the README would), with its check.
+/// earlier one wrote, as a reader of the book would), with its check.
 fn examples() -> Vec<(&'static str, Check)> {
     vec![
         ("cargo run --release -- report", |r| {
@@ -435,6 +398,14 @@ fn examples() -> Vec<(&'static str, Check)> {
             },
         ),
         (
+            "pendulum damped --length 0.99362m --amplitude 3deg --q 300 --friction-angle 0.02deg --extrema 40 --plot damped.svg",
+            |r| {
+                // The gallery's damped swing.
+                r.says("Friction angle");
+                r.svg("damped.svg");
+            },
+        ),
+        (
             "pendulum damped --length 1m --amplitude 5deg --zeta 0.05 --trajectory run.csv --duration 60s --sample-interval 10ms",
             |r| {
                 let rows = r.rows("run.csv");
@@ -468,6 +439,24 @@ fn examples() -> Vec<(&'static str, Check)> {
             "pendulum simulate --length 0.994m --amplitude 3 --q 1e6 --duration 1week --method averaged --swings week.csv",
             |r| {
                 week_of_decay(r, 0.994);
+            },
+        ),
+        (
+            "pendulum simulate --length 0.99362m --amplitude 10deg --q 300 --duration 1h --plot rundown.svg",
+            |r| {
+                // The gallery's run-down: 10° decaying as exp(-ω t / 2Q)
+                // over the hour, 19 e-foldings (0.16% off: the first
+                // large swings lose at their own frequency).
+                let end = 10.0 * (-(G0 / 0.99362_f64).sqrt() * 3600.0 / 600.0).exp();
+                let line = r.line("Amplitude");
+                let at_end: f64 = line
+                    .split("release, ")
+                    .nth(1)
+                    .and_then(|t| t.split('°').next())
+                    .and_then(|t| t.parse().ok())
+                    .unwrap_or_else(|| panic!("{line}"));
+                assert!((at_end / end - 1.0).abs() < 0.01, "{line}: against {end}");
+                r.svg("rundown.svg");
             },
         ),
         (
@@ -517,6 +506,13 @@ fn examples() -> Vec<(&'static str, Check)> {
                 let v = r.json();
                 let preferred = v["preferred"].as_str().unwrap();
                 assert!(preferred.contains("quadratic"), "{preferred}");
+            },
+        ),
+        (
+            "pendulum fit decay examples/tracker.txt --plot decay-air.svg",
+            |r| {
+                r.section("<- preferred").says("quadratic");
+                r.svg("decay-air.svg");
             },
         ),
         (
@@ -709,6 +705,10 @@ fn examples() -> Vec<(&'static str, Check)> {
             let adev: f64 = row.split_whitespace().nth(1).unwrap().parse().unwrap();
             assert!((adev / 1e-7 - 1.0).abs() < 0.1, "ADEV(1 h) {adev}");
         }),
+        ("pendulum stability examples/offsets.csv --plot stability.svg", |r| {
+            r.says("white frequency noise: averaging helps as 1/√τ");
+            r.svg("stability.svg");
+        }),
         (
             "pendulum tide --latitude 52.2 --longitude 0.12 --from 2026-01-01 --to 2026-01-03 --every 1h",
             |r| {
@@ -768,11 +768,22 @@ fn examples() -> Vec<(&'static str, Check)> {
                 r.svg("beats.svg");
             },
         ),
+        ("pendulum fit beats examples/beats.csv --bph 3600 --plot beats.svg", |r| {
+            assert!((r.number("Rate") - 4.0).abs() < 0.05);
+            r.svg("beats.svg");
+        }),
         (
             "pendulum fit period crates/pendulum-cli/tests/data/period/silveira1986.csv --length 2.87m",
             |r| {
                 r.says("theory 0.0625");
                 r.says("T0 from the series");
+            },
+        ),
+        (
+            "pendulum fit period crates/pendulum-cli/tests/data/period/silveira1986.csv --length 2.87m --plot amplitude.svg",
+            |r| {
+                r.says("theory 0.0625");
+                r.svg("amplitude.svg");
             },
         ),
         (
@@ -981,6 +992,13 @@ fn examples() -> Vec<(&'static str, Check)> {
             },
         ),
         (
+            "pendulum clock --design examples/seconds-steel-brass.toml --drive 20uJ --duration 1year --every 1day --drive-file examples/spring.csv --plot year.svg",
+            |r| {
+                r.says("365.25 days");
+                r.svg("year.svg");
+            },
+        ),
+        (
             "pendulum clock --design examples/seconds-steel-brass.toml --escapement deadbeat --drive 20uJ --duration 8days --every 1h --drive-file examples/spring.csv --swings run.csv",
             |r| {
                 assert!(r.rows("run.csv").len() >= 8 * 24);
@@ -992,6 +1010,15 @@ fn examples() -> Vec<(&'static str, Check)> {
                 r.says("600 ticks");
             },
         ),
+        ("pendulum listen clock.wav --plot strip.svg", |r| {
+            assert!((r.number("Rate") - 12.0).abs() < 0.05);
+            r.svg("strip.svg");
+        }),
+        ("pendulum listen clock.wav --every 1min --plot windows.svg", |r| {
+            r.says("Every 60 s");
+            assert!((r.number("Mean of 10 windows' rates:") - 12.0).abs() < 0.05);
+            r.svg("windows.svg");
+        }),
         ("pendulum listen clock.wav", |r| {
             assert!((r.number("Rate") - 12.0).abs() < 0.05);
             assert!((r.number("Beat error") - 1.5).abs() < 0.05);
@@ -1069,10 +1096,7 @@ fn examples() -> Vec<(&'static str, Check)> {
 /// The set-up lines that CI runs itself, and what `.ci/run` must hold for
 /// each.
 const RUN_BY_CI: &[(&str, &str)] = &[
-    (
-        "cargo test --workspace --release",
-        "cargo test --workspace --release",
-    ),
+    ("bash tools/test", "bash tools/test"),
     (
         "cargo install --locked --path crates/pendulum-cli",
         "cargo install --locked --path crates/pendulum-cli",
@@ -1090,6 +1114,8 @@ const RUN_BY_CI: &[(&str, &str)] = &[
     ),
     // tests/test_quickstart.py runs it.
     ("python examples/python/quickstart.py", "pytest"),
+    // The book: its reference pages, its gallery, its links.
+    ("bash book/build.sh", "bash book/build.sh"),
 ];
 
 /// The stand-ins for a microphone: a recording of known truth.
@@ -1103,10 +1129,10 @@ const MICROPHONES: &[(&str, &str)] = &[
 ];
 
 #[test]
-fn every_example_in_the_readme_and_the_help_runs_and_says_what_it_claims() {
+fn every_example_in_the_documentation_and_the_help_runs_and_says_what_it_claims() {
     let (from_help, without) = help_commands();
     assert!(without.is_empty(), "help without examples: {without:?}");
-    let shown: BTreeSet<String> = readme_commands().into_iter().chain(from_help).collect();
+    let shown: BTreeSet<String> = docs_commands().into_iter().chain(from_help).collect();
     let examples = examples();
     let known: BTreeSet<String> = examples
         .iter()
@@ -1124,7 +1150,10 @@ fn every_example_in_the_readme_and_the_help_runs_and_says_what_it_claims() {
         "checks of examples no text shows: {stale:#?}"
     );
 
-    let ci = std::fs::read_to_string(root().join(".ci/run")).unwrap();
+    // What CI runs: .ci/run, and tools/test, which it runs for the tests.
+    let ci = [".ci/run", "tools/test"]
+        .map(|f| std::fs::read_to_string(repo_root().join(f)).unwrap())
+        .join("\n");
     for (command, holds) in RUN_BY_CI {
         assert!(
             ci.contains(holds),
@@ -1133,12 +1162,12 @@ fn every_example_in_the_readme_and_the_help_runs_and_says_what_it_claims() {
     }
 
     // The files a reader has: the repository's examples and tables, and
-    // the recordings the README's listening commands start from.
+    // the recordings the documentation's listening commands start from.
     let dir = tempfile::tempdir().unwrap();
     let copy = |from: &str| {
         let to = dir.path().join(from);
         std::fs::create_dir_all(&to).unwrap();
-        for entry in std::fs::read_dir(root().join(from)).unwrap() {
+        for entry in std::fs::read_dir(repo_root().join(from)).unwrap() {
             let entry = entry.unwrap();
             if entry.file_type().unwrap().is_file() {
                 std::fs::copy(entry.path(), to.join(entry.file_name())).unwrap();
@@ -1170,7 +1199,7 @@ fn every_example_in_the_readme_and_the_help_runs_and_says_what_it_claims() {
     ] {
         assert!(sh(setup).status.success(), "{setup}");
     }
-    let ffmpeg = system_program(&["ffmpeg"], "ffmpeg", "the README's M4A examples");
+    let ffmpeg = system_program(&["ffmpeg"], "ffmpeg", "the documentation's M4A examples");
     if let Some(ffmpeg) = &ffmpeg {
         for m4a in ["clock.m4a", "phone.m4a"] {
             let status = Command::new(ffmpeg)

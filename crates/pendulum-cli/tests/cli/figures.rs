@@ -1,19 +1,19 @@
-//! The README's figures (docs/*.png, listed in tools/figures/figures.txt):
-//! drawn again by the binary and compared with the committed files, by
-//! size and by the share of pixels that differ, not byte for byte (a PNG
-//! encoder may pack the same picture differently).
+//! The book's committed figures (book/src/images/*.png, listed in
+//! tools/figures/figures.txt): drawn again by the binary and compared with
+//! the committed files, by size and by the share of pixels that differ,
+//! not byte for byte (a PNG encoder may pack the same picture
+//! differently). The gallery's figures are not committed: the book's
+//! build draws them.
 
-use crate::util::{decode_png, pendulum};
-use std::path::{Path, PathBuf};
+use crate::util::{decode_png, docs_text, pendulum, repo_root};
 
 /// A pixel differs when a channel moves by more than this (of 255).
 const CHANNEL_TOLERANCE: u8 = 32;
 /// The share of differing pixels a regenerated figure may show.
 const PIXEL_SHARE: f64 = 0.002;
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
+/// Where the committed figures are, from the repository's top.
+const IMAGES: &str = "book/src/images";
 
 /// The share of pixels that differ between two pictures of one size.
 fn differing_share(a: &[u8], b: &[u8]) -> f64 {
@@ -31,7 +31,7 @@ fn differing_share(a: &[u8], b: &[u8]) -> f64 {
 
 /// The figures: (file name, arguments).
 fn figures() -> Vec<(String, Vec<String>)> {
-    let list = std::fs::read_to_string(root().join("tools/figures/figures.txt")).unwrap();
+    let list = std::fs::read_to_string(repo_root().join("tools/figures/figures.txt")).unwrap();
     list.lines()
         .map(str::trim)
         .filter(|l| !l.is_empty() && !l.starts_with('#'))
@@ -44,16 +44,16 @@ fn figures() -> Vec<(String, Vec<String>)> {
 }
 
 #[test]
-fn the_readme_figures_are_what_the_binary_draws() {
-    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+fn the_books_figures_are_what_the_binary_draws() {
+    let docs = docs_text();
     let figures = figures();
-    assert!(figures.len() >= 2, "the README shows at least two figures");
+    assert!(figures.len() >= 2, "the book shows at least two figures");
     let dir = tempfile::tempdir().unwrap();
     let mut drawn = Vec::new();
     for (name, args) in &figures {
         assert!(
-            readme.contains(&format!("docs/{name}")),
-            "README.md does not show docs/{name}"
+            docs.contains(&format!("](images/{name})")),
+            "no page of the book shows images/{name}"
         );
         let fresh = dir.path().join(name);
         pendulum()
@@ -63,19 +63,20 @@ fn the_readme_figures_are_what_the_binary_draws() {
             .assert()
             .success();
         let (w, h, new) = decode_png(std::fs::read(&fresh).unwrap());
-        let committed = root().join("docs").join(name);
-        let (cw, ch, old) =
-            decode_png(std::fs::read(&committed).unwrap_or_else(|e| panic!("docs/{name}: {e}")));
+        let committed = repo_root().join(IMAGES).join(name);
+        let (cw, ch, old) = decode_png(
+            std::fs::read(&committed).unwrap_or_else(|e| panic!("{IMAGES}/{name}: {e}")),
+        );
         assert_eq!(
             (w, h),
             (cw, ch),
-            "docs/{name}: size changed; run bash tools/figures/make_figures.sh"
+            "{IMAGES}/{name}: size changed; run bash tools/figures/make_figures.sh"
         );
         let share = differing_share(&new, &old);
         assert!(
             share <= PIXEL_SHARE,
-            "docs/{name}: {:.3}% of the pixels differ from the figure drawn now; \
-             run bash tools/figures/make_figures.sh and commit docs/",
+            "{IMAGES}/{name}: {:.3}% of the pixels differ from the figure drawn now; \
+             run bash tools/figures/make_figures.sh and commit {IMAGES}/",
             100.0 * share
         );
         drawn.push(new);
@@ -91,8 +92,8 @@ fn the_readme_figures_are_what_the_binary_draws() {
 /// with half the recoil.
 #[test]
 fn the_isochronism_sentences_are_what_the_binary_says() {
-    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    let readme = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    let docs = docs_text();
+    let docs = docs.split_whitespace().collect::<Vec<_>>().join(" ");
     let curve = |args: &[String]| -> Vec<(f64, f64)> {
         let out = pendulum().args(args).arg("--json").output().unwrap();
         assert!(out.status.success());
@@ -111,8 +112,8 @@ fn the_isochronism_sentences_are_what_the_binary_says() {
     };
     let says = |text: String| {
         assert!(
-            readme.contains(&text),
-            "README.md should say '{text}' under the isochronism figures"
+            docs.contains(&text),
+            "the book (clock.md) should say '{text}' under the isochronism figures"
         );
     };
     let figures = figures();

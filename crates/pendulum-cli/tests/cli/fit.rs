@@ -298,7 +298,7 @@ fn bad_files_name_the_file_the_line_and_the_column() {
     refuses(&["fit", "trajectory", video.to_str().unwrap()], "line 3");
 }
 
-/// The README's example files give what the README says they hold.
+/// The example files give what the book says they hold (tour.md).
 #[test]
 fn the_example_files_fit_as_documented() {
     let examples = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");

@@ -125,3 +125,102 @@ pub fn system_program(names: &[&str], package: &str, test: &str) -> Option<std::
     }
     found
 }
+
+/// The repository's top folder.
+pub fn repo_root() -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// The documentation: `README.md`, then every page of the book's sources
+/// (`book/src/**/*.md`, sorted by path), each as (path from the
+/// repository's top, text). The reference pages the book's build writes
+/// from the binary's help (`book/src/reference/`) are left out: their
+/// examples are the help's, which the tests read from the binary.
+pub fn docs_files() -> Vec<(String, String)> {
+    fn pages(dir: &std::path::Path, found: &mut Vec<std::path::PathBuf>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                pages(&path, found);
+            } else if path.extension().is_some_and(|e| e == "md") {
+                found.push(path);
+            }
+        }
+    }
+    let root = repo_root();
+    let src = root.join("book/src");
+    let mut found = Vec::new();
+    pages(&src, &mut found);
+    let mut names: Vec<String> = found
+        .iter()
+        .map(|p| {
+            p.strip_prefix(&root)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/")
+        })
+        .filter(|p| !p.starts_with("book/src/reference/"))
+        .collect();
+    names.sort();
+    assert!(
+        names.iter().any(|n| n == "book/src/SUMMARY.md"),
+        "the book's sources: {names:?}"
+    );
+    std::iter::once("README.md".to_string())
+        .chain(names)
+        .map(|name| {
+            let text =
+                std::fs::read_to_string(root.join(&name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+            (name, text)
+        })
+        .collect()
+}
+
+/// The whole documentation as one text, the files in [`docs_files`]'s
+/// order, a blank line between them.
+pub fn docs_text() -> String {
+    docs_files()
+        .into_iter()
+        .map(|(_, text)| text)
+        .collect::<Vec<_>>()
+        .join("\n\n")
+}
+
+/// One line of a command with its `#` comment and repeated spaces taken
+/// out.
+pub fn normalise(line: &str) -> String {
+    let code = match line.find(" #") {
+        Some(i) => &line[..i],
+        None => line,
+    };
+    code.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The commands of the documentation's `sh` code blocks (continuation
+/// lines joined, comment lines and blank lines skipped), in
+/// [`docs_files`]'s order.
+pub fn docs_commands() -> Vec<String> {
+    let mut commands = Vec::new();
+    for (_, text) in docs_files() {
+        let mut in_block = false;
+        let mut pending = String::new();
+        for line in text.lines() {
+            if line.starts_with("```") {
+                in_block = line == "```sh";
+                continue;
+            }
+            if !in_block || line.trim_start().starts_with('#') || line.trim().is_empty() {
+                continue;
+            }
+            match line.trim_end().strip_suffix('\\') {
+                Some(head) => pending.push_str(head),
+                None => {
+                    pending.push_str(line);
+                    commands.push(normalise(&pending));
+                    pending.clear();
+                }
+            }
+        }
+    }
+    commands
+}

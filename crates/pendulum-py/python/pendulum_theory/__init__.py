@@ -20,6 +20,7 @@ An input the library refuses raises ``ValueError`` with its message.
 from __future__ import annotations
 
 import json as _json
+import os as _os
 
 import numpy as _np
 
@@ -46,6 +47,7 @@ __all__ = [
     "fit_decay",
     "fit_beats",
     "fit_period",
+    "fit_file",
     "fit_photogate",
     "fit_trajectory",
     "FitResult",
@@ -86,7 +88,12 @@ def ellipk(m):
     """K(m), the complete elliptic integral of the first kind, in the
     parameter convention (as ``scipy.special.ellipk``): π / (2 AGM(1, √(1-m)))
     (DLMF 19.8.5). Within 4 ulp of mpmath over [0, 1); inf at m = 1; NaN
-    outside [0, 1] (SciPy extends K to m < 0)."""
+    outside [0, 1] (SciPy extends K to m < 0).
+
+    >>> import pendulum_theory as pt
+    >>> pt.ellipk([0.0, 0.5]).round(12).tolist()  # π/2, and K(1/2) = Γ(1/4)²/(4√π)
+    [1.570796326795, 1.854074677301]
+    """
     return _call(_native.ellipk, m)
 
 
@@ -94,39 +101,83 @@ def ellipe(m):
     """E(m), the complete elliptic integral of the second kind (as
     ``scipy.special.ellipe``), by the AGM (DLMF 19.8.6) with Legendre's
     relation above m = 1/2. Within 4 ulp of mpmath over [0, 1]; NaN
-    outside."""
+    outside.
+
+    >>> import pendulum_theory as pt
+    >>> pt.ellipe([0.0, 0.5, 1.0]).round(12).tolist()  # π/2, E(1/2), 1
+    [1.570796326795, 1.350643881048, 1.0]
+    """
     return _call(_native.ellipe, m)
 
 
 def ellipj(u, m):
     """The Jacobi elliptic functions (sn, cn, dn, ph) of ``u`` with
     parameter ``m`` in [0, 1], as ``scipy.special.ellipj`` (ph = am(u)).
-    Descending Landen/AGM (DLMF 22.20); within 4 ε(|f| + |u f'|) of mpmath."""
+    Descending Landen/AGM (DLMF 22.20); within 4 ε(|f| + |u f'|) of mpmath.
+
+    >>> import math
+    >>> import pendulum_theory as pt
+    >>> sn, cn, dn, ph = pt.ellipj(0.5, 1.0)  # at m = 1: tanh, sech, sech, gd
+    >>> round(sn, 12), round(cn, 12), round(dn, 12), round(ph, 12)
+    (0.46211715726, 0.88681888397, 0.88681888397, 0.480381079134)
+    >>> round(math.tanh(0.5), 12), round(2 * math.atan(math.tanh(0.25)), 12)
+    (0.46211715726, 0.480381079134)
+    """
     return _call(_native.ellipj, u, m, outputs=4)
 
 
 def period(length, amplitude, g=STANDARD_GRAVITY):
     """The exact period, s, of a simple pendulum of ``length`` m swinging
     ``amplitude`` rad either side, under ``g`` m/s²: 4 sqrt(l/g)
-    K(sin²(A0/2)) (seed section 1-6). Within 4 ulp of mpmath."""
+    K(sin²(A0/2)) (seed section 1-6). Within 4 ulp of mpmath.
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> # The seconds pendulum (l = g/π²): 2 s at a small swing, 1.18 times
+    >>> # that at 90° (2K(1/2)/π).
+    >>> pt.period(0.99362, np.radians([0.0, 2.0, 90.0])).round(6).tolist()
+    [1.999999, 2.000151, 2.36068]
+    """
     return _call(_native.period, length, amplitude, g)
 
 
 def circular_error_s_per_day(amplitude):
     """The circular error, s/day lost against a vanishing swing: 86400
     (1 - T0/T) at ``amplitude`` rad, without cancellation (about 86400
-    A0²/16 for small swings)."""
+    A0²/16 for small swings).
+
+    >>> import math
+    >>> import pendulum_theory as pt
+    >>> a = math.radians(2.0)
+    >>> round(pt.circular_error_s_per_day(a), 4), round(86400 * a**2 / 16, 4)
+    (6.5797, 6.5797)
+    """
     return _call(_native.circular_error_s_per_day, amplitude)
 
 
 def length_for_period(period, amplitude=0.0, g=STANDARD_GRAVITY):
-    """The length, m, that swings with ``period`` s at ``amplitude`` rad."""
+    """The length, m, that swings with ``period`` s at ``amplitude`` rad.
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> round(pt.length_for_period(2.0), 6)  # g/π²: the seconds pendulum
+    0.993621
+    >>> pt.length_for_period([1.0, 2.0], np.radians(3.0)).round(6).tolist()
+    [0.24832, 0.993281]
+    """
     return _call(_native.length_for_period, period, amplitude, g)
 
 
 def amplitude_for_period(period, length, g=STANDARD_GRAVITY):
     """The amplitude, rad, at which a pendulum of ``length`` m has
-    ``period`` s (at least the small-angle period)."""
+    ``period`` s (at least the small-angle period).
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> t = pt.period(0.99362, np.radians(3.0))  # the period at 3° gives 3° back
+    >>> round(float(np.degrees(pt.amplitude_for_period(t, 0.99362))), 9)
+    3.0
+    """
     return _call(_native.amplitude_for_period, period, length, g)
 
 
@@ -134,7 +185,14 @@ def normal_gravity(latitude, height=0.0):
     """Normal gravity, m/s², at geodetic ``latitude`` degrees and ``height``
     m above the WGS 84 ellipsoid: Somigliana's formula (NIMA TR8350.2
     eq. 4-1) with the free-air gradient -3.086e-6 m/s² per metre, as the
-    CLI's ``gravity``."""
+    CLI's ``gravity``.
+
+    >>> import pendulum_theory as pt
+    >>> pt.normal_gravity([0.0, 45.0, 90.0]).round(7).tolist()  # γ_e, 45°, γ_p
+    [9.7803253, 9.8061978, 9.8321849]
+    >>> round(pt.normal_gravity(45.0, 1000.0) - pt.normal_gravity(45.0), 9)
+    -0.003086
+    """
     return _call(_native.normal_gravity, latitude, height)
 
 
@@ -143,41 +201,90 @@ def _damping(value, what, to):
 
 
 def zeta_from_q(q):
-    """The damping ratio ζ = 1/(2Q)."""
+    """The damping ratio ζ = 1/(2Q).
+
+    >>> import pendulum_theory as pt
+    >>> pt.zeta_from_q([100.0, 10000.0]).tolist()
+    [0.005, 5e-05]
+    """
     return _damping(q, "q", "zeta")
 
 
 def q_from_zeta(zeta):
-    """The quality factor Q = 1/(2ζ) (inf for ζ = 0)."""
+    """The quality factor Q = 1/(2ζ) (inf for ζ = 0).
+
+    >>> import pendulum_theory as pt
+    >>> pt.q_from_zeta([0.005, 0.0]).tolist()
+    [100.0, inf]
+    """
     return _damping(zeta, "zeta", "q")
 
 
 def log_decrement_from_zeta(zeta):
     """The logarithmic decrement per period, 2πζ/√(1-ζ²) (NaN at or above
-    critical damping, where there is no period)."""
+    critical damping, where there is no period).
+
+    >>> import math
+    >>> import pendulum_theory as pt
+    >>> round(pt.log_decrement_from_zeta(0.005), 12)
+    0.031416319242
+    >>> round(2 * math.pi * 0.005 / math.sqrt(1 - 0.005**2), 12)
+    0.031416319242
+    """
     return _damping(zeta, "zeta", "log_decrement")
 
 
 def zeta_from_log_decrement(delta):
-    """The damping ratio from the logarithmic decrement: δ/√(4π² + δ²)."""
+    """The damping ratio from the logarithmic decrement: δ/√(4π² + δ²).
+
+    >>> import pendulum_theory as pt
+    >>> delta = pt.log_decrement_from_zeta([0.001, 0.005])
+    >>> pt.zeta_from_log_decrement(delta).round(12).tolist()
+    [0.001, 0.005]
+    """
     return _damping(delta, "log_decrement", "zeta")
 
 
 def decay_time(zeta, length, g=STANDARD_GRAVITY):
     """The time, s, for the amplitude to fall by e: the slowest time
-    constant, 1/(ζ ω_n) when underdamped."""
+    constant, 1/(ζ ω_n) when underdamped.
+
+    >>> import math
+    >>> import pendulum_theory as pt
+    >>> # Q = 10,000 (ζ = 5e-5) on a seconds pendulum: 1/(ζ ω_n), 1.8 hours.
+    >>> round(pt.decay_time(5e-5, 0.99362), 3)
+    6366.193
+    >>> round(1 / (5e-5 * math.sqrt(9.80665 / 0.99362)), 3)
+    6366.193
+    """
     return _call(_native.decay_time, zeta, length, g)
 
 
 def damped_angle(t, length, amplitude, zeta=0.0, g=STANDARD_GRAVITY):
     """θ(t), rad, of the linear damped pendulum released from rest at
-    ``amplitude`` rad (seed section 1-4, all three regimes)."""
+    ``amplitude`` rad (seed section 1-4, all three regimes).
+
+    >>> import pendulum_theory as pt
+    >>> t = [0.0, 1.0, 2.0]  # the seconds pendulum's turning points
+    >>> pt.damped_angle(t, 0.99362, 0.05).round(6).tolist()
+    [0.05, -0.05, 0.05]
+    >>> pt.damped_angle(t, 0.99362, 0.05, zeta=0.005).round(6).tolist()
+    [0.05, -0.049221, 0.048454]
+    """
     return _call(_native.damped_angle, t, length, amplitude, zeta, g)
 
 
 def exact_angle(t, length, amplitude, g=STANDARD_GRAVITY):
     """θ(t), rad, of the exact undamped pendulum released from rest at
-    ``amplitude`` rad: θ = 2 atan2(k cn(ω_n t), k'), k = sin(A0/2)."""
+    ``amplitude`` rad: θ = 2 atan2(k cn(ω_n t), k'), k = sin(A0/2).
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> a = np.radians(30.0)  # half an exact period on, it is at -30°
+    >>> half = pt.period(0.99362, a) / 2
+    >>> round(float(np.degrees(pt.exact_angle(half, 0.99362, a))), 9)
+    -30.0
+    """
     return _call(_native.exact_angle, t, length, amplitude, g)
 
 
@@ -212,7 +319,17 @@ def simulate(
     Returns ``(time_s, angle_rad, rate_s_per_day, summary)``: every turning
     point's time and signed angle, the rate a clock would keep over the
     half swing that ends there (positive when it gains; NaN at the
-    release), and the CLI's JSON summary as a dict."""
+    release), and the CLI's JSON summary as a dict.
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> t, angle, rate, summary = pt.simulate(0.99362, np.radians(30.0), 5.0)
+    >>> summary["method"], summary["swings"]
+    ('dop853', 4)
+    >>> # Two turning points on: one exact period, 4 √(l/g) K(sin² 15°).
+    >>> round(float(t[2]), 6), round(pt.period(0.99362, np.radians(30.0)), 6)
+    (2.034816, 2.034816)
+    """
     given = [(k, v) for k, v in (("q", q), ("zeta", zeta), ("log_decrement", log_decrement))
              if v is not None]
     if len(given) > 1:
@@ -229,7 +346,15 @@ class FitResult(dict):
     """The result of a fit: a dict with the keys of the CLI's JSON for the
     same fit, and attributes ``.parameters`` and ``.standard_errors`` (of
     the preferred law, or the only one) and ``.preferred`` (its name;
-    ``None`` for beats, which have no competing laws)."""
+    ``None`` for beats, which have no competing laws).
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> t = np.arange(0.0, 600.0, 10.0)
+    >>> r = pt.fit_decay(t, 0.1 * np.exp(-t / 200.0))
+    >>> r.preferred, round(r.parameters["decay_rate_per_s"], 9), r["points"]
+    ('viscous', 0.005, 60)
+    """
 
     def __init__(self, data, parameters, standard_errors, preferred):
         super().__init__(data)
@@ -367,7 +492,18 @@ def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=None,
     the CLI's ``--length-uncertainty``, goes in ``fit_trajectory``'s and
     ``fit_period``'s). Returns the
     CLI's JSON as a dict (points, omega_rad_s, omega_source, models,
-    preferred, warnings), every key and number the same."""
+    preferred, warnings), every key and number the same.
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> # A 2 s pendulum of Q = 500 read every 10 s: A = 0.1 e^(-ζωt), ζ = 1/(2Q).
+    >>> t = np.arange(0.0, 600.0, 10.0)
+    >>> r = pt.fit_decay(t, 0.1 * np.exp(-np.pi * t / 1000.0), period=2.0)
+    >>> r.preferred, round(r.parameters["zeta"], 9)
+    ('viscous', 0.001)
+    >>> round(r["models"][0]["q_viscous"], 6)
+    500.0
+    """
     d = _json.loads(_native.fit_decay(
         _array(time), _array(amplitude), _text(model), _number(period), _number(length),
         _number(g), _number(mass), bool(force)))
@@ -391,7 +527,19 @@ def fit_trajectory(time, angle=None, model="auto", *, angular_velocity=None, len
     ``q_viscous`` the viscous part alone. Returns the CLI's JSON as a
     dict (points, model, model_requested, observed, parameters,
     standard_errors, residual_rms_rad or residual_rms_rad_s,
-    gyroscope_axis, length_m, length_source, warnings)."""
+    gyroscope_axis, length_m, length_source, warnings).
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> # 0.5 m, g = 9.81, ζ = 0.002, released at 0.01 rad, filmed at 50 Hz.
+    >>> w, z = np.sqrt(9.81 / 0.5), 0.002
+    >>> wd = w * np.sqrt(1 - z * z)
+    >>> t = np.arange(1000) / 50.0
+    >>> angle = 0.01 * np.exp(-z * w * t) * (np.cos(wd * t) + z * w / wd * np.sin(wd * t))
+    >>> r = pt.fit_trajectory(t, angle, length=0.5)
+    >>> r["model"], round(r["q_viscous"], 6), round(r.parameters["g_m_s2"], 3)
+    ('linear', 250.0, 9.81)
+    """
     rates = None
     if angular_velocity is not None:
         a = _np.asarray(angular_velocity, dtype=float)
@@ -424,7 +572,16 @@ def fit_beats(time, *, bph=None, period=None, length=None, parts=None, nut_pitch
     the crutch), figured with what is known of the clock: ``length`` (m)
     or a design's ``parts``, the nut's ``nut_pitch`` (m) or ``nut_tpi``,
     ``nut_divisions``, ``crutch`` (m, the crutch pin below the pivot) and
-    ``amplitude`` (rad), as the CLI's flags of those names."""
+    ``amplitude`` (rad), as the CLI's flags of those names.
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> # A seconds clock gaining 1 s a day, every other tick 2 ms late.
+    >>> k = np.arange(600)
+    >>> r = pt.fit_beats(k / (1 + 1 / 86400) + 0.002 * (k % 2), bph=3600)
+    >>> round(r["rate_s_per_day"], 6), round(r["beat_error_ms"], 6)
+    (1.0, 2.0)
+    """
     d = _json.loads(_native.fit_beats(
         _array(time), _number(bph), _number(period),
         **_known(length, parts, nut_pitch, nut_tpi, nut_divisions, crutch, amplitude)))
@@ -442,7 +599,15 @@ def fit_period(period, *, period_standard_error=None, amplitude=None, length=Non
     period``, the same library call. Returns the CLI's JSON as a dict
     (rows, against, weighted, parameters, standard_errors, series,
     residual_rms_s, chi_square, warnings). ``length_uncertainty`` is
-    ``pendulum_length_standard_error`` by the name the other fits use."""
+    ``pendulum_length_standard_error`` by the name the other fits use.
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> length = np.array([0.25, 0.5, 0.75, 1.0])  # T = 2π √(L/g), g = 9.81
+    >>> r = pt.fit_period(2 * np.pi * np.sqrt(length / 9.81), length=length)
+    >>> r["against"], round(r.parameters["g_m_s2"], 9), round(r.parameters["length_offset_m"], 9)
+    ('length', 9.81, 0.0)
+    """
     if length_uncertainty is not None:
         if pendulum_length_standard_error is not None:
             raise ValueError("pendulum_length_standard_error: give it or length_uncertainty, "
@@ -456,6 +621,80 @@ def fit_period(period, *, period_standard_error=None, amplitude=None, length=Non
     return FitResult(d, d["parameters"], d["standard_errors"], None)
 
 
+# fit_file's keywords and the request keys they are (pendulum_data::lab):
+# SI values, each key named with its unit as the command's --json is.
+_FILE_KEYS = {
+    "columns": "columns", "angle_unit": "angle_unit", "frame_rate": "frame_rate_hz",
+    "run": "run", "pivot": "pivot", "y_down": "y_down", "scale": "scale_m",
+    "model": "model", "period": "period_s", "length": "length_m",
+    "length_uncertainty": "length_uncertainty_m", "mass": "mass_kg", "g": "g_m_s2",
+    "latitude": "latitude_deg", "height": "height_m", "start": "from_s", "stop": "to_s",
+    "bob_radius": "bob_radius_m", "force": "force",
+}
+
+
+def fit_file(path, fit, *, columns=None, angle_unit=None, frame_rate=None, run=None,
+             pivot=None, y_down=False, scale=None, model=None, period=None, length=None,
+             length_uncertainty=None, mass=None, g=None, latitude=None, height=None,
+             start=None, stop=None, bob_radius=None, force=False):
+    """Reads a measurement file (a Tracker project or export, a phyphox
+    CSV or workbook, any table the command line reads) and fits it as
+    ``pendulum fit <fit> FILE --json`` does, ``fit`` being ``"decay"``,
+    ``"trajectory"`` or ``"period"``: the same reader and fit (the page's
+    lab's, ``pendulum_data::lab``), the keywords the command's flags in SI
+    units (``length`` m, ``period`` s, ``mass`` kg, ``g`` m/s²,
+    ``frame_rate`` Hz, ``scale`` m; ``latitude`` in degrees, ``height`` m;
+    ``start``/``stop`` s are ``--from``/``--to``; ``pivot`` ``"X,Y"`` in
+    the file's units or ``"fit"``; ``columns`` a list of names or one
+    comma-separated string; ``angle_unit`` ``"deg"`` or ``"rad"``).
+    Returns the command's JSON as a dict, every key and number the same,
+    with two keys beside: ``figure`` (its ``--plot`` as panels of series)
+    and ``notes`` (what the reader left out, which the command says on
+    standard error); ``warnings`` are the sentences the command prints. A refusal raises ``ValueError`` with the
+    command's sentence.
+
+    >>> import pendulum_theory as pt
+    >>> r = pt.fit_file("examples/rundown.csv", "decay", length=0.994)
+    >>> r["file"], r["preferred"] in {m["model"] for m in r["models"]}
+    ('examples/rundown.csv', True)
+    """
+    given = dict(columns=columns, angle_unit=angle_unit, frame_rate=frame_rate, run=run,
+                 pivot=pivot, y_down=y_down, scale=scale, model=model, period=period,
+                 length=length, length_uncertainty=length_uncertainty, mass=mass, g=g,
+                 latitude=latitude, height=height, start=start, stop=stop,
+                 bob_radius=bob_radius, force=force)
+    name = _os.fspath(path)
+    if not isinstance(name, str):
+        name = name.decode()
+    request = {"fit": _text(fit), "file_name": name}
+    for key, value in given.items():
+        if value is None or (key in ("y_down", "force") and value is False):
+            continue
+        if key == "columns" and not isinstance(value, str):
+            value = ",".join(str(c) for c in value)
+        elif key == "pivot" and not isinstance(value, str):
+            value = ",".join(repr(float(v)) for v in value)
+        elif key in ("y_down", "force"):
+            value = bool(value)
+        elif key == "run":
+            value = _count(value)
+        elif key not in ("angle_unit", "model", "pivot", "columns"):
+            value = _number(value)
+        request[_FILE_KEYS[key]] = value
+    try:
+        with open(name, "rb") as f:
+            data = f.read()
+    except OSError as e:
+        raise ValueError(f"{name}: cannot read it: {e.strerror}") from None
+    reply = _json.loads(_native.fit_file(_json.dumps(request), data))
+    if "error" in reply:
+        raise ValueError(reply["error"]["message"])
+    out = reply["ok"]
+    for key in ("figure", "notes"):
+        out[key] = reply[key]
+    return out
+
+
 def fit_photogate(time, *, gate=None, select=None, bob_diameter=None, bph=None, period=None):
     """A light gate's log: event times (s), with each event's ``gate``
     (numbers, one per gate) when it holds several; ``select`` the gate to
@@ -464,7 +703,19 @@ def fit_photogate(time, *, gate=None, select=None, bob_diameter=None, bph=None, 
     against ``bph`` or ``period``), and with ``bob_diameter`` (m) the
     shadows give the bob's speed at the gate. The CLI's ``fit beats`` on a
     gate log, the same library call; returns its JSON as a dict
-    (photogate, beats, mean_beat_s, beat_error_ms, …)."""
+    (photogate, beats, mean_beat_s, beat_error_ms, …).
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> # A bob of 50 mm shadowing the gate for 24 ms, once a second.
+    >>> k = np.arange(1, 301)
+    >>> edges = np.sort(np.concatenate([k - 0.012, k + 0.012]))
+    >>> r = pt.fit_photogate(edges, bob_diameter=0.05, bph=3600)
+    >>> r["photogate"]["passes"], round(r["photogate"]["gate_speed_start_m_s"], 6)
+    (300, 2.083333)
+    >>> round(r["rate_s_per_day"], 6), round(r["beat_error_ms"], 6)
+    (0.0, 0.0)
+    """
     d = _json.loads(_native.fit_photogate(
         _array(time), None if gate is None else _array(gate),
         None if select is None else int(select), _number(bob_diameter), _number(bph),
@@ -526,7 +777,19 @@ def clock(
     and, with ``drive_factor`` (factors) or ``drive_range=(a, b)`` and
     ``steps``, ``isochronism``: one dict per factor, ``stops`` where the
     pendulum stops. A drive too weak raises ValueError ("the pendulum
-    stops: ...")."""
+    stops: ...").
+
+    >>> import math
+    >>> import pendulum_theory as pt
+    >>> # A seconds pendulum, 5 kg, Q = 10,000, deadbeat (the defaults), 20 µJ a beat.
+    >>> s = pt.clock(0.99362, drive_energy=20e-6)["steady"]
+    >>> round(s["amplitude_deg"], 3), round(s["rate_s_per_day"], 3)
+    (2.563, -10.805)
+    >>> # A beat's loss π E/Q, E = m g l (1 - cos A), is what the pallets give.
+    >>> e = 5 * 9.80665 * 0.99362 * (1 - math.cos(s["amplitude_rad"]))
+    >>> round(math.pi * e / 10000 / s["energy_per_beat_j"], 3)
+    1.0
+    """
     result, _ = _clock(length, parts=parts, drive_energy=drive_energy, drive_torque=drive_torque, q=q,
                        escapement=escapement, lift_angle=lift_angle, mass=mass, friction=friction,
                        recoil=recoil, impulse_angle=impulse_angle, every_beats=every_beats,
@@ -554,7 +817,17 @@ def clock_run(length, duration, *, every=None, drive_schedule=None, rate_schedul
     temperature gradient, warmer upwards), and the design's own
     coefficients move the rate. Returns a dict of arrays (time_s, beats,
     amplitude_rad, rate_s_per_day, time_error_s, drive_factor) and the
-    command's ``--json`` object (its ``long_run`` the run's summary)."""
+    command's ``--json`` object (its ``long_run`` the run's summary).
+
+    >>> import pendulum_theory as pt
+    >>> # A day, a row an hour; the clock loses 5 s/day from noon on.
+    >>> rows, result = pt.clock_run(0.99362, 86400.0, every=3600.0, drive_energy=20e-6,
+    ...                             rate_schedule=([0, 43200, 43201], [0, 0, -5]))
+    >>> len(rows["time_s"]), round(float(rows["rate_s_per_day"][-1]), 6)
+    (25, -5.0)
+    >>> round(float(rows["time_error_s"][-1]), 2)  # half a day at -5 s/day
+    -2.5
+    """
     def pairs(schedule):
         if schedule is None:
             return None
@@ -612,7 +885,23 @@ def listen(samples, sample_rate, *, bph=None, period=None, sample_rate_error_ppm
     ``rate_wanders``, ``noisy``, ``clipped``, ``hum``, each with its
     figures), as the command's. Its ``advice`` takes ``length``,
     ``parts``, ``nut_pitch``, ``nut_tpi``, ``nut_divisions``, ``crutch``
-    and ``amplitude`` as :func:`fit_beats` does."""
+    and ``amplitude`` as :func:`fit_beats` does.
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> # 30 s of a seconds clock gaining 12 s a day, 1.5 ms out of beat: a
+    >>> # 3 kHz click a beat in noise, at 44.1 kHz.
+    >>> rate = 44100
+    >>> x = 0.003 * np.random.default_rng(1).standard_normal(30 * rate)
+    >>> n = np.arange(200)
+    >>> click = np.exp(-n / 40) * np.sin(2 * np.pi * 3000 * n / rate)
+    >>> for k in range(29):
+    ...     i = round((0.5 + k / (1 + 12 / 86400) + 0.0015 * (k % 2)) * rate)
+    ...     x[i:i + 200] += click
+    >>> r, ticks = pt.listen(x.astype(np.float32), rate, bph=3600)
+    >>> r["beats"], round(r["rate_s_per_day"], 1), round(r["beat_error_ms"], 1)
+    (29, 12.0, 1.5)
+    """
     result, (time, side, level) = _native.listen(
         _np.ascontiguousarray(samples, dtype=_np.float32), float(sample_rate), _number(bph),
         _number(period), _number(sample_rate_error_ppm), _number(lift_angle),
@@ -630,7 +919,17 @@ def period_table(length, amplitude=None, *, amplitude_range=None, steps=None, g=
     command's ``--json`` keys (period_s, small_angle_period_s,
     period_ratio, beats_per_hour, circular_error, circular_error_s_per_day,
     the power series to ``series_terms`` terms, ...; not its ``g_source``).
-    For arrays of periods use :func:`period`."""
+    For arrays of periods use :func:`period`.
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> r = pt.period_table(0.99362, np.radians(2.0))  # about 86400 A²/16 s/day
+    >>> round(r["period_s"], 6), round(r["circular_error_s_per_day"], 4)
+    (2.000151, 6.5797)
+    >>> rows = pt.period_table(0.99362, amplitude_range=(np.radians(1), np.radians(10)), steps=10)
+    >>> [round(row["amplitude_deg"], 6) for row in rows][:3]
+    [1.0, 2.0, 3.0]
+    """
     span = None if amplitude_range is None else (float(amplitude_range[0]),
                                                  float(amplitude_range[1]))
     return _json.loads(_native.period_table(
@@ -642,7 +941,13 @@ def length(period=None, *, bph=None, amplitude=None, g=None):
     """The command's ``length`` (the same library call): the length for a
     ``period`` (s) or a beat rate ``bph`` at ``amplitude`` (rad, default
     0). Returns its ``--json`` object as a dict (without ``g_source``).
-    For arrays use :func:`length_for_period`."""
+    For arrays use :func:`length_for_period`.
+
+    >>> import pendulum_theory as pt
+    >>> r = pt.length(bph=3600)  # g/π² for a 2 s period
+    >>> round(r["length_m"], 6), r["period_s"]
+    (0.993621, 2.0)
+    """
     return _json.loads(_native.length(_number(period), _number(bph), _number(amplitude),
                                       _number(g)))
 
@@ -652,7 +957,15 @@ def amplitude(length, period, *, period_uncertainty=None, g=None):
     (rad) a pendulum of ``length`` m swings at to keep ``period`` s, its
     conditioning, and with ``period_uncertainty`` (s) its interval.
     Returns its ``--json`` object as a dict (without ``g_source``). For
-    arrays use :func:`amplitude_for_period`."""
+    arrays use :func:`amplitude_for_period`.
+
+    >>> import math
+    >>> import pendulum_theory as pt
+    >>> t = pt.period(0.99362, math.radians(3.0))  # ± 10 µs: the interval
+    >>> r = pt.amplitude(0.99362, t, period_uncertainty=1e-5)
+    >>> round(r["amplitude_deg"], 6), round(math.degrees(r["amplitude_uncertainty_rad"]), 4)
+    (3.0, 0.0438)
+    """
     return _json.loads(_native.amplitude(float(length), float(period),
                                          _number(period_uncertainty), _number(g)))
 
@@ -666,7 +979,17 @@ def damped(length, amplitude, *, zeta=None, q=None, log_decrement=None, decay_ti
     (s) or ``damping_coefficient`` (N s, with ``mass`` kg), dry friction
     ``friction_angle`` rad, the first ``extrema`` turning points. Returns
     its ``--json`` object as a dict. For arrays of angles use
-    :func:`damped_angle`."""
+    :func:`damped_angle`.
+
+    >>> import math
+    >>> import pendulum_theory as pt
+    >>> d = pt.damped(0.99362, 0.05, q=100, extrema=2)
+    >>> d["zeta"], d["regime"]  # ζ = 1/(2Q)
+    (0.005, 'underdamped')
+    >>> # A period on, the swing is e^-δ of itself, δ = 2πζ/√(1 - ζ²).
+    >>> round(d["extrema"][2]["angle_rad"], 9), round(0.05 * math.exp(-d["log_decrement"]), 9)
+    (0.048453602, 0.048453602)
+    """
     return _json.loads(_native.damped(
         float(length), float(amplitude),
         _damping_given(zeta, q, log_decrement, decay_time, damping_coefficient),
@@ -695,7 +1018,17 @@ def report(*, length=None, parts=None, amplitude=None, zeta=None, q=None, log_de
     of ``mass`` kg: the exact period, the damped pendulum and its energy
     budget, the design's datasheet and the nonlinear run-down until the
     amplitude halves. Returns its ``--json`` object as a dict; the
-    run-down's turning points are under ``"rundown_points"`` as arrays."""
+    run-down's turning points are under ``"rundown_points"`` as arrays.
+
+    >>> import math
+    >>> import pendulum_theory as pt
+    >>> # Q = 1000 at 3°: the run-down lasts until the swing halves, ln 2/(ζ ω_n).
+    >>> r = pt.report(length=0.99362, q=1000)
+    >>> round(r["rundown"]["wanted_s"], 6)
+    441.270893
+    >>> round(math.log(2) * 2 * 1000 / math.sqrt(9.80665 / 0.99362), 6)
+    441.270893
+    """
     text, times, amplitudes, rates = _native.report(
         _number(length), None if parts is None else _parts(parts), _number(amplitude),
         _damping_given(zeta, q, log_decrement, decay_time, damping_coefficient), _number(mass),
@@ -713,7 +1046,14 @@ def _counts(values):
 def train(wheels, pinions, *, arbor_turns_per_hour=None, g=None):
     """The command's ``train`` (the same library call): the beats per hour
     of wheels (the last the escape wheel) and pinions, the period and the
-    simple pendulum it needs. Returns its ``--json`` object as a dict."""
+    simple pendulum it needs. Returns its ``--json`` object as a dict.
+
+    >>> import pendulum_theory as pt
+    >>> # Centre wheel 64, third 60, escape wheel 30, pinions of 8.
+    >>> r = pt.train([64, 60, 30], [8, 8])
+    >>> r["beats_per_hour"], r["period_s"], round(r["length_m"], 6)
+    (3600.0, 2.0, 0.993621)
+    """
     return _json.loads(_native.train(_counts(wheels), _counts(pinions),
                                      _number(arbor_turns_per_hour), _number(g)))
 
@@ -721,7 +1061,13 @@ def train(wheels, pinions, *, arbor_turns_per_hour=None, g=None):
 def train_for(bph, *, escape_teeth=None, tolerance=None):
     """The command's ``train --bph``: the trains (centre, third and escape
     wheel, two pinions) that give ``bph`` within ``tolerance``, closest
-    first, as a list of dicts."""
+    first, as a list of dicts.
+
+    >>> import pendulum_theory as pt
+    >>> best = pt.train_for(3600)[0]
+    >>> best["wheels"], best["pinions"], best["beats_per_hour"]
+    ([96, 40, 30], [8, 8], 3600.0)
+    """
     return _json.loads(_native.train_for(
         float(bph), _count(escape_teeth),
         _number(tolerance)))
@@ -762,7 +1108,17 @@ def design(parts, *, g=None, pressure_hpa=None, temperature=None, humidity=None,
     the weather of :func:`clock_run` and :func:`clock_log`), regulated at ``regulated_at`` °C;
     ``pivot_q`` the Q of its pivot's own losses and ``amplitude`` the
     semi-arc (rad) it swings here. Returns its ``--json`` object as a dict
-    (without ``file``)."""
+    (without ``file``).
+
+    >>> import pendulum_theory as pt
+    >>> # A steel rod alone, 1.5 m long, hung by its end: 2l/3 + r²/(2l) = 1 m,
+    >>> # and -86400 α/2 s/day per °C (steel's α is 11.5e-6 per K here).
+    >>> rod = {"name": "rod", "shape": "rod", "material": "steel", "length": 1.5,
+    ...        "diameter": 0.01, "centre": 0.75}
+    >>> d = pt.design([rod])
+    >>> round(d["equivalent_length_m"], 6), round(d["temperature_coefficient_s_per_day_per_c"], 4)
+    (1.000008, -0.4968)
+    """
     humidity = None if humidity is None else _number(humidity) / 100.0
     pressure = None if pressure_hpa is None else _number(pressure_hpa) * 100.0
     return _json.loads(_native.design(_parts(parts), _number(g), pressure,
@@ -780,7 +1136,14 @@ def regulate(rate, *, length=None, parts=None, part=None, nut_pitch=None, nut_tp
     down), in turns and divisions of a nut of ``nut_pitch`` m or
     ``nut_tpi`` threads per inch, or the mass for a tray at ``tray`` m
     below the pivot; or, given only ``bph`` (beats an hour), for the
-    simple pendulum of that beat. Returns its ``--json`` object as a dict."""
+    simple pendulum of that beat. Returns its ``--json`` object as a dict.
+
+    >>> import pendulum_theory as pt
+    >>> # Gaining 10 s a day: lower the bob 2 l × 10/86400, on a 0.5 mm thread.
+    >>> r = pt.regulate(10, length=0.99362, nut_pitch=0.5e-3)
+    >>> round(r["shift_m"] * 1e3, 4), round(r["nut_turns"], 3)
+    (0.23, 0.46)
+    """
     return _json.loads(_native.regulate(
         float(rate), _number(length), None if parts is None else _parts(parts), _text(part),
         _number(nut_pitch), _number(nut_tpi),
@@ -793,7 +1156,24 @@ def compensate(parts, compensator=None, *, part=None, jar_material=None, jar_dia
     temperature coefficient of a design of ``parts`` (see :func:`design`)
     and, with a ``compensator`` (a tube's material such as ``"zinc"``,
     ``"collar"``, ``"gridiron"`` or ``"mercury"``), its size; sizes in
-    metres. Returns its ``--json`` object as a dict."""
+    metres. Returns its ``--json`` object as a dict.
+
+    >>> import pendulum_theory as pt
+    >>> # A brass bob on a steel rod's nut, and the zinc tube that cancels it.
+    >>> parts = [
+    ...     {"name": "rod", "shape": "rod", "material": "steel", "length": 1.1,
+    ...      "diameter": 0.008, "centre": 0.55},
+    ...     {"name": "nut", "shape": "cylinder", "material": "steel", "length": 0.012,
+    ...      "diameter": 0.016, "centre": 1.077, "pitch": 0.7e-3},
+    ...     {"name": "bob", "shape": "cylinder", "material": "brass", "length": 0.14,
+    ...      "diameter": 0.08, "bore": 0.0085, "rests_on": "nut"},
+    ... ]
+    >>> c = pt.compensate(parts, "zinc")
+    >>> round(c["temperature_coefficient_s_per_day_per_c"], 3), round(c["tube_length_m"], 3)
+    (-0.476, 0.706)
+    >>> abs(c["compensated_coefficient_s_per_day_per_c"]) < 1e-9
+    True
+    """
     return _json.loads(_native.compensate(
         _parts(parts), _text(compensator), _text(part), _text(jar_material),
         _number(jar_diameter), _number(jar_wall), _number(tube_diameter), _number(tube_bore)))
@@ -810,8 +1190,17 @@ def stability(data, tau0, *, kind="phase", all_taus=False, force=False, outliers
     missed pulse) are warned of with how much they raise the shortest τ's
     deviation; ``outliers="remove"`` takes them out. A periodic signal
     that dominates some τ is named (``periodic``), its rows without a
-    noise type. Returns a dict (kind, tau0_s, phase_points, rows, best,
-    warnings, periodic)."""
+    noise type. Returns a dict (kind, tau0_s, phase_points, stability: a
+    dict per averaging time, best, warnings, periodic).
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> # A frequency drifting steadily, y = D t: σ_y(τ) = D τ/√2 (SP 1065).
+    >>> s = pt.stability(1e-9 * np.arange(256), 1.0, kind="frequency")
+    >>> row = s["stability"][2]
+    >>> row["tau_s"], round(row["adev"] * 1e9, 9), round(4 / 2**0.5, 9)
+    (4.0, 2.828427125, 2.828427125)
+    """
     return _json.loads(_native.stability(_array(data), float(tau0), str(kind), bool(all_taus),
                                          bool(force), str(outliers)))
 
@@ -822,7 +1211,17 @@ def tide(latitude, longitude, time, *, height=0.0, force=False):
     is estimated at more than a few seconds (300,000 of them, or fewer a
     month or more apart over decades) raise ValueError unless ``force``.
     Returns a dict of arrays: time_unix_s, gravity_change_nm_s2 (positive:
-    g larger) and rate_s_per_day (a pendulum's, +Δg/2g of a day)."""
+    g larger) and rate_s_per_day (a pendulum's, +Δg/2g of a day).
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> # Greenwich, hourly through 2024-01-01 (UTC).
+    >>> r = pt.tide(51.4779, 0.0, 1704067200 + 3600 * np.arange(25), height=46.0)
+    >>> round(float(np.ptp(r["gravity_change_nm_s2"])))  # nm/s², a day's range
+    1323
+    >>> bool(np.all(np.abs(r["rate_s_per_day"]) < 0.02))  # Δg/2g of a day
+    True
+    """
     rows = _json.loads(_native.tide(float(latitude), float(longitude), _array(time),
                                     float(height), bool(force)))
     keys = ["time_unix_s", "gravity_change_nm_s2", "rate_s_per_day"]
@@ -849,7 +1248,18 @@ def clock_log(time, values, *, kind="offset", temperature=None, pressure_hpa=Non
     the log's beat, said; none when the log has no beat). Returns the
     CLI's JSON as a dict (rate_s_per_day, drift_s_per_day_per_day,
     coefficients, standard_errors, terms, temperature_lag_s, stability,
-    residual_stability, spectrum, folds, swing, warnings, advice, …)."""
+    residual_stability, spectrum, folds, swing, warnings, advice, …).
+
+    >>> import numpy as np
+    >>> import pendulum_theory as pt
+    >>> # Nine days of hourly offsets (s): gaining 2 s a day at 20 °C, -0.5 s a
+    >>> # day per °C, the room swinging ±3 °C every three days.
+    >>> w, t = 2 * np.pi / (3 * 86400), 3600.0 * np.arange(216)
+    >>> offset = (2 * t + 1.5 * (np.cos(w * t) - 1) / w) / 86400
+    >>> log = pt.clock_log(t, offset, temperature=20 + 3 * np.sin(w * t))
+    >>> round(log["rate_s_per_day"], 2), round(log["coefficients"]["temperature_s_per_day_per_c"], 2)
+    (2.0, -0.5)
+    """
     def optional(x):
         return None if x is None else _array(x)
     return _json.loads(_native.clock_log(

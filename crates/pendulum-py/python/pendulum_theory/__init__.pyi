@@ -1,3 +1,4 @@
+import os
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -99,6 +100,30 @@ def fit_period(
     bob_radius: Optional[float] = ...,
     length_uncertainty: Optional[float] = ...,
 ) -> FitResult: ...
+def fit_file(
+    path: Union[str, os.PathLike[str]],
+    fit: str,
+    *,
+    columns: Optional[Union[str, Sequence[str]]] = ...,
+    angle_unit: Optional[str] = ...,
+    frame_rate: Optional[float] = ...,
+    run: Optional[int] = ...,
+    pivot: Optional[Union[str, Sequence[float]]] = ...,
+    y_down: bool = ...,
+    scale: Optional[float] = ...,
+    model: Optional[str] = ...,
+    period: Optional[float] = ...,
+    length: Optional[float] = ...,
+    length_uncertainty: Optional[float] = ...,
+    mass: Optional[float] = ...,
+    g: Optional[float] = ...,
+    latitude: Optional[float] = ...,
+    height: Optional[float] = ...,
+    start: Optional[float] = ...,
+    stop: Optional[float] = ...,
+    bob_radius: Optional[float] = ...,
+    force: bool = ...,
+) -> dict[str, Any]: ...
 def clock(
     length: Optional[float] = ...,
     *,

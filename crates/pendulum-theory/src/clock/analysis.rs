@@ -1026,6 +1026,26 @@ fn weather_effect(
 /// long run if asked (planned by [`plan_run`], started in the steady state
 /// of the drive at its start by the closed-form map and regulated to it;
 /// the rows go to `sink`).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::clock::analysis::{analyse, ClockInput, ClockPendulum, NoRows};
+/// use pendulum_theory::clock::escapement::spec::Drive;
+/// use pendulum_theory::{period::circular_error, Amplitude};
+///
+/// // A seconds pendulum given 20 µJ a beat by the defaults: a deadbeat, 5 kg, Q = 10,000.
+/// let mut input = ClockInput::new(ClockPendulum::Length(0.99362));
+/// input.drive = Some(Drive::Energy(20e-6));
+/// let s = analyse(&input, &mut NoRows)?.steady;
+/// // It settles where a beat's loss, π E/Q with E = m g l (1 - cos A), is the
+/// // energy the pallets give (the rest of the 20 µJ goes in their friction).
+/// let e = 5.0 * 9.80665 * 0.99362 * (1.0 - s.amplitude_rad.cos());
+/// assert!((std::f64::consts::PI * e / 10_000.0 / s.energy_per_beat_j - 1.0).abs() < 1e-3);
+/// let a = Amplitude::from_radians(s.amplitude_rad)?;
+/// assert!((s.circular_error_s_per_day - 86_400.0 * circular_error(a)).abs() < 1e-6);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult, Refusal> {
     let built = build(input)?;
     let clock = &built.clock;

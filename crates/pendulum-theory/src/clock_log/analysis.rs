@@ -34,6 +34,29 @@ const DAY: f64 = 86_400.0;
 const SEARCH_KNOTS: usize = 200_000;
 
 /// Analyses a clock's log.
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::clock_log::{analyse, LogColumn, LogInput, LogKind};
+///
+/// // Nine days of hourly offsets (s) of a clock gaining 2 s a day at 20 °C and
+/// // losing 0.5 s a day per °C, its room swinging ±3 °C every three days.
+/// let w = std::f64::consts::TAU / (3.0 * 86_400.0);
+/// let time: Vec<f64> = (0..216).map(|h| 3600.0 * h as f64).collect();
+/// let temperature = time.iter().map(|t| 20.0 + 3.0 * (w * t).sin()).collect();
+/// let offset = time.iter().map(|t| (2.0 * t + 1.5 * ((w * t).cos() - 1.0) / w) / 86_400.0);
+/// let log = analyse(&LogInput {
+///     time_s: time.clone(),
+///     values: offset.collect(),
+///     kind: Some(LogKind::Offset),
+///     columns: vec![LogColumn::new("temperature", temperature)],
+///     ..Default::default()
+/// })?;
+/// assert!((log.coefficients.get("temperature").unwrap() + 0.5).abs() < 1e-3);
+/// assert!((log.rate_s_per_day - 2.0).abs() < 1e-3);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn analyse(input: &LogInput) -> Result<LogResult, Refusal> {
     let mut prepared = prepare(input)?;
     let beat_s = match prepared.kind {

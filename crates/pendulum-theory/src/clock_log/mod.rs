@@ -23,7 +23,7 @@
 //! tide). The residuals are checked against the noise model
 //! ([`checks`]).
 //!
-//! Periodic errors ([`periodic`], [`spectrum`]): the spectrum of what the
+//! Periodic errors (`periodic`, [`spectrum`]): the spectrum of what the
 //! weather, drift and steps leave of the rate, with the tidal lines, the
 //! day and the going train's arbors measured and judged against the noise
 //! around them; the rate folded over each arbor's turn, phased by the

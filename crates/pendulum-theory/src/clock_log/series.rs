@@ -5,7 +5,7 @@
 //! The log's stretches are its intervals: interval `j ≥ 1` runs from
 //! sample `j − 1` to sample `j`; "interval" 0 is the first sample itself
 //! (a rate read at one instant). A bin's rate is a weighted mean of the
-//! clock's rate over its intervals, and its [`Bins::parts`] list the
+//! clock's rate over its intervals, and its `Bins::parts` list the
 //! weights, which sum to one.
 //!
 //! * Offsets: the intervals are given to the bin holding their

@@ -75,6 +75,20 @@ pub struct Regulation {
 /// none is given) and a tray at `tray` m below the pivot (designs only;
 /// default a third of the length, left out of the advice when it cannot
 /// do it unless asked for).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::compound::regulate::{regulate, Nut, Regulated};
+///
+/// // A seconds pendulum gaining 10 s a day, its nut threaded 0.5 mm: T ∝ √l,
+/// // so the bob goes down by 2 l × 10/86400 = 0.23 mm, 0.46 of a turn.
+/// let nut = Nut { pitch: Some(0.5e-3), ..Default::default() };
+/// let r = regulate(&Regulated::Length(0.99362), 10.0, nut, None)?;
+/// assert!((r.shift_m - 2.0 * 0.99362 * 10.0 / 86_400.0).abs() < 1e-6);
+/// assert!((r.nut_turns.unwrap() - r.shift_m / 0.5e-3).abs() < 1e-9);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn regulate(
     pendulum: &Regulated,
     rate: f64,

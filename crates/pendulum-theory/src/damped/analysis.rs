@@ -189,6 +189,29 @@ pub struct Damped {
 }
 
 /// The analysis.
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::damped::analysis::{damped, DampedInput};
+///
+/// // A seconds pendulum of Q = 100 released at 0.05 rad: two turning points.
+/// let d = damped(&DampedInput {
+///     length: 0.99362,
+///     g: None,
+///     amplitude: 0.05,
+///     damping: Some(("q".into(), 100.0)),
+///     friction_angle: None,
+///     mass: None,
+///     extrema: Some(2),
+///     force: false,
+/// })?;
+/// // ζ = 1/(2Q); a period on, the swing is e^-δ of itself, δ = 2πζ/√(1 - ζ²).
+/// let zeta = 1.0 / 200.0_f64;
+/// let delta = std::f64::consts::TAU * zeta / (1.0 - zeta * zeta).sqrt();
+/// assert!((d.extrema[2].angle_rad - 0.05 * (-delta).exp()).abs() < 1e-12);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn damped(input: &DampedInput) -> Result<Damped, Refusal> {
     let g = require_finite("g", input.g.unwrap_or(STANDARD_GRAVITY))?;
     let pendulum = Pendulum::new(input.length, g).map_err(|e| match e.quantity {

@@ -570,6 +570,24 @@ pub fn check_nominal(nominal: Nominal, beat: f64, measured: f64) -> Result<(), R
 }
 
 /// Analyses beat times `time` (s) against `nominal`.
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::fitting::beat_log::analyse;
+/// use pendulum_theory::period::Nominal;
+///
+/// // Ten minutes of a seconds clock gaining 1 s a day (a beat of 1/(1 + 1/86400)
+/// // s), every other tick 2 ms late: the intervals differ by 4 ms.
+/// let beat = 1.0 / (1.0 + 1.0 / 86_400.0);
+/// let time: Vec<f64> = (0..600)
+///     .map(|k| k as f64 * beat + if k % 2 == 1 { 0.002 } else { 0.0 })
+///     .collect();
+/// let b = analyse(&time, Some(Nominal::BeatsPerHour(3600.0)))?;
+/// assert!((b.rate_s_per_day.unwrap() - 1.0).abs() < 1e-6);
+/// assert!((b.beat_error_ms - 2.0).abs() < 1e-6); // half the difference
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn analyse(time: &[f64], nominal: Option<Nominal>) -> Result<Beats, Refusal> {
     let mut log = BeatLog::new(nominal)?;
     for &t in time {

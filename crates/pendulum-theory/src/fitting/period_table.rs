@@ -485,6 +485,26 @@ pub fn gravity_cause(g: f64) -> Option<&'static str> {
 }
 
 /// Fits a period table (see the module notes).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::fitting::period_table::{analyse, Against, PeriodTableInput};
+/// use std::f64::consts::TAU;
+///
+/// // Small-swing periods at four lengths, T = 2π √(L/g) with g = 9.81 m/s².
+/// let length = [0.25, 0.5, 0.75, 1.0];
+/// let period: Vec<f64> = length.iter().map(|l| TAU * (l / 9.81_f64).sqrt()).collect();
+/// let fit = analyse(&PeriodTableInput {
+///     period: &period,
+///     length: Some(&length),
+///     ..Default::default()
+/// })?;
+/// assert_eq!(fit.against, Against::Length);
+/// assert!((fit.parameters["g_m_s2"] - 9.81).abs() < 1e-9);
+/// assert!(fit.parameters["length_offset_m"].abs() < 1e-9);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
     let period = input.period;
     let n = period.len();

@@ -311,6 +311,27 @@ pub(crate) fn pendulum_of(length: f64, g: Option<f64>) -> Result<Pendulum, Refus
 }
 
 /// Analyses a run-down (see the module notes).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::fitting::rundown::{analyse, RunDownInput};
+///
+/// // A 2 s pendulum of Q = 500 read every 10 s: A = 0.1 e^(-ζωt), ζ = 1/(2Q).
+/// let (zeta, omega) = (1.0 / 1000.0, std::f64::consts::PI);
+/// let time: Vec<f64> = (0..60).map(|k| 10.0 * k as f64).collect();
+/// let amplitude: Vec<f64> = time.iter().map(|t| 0.1 * (-zeta * omega * t).exp()).collect();
+/// let fit = analyse(&RunDownInput {
+///     time: &time,
+///     amplitude: &amplitude,
+///     period: Some(2.0),
+///     ..Default::default()
+/// })?;
+/// assert_eq!(fit.preferred, Some("viscous"));
+/// let viscous = fit.models[0].fitted.as_ref().unwrap();
+/// assert!((viscous.q_viscous.unwrap() - 500.0).abs() < 1e-6);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
     let (time, amplitude) = (input.time, input.amplitude);
     check_pairs("time", "amplitude", time, amplitude)?;

@@ -89,7 +89,7 @@ impl EmbeddedPair for Dop853 {
     }
 }
 
-/// Verner's 9(8) pair, whose "interpolant" steps again ([`ReStep`]).
+/// Verner's 9(8) pair, whose "interpolant" steps again (`ReStep`).
 pub struct Vern9;
 
 impl EmbeddedPair for Vern9 {

@@ -213,6 +213,24 @@ pub struct Listening {
 
 /// Listens to samples in memory at `sample_rate` Hz (a whole number of
 /// samples per second), every one a finite number (Python's `listen`).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput};
+/// use pendulum_theory::listening::synth::{synthesize, TickRecording};
+/// use pendulum_theory::period::Nominal;
+///
+/// // A minute of a seconds clock gaining 12 s a day, 1.5 ms out of beat, as
+/// // the library's synthetic recording makes it (44.1 kHz, 30 dB, a room).
+/// let spec = TickRecording { rate_s_per_day: 12.0, beat_error_ms: 1.5, ..TickRecording::DEFAULT };
+/// let recording = synthesize(&spec);
+/// let input = ListenInput { nominal: Some(Nominal::BeatsPerHour(3600.0)), ..Default::default() };
+/// let heard = listen_to_samples(&recording.samples, 44_100.0, &input)?;
+/// assert!((heard.beats.rate_s_per_day.unwrap() - 12.0).abs() < 0.1);
+/// assert!((heard.beats.beat_error_ms - 1.5).abs() < 0.05);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn listen_to_samples(
     samples: &[f32],
     sample_rate: f64,
@@ -1091,7 +1109,7 @@ fn lost_spans(ticks: &[Tick], cuts: &[(f64, f64)], beat: f64, duration: f64) -> 
 /// at 12 dB showed 5.9 dB, noise 1.3 to 1.8).
 pub const HALF_BEAT_MIN_SNR_DB: f64 = 3.0;
 
-/// The onsets' scatter about their line (see [`onset_scatter`]) under
+/// The onsets' scatter about their line (see `onset_scatter`) under
 /// which ticks too faint for [`HALF_BEAT_MIN_SNR_DB`] are still the
 /// clock's, s: the envelope's crests of noise followed in a window of
 /// ±3 to ±4 ms scatter 1.5 to 2.3 ms (a uniform spread's σ); synthetic

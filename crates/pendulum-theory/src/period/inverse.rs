@@ -30,6 +30,20 @@ pub struct LengthResult {
 
 /// The length for `nominal` (a period or a beat rate) at `amplitude` rad
 /// (default 0) under `g` (default standard gravity).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::period::{inverse::length, Nominal};
+/// use std::f64::consts::PI;
+///
+/// // The pendulum that beats seconds (a 2 s period) at a small swing: g/π².
+/// let r = length(Nominal::Period(2.0), None, None)?;
+/// assert!((r.length_m - pendulum_theory::STANDARD_GRAVITY / (PI * PI)).abs() < 1e-12);
+/// assert!((r.length_m - 0.99362).abs() < 1e-5);
+/// assert_eq!(r.beats_per_hour, 3600.0);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn length(
     nominal: Nominal,
     amplitude: Option<f64>,
@@ -115,6 +129,22 @@ pub struct AmplitudeResult {
 /// suspension spring of elastic share `elastic_share` (none or 0: a rigid
 /// pivot) the period is [`crate::suspension::period_ratio`]'s, inverted by
 /// [`amplitude_on_spring`].
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::period::inverse::amplitude;
+/// use pendulum_theory::{Amplitude, Pendulum};
+///
+/// // The period a seconds pendulum keeps at 3° gives 3° back, close to the
+/// // first-order inverse A = 4 √(T/T0 - 1) of T = T0 (1 + A²/16).
+/// let p = Pendulum::with_standard_gravity(0.99362)?;
+/// let period = p.period(Amplitude::from_degrees(3.0)?);
+/// let r = amplitude(0.99362, None, period, None, None)?;
+/// assert!((r.amplitude_deg - 3.0).abs() < 1e-6);
+/// assert!((r.amplitude_rad - 4.0 * (period / r.small_angle_period_s - 1.0).sqrt()).abs() < 1e-5);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn amplitude(
     length: f64,
     g: Option<f64>,

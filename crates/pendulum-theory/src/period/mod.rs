@@ -35,6 +35,20 @@ impl Pendulum {
     /// The exact period at `amplitude`, `T = 4 sqrt(l/g) K(sin²(A0/2))`
     /// (seed section 1-6): the small-angle period times [`period_ratio`];
     /// the same accuracy (at most 4 ulp in the ratio, one rounding more).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use pendulum_theory::{Amplitude, Pendulum};
+    ///
+    /// // The seconds pendulum, l = g/π² = 0.99362 m: 2 s at a small swing.
+    /// let p = Pendulum::with_standard_gravity(0.99362)?;
+    /// assert!((p.period(Amplitude::from_degrees(0.01)?) - 2.0).abs() < 1e-5);
+    /// // At 90° either side the period is 2K(1/2)/π = 1.1803406 times as long.
+    /// let ratio = p.period(Amplitude::from_degrees(90.0)?) / p.small_angle_period();
+    /// assert!((ratio - 1.180_340_599_016).abs() < 1e-11);
+    /// # Ok::<(), pendulum_theory::InputError>(())
+    /// ```
     #[inline]
     pub fn period(&self, amplitude: Amplitude) -> f64 {
         self.small_angle_period() * period_ratio(amplitude)

@@ -280,6 +280,26 @@ fn round_steps(from: f64, to: f64) -> Vec<f64> {
 }
 
 /// The rows of `input`.
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::period::table::{table, Amplitudes, PeriodInput};
+///
+/// // The seconds pendulum swinging 2° either side, under standard gravity.
+/// let a = 2f64.to_radians();
+/// let rows = table(&PeriodInput {
+///     length: 0.99362,
+///     g: None,
+///     amplitudes: Amplitudes::One(a),
+///     series_terms: None,
+///     elastic_share: None,
+/// })?;
+/// assert!((rows[0].small_angle_period_s - 2.0).abs() < 1e-5);
+/// // The circular error, 86400 A²/16 s/day to first order: 6.58 s/day at 2°.
+/// assert!((rows[0].circular_error_s_per_day - 86_400.0 * a * a / 16.0).abs() < 1e-3);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn table(input: &PeriodInput) -> Result<Vec<PeriodRow>, Refusal> {
     let pendulum = pendulum(input.length, input.g, "length")?;
     let terms = input.series_terms.unwrap_or(DEFAULT_SERIES_TERMS.into());

@@ -265,6 +265,28 @@ pub fn method_of(name: &str) -> Result<Method, Refusal> {
 
 /// Checks the inputs and judges the work, before any step (see the
 /// module notes).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::simulation::analysis::{prepare, SimulationInput};
+/// use pendulum_theory::simulation::Silent;
+/// use pendulum_theory::{Amplitude, Pendulum};
+///
+/// // A seconds pendulum released from rest at 30°, undamped, run for one
+/// // exact period, 4 √(l/g) K(sin² 15°) = 2.0348 s: it is back where it began.
+/// let a = Amplitude::from_degrees(30.0)?;
+/// let period = Pendulum::with_standard_gravity(0.99362)?.period(a);
+/// let run = prepare(&SimulationInput {
+///     length: 0.99362, g: None, amplitude: a.radians(), duration: period,
+///     damping: None, quadratic_drag: None, friction_angle: None, drag: vec![],
+///     method: None, tolerance: None, sample_interval: None, force: false,
+///     elastic_share: None,
+/// })?;
+/// let end = run.run(&mut Silent)?;
+/// assert!((end.final_angle_rad - a.radians()).abs() < 1e-9);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
     let pendulum =
         Pendulum::new(input.length, input.g.unwrap_or(STANDARD_GRAVITY)).map_err(|e| {

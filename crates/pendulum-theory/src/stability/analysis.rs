@@ -303,6 +303,28 @@ const SECONDS_PER_TERM: f64 = 2e-9;
 /// samples; infinite samples refused (NaN is a gap). Work: octave τ is
 /// linear in the length; every τ is quadratic and judged by
 /// [`judge_work`].
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::stability::{stability, DataKind, Outliers, StabilityInput, Taus};
+///
+/// // A frequency drifting steadily, y = D t: σ_y(τ) = D τ/√2 (NIST SP 1065).
+/// let drift = 1e-9; // per second
+/// let s = stability(&StabilityInput {
+///     data: (0..256).map(|k| drift * k as f64).collect(),
+///     kind: DataKind::Frequency,
+///     tau0_s: 1.0,
+///     taus: Taus::Octave,
+///     force: false,
+///     outliers: Outliers::Keep,
+/// })?;
+/// let row = &s.rows[2];
+/// assert_eq!(row.tau_s, 4.0);
+/// assert!((row.adev.unwrap() - drift * 4.0 / 2f64.sqrt()).abs() < 1e-15);
+/// assert!(row.hdev.unwrap() < 1e-15); // Hadamard's is blind to a drift
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
     let tau0 = spacing(input.tau0_s)?;
     if let Some(i) = input.data.iter().position(|v| v.is_infinite()) {

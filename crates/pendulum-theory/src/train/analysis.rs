@@ -65,6 +65,20 @@ pub struct Candidate {
 /// `arbor_turns_per_hour` (default [`DEFAULT_ARBOR_TURNS_PER_HOUR`]), the
 /// pendulum it needs under `g`, and with a `design` how far its nut (or
 /// else its bob) must move down.
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::train::analysis::train;
+///
+/// // A longcase's going train: centre wheel 64, third 60, escape wheel 30, on
+/// // pinions of 8: the escape wheel turns once a minute, 60 beats a turn.
+/// let t = train(&[64, 60, 30], &[8, 8], None, None, None)?;
+/// assert_eq!(t.beats_per_hour, 3600.0); // 64/8 × 60/8 × 30 × 2
+/// assert_eq!(t.period_s, 2.0);
+/// assert!((t.length_m - 0.99362).abs() < 1e-5);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
 pub fn train(
     wheels: &[u32],
     pinions: &[u32],

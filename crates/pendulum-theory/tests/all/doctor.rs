@@ -6,11 +6,11 @@ use pendulum_theory::fitting::beat_log::{BeatWarning, Nominal};
 use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput};
 use pendulum_theory::listening::synth::{synthesize, synthesize_with, Interference, TickRecording};
 
-/// The README's seconds clock with `--lift-angle 2`: the generator puts
-/// the drop 16 ms after the unlocking, as in a watch, where a seconds
-/// clock's comes some 0.2 s later, so the amplitude came out 38.7°,
-/// unwarned. A pendulum clock swings 15° at most: not given, warned with
-/// the figure.
+/// The book's seconds clock with `--lift-angle 2` (book/src/listening.md
+/// and guides/clockmaker.md): the generator puts the drop 16 ms after the
+/// unlocking, as in a watch, where a seconds clock's comes some 0.2 s
+/// later, so the amplitude came out 38.7°, unwarned. A pendulum clock
+/// swings 15° at most: not given, warned with the figure.
 #[test]
 fn an_amplitude_no_pendulum_clock_has_is_not_given() {
     let rec = synthesize(&TickRecording {

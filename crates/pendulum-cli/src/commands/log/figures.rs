@@ -263,7 +263,7 @@ fn stability(r: &LogResult) -> Figure {
         panels: vec![Panel::new(
             "Frequency stability",
             "averaging time τ (s)",
-            "Allan deviation (fractional frequency)",
+            crate::commands::stability::deviation_axis("Allan deviation"),
             series,
         )
         .log_log()],

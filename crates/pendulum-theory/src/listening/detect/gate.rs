@@ -36,7 +36,7 @@ pub const GATE_QUIET_DB: f64 = 6.0;
 /// The longest a tail is cut after the last loud block, s (a room that
 /// stays louder after a door is not cut for ever: its floor follows).
 pub const GATE_TAIL_S: f64 = 15.0;
-/// The share of the ticks' level (see [`Gate::tick_level`]) a loud
+/// The share of the ticks' level (see `Gate::tick_level`) a loud
 /// block's median must pass as well: −6 dB.
 pub const TICK_SHARE: f64 = 0.5;
 /// The quantile of the blocks' largest values that is the ticks' level.

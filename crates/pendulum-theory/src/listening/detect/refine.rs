@@ -662,7 +662,7 @@ fn likeness(a: &[f32], b: &[f32], lag: isize) -> f64 {
 
 /// Whether the median tick and tock are one sound (their normalised
 /// correlation at their best alignment, within 2 ms, reaches
-/// [`SAME_SOUND`]): if not, each is timed from its own onset, and where
+/// `SAME_SOUND`): if not, each is timed from its own onset, and where
 /// an onset is taken on two different sounds can differ by a few tenths
 /// of a ms, which the beat error takes in.
 pub fn one_sound(sounds: &[MedianSound; 2], sample_rate: f64) -> bool {

@@ -1,5 +1,6 @@
-//! The lab's requests: a measurement file's bytes (a dropped Tracker or
-//! phyphox file, a pasted table) fitted as `fit decay`, `fit trajectory`
+//! A fit of a file's bytes, asked in JSON: the page's lab (a dropped
+//! Tracker or phyphox file, a pasted table) and the Python package's
+//! `fit_file` ask it. The file is fitted as `fit decay`, `fit trajectory`
 //! or `fit period` fits it, by the same code (`pendulum_data::fits`).
 //! The reply's `ok` is the command's `--json`; beside it `figure` (the
 //! command's `--plot`, as data: panels of series, which the page draws),
@@ -9,11 +10,11 @@
 //! The options are the flags' values, each key named with its unit
 //! (`length_m` for `--length`, `frame_rate_hz` for `--frame-rate`).
 
-use crate::requests::{reply_of, Failure, Gravity};
-use pendulum_data::figure::{in_time_units, Figure};
-use pendulum_data::fits::{self, DecayOptions, PeriodOptions, TrajectoryOptions};
-use pendulum_data::measured::{Pivot, Positions};
-use pendulum_data::{AngleUnit, ReadError, ReadOptions, Source};
+use crate::figure::{in_time_units, Figure};
+use crate::fits::{self, DecayOptions, PeriodOptions, TrajectoryOptions};
+use crate::measured::{Pivot, Positions};
+use crate::request::{reply_of, Failure, Gravity};
+use crate::{AngleUnit, ReadError, ReadOptions, Source};
 use pendulum_theory::fitting::tracked::LengthSource;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -153,11 +154,8 @@ impl Reading {
                 .columns
                 .as_deref()
                 .map(|t| t.split(',').map(|c| c.trim().to_string()).collect()),
-            frame_rate: self
-                .frame_rate_hz
-                .map(pendulum_data::frame_rate)
-                .transpose()?,
-            run: self.run.map(pendulum_data::run_number).transpose()?,
+            frame_rate: self.frame_rate_hz.map(crate::frame_rate).transpose()?,
+            run: self.run.map(crate::run_number).transpose()?,
             ..ReadOptions::default()
         })
     }
@@ -279,7 +277,7 @@ fn encode<T: Serialize, W: std::fmt::Display>(
     json: &T,
     figure: Figure,
     warnings: &[W],
-    format: &pendulum_data::Format,
+    format: &crate::Format,
 ) -> serde_json::Result<String> {
     serde_json::to_string(&Fitted {
         ok: json,

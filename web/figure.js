@@ -75,6 +75,9 @@ function span(panel, axis) {
   return [lo - pad, hi + pad];
 }
 
+/** More data points than a law drawn under them can be seen through. */
+const DENSE_CLOUD = 400;
+
 /** The legend's lines: the labelled series, then the marks. */
 function legendLines(panel) {
   const named = panel.series.map((s, i) => [s, i]).filter(([s]) => s.label);
@@ -112,8 +115,12 @@ function drawPanel(svg, panel, x0, y0, w, plotHeight, below, titleFont) {
   clip.append(el("rect", { x: x0 + left, y: y0 + top, width: pw, height: ph }));
   g.append(clip);
   const plot = el("g", { "clip-path": `url(#${clipId})` });
-  // Models first, data over them.
-  const order = panel.series.map((s, i) => [s, i]).sort((a, b) => (a[0].style === "dots") - (b[0].style === "dots"));
+  // Models first, data over them; a cloud of more points than a law can
+  // be seen through (DENSE_CLOUD, as the command line's) first, the law
+  // over it.
+  const dense = panel.series.some((s) => s.style === "dots" && s.points.length > DENSE_CLOUD);
+  const last = dense ? "line" : "dots";
+  const order = panel.series.map((s, i) => [s, i]).sort((a, b) => (a[0].style === last) - (b[0].style === last));
   for (const [s, i] of order) {
     const color = PALETTE[(s.color ?? i) % PALETTE.length];
     const pts = s.points

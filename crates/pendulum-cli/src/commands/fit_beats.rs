@@ -216,11 +216,26 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
             (intervals.last().map_or(1.0, |p| p.0), 1e3 * a.mean_beat_s),
         ];
         // Repaired gaps (missed beats) would squash the scale: show the
-        // intervals within half a beat of the mean.
-        let intervals: Vec<(f64, f64)> = intervals
-            .into_iter()
-            .filter(|p| (p.1 - 1e3 * a.mean_beat_s).abs() < 500.0 * a.mean_beat_s)
-            .collect();
+        // intervals within half a beat of the mean. The beats alternate
+        // (tick to tock, tock to tick), each in its own colour: a clock
+        // out of beat shows two bands.
+        let near = |p: &(f64, f64)| (p.1 - 1e3 * a.mean_beat_s).abs() < 500.0 * a.mean_beat_s;
+        // A missed beat's interval spans two beats: it counts two, so the
+        // sides keep their colours after it.
+        let beat_ms = 1e3 * a.mean_beat_s;
+        let mut beat = 0_usize;
+        let (mut odd, mut even) = (Vec::new(), Vec::new());
+        for p in &intervals {
+            if near(p) {
+                if beat % 2 == 0 { &mut odd } else { &mut even }.push(*p);
+            }
+            let spans = (p.1 / beat_ms).round();
+            beat += if spans.is_finite() && spans >= 1.0 {
+                spans as usize
+            } else {
+                1
+            };
+        }
         let allan = a
             .allan_deviation
             .iter()
@@ -233,7 +248,8 @@ pub fn run(args: &FitBeatsArgs) -> Result<String, CliError> {
                     crate::plot::TIME_AXIS,
                     "interval (ms)",
                     vec![
-                        Series::dots("interval", intervals),
+                        Series::dots("intervals 1, 3, 5, …", odd),
+                        Series::dots("intervals 2, 4, 6, …", even),
                         Series::line("mean beat", mean),
                     ],
                 ),

@@ -218,6 +218,9 @@ fn dash_coincident(prepared: &mut [Prepared], map: Map, look: Look) {
 
 /// Whether the markers of `p` are drawn open: many of them (over 50) in a
 /// panel with lines, so that the lines show through them.
+/// More data points than a law drawn under them can be seen through.
+const DENSE_CLOUD: usize = 400;
+
 fn open_markers(prepared: &[Prepared], p: &Prepared) -> bool {
     p.pieces.first().is_some_and(|points| points.len() > 50)
         && prepared.iter().any(|q| q.style == Style::Line)
@@ -548,48 +551,64 @@ impl Contents<'_> {
         }
         // Models first, the data over them: measured points are never
         // hidden by a law; a dense cloud is drawn half transparent so the
-        // law shows through it.
-        for p in self.prepared.iter().filter(|p| p.style == Style::Line) {
-            let stroke = p.color.stroke_width(look.weighted_width(p.weight));
-            for piece in &p.pieces {
-                if p.dashed > 0 {
-                    let (dash, gap) = dash_pattern(p.dashed, look);
+        // law shows through it. A cloud of more points than a law can be
+        // seen through (a log's hourly rates) is drawn first, the law
+        // over it.
+        let dense = self
+            .prepared
+            .iter()
+            .any(|p| p.style == Style::Dots && p.pieces[0].len() > DENSE_CLOUD);
+        let order = if dense {
+            [Style::Dots, Style::Line]
+        } else {
+            [Style::Line, Style::Dots]
+        };
+        for phase in order {
+            if phase == Style::Line {
+                for p in self.prepared.iter().filter(|p| p.style == Style::Line) {
+                    let stroke = p.color.stroke_width(look.weighted_width(p.weight));
+                    for piece in &p.pieces {
+                        if p.dashed > 0 {
+                            let (dash, gap) = dash_pattern(p.dashed, look);
+                            chart
+                                .draw_series(std::iter::once(DashedPathElement::new(
+                                    piece.iter().map(value).collect::<Vec<_>>(),
+                                    dash,
+                                    gap,
+                                    stroke,
+                                )))
+                                .map_err(fail)?;
+                        } else {
+                            chart
+                                .draw_series(LineSeries::new(piece.iter().map(value), stroke))
+                                .map_err(fail)?;
+                        }
+                    }
+                }
+            } else {
+                for p in self.prepared.iter().filter(|p| !p.bars.is_empty()) {
+                    let stroke = p.color.stroke_width(look.px(1));
                     chart
-                        .draw_series(std::iter::once(DashedPathElement::new(
-                            piece.iter().map(value).collect::<Vec<_>>(),
-                            dash,
-                            gap,
-                            stroke,
-                        )))
+                        .draw_series(
+                            p.bars
+                                .iter()
+                                .map(|(a, b)| PathElement::new(vec![value(a), value(b)], stroke)),
+                        )
                         .map_err(fail)?;
-                } else {
+                }
+                for p in self.prepared.iter().filter(|p| p.style == Style::Dots) {
+                    let count = p.pieces[0].len();
+                    let r = look.marker_radius(count);
+                    let style = if open_markers(self.prepared, p) {
+                        p.color.stroke_width(look.px(1))
+                    } else {
+                        p.color.filled()
+                    };
                     chart
-                        .draw_series(LineSeries::new(piece.iter().map(value), stroke))
+                        .draw_series(p.pieces[0].iter().map(|q| Circle::new(value(q), r, style)))
                         .map_err(fail)?;
                 }
             }
-        }
-        for p in self.prepared.iter().filter(|p| !p.bars.is_empty()) {
-            let stroke = p.color.stroke_width(look.px(1));
-            chart
-                .draw_series(
-                    p.bars
-                        .iter()
-                        .map(|(a, b)| PathElement::new(vec![value(a), value(b)], stroke)),
-                )
-                .map_err(fail)?;
-        }
-        for p in self.prepared.iter().filter(|p| p.style == Style::Dots) {
-            let count = p.pieces[0].len();
-            let r = look.marker_radius(count);
-            let style = if open_markers(self.prepared, p) {
-                p.color.stroke_width(look.px(1))
-            } else {
-                p.color.filled()
-            };
-            chart
-                .draw_series(p.pieces[0].iter().map(|q| Circle::new(value(q), r, style)))
-                .map_err(fail)?;
         }
         Ok(chart.plotting_area().get_pixel_range())
     }

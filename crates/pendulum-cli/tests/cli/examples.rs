@@ -786,6 +786,74 @@ fn examples() -> Vec<(&'static str, Check)> {
                 r.svg("amplitude.svg");
             },
         ),
+        // The teaching pack's worksheets (book/src/teaching/).
+        ("pendulum amplitude --period 2.02647s --length 1m", |r| {
+            // The exact law gives the period back from the amplitude.
+            let a = r.number("Amplitude").to_radians();
+            assert!((period(1.0, G0, a) / 2.02647 - 1.0).abs() < 1e-8, "{a}");
+        }),
+        (
+            "pendulum fit period crates/pendulum-cli/tests/data/period/silveira1986.csv --length 2.87m --length-uncertainty 1cm",
+            |r| {
+                // The length's 1 cm is in g's standard error: g·δl/l.
+                let (g, se) = r.value("g_m_s2");
+                let part = g * 0.01 / 2.87;
+                assert!(se.unwrap() >= part, "{g} ± {se:?}, the length's part {part}");
+                r.says("theory 0.0625");
+            },
+        ),
+        (
+            "pendulum fit period crates/pendulum-cli/tests/data/period/sardjito2020.csv",
+            |r| {
+                r.says("slower than the law");
+            },
+        ),
+        (
+            "pendulum fit decay crates/pendulum-cli/tests/data/real/pendulum_fullPeriod.trk --plot decay-real.svg",
+            |r| {
+                r.svg("decay-real.svg");
+                r.says("turning points of the track");
+            },
+        ),
+        (
+            "pendulum fit trajectory crates/pendulum-cli/tests/data/real/pendulum_fullPeriod.trk --pivot fit",
+            |r| {
+                // A university lab's 80° release: g to 1% from the fitted
+                // pivot's radius.
+                assert!((r.number("g_m_s2") / 9.81 - 1.0).abs() < 0.01);
+            },
+        ),
+        (
+            "pendulum fit period examples/notebooks/lengths.csv --plot lengths.svg",
+            |r| {
+                // The table's maker used g = 9.81 m/s² and a 25 mm offset.
+                r.within("g_m_s2", 9.81, 3.0);
+                r.within("length_offset_m", 0.025, 3.0);
+                r.svg("lengths.svg");
+            },
+        ),
+        (
+            "pendulum fit trajectory crates/pendulum-cli/tests/data/gyroscope/gyroscope-comma.csv --length 0.45m --length-uncertainty 5mm",
+            |r| {
+                // The generator's g and ζ (tests/data/gyroscope/truth.json).
+                r.within("g_m_s2", 9.81, 3.0);
+                r.within("zeta", 0.002, 3.0);
+            },
+        ),
+        (
+            "pendulum fit trajectory crates/pendulum-cli/tests/data/gyroscope/rotation-semicolon.csv --length 0.8m",
+            |r| {
+                r.within("g_m_s2", 9.81, 3.0);
+            },
+        ),
+        (
+            "pendulum fit trajectory crates/pendulum-cli/tests/data/gyroscope/gyroscope.xls --length 0.3m --plot phone.svg",
+            |r| {
+                r.within("g_m_s2", 9.81, 3.0);
+                r.says("hold the bob at rest");
+                r.svg("phone.svg");
+            },
+        ),
         (
             "pendulum fit period crates/pendulum-cli/tests/data/period/hidayat2023.csv",
             |r| {
@@ -1177,6 +1245,9 @@ fn every_example_in_the_documentation_and_the_help_runs_and_says_what_it_claims(
     copy("examples");
     copy("examples/python");
     copy("crates/pendulum-cli/tests/data/period");
+    copy("crates/pendulum-cli/tests/data/real");
+    copy("crates/pendulum-cli/tests/data/gyroscope");
+    copy("examples/notebooks");
     copy("crates/pendulum-theory/tests/data/tides");
     let sh = |command: &str| {
         let path = format!(

@@ -68,6 +68,19 @@ def test_fit_file_refuses_as_the_binary(kw, flags, monkeypatch):
     assert out.stderr.strip() == f"error: {caught.value}"
 
 
+def test_a_length_uncertainty_without_its_length_is_refused(monkeypatch):
+    # A table against lengths has no one length: its uncertainty would be
+    # taken for nothing (the command line's --length-uncertainty needs
+    # --length); from a file and from arrays alike.
+    monkeypatch.chdir(ROOT)
+    table = "examples/notebooks/lengths.csv"
+    with pytest.raises(ValueError, match="^--length-uncertainty: is the uncertainty of the "
+                                         "pendulum's one length"):
+        pt.fit_file(table, "period", length_uncertainty=0.002)
+    with pytest.raises(ValueError, match="^pendulum_length_standard_error: is the uncertainty"):
+        pt.fit_period([1.0, 1.5, 2.0], length=[0.25, 0.56, 0.99], length_uncertainty=0.002)
+
+
 def test_a_missing_file_is_a_value_error():
     with pytest.raises(ValueError, match="no-such-file.csv: cannot read it"):
         pt.fit_file("no-such-file.csv", "decay")

@@ -614,6 +614,15 @@ pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
             }
         }
     }
+    // An uncertainty of a length not given would be taken for nothing
+    // (a table against lengths carries no one length's uncertainty).
+    if input.pendulum_length_standard_error.is_some() && input.pendulum_length.is_none() {
+        return Err(Refusal::field(
+            "pendulum_length_standard_error",
+            "is the uncertainty of the pendulum's one length, which is not given: give that \
+             length too (the uncertainties of a table's lengths are not taken)",
+        ));
+    }
     if n < 2 {
         return Err(Refusal::data(format!(
             "a table needs at least two periods, got {n}"
@@ -1100,6 +1109,26 @@ mod tests {
         .unwrap();
         assert!((r.parameters["g_m_s2"] / 9.8 - 1.0).abs() < 1e-12);
         assert!(r.parameters["length_offset_m"].abs() < 1e-12);
+    }
+
+    /// A length's uncertainty with no length is refused, not ignored (a
+    /// table against lengths took it for nothing, from Python and the
+    /// page, where the command line's --length-uncertainty needs --length).
+    #[test]
+    fn an_uncertainty_without_its_length_is_refused() {
+        let l: Vec<f64> = (1..=6).map(|i| 0.2 * i as f64).collect();
+        let t: Vec<f64> = l.iter().map(|&l| exact(l, 9.81, 0.05)).collect();
+        let refused = analyse(&PeriodTableInput {
+            period: &t,
+            length: Some(&l),
+            pendulum_length_standard_error: Some(0.002),
+            ..Default::default()
+        })
+        .unwrap_err();
+        assert_eq!(
+            refused.place,
+            crate::analysis::Place::Field("pendulum_length_standard_error")
+        );
     }
 
     #[test]

@@ -19,8 +19,9 @@ pub fn source(path: &Path) -> Result<Source<'static>, CliError> {
     Ok(Source::new(file, BufReader::new(handle)))
 }
 
-/// Warns of what the reader left out.
-fn say(format: &Format) {
+/// Warns of what the reader left out (the fits of `pendulum-data`, which
+/// read the file themselves, pass their result's format here).
+pub fn say(format: &Format) {
     for note in &format.notes {
         crate::output::warn(note.clone());
     }

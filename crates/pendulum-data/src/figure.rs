@@ -161,6 +161,19 @@ pub struct Panel {
     pub y_scale: Scale,
     /// Vertical marks.
     pub marks: Vec<Mark>,
+    /// A second vertical axis on the right: the same values in another
+    /// unit (a log axis only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub y_twin: Option<Twin>,
+}
+
+/// A second vertical axis: the values times `factor`, in `label`'s unit.
+#[derive(Clone, Debug, Serialize)]
+pub struct Twin {
+    /// Axis label, with its unit.
+    pub label: String,
+    /// What a value on the main axis is in the second axis's unit.
+    pub factor: f64,
 }
 
 impl Panel {
@@ -179,7 +192,18 @@ impl Panel {
             x_scale: Scale::Linear,
             y_scale: Scale::Linear,
             marks: Vec::new(),
+            y_twin: None,
         }
+    }
+
+    /// The same with a second vertical axis on the right, the values
+    /// times `factor` (drawn on log–log panels).
+    pub fn twin_y(mut self, label: impl Into<String>, factor: f64) -> Self {
+        self.y_twin = Some(Twin {
+            label: label.into(),
+            factor,
+        });
+        self
     }
 
     /// The same on logarithmic axes (a quantity and its argument that

@@ -341,10 +341,32 @@ pub fn track_of(
         }
         (None, None) => Vec::new(),
     };
+    // The positions' options said not to have been used, where the file
+    // holds no positions (not taken for nothing without a word).
+    let given: Vec<&str> = [
+        (positions.pivot.is_some(), "--pivot"),
+        (positions.y_down, "--y-down"),
+        (positions.scale.is_some(), "--scale"),
+    ]
+    .into_iter()
+    .filter_map(|(given, flag)| given.then_some(flag))
+    .collect();
+    let unused = |table: &mut Table, holds: &str| {
+        if !given.is_empty() {
+            let note = format!(
+                "{}: {} {} for x and y positions, and the file holds {holds}: not used",
+                table.file,
+                given.join(", "),
+                if given.len() == 1 { "is" } else { "are" }
+            );
+            table.format.notes.push(note);
+        }
+    };
     if table.column(Role::Angle).is_none() {
         let (rates, names) = gyroscope_axes(&table);
         if !rates.is_empty() {
             let mut table = table;
+            unused(&mut table, "angular velocities");
             table.format.angular_velocity_columns = names;
             return Ok(Track {
                 table,
@@ -360,6 +382,8 @@ pub fn track_of(
     }
     if let Some(angle) = table.column(Role::Angle) {
         let angle = angle.to_vec();
+        let mut table = table;
+        unused(&mut table, "angles");
         return Ok(Track {
             table,
             time,

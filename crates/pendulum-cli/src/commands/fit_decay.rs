@@ -48,6 +48,7 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
             rows as f64 * SECONDS_PER_ROW,
         ));
     })?;
+    crate::data::say(&fitted.json.format);
     fitted.json.turning_points_file = match (&args.turning_points, &fitted.turns) {
         (Some(path), Some(found)) => Some(write_turns(path, found)?),
         (Some(_), None) => {

@@ -25,6 +25,7 @@ pub fn run(args: &FitPeriodArgs) -> Result<String, CliError> {
         bob_radius: args.bob_radius.map(|l| l.0),
     };
     let fitted = periods(&super::measured::opener(&args.file), &options)?;
+    crate::data::say(&fitted.json.format);
     if let Some(target) = &plot {
         render(target, &fitted.figure())?;
     }

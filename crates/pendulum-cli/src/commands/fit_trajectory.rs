@@ -45,6 +45,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
             rows as f64 * SECONDS_PER_ROW,
         ));
     })?;
+    crate::data::say(&fitted.json.format);
     if let Some(target) = &plot {
         render(target, &fitted.figure())?;
     }

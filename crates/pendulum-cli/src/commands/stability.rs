@@ -372,11 +372,14 @@ pub(crate) fn adev_bars(rows: &[StabilityRow]) -> Vec<(f64, f64, f64, f64)> {
         .collect()
 }
 
-/// A deviation axis's title: the fractional frequency, and what it is
-/// in seconds a day (a clockmaker's unit: 10⁻⁵ of a day is 0.864 s).
+/// A deviation axis's title: the fractional frequency.
 pub(crate) fn deviation_axis(name: &str) -> String {
-    format!("{name} (fractional frequency; 10⁻⁵ = 0.864 s/day)")
+    format!("{name} (fractional frequency)")
 }
+
+/// The same deviations in seconds a day (a clockmaker's unit), for the
+/// axis on the right: a fraction times the day's 86,400 s.
+pub(crate) const S_PER_DAY_AXIS: (&str, f64) = ("the same in s/day", 86_400.0);
 
 /// The deviations against τ, log–log, the Allan deviation's interval as
 /// a bar on its point (none where a periodic signal rules).
@@ -401,7 +404,8 @@ fn figure(s: &Stability) -> Figure {
             .colored(0),
         ],
     )
-    .log_log();
+    .log_log()
+    .twin_y(S_PER_DAY_AXIS.0, S_PER_DAY_AXIS.1);
     Figure {
         panels: vec![panel],
     }

@@ -297,10 +297,20 @@ fn draw_panel<DB: DrawingBackend>(
     // The plot rectangle as ChartBuilder will lay it out, in the titled
     // area's own pixels.
     let (w, h) = titled.dim_in_pixel();
+    // A second axis on the right takes a label area's width there.
+    let twin = panel
+        .y_twin
+        .as_ref()
+        .filter(|_| panel.x_scale == Scale::Log && panel.y_scale == Scale::Log);
+    let twin_w = if twin.is_some() {
+        look.y_label_area() as i32
+    } else {
+        0
+    };
     let predicted = Rect {
         x0: f64::from(look.y_label_area()),
         y0: 0.0,
-        x1: f64::from(w) - f64::from(reserve),
+        x1: f64::from(w) - f64::from(reserve) - f64::from(twin_w),
         y1: f64::from(h) - f64::from(look.x_label_area()),
     };
     dash_coincident(
@@ -404,7 +414,8 @@ fn draw_panel<DB: DrawingBackend>(
     let mut builder = ChartBuilder::on(&chart_area);
     builder
         .x_label_area_size(look.x_label_area())
-        .y_label_area_size(look.y_label_area());
+        .y_label_area_size(look.y_label_area())
+        .right_y_label_area_size(twin_w.max(0) as u32);
     let (x0, x1) = (panel.x_scale.value_at(x.lo), panel.x_scale.value_at(x.hi));
     let (y0, y1) = (
         panel.y_scale.value_at(y_drawn.lo),
@@ -437,13 +448,43 @@ fn draw_panel<DB: DrawingBackend>(
             contents.draw(&mut c)?
         }
         (Scale::Log, Scale::Log) => {
-            let mut c = builder
+            let c = builder
                 .build_cartesian_2d(
                     (x0..x1).log_scale().with_key_points(log_ticks(x)),
                     (y0..y1).log_scale().with_key_points(log_ticks(y_drawn)),
                 )
                 .map_err(fail)?;
-            contents.draw(&mut c)?
+            match twin {
+                None => {
+                    let mut c = c;
+                    contents.draw(&mut c)?
+                }
+                Some(t) => {
+                    let shift = t.factor.log10();
+                    let twin_span = Span {
+                        lo: y_drawn.lo + shift,
+                        hi: y_drawn.hi + shift,
+                    };
+                    let mut c = c.set_secondary_coord(
+                        (x0..x1).log_scale(),
+                        (y0 * t.factor..y1 * t.factor)
+                            .log_scale()
+                            .with_key_points(log_ticks(twin_span)),
+                    );
+                    let pixels = contents.draw(&mut c)?;
+                    let tick = |v: &f64| log_tick_label(*v);
+                    c.configure_secondary_axes()
+                        .y_desc(&t.label)
+                        .y_label_formatter(&tick)
+                        .label_style(("sans-serif", look.label_font()))
+                        .axis_desc_style(("sans-serif", look.axis_font()))
+                        .axis_style(BLACK.stroke_width(look.px(1)))
+                        .set_all_tick_mark_size(look.px(5))
+                        .draw()
+                        .map_err(fail)?;
+                    pixels
+                }
+            }
         }
     };
     if entries.is_empty() {
@@ -461,9 +502,9 @@ fn draw_panel<DB: DrawingBackend>(
         Place::Inside(spot) => legend::box_at(plot, size, inset, spot),
         Place::Above => legend::box_at(plot, size, inset, (1.0, 0.0)),
         Place::Beside => Rect {
-            x0: plot.x1 + inset,
+            x0: plot.x1 + f64::from(twin_w) + inset,
             y0: plot.y0,
-            x1: plot.x1 + inset + size.0,
+            x1: plot.x1 + f64::from(twin_w) + inset + size.0,
             y1: plot.y0 + size.1,
         },
     };

@@ -900,3 +900,49 @@ fn a_table_whose_scatter_exceeds_its_uncertainties_is_warned() {
     assert!(f(&quiet, "chi_square_probability") > 0.01, "{quiet}");
     assert!(codes(&quiet).is_empty(), "{quiet}");
 }
+
+/// What the reader left out is said on standard error by the fits that
+/// read their file in `pendulum-data` (a blank cell's row), and options
+/// for positions given for a file of angles are said not to have been
+/// used: nothing taken, or left, without a word.
+#[test]
+fn the_fits_say_what_the_reader_left_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("time_s,angle_deg\n");
+    for i in 0..400 {
+        let t = 0.05 * f64::from(i);
+        if i == 50 {
+            text.push_str(&format!("{t},\n"));
+        } else {
+            let a = 10.0 * (-0.002 * t).exp() * (3.13 * t).cos();
+            text.push_str(&format!("{t},{a}\n"));
+        }
+    }
+    let path = write(dir.path(), "blank.csv", &text);
+    for command in ["trajectory", "decay"] {
+        let out = crate::util::pendulum()
+            .args(["fit", command])
+            .arg(&path)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{command}: {err}");
+        assert!(
+            err.contains("1 row with a blank cell in a column used skipped (line 52)"),
+            "{command}: {err}"
+        );
+    }
+    let out = crate::util::pendulum()
+        .args(["fit", "trajectory"])
+        .arg(&path)
+        .args(["--pivot", "fit", "--y-down"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains(
+            "--pivot, --y-down are for x and y positions, and the file holds angles: not used"
+        ),
+        "{err}"
+    );
+}

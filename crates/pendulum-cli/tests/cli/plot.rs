@@ -425,6 +425,15 @@ fn every_plot_kind_in_both_formats() {
             ),
             // A tracked angle with one bad value: clipped, counted.
             ("spike", vec!["fit".into(), "trajectory".into(), s(&spike)]),
+            // Deviations with their intervals as bars, and a second axis
+            // in s/day on the right.
+            (
+                "stability",
+                vec![
+                    "stability".into(),
+                    concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/offsets.csv").into(),
+                ],
+            ),
         ];
         // A timegrapher's strip from a synthetic recording.
         let wav = d.join("clock.wav");
@@ -483,6 +492,9 @@ fn every_plot_kind_in_both_formats() {
         offset.contains("loss (s/day) − 108.0675"),
         "no offset in the title"
     );
+    // The deviations' second axis, in s/day.
+    let stability = std::fs::read_to_string(d.join("stability.svg")).unwrap();
+    assert!(stability.contains("the same in s/day"), "no s/day axis");
     // The working amplitude is marked and named.
     let period = std::fs::read_to_string(d.join("period-one.svg")).unwrap();
     assert!(period.contains("working amplitude, 15°"));

@@ -266,7 +266,11 @@ fn stability(r: &LogResult) -> Figure {
             crate::commands::stability::deviation_axis("Allan deviation"),
             series,
         )
-        .log_log()],
+        .log_log()
+        .twin_y(
+            crate::commands::stability::S_PER_DAY_AXIS.0,
+            crate::commands::stability::S_PER_DAY_AXIS.1,
+        )],
     }
 }
 

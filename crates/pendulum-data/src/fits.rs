@@ -126,6 +126,9 @@ pub fn decay(
     let rate = options.read.frame_rate;
     let choose = |found: &[Found]| decay_columns(found, rate.is_some());
     let mut table = read_table(open()?, &options.read, &choose)?;
+    if table.column(Role::Amplitude).is_some() {
+        crate::measured::note_unused(&mut table, &options.positions, "amplitudes");
+    }
     let file = table.file.clone();
     let format = table.format.clone();
     if options.length_standard_error.is_some() && options.length.is_none() {

@@ -325,6 +325,30 @@ impl Positions {
     }
 }
 
+/// Notes, among what the reader says, the options for x and y positions
+/// (`--pivot`, `--y-down`, `--scale`) given for a file that holds `holds`
+/// instead (angles, angular velocities, amplitudes): not taken for
+/// nothing without a word.
+pub fn note_unused(table: &mut Table, positions: &Positions, holds: &str) {
+    let given: Vec<&str> = [
+        (positions.pivot.is_some(), "--pivot"),
+        (positions.y_down, "--y-down"),
+        (positions.scale.is_some(), "--scale"),
+    ]
+    .into_iter()
+    .filter_map(|(given, flag)| given.then_some(flag))
+    .collect();
+    if !given.is_empty() {
+        let note = format!(
+            "{}: {} {} for x and y positions, and the file holds {holds}: not used",
+            table.file,
+            given.join(", "),
+            if given.len() == 1 { "is" } else { "are" }
+        );
+        table.format.notes.push(note);
+    }
+}
+
 /// The swing of a table read with [`track_roles`]; without a time column
 /// the times are the row numbers over `rate` (samples a second).
 pub fn track_of(
@@ -341,32 +365,11 @@ pub fn track_of(
         }
         (None, None) => Vec::new(),
     };
-    // The positions' options said not to have been used, where the file
-    // holds no positions (not taken for nothing without a word).
-    let given: Vec<&str> = [
-        (positions.pivot.is_some(), "--pivot"),
-        (positions.y_down, "--y-down"),
-        (positions.scale.is_some(), "--scale"),
-    ]
-    .into_iter()
-    .filter_map(|(given, flag)| given.then_some(flag))
-    .collect();
-    let unused = |table: &mut Table, holds: &str| {
-        if !given.is_empty() {
-            let note = format!(
-                "{}: {} {} for x and y positions, and the file holds {holds}: not used",
-                table.file,
-                given.join(", "),
-                if given.len() == 1 { "is" } else { "are" }
-            );
-            table.format.notes.push(note);
-        }
-    };
     if table.column(Role::Angle).is_none() {
         let (rates, names) = gyroscope_axes(&table);
         if !rates.is_empty() {
             let mut table = table;
-            unused(&mut table, "angular velocities");
+            note_unused(&mut table, positions, "angular velocities");
             table.format.angular_velocity_columns = names;
             return Ok(Track {
                 table,
@@ -383,7 +386,7 @@ pub fn track_of(
     if let Some(angle) = table.column(Role::Angle) {
         let angle = angle.to_vec();
         let mut table = table;
-        unused(&mut table, "angles");
+        note_unused(&mut table, positions, "angles");
         return Ok(Track {
             table,
             time,

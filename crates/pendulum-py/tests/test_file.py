@@ -81,6 +81,17 @@ def test_a_length_uncertainty_without_its_length_is_refused(monkeypatch):
         pt.fit_period([1.0, 1.5, 2.0], length=[0.25, 0.56, 0.99], length_uncertainty=0.002)
 
 
+@pytest.mark.parametrize("value,words", [(float("nan"), "a value that is not a number"),
+                                         (float("inf"), "an infinite value")])
+def test_a_number_that_is_not_finite_is_refused_as_the_arrays_fits_refuse_it(value, words,
+                                                                            monkeypatch):
+    monkeypatch.chdir(ROOT)
+    with pytest.raises(ValueError, match=f"^length: must be a finite number, got {words}$"):
+        pt.fit_file("examples/rundown.csv", "decay", length=value)
+    with pytest.raises(ValueError, match=f"^length: must be a finite number, got {words}$"):
+        pt.fit_decay([0, 1, 2, 3, 4, 5], [0.1, 0.09, 0.08, 0.07, 0.06, 0.05], length=value)
+
+
 def test_a_missing_file_is_a_value_error():
     with pytest.raises(ValueError, match="no-such-file.csv: cannot read it"):
         pt.fit_file("no-such-file.csv", "decay")

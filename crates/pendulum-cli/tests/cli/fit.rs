@@ -945,4 +945,14 @@ fn the_fits_say_what_the_reader_left_out() {
         ),
         "{err}"
     );
+    let amplitudes = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/rundown.csv");
+    let out = crate::util::pendulum()
+        .args(["fit", "decay", amplitudes, "--scale", "2m"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--scale is for x and y positions, and the file holds amplitudes: not used"),
+        "{err}"
+    );
 }

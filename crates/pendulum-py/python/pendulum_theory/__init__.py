@@ -680,6 +680,12 @@ def fit_file(path, fit, *, columns=None, angle_unit=None, frame_rate=None, run=N
             value = _count(value)
         elif key not in ("angle_unit", "model", "pivot", "columns"):
             value = _number(value)
+            # JSON has no NaN or infinity: refused here in the library's words.
+            if value != value:
+                raise ValueError(f"{key}: must be a finite number, got a value that is not "
+                                 "a number")
+            if value in (float("inf"), float("-inf")):
+                raise ValueError(f"{key}: must be a finite number, got an infinite value")
         request[_FILE_KEYS[key]] = value
     try:
         with open(name, "rb") as f:

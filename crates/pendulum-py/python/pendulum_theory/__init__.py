@@ -658,11 +658,8 @@ def fit_file(path, fit, *, columns=None, angle_unit=None, frame_rate=None, run=N
     >>> r["file"], r["preferred"] in {m["model"] for m in r["models"]}
     ('examples/rundown.csv', True)
     """
-    given = dict(columns=columns, angle_unit=angle_unit, frame_rate=frame_rate, run=run,
-                 pivot=pivot, y_down=y_down, scale=scale, model=model, period=period,
-                 length=length, length_uncertainty=length_uncertainty, mass=mass, g=g,
-                 latitude=latitude, height=height, start=start, stop=stop,
-                 bob_radius=bob_radius, force=force)
+    # The keywords, as given (every one of them is a request key).
+    given = {key: value for key, value in locals().items() if key in _FILE_KEYS}
     name = _os.fspath(path)
     if not isinstance(name, str):
         name = name.decode()

@@ -249,6 +249,26 @@ def photogate(path):
             f.write(f"{tick(t):.6f},{tick(half) * 1e6:.0f},{tick(pulse(a)) * 1e6:.0f}\n")
 
 
+def ticc(path):
+    """Ten minutes of a TAPR TICC counter's log in its timestamp mode, as a
+    serial terminal captures it: the firmware's banner (`#` lines), then
+    one timestamp a line, to the picosecond, with its channel. On chA a
+    seconds pendulum's photogate, gaining 2.0 s/day, its ticks 1.5 ms
+    from its tocks (a beat error), 20 us of jitter; on chB a GPS
+    receiver's pulse per second (5 ns of jitter), 0.3 s after each whole
+    second. Its own generator, so the files above stay as they were."""
+    own = random.Random(20261129)
+    period = 1.0 / (1 + 2.0 / 86400)  # a beat, s
+    events = [(5.0 + k * period + (7.5e-4 if k % 2 else -7.5e-4) + own.gauss(0, 20e-6), "chA")
+              for k in range(600)]
+    events += [(s + 0.3 + own.gauss(0, 5e-9), "chB") for s in range(6, 606)]
+    with open(path, "w") as f:
+        f.write("# \n# TAPR TICC Timestamping Counter\n# \n#####################\n"
+                "# TICC Configuration: \n# Measurement Mode: Timestamp\n#####################\n")
+        for t, channel in sorted(events):
+            f.write(f"{t:.12f} {channel}\n")
+
+
 rundown("examples/rundown.csv")
 video("examples/video.csv")
 beats("examples/beats.csv")
@@ -259,5 +279,6 @@ offsets("examples/offsets.csv")
 frequency("examples/frequency.txt")
 clock_log("examples/clock-log.csv", "examples/clock-events.csv")
 photogate("examples/photogate.csv")
-print("wrote examples/clock-log.csv, examples/photogate.csv, examples/clock-events.csv,  examples/offsets.csv, examples/frequency.txt,  examples/rundown.csv, examples/video.csv, examples/beats.csv, "
+ticc("examples/ticc.txt")
+print("wrote examples/ticc.txt, examples/clock-log.csv, examples/photogate.csv, examples/clock-events.csv,  examples/offsets.csv, examples/frequency.txt,  examples/rundown.csv, examples/video.csv, examples/beats.csv, "
       "examples/tracker.txt, examples/rundown-semicolon.csv, examples/spring.csv")

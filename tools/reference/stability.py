@@ -5,7 +5,9 @@ library the time-and-frequency community checks against Stable32).
 
 Writes crates/pendulum-theory/tests/data/stability/NAME.csv for four seeded
 noise types (1000 phase points each, tau0 = 1 s): the series itself
-(`phase_s` column) in one file and, in NAME_devs.csv, each statistic at
+(`phase_s` column) in one file and, in NAME_devs.csv, each statistic
+(the Allan, modified Allan, time, Hadamard and total deviations and the
+MTIE) at
 octave averaging factors m = 1, 2, 4, ... as allantools computes it from
 the phase data; in NAME_ci.csv, for the overlapping Allan, modified Allan
 and overlapping Hadamard deviations, the noise type allantools identifies
@@ -44,7 +46,8 @@ def series():
 
 
 STATISTICS = {"adev": allantools.adev, "oadev": allantools.oadev, "mdev": allantools.mdev,
-              "tdev": allantools.tdev, "hdev": allantools.hdev, "ohdev": allantools.ohdev}
+              "tdev": allantools.tdev, "hdev": allantools.hdev, "ohdev": allantools.ohdev,
+              "totdev": allantools.totdev, "mtie": allantools.mtie}
 
 
 def main():

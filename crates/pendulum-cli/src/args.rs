@@ -154,17 +154,10 @@ out clearest is used unless --channel says otherwise.")]
 
 The folder is written whole or not at all; the simulated run-down is at most 10^5 periods.")]
     Report(ReportArgs),
-    /// The frequency stability of any series: Allan, modified Allan, time
-    /// and Hadamard deviations with confidence intervals and the noise at
-    /// each averaging time (NIST SP 1065).
-    #[command(after_help = "Examples:
-  pendulum stability examples/offsets.csv
-  pendulum stability examples/offsets.csv --json
-  pendulum stability examples/frequency.txt --kind frequency --tau0 1h
-
-A file with a header names its column: offset (phase, s; also ms, us, ns) or rate (s/day; a
-bare `frequency` is a fraction); a time column sets τ0 and marks gaps. A file without a header
-holds one column of values, or a time and a value: give --kind.")]
+    /// The frequency stability of any series: Allan, modified Allan, time,
+    /// Hadamard and total deviations and MTIE, with confidence intervals
+    /// and the noise at each averaging time (NIST SP 1065).
+    #[command(after_help = stability_help())]
     Stability(StabilityArgs),
     /// A clock's log: its rate against the weather, the tides and the days
     /// (coefficients with standard errors), and its stability before and
@@ -187,6 +180,26 @@ amplitude (deg, mrad). Each term stays only if the Bayesian information criterio
 Times are UTC. Rows: time, gravity_change_nm_s2 (positive: g larger), rate_s_per_day (the
 pendulum's: +Δg/2g, gaining while g is larger). No ocean loading, no polar motion.")]
     Tide(TideArgs),
+}
+
+/// `stability`'s help after its options: examples, the files it reads,
+/// and each deviation of the library's list with what it is.
+fn stability_help() -> String {
+    let mut help = "Examples:
+  pendulum stability examples/offsets.csv
+  pendulum stability examples/offsets.csv --json
+  pendulum stability examples/frequency.txt --kind frequency --tau0 1h
+
+A file with a header names its column: offset (phase, s; also ms, us, ns) or rate (s/day; a
+bare `frequency` is a fraction); a time column sets τ0 and marks gaps. A file without a header
+holds one column of values, or a time and a value: give --kind.
+
+Deviations (the JSON's and CSV's keys):"
+        .to_string();
+    for d in pendulum_theory::stability::DEVIATIONS {
+        help.push_str(&format!("\n  {} ({}): {}", d.name, d.key, d.help));
+    }
+    help
 }
 
 /// What a stability series holds.

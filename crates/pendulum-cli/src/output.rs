@@ -178,6 +178,59 @@ pub fn csv<T: Serialize>(rows: &[T]) -> Result<String, CliError> {
     csv_text(writer)
 }
 
+/// Rows as CSV, each row's keys in the order it writes them, through its
+/// JSON: for rows the `csv` crate cannot write (a flattened map of keys a
+/// list decides, as the stability rows' deviations). Numbers as JSON
+/// writes them (the shortest that reads back), `None` an empty cell.
+pub fn csv_flat<T: Serialize>(rows: &[T]) -> Result<String, CliError> {
+    let encode = |e: String| CliError::other(format!("could not encode CSV: {e}"));
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    for (i, row) in rows.iter().enumerate() {
+        let json = serde_json::to_string(row).map_err(|e| encode(e.to_string()))?;
+        let Ordered(cells) = serde_json::from_str(&json).map_err(|e| encode(e.to_string()))?;
+        if i == 0 {
+            writer
+                .write_record(cells.iter().map(|(k, _)| k.as_str()))
+                .map_err(|e| encode(e.to_string()))?;
+        }
+        let text = |v: &serde_json::Value| match v {
+            serde_json::Value::Null => String::new(),
+            serde_json::Value::String(s) => s.clone(),
+            other => other.to_string(),
+        };
+        writer
+            .write_record(cells.iter().map(|(_, v)| text(v)))
+            .map_err(|e| encode(e.to_string()))?;
+    }
+    csv_text(writer)
+}
+
+/// A JSON object's entries in their written order.
+struct Ordered(Vec<(String, serde_json::Value)>);
+
+impl<'de> serde::Deserialize<'de> for Ordered {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Entries;
+        impl<'de> serde::de::Visitor<'de> for Entries {
+            type Value = Ordered;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("an object")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                mut map: A,
+            ) -> Result<Ordered, A::Error> {
+                let mut entries = Vec::new();
+                while let Some(entry) = map.next_entry()? {
+                    entries.push(entry);
+                }
+                Ok(Ordered(entries))
+            }
+        }
+        d.deserialize_map(Entries)
+    }
+}
+
 /// The text a CSV writer holds.
 fn csv_text(writer: csv::Writer<Vec<u8>>) -> Result<String, CliError> {
     let bytes = writer

@@ -1,17 +1,20 @@
 //! Measurement files as people have them, read from text and bytes into
 //! the pendulum library's columns: CSV and semicolon files with decimal
 //! commas, Tracker's exports and projects (`.trk`), phyphox's CSV and
-//! workbooks, loggers' tables with date-times. No file system: the command
+//! workbooks, loggers' tables with date-times, a TICC counter's log (the
+//! formats read whole are one list, [`formats::FORMATS`]). No file system: the command
 //! line opens a file and hands its reader here; the browser page hands
 //! the bytes of a dropped file or a pasted table. Both therefore read a
 //! file the same way and refuse it in the same words.
 
 pub mod figure;
 pub mod fits;
+pub mod formats;
 pub mod lab;
 pub mod measured;
 pub mod request;
 pub mod table;
+pub mod ticc;
 pub mod tracker;
 pub mod units;
 pub mod workbook;
@@ -108,34 +111,30 @@ impl fmt::Display for ReadError {
 impl std::error::Error for ReadError {}
 
 /// How a file's bytes are laid out, told by its name's extension.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug)]
 pub enum Layout {
-    /// Lines of text: CSV, semicolon, tab or space separated.
+    /// Lines of text (CSV, semicolon, tab or space separated), unless its
+    /// first bytes are a format's of [`formats::FORMATS`] (a TICC log).
     Text,
-    /// A spreadsheet workbook (`.xls`, `.xlsx`, `.xlsm`, `.xlsb`, `.ods`).
-    Workbook,
-    /// A Tracker project (`.trk`, XML).
-    TrackerProject,
+    /// A format of [`formats::FORMATS`], read whole (a workbook, a
+    /// Tracker project).
+    Whole(&'static formats::FileFormat),
+}
+
+impl PartialEq for Layout {
+    fn eq(&self, other: &Self) -> bool {
+        match (self, other) {
+            (Layout::Text, Layout::Text) => true,
+            (Layout::Whole(a), Layout::Whole(b)) => a.name == b.name,
+            _ => false,
+        }
+    }
 }
 
 impl Layout {
     /// The layout of a file called `name`, by its extension.
     pub fn of_name(name: &str) -> Layout {
-        let extension = name
-            .rsplit_once('.')
-            .map(|(_, e)| e)
-            .filter(|e| !e.contains(['/', '\\']));
-        match extension {
-            Some(e)
-                if workbook::EXTENSIONS
-                    .iter()
-                    .any(|w| e.eq_ignore_ascii_case(w)) =>
-            {
-                Layout::Workbook
-            }
-            Some(e) if e.eq_ignore_ascii_case("trk") => Layout::TrackerProject,
-            _ => Layout::Text,
-        }
+        formats::by_name(name).map_or(Layout::Text, Layout::Whole)
     }
 }
 

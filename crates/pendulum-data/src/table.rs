@@ -346,6 +346,10 @@ pub struct Format {
     /// record's first sample.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub window_s: Option<[f64; 2]>,
+    /// The reader the file went through: `text table`, or a format of
+    /// [`crate::formats::FORMATS`] (`spreadsheet workbook`, `Tracker
+    /// project`, `TICC log`), whose table the separator and decimal are of.
+    pub reader: &'static str,
     /// The sheet read from a spreadsheet workbook (`.xls`, `.xlsx`, `.ods`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sheet: Option<String>,
@@ -1195,14 +1199,19 @@ pub fn stream_table<E: From<ReadError>>(
         reader: handle,
     } = source;
     let fail = |message: String| E::from(ReadError::other(format!("{file}: {message}")));
-    let is_project = layout == Layout::TrackerProject;
-    let mut track = None;
-    let mut sheet = None;
-    let workbook = layout == Layout::Workbook;
-    let mut reader: Box<dyn BufRead> = if workbook || is_project {
-        // A workbook (cells compressed or in records) or a Tracker project
-        // (XML) is read whole, and its sheet or track becomes the table's
-        // text.
+    let mut handle = handle;
+    // A format read whole: by the file's name, else by its first bytes.
+    let whole = match layout {
+        Layout::Whole(f) => Some(f),
+        Layout::Text => match handle.fill_buf() {
+            Ok(head) => crate::formats::by_contents(&head[..head.len().min(8192)]),
+            Err(e) => return Err(fail(format!("cannot read it: {e}"))),
+        },
+    };
+    let is_project = whole.is_some_and(|f| f.name == crate::tracker::FORMAT.name);
+    let mut converted = None;
+    let mut reader: Box<dyn BufRead> = if let Some(format) = whole {
+        // Its contents become the table's text.
         let mut bytes = Vec::new();
         handle
             .take(MAX_FILE_BYTES + 1)
@@ -1214,23 +1223,21 @@ pub fn stream_table<E: From<ReadError>>(
                 MAX_FILE_BYTES >> 30
             )));
         }
-        let text = if workbook {
-            let found = crate::workbook::read(bytes).map_err(fail)?;
-            sheet = Some(found.name);
-            found.text
-        } else {
-            let text = String::from_utf8(bytes).map_err(|_| {
-                fail("cannot read it: stream did not contain valid UTF-8".to_string())
-            })?;
-            let project = crate::tracker::read(&text).map_err(fail)?;
-            track = Some(project.track);
-            project.csv
-        };
+        let mut read = (format.read)(bytes).map_err(fail)?;
+        let text = std::mem::take(&mut read.text);
+        converted = Some((format.name, read));
         Box::new(std::io::Cursor::new(text.into_bytes()))
     } else {
         Box::new(handle.take(MAX_FILE_BYTES + 1))
     };
     let mut total = 0_u64;
+    // The file's line of each line of a converted text (a TICC log's
+    // readings under their own line numbers).
+    let line_map = converted
+        .as_mut()
+        .map(|c| std::mem::take(&mut c.1.lines))
+        .unwrap_or_default();
+    let mut raw_lines = 0_usize;
     let mut next_line = |number: &mut u64| -> Result<Option<String>, E> {
         let mut bytes = Vec::new();
         let read = (&mut reader)
@@ -1240,7 +1247,8 @@ pub fn stream_table<E: From<ReadError>>(
         if read == 0 {
             return Ok(None);
         }
-        *number += 1;
+        raw_lines += 1;
+        *number = line_map.get(raw_lines - 1).copied().unwrap_or(*number + 1);
         total += read as u64;
         if total > MAX_FILE_BYTES {
             return Err(fail(format!(
@@ -1538,8 +1546,9 @@ pub fn stream_table<E: From<ReadError>>(
         skipped_lines: Vec::new(),
         notes: Vec::new(),
         frame_rate: rate,
-        tracker_track: track,
-        sheet,
+        reader: converted.as_ref().map_or("text table", |c| c.0),
+        tracker_track: converted.as_mut().and_then(|c| c.1.track.take()),
+        sheet: converted.as_mut().and_then(|c| c.1.sheet.take()),
         angular_velocity_columns: Vec::new(),
         window_s: None,
         repeated_rows_dropped: None,
@@ -1739,8 +1748,14 @@ pub fn stream_table<E: From<ReadError>>(
         format.run = Some(want);
         format.runs = Some(runs);
     }
-    // Nothing left out without a word: rows skipped for a blank cell, and
-    // columns of a kind after the first, which are not read.
+    // Nothing left out without a word: what the format's reader left
+    // out, rows skipped for a blank cell, and columns of a kind after the
+    // first, which are not read.
+    if let Some((_, c)) = &converted {
+        format
+            .notes
+            .extend(c.notes.iter().map(|n| format!("{file}: {n}")));
+    }
     if format.skipped_rows > 0 {
         let shown: Vec<String> = format.skipped_lines.iter().map(u64::to_string).collect();
         format.notes.push(format!(

@@ -18,6 +18,23 @@ pub struct Project {
     pub csv: String,
 }
 
+/// The Tracker project's entry in [`crate::formats::FORMATS`].
+pub const FORMAT: crate::formats::FileFormat = crate::formats::FileFormat {
+    name: "Tracker project",
+    extensions: &["trk"],
+    recognise: None,
+    read: |bytes| {
+        let text = String::from_utf8(bytes)
+            .map_err(|_| "cannot read it: stream did not contain valid UTF-8".to_string())?;
+        let project = read(&text)?;
+        Ok(crate::formats::Converted {
+            text: project.csv,
+            track: Some(project.track),
+            ..Default::default()
+        })
+    },
+};
+
 /// One entry of the stack of open elements.
 enum Open {
     /// An `<object class=…>`.

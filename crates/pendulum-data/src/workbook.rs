@@ -11,6 +11,21 @@ use std::io::Cursor;
 /// Extensions read as workbooks.
 pub const EXTENSIONS: [&str; 5] = ["xls", "xlsx", "xlsm", "xlsb", "ods"];
 
+/// The workbook's entry in [`crate::formats::FORMATS`].
+pub const FORMAT: crate::formats::FileFormat = crate::formats::FileFormat {
+    name: "spreadsheet workbook",
+    extensions: &EXTENSIONS,
+    recognise: None,
+    read: |bytes| {
+        let sheet = read(bytes)?;
+        Ok(crate::formats::Converted {
+            text: sheet.text,
+            sheet: Some(sheet.name),
+            ..Default::default()
+        })
+    },
+};
+
 /// A sheet, as table text.
 #[derive(Debug)]
 pub struct Sheet {

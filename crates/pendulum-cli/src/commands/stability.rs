@@ -8,8 +8,8 @@ use crate::output::{self, num, Summary};
 use crate::plot::{render, Figure, Panel, Series, Target};
 use pendulum_theory::analysis::Refusal;
 use pendulum_theory::stability::{
-    grid, stability, DataKind, Gridded, Outliers, Stability, StabilityInput, StabilityRow,
-    StabilityWarning, Taus,
+    grid, stability, DataKind, DeviationUnit, Gridded, Measured, Outliers, Stability,
+    StabilityInput, StabilityRow, StabilityWarning, Taus, ADEV, DEVIATIONS,
 };
 use serde::Serialize;
 
@@ -165,16 +165,16 @@ pub fn run(args: &StabilityArgs) -> Result<String, CliError> {
         });
     }
     if args.csv {
-        return output::csv(&result.rows);
+        return output::csv_flat(&result.rows);
     }
     Ok(text(&file, &result, gridded.as_ref()))
 }
 
 /// A deviation and its interval: "1.23e-7 (1.1e-7 … 1.4e-7)".
-fn with_interval(v: Option<f64>, low: Option<f64>, high: Option<f64>) -> String {
-    match (v, low, high) {
-        (Some(v), Some(l), Some(h)) => format!("{} ({} … {})", num(v, 4), num(l, 2), num(h, 2)),
-        (Some(v), _, _) => num(v, 4),
+fn with_interval(m: &Measured) -> String {
+    match (m.value, m.interval) {
+        (Some(v), Some((l, h))) => format!("{} ({} … {})", num(v, 4), num(l, 2), num(h, 2)),
+        (Some(v), None) => num(v, 4),
         _ => "–".to_string(),
     }
 }
@@ -210,38 +210,35 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
     }
     let mut out = summary.render();
     out.push('\n');
+    // One column per deviation of the library's list, then the rate and
+    // the noise.
+    let mut header: Vec<String> = vec!["τ (s)".into()];
+    for d in DEVIATIONS {
+        header.push(match (d.interval, d.unit) {
+            (Some(_), _) => format!("{} (68% interval)", d.name),
+            (None, DeviationUnit::Seconds) => format!("{} (s)", d.name),
+            (None, DeviationUnit::Fractional) => d.name.to_string(),
+        });
+    }
+    header.extend(["ADEV (s/day)".into(), "noise".into()]);
     let rows: Vec<Vec<String>> = s
         .rows
         .iter()
         .map(|r| {
-            vec![
-                num(r.tau_s, 6),
-                with_interval(r.adev, r.adev_low, r.adev_high),
-                with_interval(r.mdev, r.mdev_low, r.mdev_high),
-                r.tdev.map_or("–".into(), |v| num(v, 4)),
-                with_interval(r.hdev, r.hdev_low, r.hdev_high),
-                r.adev_s_per_day.map_or("–".into(), |v| num(v, 3)),
-                match r.noise {
-                    Some(n) if r.noise_carried => format!("{} (from shorter τ)", n.name()),
-                    Some(n) => n.name().to_string(),
-                    None if r.periodic => "periodic signal".into(),
-                    None => "–".into(),
-                },
-            ]
+            let mut cells = vec![num(r.tau_s, 6)];
+            cells.extend(r.deviations.0.iter().map(with_interval));
+            cells.push(r.adev_s_per_day.map_or("–".into(), |v| num(v, 3)));
+            cells.push(match r.noise {
+                Some(n) if r.noise_carried => format!("{} (from shorter τ)", n.name()),
+                Some(n) => n.name().to_string(),
+                None if r.periodic => "periodic signal".into(),
+                None => "–".into(),
+            });
+            cells
         })
         .collect();
-    out.push_str(&output::table(
-        &[
-            "τ (s)",
-            "ADEV (68% interval)",
-            "MDEV (68% interval)",
-            "TDEV (s)",
-            "HDEV (68% interval)",
-            "ADEV (s/day)",
-            "noise",
-        ],
-        &rows,
-    ));
+    let header: Vec<&str> = header.iter().map(String::as_str).collect();
+    out.push_str(&output::table(&header, &rows));
     out.push('\n');
     // The noises in words, each where it starts; the rows a periodic
     // signal makes are said apart.
@@ -361,13 +358,9 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
 pub(crate) fn adev_bars(rows: &[StabilityRow]) -> Vec<(f64, f64, f64, f64)> {
     rows.iter()
         .filter_map(|r| {
-            let a = r.adev?;
-            Some((
-                r.tau_s,
-                a,
-                r.adev_low.unwrap_or(a),
-                r.adev_high.unwrap_or(a),
-            ))
+            let a = r.adev()?;
+            let (low, high) = r.interval(&ADEV).unwrap_or((a, a));
+            Some((r.tau_s, a, low, high))
         })
         .collect()
 }
@@ -390,19 +383,30 @@ fn figure(s: &Stability) -> Figure {
             .filter_map(|r| Some((r.tau_s, f(r)?)))
             .collect()
     };
+    // The other fractional deviations of the library's list as light
+    // lines (the times, TDEV and MTIE, have another unit), ADEV on top.
+    let mut series: Vec<Series> = DEVIATIONS
+        .iter()
+        .filter(|d| d.unit == DeviationUnit::Fractional && **d != ADEV)
+        .enumerate()
+        .map(|(i, d)| {
+            Series::line(d.name, pick(&|r| r.value(d)))
+                .colored(i + 1)
+                .light()
+        })
+        .collect();
+    series.push(
+        Series::dots_with_bars(
+            "ADEV (overlapping), 68% interval as a bar",
+            adev_bars(&s.rows),
+        )
+        .colored(0),
+    );
     let panel = Panel::new(
         "Frequency stability",
         "averaging time τ (s)",
         deviation_axis("deviation"),
-        vec![
-            Series::line("MDEV", pick(&|r| r.mdev)).colored(1).light(),
-            Series::line("HDEV", pick(&|r| r.hdev)).colored(2).light(),
-            Series::dots_with_bars(
-                "ADEV (overlapping), 68% interval as a bar",
-                adev_bars(&s.rows),
-            )
-            .colored(0),
-        ],
+        series,
     )
     .log_log()
     .twin_y(S_PER_DAY_AXIS.0, S_PER_DAY_AXIS.1);

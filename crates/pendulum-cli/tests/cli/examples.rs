@@ -773,6 +773,18 @@ fn examples() -> Vec<(&'static str, Check)> {
             assert!((r.number("Rate") - 4.0).abs() < 0.05);
             r.svg("beats.svg");
         }),
+        ("pendulum fit beats examples/ticc.txt", |r| {
+            // The generator: a TICC's timestamps, the pendulum on chA
+            // gaining 2.0 s/day with 1.5 ms of beat error.
+            assert!((r.number("Rate") - 2.0).abs() < 0.05);
+            assert!((r.number("Beat error") - 1.5).abs() < 0.05);
+            r.says("gate chA of 2");
+        }),
+        ("pendulum fit beats examples/ticc.txt --gate chB", |r| {
+            // The GPS receiver's pulse per second keeps time.
+            assert!(r.number("Rate").abs() < 1e-3);
+            r.says("gate chB of 2");
+        }),
         (
             "pendulum fit period crates/pendulum-cli/tests/data/period/silveira1986.csv --length 2.87m",
             |r| {

@@ -399,3 +399,47 @@ fn real_tracker_projects_give_g_and_q() {
     // An 80° start: the amplitude-dependent laws, not viscous alone.
     assert_ne!(d["preferred"], "viscous");
 }
+
+/// A TAPR TICC counter's log, as a serial terminal captures it (its
+/// banner, then a timestamp and a channel a line): `fit beats` reads the
+/// first channel logged, a seconds pendulum made to gain 2.0 s/day with
+/// 1.5 ms of beat error (tools/examples), and `--gate chB` the GPS
+/// receiver's pulse per second beside it, which keeps time. A log of
+/// time intervals (`TI(A->B)`) is phase for `stability`: an offset of
+/// ±1 ns alternating has ADEV and TOTDEV 2√2 ns/τ₀ and MTIE 2 ns at τ₀.
+#[test]
+fn a_ticc_log_is_read_by_its_lines() {
+    let ticc = examples().join("ticc.txt");
+    let ticc = ticc.to_str().unwrap();
+    let pendulum = json(&["fit", "beats", ticc]);
+    assert_eq!(pendulum["format"]["reader"], "TICC log");
+    assert_eq!(pendulum["format"]["gate_labels"][0], "chA");
+    let rate = f(&pendulum, "rate_s_per_day");
+    assert!(
+        (rate - 2.0).abs() < 3.0 * f(&pendulum, "rate_se_s_per_day"),
+        "{rate}"
+    );
+    assert!((f(&pendulum, "beat_error_ms") - 1.5).abs() < 0.01);
+    let pps = json(&["fit", "beats", ticc, "--gate", "chB"]);
+    assert!(f(&pps, "rate_s_per_day").abs() < 1e-4, "{pps}");
+
+    let dir = tempfile::tempdir().unwrap();
+    let mut log = String::from("# TAPR TICC Timestamping Counter\n");
+    for k in 0..64 {
+        let x = if k % 2 == 0 { 1e-9 } else { -1e-9 };
+        log.push_str(&format!("{x:.12} TI(A->B)\n"));
+    }
+    let path = write(dir.path(), "ti.log", &log);
+    let s = json(&["stability", &path, "--tau0", "1s"]);
+    assert_eq!(s["format"]["reader"], "TICC log");
+    let first = &s["stability"][0];
+    assert!(
+        (f(first, "adev") - 8f64.sqrt() * 1e-9).abs() < 1e-21,
+        "{first}"
+    );
+    assert!(
+        (f(first, "totdev") - 8f64.sqrt() * 1e-9).abs() < 1e-21,
+        "{first}"
+    );
+    assert!((f(first, "mtie_s") - 2e-9).abs() < 1e-21, "{first}");
+}

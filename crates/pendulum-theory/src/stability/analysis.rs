@@ -2,11 +2,12 @@
 //! time, its confidence interval and the noise that dominates there, and
 //! a plain reading of the whole.
 
-use super::deviations::{mdev, oadev, ohdev, phase_from_frequency};
-use super::edf::{greenhall, Estimator, MDEV, OADEV, OHDEV};
+use super::deviations::{oadev, phase_from_frequency};
+use super::edf::greenhall;
 use super::noise::{identify_pooled, Noise};
 use super::outliers::{find_accidents, remove_accidents, AccidentKind};
 use super::periodic::{find_periodic, PeriodicSignal};
+use super::registry::{Deviation, ADEV, DEVIATIONS, HDEV};
 use crate::analysis::{judge_work, require_finite, Refusal};
 use crate::error::format_significant;
 use serde::Serialize;
@@ -62,6 +63,52 @@ pub enum Outliers {
     Remove,
 }
 
+/// One deviation's value at one averaging time, and its interval.
+#[derive(Clone, Copy, Debug)]
+pub struct Measured {
+    /// Which deviation ([`DEVIATIONS`]).
+    pub deviation: &'static Deviation,
+    /// Its value, `None` where the series is too short for it.
+    pub value: Option<f64>,
+    /// Its 68.3% (1σ) confidence interval, from Greenhall's EDF for the
+    /// noise identified at this τ, where the deviation has one.
+    pub interval: Option<(f64, f64)>,
+}
+
+/// Every deviation of [`DEVIATIONS`] at one averaging time, in its order.
+/// Written as each one's key with its value, and for those with an
+/// interval `KEY_low` and `KEY_high`.
+#[derive(Clone, Debug)]
+pub struct Deviations(pub Vec<Measured>);
+
+impl Deviations {
+    /// The entry of `deviation`.
+    pub fn get(&self, deviation: &Deviation) -> Option<&Measured> {
+        self.0.iter().find(|m| m.deviation == deviation)
+    }
+}
+
+impl Serialize for Deviations {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = serializer.serialize_map(None)?;
+        for m in &self.0 {
+            map.serialize_entry(m.deviation.key, &m.value)?;
+            if m.deviation.interval.is_some() {
+                map.serialize_entry(
+                    &format!("{}_low", m.deviation.key),
+                    &m.interval.map(|i| i.0),
+                )?;
+                map.serialize_entry(
+                    &format!("{}_high", m.deviation.key),
+                    &m.interval.map(|i| i.1),
+                )?;
+            }
+        }
+        map.end()
+    }
+}
+
 /// One averaging time.
 #[derive(Clone, Debug, Serialize)]
 pub struct StabilityRow {
@@ -69,29 +116,11 @@ pub struct StabilityRow {
     pub tau_s: f64,
     /// The averaging factor `m`.
     pub averaging_factor: usize,
-    /// The overlapping Allan deviation (SP 1065 eq. 11).
-    pub adev: Option<f64>,
-    /// Its 68.3% (1σ) confidence interval, low end, from Greenhall's EDF
-    /// for the noise identified at this τ.
-    pub adev_low: Option<f64>,
-    /// Its interval's high end.
-    pub adev_high: Option<f64>,
-    /// The modified Allan deviation (SP 1065 eq. 14).
-    pub mdev: Option<f64>,
-    /// Its interval's low end.
-    pub mdev_low: Option<f64>,
-    /// Its interval's high end.
-    pub mdev_high: Option<f64>,
-    /// The time deviation `τ mdev / √3`, in seconds (the key the issue
-    /// names, `tdev`, without a unit suffix: a time deviation is always s).
-    pub tdev: Option<f64>,
-    /// The overlapping Hadamard deviation (SP 1065 eq. 18): blind to a
-    /// steady drift of the rate.
-    pub hdev: Option<f64>,
-    /// Its interval's low end.
-    pub hdev_low: Option<f64>,
-    /// Its interval's high end.
-    pub hdev_high: Option<f64>,
+    /// Each deviation of [`DEVIATIONS`] with its interval (the keys
+    /// `adev`, `adev_low`, `adev_high`, `mdev`, …, `tdev`, `hdev`, …,
+    /// `totdev`, `mtie_s`).
+    #[serde(flatten)]
+    pub deviations: Deviations,
     /// The overlapping Allan deviation as a rate, s/day (`adev × 86,400`).
     pub adev_s_per_day: Option<f64>,
     /// The noise that dominates at this τ (lag-1 autocorrelation), or, with
@@ -108,6 +137,23 @@ pub struct StabilityRow {
     pub periodic: bool,
     /// Why the row has no interval, when it has none.
     pub no_interval_reason: Option<&'static str>,
+}
+
+impl StabilityRow {
+    /// The value of `deviation` here.
+    pub fn value(&self, deviation: &Deviation) -> Option<f64> {
+        self.deviations.get(deviation)?.value
+    }
+
+    /// The 68% interval of `deviation` here.
+    pub fn interval(&self, deviation: &Deviation) -> Option<(f64, f64)> {
+        self.deviations.get(deviation)?.interval
+    }
+
+    /// The overlapping Allan deviation ([`ADEV`]).
+    pub fn adev(&self) -> Option<f64> {
+        self.value(&ADEV)
+    }
 }
 
 /// The averaging time at which the clock is steadiest.
@@ -307,7 +353,7 @@ const SECONDS_PER_TERM: f64 = 2e-9;
 /// # Examples
 ///
 /// ```
-/// use pendulum_theory::stability::{stability, DataKind, Outliers, StabilityInput, Taus};
+/// use pendulum_theory::stability::{stability, DataKind, Outliers, StabilityInput, Taus, HDEV};
 ///
 /// // A frequency drifting steadily, y = D t: σ_y(τ) = D τ/√2 (NIST SP 1065).
 /// let drift = 1e-9; // per second
@@ -321,8 +367,8 @@ const SECONDS_PER_TERM: f64 = 2e-9;
 /// })?;
 /// let row = &s.rows[2];
 /// assert_eq!(row.tau_s, 4.0);
-/// assert!((row.adev.unwrap() - drift * 4.0 / 2f64.sqrt()).abs() < 1e-15);
-/// assert!(row.hdev.unwrap() < 1e-15); // Hadamard's is blind to a drift
+/// assert!((row.adev().unwrap() - drift * 4.0 / 2f64.sqrt()).abs() < 1e-15);
+/// assert!(row.value(&HDEV).unwrap() < 1e-15); // Hadamard's is blind to a drift
 /// # Ok::<(), pendulum_theory::analysis::Refusal>(())
 /// ```
 pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
@@ -371,75 +417,17 @@ pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
     let mut previous: Option<Noise> = None;
     let mut rows = Vec::with_capacity(factors.len());
     for &m in &factors {
-        let a = oadev(&phase, tau0, m);
-        let tau = m as f64 * tau0;
-        let periodic = match (&signal, a) {
-            (Some(sig), Some(a)) => sig.allan_variance(tau) > 0.5 * a * a,
-            _ => false,
-        };
-        let identified = if periodic {
-            None
-        } else {
-            identify_pooled(&data, m, is_phase, 2)
-        };
-        let carried = identified.is_none() && previous.is_some() && !periodic;
-        let noise = if periodic {
-            None
-        } else {
-            identified.or(previous)
-        };
-        if !periodic {
-            previous = noise;
+        let row = row_at(&phase, &data, tau0, m, is_phase, signal.as_ref(), previous);
+        if !row.periodic {
+            previous = row.noise;
         }
-        let hadamard_noise = if identified.is_some() {
-            identify_pooled(&data, m, is_phase, 3)
-        } else {
-            noise
-        };
-        let ci = |dev: Option<f64>, est: Estimator, noise: Option<Noise>| {
-            let edf = greenhall(noise?.alpha(), est, m, n)?;
-            Some((edf, interval(dev?, edf)?))
-        };
-        let md = mdev(&phase, tau0, m);
-        let h = ohdev(&phase, tau0, m);
-        let a_ci = ci(a, OADEV, noise);
-        let md_ci = ci(md, MDEV, noise);
-        let h_ci = ci(h, OHDEV, hadamard_noise);
-        let no_interval_reason = match (a_ci, periodic, noise) {
-            (Some(_), _, _) => None,
-            (None, true, _) => Some("a periodic signal, not noise, makes this deviation"),
-            (None, false, None) => Some("too few points to tell the noise (30 needed)"),
-            (None, false, Some(_)) => {
-                Some("too few points for the equivalent degrees of freedom at this τ")
-            }
-        };
-        rows.push(StabilityRow {
-            tau_s: tau,
-            averaging_factor: m,
-            adev: a,
-            adev_low: a_ci.map(|c| c.1 .0),
-            adev_high: a_ci.map(|c| c.1 .1),
-            mdev: md,
-            mdev_low: md_ci.map(|c| c.1 .0),
-            mdev_high: md_ci.map(|c| c.1 .1),
-            tdev: md.map(|v| v * tau / 3f64.sqrt()),
-            hdev: h,
-            hdev_low: h_ci.map(|c| c.1 .0),
-            hdev_high: h_ci.map(|c| c.1 .1),
-            adev_s_per_day: a.map(|v| v * 86_400.0),
-            noise,
-            noise_alpha: noise.map(Noise::alpha),
-            noise_carried: carried,
-            adev_edf: a_ci.map(|c| c.0),
-            periodic,
-            no_interval_reason,
-        });
+        rows.push(row);
     }
     // Rows past the last computable deviation say nothing.
-    rows.retain(|r| r.adev.is_some() || r.hdev.is_some());
+    rows.retain(|r| r.adev().is_some() || r.value(&HDEV).is_some());
     let best = rows
         .iter()
-        .filter_map(|r| Some((r.tau_s, r.adev?)))
+        .filter_map(|r| Some((r.tau_s, r.adev()?)))
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(tau_s, adev)| Best {
             tau_s,
@@ -448,7 +436,7 @@ pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
             at_longest_tau: rows
                 .iter()
                 .rev()
-                .find(|r| r.adev.is_some())
+                .find(|r| r.adev().is_some())
                 .is_some_and(|r| r.tau_s == tau_s),
         });
     let mut warnings = Vec::new();
@@ -486,6 +474,84 @@ pub fn stability(input: &StabilityInput) -> Result<Stability, Refusal> {
         warnings,
         periodic: signal.filter(|_| !dominated.is_empty()),
     })
+}
+
+/// The row at averaging factor `m`: every deviation of [`DEVIATIONS`]
+/// on `phase`, the noise identified on `data` (as given, phase or
+/// frequency; carried from `previous` where too few points tell it), the
+/// intervals for that noise, and whether `signal` dominates here.
+fn row_at(
+    phase: &[f64],
+    data: &[f64],
+    tau0: f64,
+    m: usize,
+    is_phase: bool,
+    signal: Option<&PeriodicSignal>,
+    previous: Option<Noise>,
+) -> StabilityRow {
+    let n = phase.len();
+    let tau = m as f64 * tau0;
+    let a = oadev(phase, tau0, m);
+    let periodic = match (signal, a) {
+        (Some(sig), Some(a)) => sig.allan_variance(tau) > 0.5 * a * a,
+        _ => false,
+    };
+    let identified = if periodic {
+        None
+    } else {
+        identify_pooled(data, m, is_phase, 2)
+    };
+    let carried = identified.is_none() && previous.is_some() && !periodic;
+    let noise = if periodic {
+        None
+    } else {
+        identified.or(previous)
+    };
+    // The noise a deviation's interval reads: identified with its own
+    // highest difference where it can be, else the row's.
+    let noise_for = |d_max: u32| match identified {
+        Some(_) if d_max != 2 => identify_pooled(data, m, is_phase, d_max),
+        _ => noise,
+    };
+    let mut adev_edf = None;
+    let deviations = DEVIATIONS
+        .iter()
+        .map(|deviation| {
+            let value = (deviation.compute)(phase, tau0, m);
+            let with_edf = deviation.interval.and_then(|rule| {
+                let edf = greenhall(noise_for(rule.d_max)?.alpha(), rule.edf, m, n)?;
+                Some((edf, interval(value?, edf)?))
+            });
+            if deviation == &ADEV {
+                adev_edf = with_edf.map(|c| c.0);
+            }
+            Measured {
+                deviation,
+                value,
+                interval: with_edf.map(|c| c.1),
+            }
+        })
+        .collect();
+    let no_interval_reason = match (adev_edf, periodic, noise) {
+        (Some(_), _, _) => None,
+        (None, true, _) => Some("a periodic signal, not noise, makes this deviation"),
+        (None, false, None) => Some("too few points to tell the noise (30 needed)"),
+        (None, false, Some(_)) => {
+            Some("too few points for the equivalent degrees of freedom at this τ")
+        }
+    };
+    StabilityRow {
+        tau_s: tau,
+        averaging_factor: m,
+        deviations: Deviations(deviations),
+        adev_s_per_day: a.map(|v| v * 86_400.0),
+        noise,
+        noise_alpha: noise.map(Noise::alpha),
+        noise_carried: carried,
+        adev_edf,
+        periodic,
+        no_interval_reason,
+    }
 }
 
 /// A series at possibly irregular times, put on a regular grid.

@@ -7,7 +7,9 @@
 //! digits (half a unit of its last digit), from phase data and from the
 //! frequency data alike.
 
-use pendulum_theory::stability::{adev, hdev, mdev, oadev, ohdev, phase_from_frequency, tdev};
+use pendulum_theory::stability::{
+    adev, hdev, mdev, mtie, oadev, ohdev, phase_from_frequency, tdev, totdev,
+};
 
 /// The NBS14 phase data (τ₀ = 1).
 const PHASE: [f64; 10] = [
@@ -23,7 +25,7 @@ const FREQUENCY: [f64; 9] = [
 type Statistic = fn(&[f64], f64, usize) -> Option<f64>;
 
 /// (name, statistic, printed values at τ = 1 and 2).
-const TABLE: [(&str, Statistic, [&str; 2]); 6] = [
+const TABLE: [(&str, Statistic, [&str; 2]); 7] = [
     ("ADEV", adev, ["91.22945", "115.8082"]),
     ("OADEV", oadev, ["91.22945", "85.95287"]),
     ("MDEV", mdev, ["91.22945", "74.78849"]),
@@ -34,6 +36,7 @@ const TABLE: [(&str, Statistic, [&str; 2]); 6] = [
     // and HDEV(1) = OHDEV(1) exactly (checked below).
     ("HDEV", hdev, ["70.80607", "116.7980"]),
     ("OHDEV", ohdev, ["70.80607", "85.61487"]),
+    ("TOTDEV", totdev, ["91.22945", "93.90379"]),
 ];
 
 /// Half a unit of the last printed digit of `printed`.
@@ -74,6 +77,63 @@ fn at_tau0_the_overlapping_estimators_are_the_plain_ones() {
     assert_eq!(adev(&PHASE, 1.0, 1), oadev(&PHASE, 1.0, 1));
     let (a, m) = (adev(&PHASE, 1.0, 1).unwrap(), mdev(&PHASE, 1.0, 1).unwrap());
     assert!((a / m - 1.0).abs() < 1e-14, "{a} {m}");
+}
+
+/// The MTIE against closed forms: a steady rate `a` (phase `a t`) has
+/// MTIE `a τ`; a sine of amplitude `A` reaches `2A` once τ covers half
+/// its period; a gap inside a window is left out, not read as zero; and
+/// on NBS14 (the phase as printed) the largest swing in any two points
+/// is 262.77777 (from 166.44444 to −96.33333) and in any one step
+/// 144.88888.
+#[test]
+fn mtie_against_closed_forms() {
+    let ramp: Vec<f64> = (0..100).map(|i| 2.5e-6 * i as f64).collect();
+    for m in [1, 3, 10, 99] {
+        let got = mtie(&ramp, 10.0, m).unwrap();
+        assert!((got - 2.5e-6 * m as f64).abs() < 1e-15, "m = {m}: {got}");
+    }
+    assert!(mtie(&ramp, 10.0, 100).is_none());
+    let sine: Vec<f64> = (0..400)
+        .map(|i| 1e-3 * (std::f64::consts::TAU * i as f64 / 40.0).sin())
+        .collect();
+    let got = mtie(&sine, 1.0, 20).unwrap();
+    assert!((got - 2e-3).abs() < 1e-18, "{got}");
+    let mut gapped = ramp.clone();
+    gapped[50] = f64::NAN;
+    assert_eq!(mtie(&gapped, 10.0, 5), mtie(&ramp, 10.0, 5));
+    for (m, truth) in [(1, 144.88888), (2, 262.77777)] {
+        let got = mtie(&PHASE, 1.0, m).unwrap();
+        assert!((got - truth).abs() < 1e-10, "m = {m}: {got}");
+    }
+}
+
+/// The total deviation with a gap: the terms that read it are left out,
+/// so a gap in white frequency noise barely moves it.
+#[test]
+fn totdev_leaves_out_the_terms_a_gap_touches() {
+    let x: Vec<f64> = (0..1000)
+        .scan((0.0, 12345u64), |(sum, seed), _| {
+            *seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            *sum += (*seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            Some(*sum)
+        })
+        .collect();
+    let mut gapped = x.clone();
+    gapped[400] = f64::NAN;
+    for m in [1, 4, 16] {
+        let (a, b) = (
+            totdev(&x, 1.0, m).unwrap(),
+            totdev(&gapped, 1.0, m).unwrap(),
+        );
+        assert!(
+            b.is_finite() && (a / b - 1.0).abs() < 0.02,
+            "m = {m}: {a} {b}"
+        );
+    }
+    assert!(totdev(&x[..2], 1.0, 1).is_none());
+    assert!(totdev(&x[..10], 1.0, 9).is_none());
 }
 
 /// Too short a series has no statistic, and a bad τ₀ none either.
@@ -140,6 +200,8 @@ fn four_noise_types_as_allantools_computes_them() {
                 "tdev" => tdev,
                 "hdev" => hdev,
                 "ohdev" => ohdev,
+                "totdev" => totdev,
+                "mtie" => mtie,
                 other => panic!("unknown statistic {other}"),
             };
             let got = statistic(&x, 1.0, m).unwrap_or(f64::NAN);
@@ -150,7 +212,7 @@ fn four_noise_types_as_allantools_computes_them() {
             checked += 1;
         }
     }
-    assert!(checked >= 4 * 6 * 7, "only {checked} values checked");
+    assert!(checked >= 4 * 8 * 7, "only {checked} values checked");
 }
 
 /// The 1,000-point set of Riley's test suite: fractional frequencies
@@ -472,7 +534,7 @@ fn a_missed_pulse_is_warned_and_removed() {
     let removed = analysed(glitched, 10.0, false, Outliers::Remove);
     let reference = analysed(clean, 10.0, false, Outliers::Keep);
     for (r, c) in removed.rows.iter().zip(&reference.rows).take(8) {
-        let (a, b) = (r.adev.unwrap(), c.adev.unwrap());
+        let (a, b) = (r.adev().unwrap(), c.adev().unwrap());
         assert!(
             (a / b - 1.0).abs() < 0.01,
             "τ = {}: {a} against {b}",
@@ -513,7 +575,7 @@ fn a_daily_cycle_is_named_not_read_as_noise() {
         if r.periodic {
             assert_eq!(r.noise, None);
         }
-        if r.adev_low.is_none() && r.adev.is_some() {
+        if r.interval(&pendulum_theory::stability::ADEV).is_none() && r.adev().is_some() {
             assert!(
                 r.no_interval_reason.is_some(),
                 "τ = {} has no interval and no reason",

@@ -220,7 +220,7 @@ fn stability(r: &LogResult) -> Figure {
     let mut runs: Vec<Run> = Vec::new();
     let mut open = false;
     for s in noisy {
-        match (s.noise, s.adev, s.noise_carried, runs.last_mut()) {
+        match (s.noise, s.adev(), s.noise_carried, runs.last_mut()) {
             (Some(n), Some(a), false, Some((m, points, end))) if open && *m == n => {
                 points.push((s.tau_s, a));
                 *end = s.tau_s;

@@ -15,7 +15,7 @@ use pendulum_theory::clock_log::{
 };
 use pendulum_theory::compound::regulate::Regulated;
 use pendulum_theory::period::Nominal;
-use pendulum_theory::stability::StabilityRow;
+use pendulum_theory::stability::{StabilityRow, ADEV};
 use pendulum_theory::tide::Station;
 use serde::Serialize;
 
@@ -589,9 +589,9 @@ fn stability_table(rows: &[StabilityRow]) -> String {
         .map(|r| {
             vec![
                 num(r.tau_s, 5),
-                r.adev.map_or("–".into(), |v| num(v, 3)),
-                match (r.adev_low, r.adev_high) {
-                    (Some(l), Some(h)) => format!("{} … {}", num(l, 2), num(h, 2)),
+                r.adev().map_or("–".into(), |v| num(v, 3)),
+                match r.interval(&ADEV) {
+                    Some((l, h)) => format!("{} … {}", num(l, 2), num(h, 2)),
                     _ => "–".into(),
                 },
                 r.adev_s_per_day.map_or("–".into(), |v| num(v, 3)),

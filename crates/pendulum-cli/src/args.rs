@@ -12,6 +12,7 @@ use crate::units::{
 };
 use clap::{Args, Parser, Subcommand};
 use pendulum_theory::clock::analysis as clock;
+use pendulum_theory::clock::escapement::spec::Kind as EscapementKind;
 use pendulum_theory::compound::datasheet as sheet;
 use pendulum_theory::listening::synth::{Interference, TickRecording};
 use pendulum_theory::period::table as period_table;
@@ -1443,8 +1444,8 @@ pub struct ClockArgs {
     #[arg(long, value_name = "Q", allow_hyphen_values = true, help = with_default("Quality factor of the free pendulum", clock::DEFAULT_Q))]
     pub q: Option<Number>,
     /// The escapement [default: deadbeat].
-    #[arg(long, value_enum)]
-    pub escapement: Option<EscapementArg>,
+    #[arg(long, value_parser = escapement_parser())]
+    pub escapement: Option<EscapementKind>,
     #[arg(long, value_name = "A", allow_hyphen_values = true, help = with_default("The lift angle, the whole angle over which the escapement impulses (a bare number is degrees)", clock::DEFAULT_LIFT_DEG))]
     pub lift_angle: Option<Angle>,
     /// The drive: the torque at the pallets (e.g. 2e-4Nm) or the energy
@@ -1512,19 +1513,17 @@ pub struct ClockArgs {
     pub json: bool,
 }
 
-/// The escapements of `pendulum clock`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum EscapementArg {
-    /// Airy's instantaneous impulse at --impulse-angle.
-    Impulse,
-    /// Graham's deadbeat.
-    Deadbeat,
-    /// The anchor (recoil).
-    Recoil,
-    /// Gravity escapement or remontoire: the impulse independent of the drive.
-    ConstantForce,
-    /// Shortt's free pendulum: one impulse every --every-beats.
-    Free,
+/// The escapements of `pendulum clock`: the library's list, with each
+/// one's help.
+fn escapement_parser() -> impl clap::builder::TypedValueParser<Value = EscapementKind> {
+    use clap::builder::TypedValueParser;
+    use pendulum_theory::clock::escapement::spec::ESCAPEMENTS;
+    clap::builder::PossibleValuesParser::new(ESCAPEMENTS.iter().map(|e| {
+        clap::builder::PossibleValue::new(e.name)
+            .help(e.help)
+            .aliases(e.aliases.iter().copied())
+    }))
+    .map(|name| EscapementKind::from_name(&name).expect("a name of the list"))
 }
 
 /// `pendulum design`.

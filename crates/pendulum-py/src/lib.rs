@@ -1392,6 +1392,38 @@ fn cli(py: Python<'_>, argv: Vec<std::ffi::OsString>) -> u8 {
     py.detach(|| pendulum_cli::run(argv))
 }
 
+/// The library's lists where it is meant to grow, as JSON: each
+/// escapement, stability deviation, drag law and file format read whole,
+/// with its name and help (what the command line's help lists).
+#[pyfunction]
+fn lists() -> String {
+    use pendulum_theory::clock::escapement::spec::ESCAPEMENTS;
+    use pendulum_theory::stability::DEVIATIONS;
+    let escapements: Vec<_> = ESCAPEMENTS
+        .iter()
+        .map(|e| serde_json::json!({"name": e.name, "help": e.help}))
+        .collect();
+    let deviations: Vec<_> = DEVIATIONS
+        .iter()
+        .map(|d| serde_json::json!({"key": d.key, "name": d.name, "help": d.help, "unit": d.unit}))
+        .collect();
+    let drag_laws: Vec<_> = pendulum_theory::forces::DRAG_LAWS
+        .iter()
+        .map(|l| serde_json::json!({"name": l.name(), "help": l.describe()}))
+        .collect();
+    let formats: Vec<_> = pendulum_data::formats::FORMATS
+        .iter()
+        .map(|f| serde_json::json!({"name": f.name, "extensions": f.extensions}))
+        .collect();
+    serde_json::json!({
+        "escapements": escapements,
+        "deviations": deviations,
+        "drag_laws": drag_laws,
+        "file_formats": formats,
+    })
+    .to_string()
+}
+
 /// A measurement file's bytes fitted as `pendulum fit decay|trajectory|
 /// period FILE --json` fits it, the options a JSON request (the page's
 /// lab's keys: `pendulum_data::lab`); the reply is JSON, `{"ok": …,
@@ -1405,6 +1437,7 @@ fn fit_file(py: Python<'_>, request: &str, bytes: &[u8]) -> String {
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(cli, m)?)?;
     m.add_function(wrap_pyfunction!(fit_file, m)?)?;
+    m.add_function(wrap_pyfunction!(lists, m)?)?;
     m.add(
         "STANDARD_GRAVITY",
         pendulum_theory::pendulum::STANDARD_GRAVITY,

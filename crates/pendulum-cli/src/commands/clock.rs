@@ -4,7 +4,7 @@
 //! arguments and the drive file, writes the rows and renders the result.
 
 use super::common;
-use crate::args::{ClockArgs, EscapementArg};
+use crate::args::ClockArgs;
 use crate::data::{read_table, Found, ReadOptions, Role, Table};
 use crate::error::CliError;
 use crate::file::CsvFile;
@@ -16,7 +16,6 @@ use pendulum_theory::clock::analysis::{
     analyse, ClockInput, ClockPendulum, ClockResult, DriveFactors, IsochronismPoint, RunInput,
     RunSink, Schedule, SteadyState, Weather,
 };
-use pendulum_theory::clock::escapement::spec::Kind;
 use pendulum_theory::clock::long_run::Row;
 use pendulum_theory::clock::plan::RunPlan;
 use std::path::Path;
@@ -235,13 +234,7 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
         g: Some(gravity.g_m_s2),
         mass: args.mass.map(|m| m.0),
         q: args.q.map(|q| q.0),
-        escapement: args.escapement.map(|e| match e {
-            EscapementArg::Impulse => Kind::Impulse,
-            EscapementArg::Deadbeat => Kind::Deadbeat,
-            EscapementArg::Recoil => Kind::Recoil,
-            EscapementArg::ConstantForce => Kind::ConstantForce,
-            EscapementArg::Free => Kind::Free,
-        }),
+        escapement: args.escapement,
         lift_angle: args.lift_angle.map(|a| a.0),
         drive: Some(args.drive.0),
         friction: args.friction.map(|f| f.0),

@@ -1312,7 +1312,14 @@ fn every_example_in_the_documentation_and_the_help_runs_and_says_what_it_claims(
         for (microphone, stand_in) in MICROPHONES {
             run = run.replacen(microphone, stand_in, 1);
         }
+        let clock = std::time::Instant::now();
         let out = sh(&run);
+        // The slow ones named in the log (nextest shows it on failure,
+        // `--no-capture` always): where this test's time goes.
+        let took = clock.elapsed().as_secs_f64();
+        if took > 1.0 {
+            eprintln!("{took:.1} s: {run}");
+        }
         let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert!(out.status.success(), "`{command}` failed: {stderr}");

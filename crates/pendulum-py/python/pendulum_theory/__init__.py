@@ -48,6 +48,7 @@ __all__ = [
     "fit_beats",
     "fit_period",
     "fit_file",
+    "lists",
     "fit_photogate",
     "fit_trajectory",
     "FitResult",
@@ -633,6 +634,19 @@ _FILE_KEYS = {
 }
 
 
+def lists():
+    """The library's lists where it is meant to grow: each escapement,
+    stability deviation, drag law and file format read whole, with its
+    name and help, as the command line's help gives them.
+
+    >>> [e["name"] for e in lists()["escapements"]]
+    ['impulse', 'deadbeat', 'recoil', 'constant-force', 'free']
+    >>> [d["key"] for d in lists()["deviations"]]
+    ['adev', 'mdev', 'tdev', 'hdev', 'totdev', 'mtie_s']
+    """
+    return _json.loads(_native.lists())
+
+
 def fit_file(path, fit, *, columns=None, angle_unit=None, frame_rate=None, run=None,
              pivot=None, y_down=False, scale=None, model=None, period=None, length=None,
              length_uncertainty=None, mass=None, g=None, latitude=None, height=None,
@@ -764,8 +778,9 @@ def clock(
     steps=None,
 ):
     """A pendulum kept going by an escapement (the CLI's ``clock``, the
-    same library call): ``escapement`` is impulse, deadbeat, recoil,
-    constant-force or free; the drive is ``drive_energy`` (J per beat) or
+    same library call): ``escapement`` is a name of
+    ``lists()["escapements"]`` (impulse, deadbeat, recoil, constant-force,
+    free); the drive is ``drive_energy`` (J per beat) or
     ``drive_torque`` (N m at the pallets); the pendulum a simple one of
     ``length`` m or a design of ``parts`` (see :func:`design`); angles in
     radians; a keyword

@@ -100,6 +100,7 @@ def fit_period(
     bob_radius: Optional[float] = ...,
     length_uncertainty: Optional[float] = ...,
 ) -> FitResult: ...
+def lists() -> Dict[str, List[Dict[str, Any]]]: ...
 def fit_file(
     path: Union[str, os.PathLike[str]],
     fit: str,

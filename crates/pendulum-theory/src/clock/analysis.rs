@@ -442,7 +442,7 @@ pub fn build(input: &ClockInput) -> Result<Built, Refusal> {
     })?;
     let lift = input.lift_angle.unwrap_or(DEFAULT_LIFT_DEG.to_radians());
     let spec = Spec {
-        kind: input.escapement.unwrap_or(Kind::Deadbeat),
+        kind: input.escapement.unwrap_or_else(Kind::deadbeat),
         lift,
         drive,
         friction: input.friction.unwrap_or(DEFAULT_FRICTION),
@@ -565,13 +565,16 @@ fn offset_for_beat_error(
     Err(unreachable())
 }
 
-/// The escapement named `name` (`impulse`, `deadbeat`, `recoil`,
-/// `constant-force`, `free`).
+/// The escapement named `name`, one of
+/// [`ESCAPEMENTS`](super::escapement::spec::ESCAPEMENTS).
 pub fn escapement_named(name: &str) -> Result<Kind, Refusal> {
     Kind::from_name(name).ok_or_else(|| {
         Refusal::field(
             "escapement",
-            format!("'{name}' is not one of impulse, deadbeat, recoil, constant-force, free"),
+            format!(
+                "'{name}' is not one of {}",
+                super::escapement::spec::names()
+            ),
         )
     })
 }

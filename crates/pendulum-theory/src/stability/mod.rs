@@ -15,7 +15,7 @@
 //! four seeded noises (tests `stability.rs`).
 //!
 //! * [`registry`]: the list of deviations the analysis reports
-//!   ([`DEVIATIONS`]); one file each for [`totdev`] and [`mtie`].
+//!   ([`DEVIATIONS`]); one file each for [`mod@totdev`] and [`mod@mtie`].
 //! * [`deviations`]: the Allan and Hadamard estimators.
 //! * [`edf`]: Greenhall's equivalent degrees of freedom.
 //! * [`noise`]: the lag-1 autocorrelation noise identification.

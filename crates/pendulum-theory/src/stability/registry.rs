@@ -5,7 +5,7 @@
 //! line's table, CSV, figure and help, the page and Python take the
 //! names, units and help from the entries. A new deviation is one file
 //! with its function and its [`Deviation`], and one line in
-//! [`DEVIATIONS`] (see [`super::totdev`], [`super::mtie`]).
+//! [`DEVIATIONS`] (see [`mod@super::totdev`], [`mod@super::mtie`]).
 
 use super::deviations::{mdev, oadev, ohdev, tdev};
 use super::edf;

@@ -557,7 +557,7 @@ fn airy_far_off_is_warned_and_a_constant_force_never_starves() {
         )
         .unwrap()
     };
-    let far = at(Kind::Recoil, 0.9);
+    let far = at(Kind::from_name("recoil").unwrap(), 0.9);
     let (i, a) = (
         far.steady.escapement_rate_s_per_day,
         far.steady.escapement_rate_airy_s_per_day,
@@ -568,12 +568,15 @@ fn airy_far_off_is_warned_and_a_constant_force_never_starves() {
         "{:?}",
         far.warnings
     );
-    let near = at(Kind::Recoil, 0.15);
+    let near = at(Kind::from_name("recoil").unwrap(), 0.15);
     assert!(
         !near.warnings.iter().any(|w| w.contains("Airy")),
         "{:?}",
         near.warnings
     );
-    assert_eq!(at(Kind::ConstantForce, 0.15).minimum_drive_factor, 0.0);
-    assert!(at(Kind::Deadbeat, 0.15).minimum_drive_factor > 0.05);
+    assert_eq!(
+        at(Kind::from_name("constant-force").unwrap(), 0.15).minimum_drive_factor,
+        0.0
+    );
+    assert!(at(Kind::from_name("deadbeat").unwrap(), 0.15).minimum_drive_factor > 0.05);
 }

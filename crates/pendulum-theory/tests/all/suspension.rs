@@ -478,7 +478,7 @@ fn a_clock_on_a_spring_keeps_the_smaller_circular_error() {
     assert!((0.01..0.2).contains(&share), "{share}");
     let result = analyse(
         &ClockInput {
-            escapement: Some(Kind::Impulse),
+            escapement: Some(Kind::from_name("impulse").unwrap()),
             impulse_angle: Some(0.0),
             q: Some(1e4),
             drive: Some(Drive::Energy(40e-6)),

@@ -6,7 +6,23 @@
 //! faces outside the lift (the friction coefficient times the drive
 //! torque).
 
+use super::spec::Entry;
 use super::Escapement;
+
+/// The constant-force escapement in the list of escapements.
+pub const ENTRY: Entry = Entry {
+    name: "constant-force",
+    aliases: &["constant_force"],
+    help: "a gravity escapement or remontoire: the same push whatever the train gives",
+    build: |p| {
+        Ok(Box::new(ConstantForce {
+            lift: p.lift,
+            impulse: p.torque,
+            torque: p.torque,
+            friction: p.spec.friction,
+        }))
+    },
+};
 
 /// A constant-force escapement.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -23,7 +39,7 @@ pub struct ConstantForce {
 
 impl Escapement for ConstantForce {
     fn name(&self) -> &'static str {
-        "constant-force"
+        ENTRY.name
     }
     fn edges(&self) -> Vec<f64> {
         vec![-0.5 * self.lift, 0.5 * self.lift]

@@ -7,7 +7,23 @@
 //! of Clocks and Watches, 3rd ed., ch. 5; Woodward, My Own Right Time,
 //! 1995, ch. 5).
 
+use super::spec::Entry;
 use super::Escapement;
+
+/// Graham's deadbeat in the list of escapements.
+pub const ENTRY: Entry = Entry {
+    name: "deadbeat",
+    aliases: &[],
+    help: "Graham's deadbeat: a push over the lift, friction on the dead faces beyond it",
+    build: |p| {
+        Ok(Box::new(Deadbeat {
+            lift: p.lift,
+            torque: p.torque,
+            friction: p.spec.friction,
+            offset: p.spec.angle,
+        }))
+    },
+};
 
 /// A deadbeat escapement.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -26,7 +42,7 @@ pub struct Deadbeat {
 
 impl Escapement for Deadbeat {
     fn name(&self) -> &'static str {
-        "deadbeat"
+        ENTRY.name
     }
     fn edges(&self) -> Vec<f64> {
         vec![

@@ -3,7 +3,25 @@
 //! (Airy) it does not disturb the period. The slave clock's work
 //! (unlocking, counting) is not on the pendulum.
 
+use super::spec::Entry;
 use super::{Escapement, Impulse};
+
+/// Shortt's free pendulum in the list of escapements.
+pub const ENTRY: Entry = Entry {
+    name: "free",
+    aliases: &[],
+    help: "Shortt's free pendulum: an impulse once every so many beats, left alone between",
+    build: |p| {
+        p.energy_only()?;
+        Ok(Box::new(FreePendulum {
+            impulse: Impulse {
+                angle: p.spec.angle,
+                energy: p.energy,
+            },
+            every: p.spec.every,
+        }))
+    },
+};
 
 /// An [`Impulse`] once every `every` beats.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -16,7 +34,7 @@ pub struct FreePendulum {
 
 impl Escapement for FreePendulum {
     fn name(&self) -> &'static str {
-        "free"
+        ENTRY.name
     }
     fn edges(&self) -> Vec<f64> {
         self.impulse.edges()

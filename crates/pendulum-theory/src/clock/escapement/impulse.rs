@@ -7,7 +7,22 @@
 //! Cambridge Phil. Soc. 3, 105) showed that such an impulse at the bottom
 //! leaves the period alone, and one before it shortens the period.
 
+use super::spec::Entry;
 use super::Escapement;
+
+/// Airy's instantaneous impulse in the list of escapements.
+pub const ENTRY: Entry = Entry {
+    name: "impulse",
+    aliases: &[],
+    help: "Airy's instantaneous impulse: an energy per beat given at one angle",
+    build: |p| {
+        p.energy_only()?;
+        Ok(Box::new(Impulse {
+            angle: p.spec.angle,
+            energy: p.energy,
+        }))
+    },
+};
 
 /// An impulse of energy `energy` (over `m g l`) at `angle` rad before the
 /// bottom, every beat.
@@ -21,7 +36,7 @@ pub struct Impulse {
 
 impl Escapement for Impulse {
     fn name(&self) -> &'static str {
-        "impulse"
+        ENTRY.name
     }
     fn edges(&self) -> Vec<f64> {
         // Travelling towards +θ, "before the bottom" is at negative θ.

@@ -25,7 +25,10 @@
 //! running down, a dirtier train): 1 is the escapement as specified.
 //!
 //! Adding an escapement is adding one file with a type that implements
-//! [`Escapement`].
+//! [`Escapement`] and its [`spec::Entry`] (name, help, how it is built
+//! from a description), its `mod` line here and its line in
+//! [`spec::ESCAPEMENTS`]: the command line's choices and help, Python's
+//! names and the refusal's list read that list.
 
 mod constant_force;
 mod deadbeat;

@@ -28,7 +28,33 @@
 //! Cyclopaedia of Mechanics, "Clock escapements and motive power";
 //! Rawlings, The Science of Clocks and Watches, 3rd ed., ch. 5).
 
+use super::spec::{Entry, SpecError};
 use super::Escapement;
+
+/// The anchor in the list of escapements.
+pub const ENTRY: Entry = Entry {
+    name: "recoil",
+    aliases: &[],
+    help: "the anchor (recoil): a push over the lift, the wheel driven back beyond it",
+    build: |p| {
+        if p.spec.friction >= 1.0 {
+            return Err(SpecError {
+                field: "friction",
+                message: format!(
+                    "the recoil faces' friction must be below 1 (a face that friction locks \
+                     cannot recoil), got {}",
+                    crate::error::format_significant(p.spec.friction, 6)
+                ),
+            });
+        }
+        Ok(Box::new(Recoil {
+            lift: p.lift,
+            torque: p.torque,
+            recoil: p.spec.recoil,
+            friction: p.spec.friction,
+        }))
+    },
+};
 
 /// An anchor (recoil) escapement.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -56,7 +82,7 @@ impl Recoil {
 
 impl Escapement for Recoil {
     fn name(&self) -> &'static str {
-        "recoil"
+        ENTRY.name
     }
     fn edges(&self) -> Vec<f64> {
         vec![-0.5 * self.lift, 0.5 * self.lift]

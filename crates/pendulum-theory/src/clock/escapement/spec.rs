@@ -2,36 +2,102 @@
 //! friction, ...), turned into one of the escapement types, in the
 //! pendulum's units. One place for the command line and the bindings.
 
-use super::{ConstantForce, Deadbeat, Escapement, FreePendulum, Impulse, OutOfBeat, Recoil};
+use super::{Escapement, OutOfBeat};
 
-/// The escapements by name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
-    /// Airy's instantaneous impulse.
-    Impulse,
-    /// Graham's deadbeat.
-    Deadbeat,
-    /// The anchor (recoil).
-    Recoil,
-    /// Gravity escapement or remontoire.
-    ConstantForce,
-    /// Shortt's free pendulum.
-    Free,
+/// One escapement of the list [`ESCAPEMENTS`]: its name, what it is,
+/// and how it is built from a description. Each lives in its own file
+/// beside its type (`deadbeat.rs`: `Deadbeat` and its `ENTRY`).
+#[derive(Debug)]
+pub struct Entry {
+    /// Its name on the command line, in Python and in JSON.
+    pub name: &'static str,
+    /// Other names it is known by (`constant_force`).
+    pub aliases: &'static [&'static str],
+    /// One line on what it is, for help texts.
+    pub help: &'static str,
+    /// The escapement from the description's parts in the pendulum's units.
+    pub build: fn(&Parts<'_>) -> Result<Box<dyn Escapement>, SpecError>,
 }
 
-impl Kind {
-    /// From its name (`impulse`, `deadbeat`, `recoil`, `constant-force`,
-    /// `free`).
-    pub fn from_name(name: &str) -> Option<Self> {
-        Some(match name {
-            "impulse" => Kind::Impulse,
-            "deadbeat" => Kind::Deadbeat,
-            "recoil" => Kind::Recoil,
-            "constant-force" | "constant_force" => Kind::ConstantForce,
-            "free" => Kind::Free,
-            _ => return None,
-        })
+/// What an escapement is built from: the description, and its lift,
+/// impulse torque and energy per beat in the pendulum's units (over
+/// `m g l`), whichever way the drive was given.
+#[derive(Clone, Copy, Debug)]
+pub struct Parts<'a> {
+    /// The description.
+    pub spec: &'a Spec,
+    /// The lift angle, rad.
+    pub lift: f64,
+    /// The torque over the lift, over `m g l`.
+    pub torque: f64,
+    /// The energy per beat, over `m g l`.
+    pub energy: f64,
+}
+
+impl Parts<'_> {
+    /// Refuses a torque drive: the escapement is given an energy per beat.
+    pub fn energy_only(&self) -> Result<(), SpecError> {
+        match self.spec.drive {
+            Drive::Torque(_) => Err(SpecError {
+                field: "drive",
+                message: "an impulse is an energy per beat (e.g. 20uJ), not a torque".into(),
+            }),
+            Drive::Energy(_) => Ok(()),
+        }
     }
+}
+
+/// Every escapement, by name: the command line's choices, Python's names,
+/// the refusal's list and the help come from here. A new escapement is a
+/// file with its type and its [`Entry`], and its line here.
+pub const ESCAPEMENTS: &[Entry] = &[
+    super::impulse::ENTRY,
+    super::deadbeat::ENTRY,
+    super::recoil::ENTRY,
+    super::constant_force::ENTRY,
+    super::free::ENTRY,
+];
+
+/// An escapement of [`ESCAPEMENTS`].
+#[derive(Clone, Copy, Debug)]
+pub struct Kind(pub &'static Entry);
+
+impl PartialEq for Kind {
+    fn eq(&self, other: &Self) -> bool {
+        self.0.name == other.0.name
+    }
+}
+
+impl Eq for Kind {}
+
+impl Kind {
+    /// From its name or an alias (`impulse`, `deadbeat`, `recoil`,
+    /// `constant-force`, `free`, …: [`ESCAPEMENTS`]).
+    pub fn from_name(name: &str) -> Option<Self> {
+        ESCAPEMENTS
+            .iter()
+            .find(|e| e.name == name || e.aliases.contains(&name))
+            .map(Kind)
+    }
+
+    /// Its name.
+    pub fn name(self) -> &'static str {
+        self.0.name
+    }
+
+    /// The default escapement: a regulator's deadbeat.
+    pub fn deadbeat() -> Self {
+        Kind(&ESCAPEMENTS[1])
+    }
+}
+
+/// The names of [`ESCAPEMENTS`], "impulse, deadbeat, …".
+pub fn names() -> String {
+    ESCAPEMENTS
+        .iter()
+        .map(|e| e.name)
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// What the train delivers.
@@ -134,58 +200,12 @@ impl Spec {
             Drive::Torque(t) => (t / torque_scale, t * lift / torque_scale),
             Drive::Energy(e) => (e / (lift * torque_scale), e / torque_scale),
         };
-        let escapement: Box<dyn Escapement> = match self.kind {
-            Kind::Impulse | Kind::Free => {
-                if matches!(self.drive, Drive::Torque(_)) {
-                    return fail(
-                        "drive",
-                        "an impulse is an energy per beat (e.g. 20uJ), not a torque".into(),
-                    );
-                }
-                let impulse = Impulse {
-                    angle: self.angle,
-                    energy,
-                };
-                if self.kind == Kind::Impulse {
-                    Box::new(impulse)
-                } else {
-                    Box::new(FreePendulum {
-                        impulse,
-                        every: self.every,
-                    })
-                }
-            }
-            Kind::Deadbeat => Box::new(Deadbeat {
-                lift,
-                torque,
-                friction: self.friction,
-                offset: self.angle,
-            }),
-            Kind::Recoil => {
-                if self.friction >= 1.0 {
-                    return fail(
-                        "friction",
-                        format!(
-                            "the recoil faces' friction must be below 1 (a face that friction \
-                             locks cannot recoil), got {}",
-                            shown(self.friction)
-                        ),
-                    );
-                }
-                Box::new(Recoil {
-                    lift,
-                    torque,
-                    recoil: self.recoil,
-                    friction: self.friction,
-                })
-            }
-            Kind::ConstantForce => Box::new(ConstantForce {
-                lift,
-                impulse: torque,
-                torque,
-                friction: self.friction,
-            }),
-        };
+        let escapement = (self.kind.0.build)(&Parts {
+            spec: self,
+            lift,
+            torque,
+            energy,
+        })?;
         if !self.out_of_beat.is_finite() {
             return fail(
                 "beat_error",

@@ -1185,31 +1185,14 @@ pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult
     })
 }
 
-/// The long run of [`analyse`].
-fn long(
-    built: &Built,
-    input: &RunInput,
-    steady: &Steady,
-    sink: &mut dyn RunSink,
-) -> Result<RunSummary, Refusal> {
-    let clock = &built.clock;
-    let plan = plan_run(
-        clock,
-        steady.period,
-        input.duration,
-        input.every,
-        input.force,
-    )?;
-    let empty = Schedule::default();
-    let drive = input.drive_schedule.as_ref().unwrap_or(&empty);
-    check_schedule(
-        "drive_schedule",
-        &drive.time,
-        &drive.value,
-        0.0..=f64::MAX,
-        "a drive factor of at least 0",
-    )?;
+/// What a long run's rate follows besides the escapement: the rate the
+/// weather gives a design (with, given a pressure, the Q it gives) or a
+/// rate schedule, and the warnings of the weather's effect; refused where
+/// the inputs conflict (weather and a schedule, weather without a design,
+/// a gas without a pressure).
+fn run_rates(built: &Built, input: &RunInput) -> Result<RunRates, Refusal> {
     let (mut warnings, mut damping) = (Vec::new(), None::<Schedule>);
+    let clock = &built.clock;
     if input.gas.is_some()
         && input
             .weather
@@ -1265,6 +1248,52 @@ fn long(
         }
         _ => None,
     };
+    Ok(RunRates {
+        rates,
+        damping,
+        warnings,
+    })
+}
+
+/// What [`run_rates`] finds.
+struct RunRates {
+    /// The rate through the run, s/day, where something moves it.
+    rates: Option<Schedule>,
+    /// The factor on the damping through the run (the air's pressure).
+    damping: Option<Schedule>,
+    /// The weather's warnings.
+    warnings: Vec<String>,
+}
+
+/// The long run of [`analyse`].
+fn long(
+    built: &Built,
+    input: &RunInput,
+    steady: &Steady,
+    sink: &mut dyn RunSink,
+) -> Result<RunSummary, Refusal> {
+    let clock = &built.clock;
+    let plan = plan_run(
+        clock,
+        steady.period,
+        input.duration,
+        input.every,
+        input.force,
+    )?;
+    let empty = Schedule::default();
+    let drive = input.drive_schedule.as_ref().unwrap_or(&empty);
+    check_schedule(
+        "drive_schedule",
+        &drive.time,
+        &drive.value,
+        0.0..=f64::MAX,
+        "a drive factor of at least 0",
+    )?;
+    let RunRates {
+        rates,
+        damping,
+        mut warnings,
+    } = run_rates(built, input)?;
     let drive_at = |t: f64| piecewise_linear(&drive.time, &drive.value, t);
     let stretch = |t: f64| match &rates {
         Some(r) => period_factor(piecewise_linear(&r.time, &r.value, t)),

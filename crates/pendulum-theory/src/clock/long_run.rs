@@ -157,6 +157,52 @@ pub fn run(
     run_with_damping(clock, drive, stretch, &|_| 1.0, options, sink)
 }
 
+/// Classical RK4 over `n` cycles of the escapement on the modified
+/// equation `flow` (amplitude change and scaled duration per cycle at an
+/// amplitude and a time), from amplitude `a` at time `t` (s), for a
+/// pendulum of natural angular frequency `omega`: the amplitude's change,
+/// the time taken (s) and the last stage's scaled cycle duration; or,
+/// where a stage's half swing cannot be made, that stage's time.
+fn rk4_cycles(
+    flow: &dyn Fn(f64, f64) -> Option<(f64, f64)>,
+    a: f64,
+    t: f64,
+    n: f64,
+    omega: f64,
+) -> Result<(f64, f64, f64), f64> {
+    let k1 = flow(a, t).ok_or(t)?;
+    let t2 = t + 0.5 * n * k1.1 / omega;
+    let k2 = flow(a + 0.5 * n * k1.0, t2).ok_or(t2)?;
+    let t3 = t + 0.5 * n * k2.1 / omega;
+    let k3 = flow(a + 0.5 * n * k2.0, t3).ok_or(t3)?;
+    let t4 = t + n * k3.1 / omega;
+    let k4 = flow(a + n * k3.0, t4).ok_or(t4)?;
+    Ok((
+        n / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0),
+        n / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1) / omega,
+        k4.1,
+    ))
+}
+
+/// Whether a row is due at `time` (rows every `every` s, the next at
+/// `next_row`, the run ending at `duration`), moving `next_row` past
+/// `time`: step by step as rows come, at once past a long beat (a clock
+/// all but stopped takes years a beat: counting those rows one by one
+/// never ended).
+fn row_due(every: f64, next_row: &mut f64, time: f64, duration: f64) -> bool {
+    if time < *next_row - 1e-9 * every && time < duration {
+        return false;
+    }
+    let behind = (time + 1e-9 * every - *next_row) / every;
+    if behind > 16.0 {
+        *next_row += behind.floor() * every;
+    }
+    while *next_row <= time + 1e-9 * every && next_row.is_finite() {
+        *next_row += every;
+    }
+    true
+}
+
 /// [`run`] with the pendulum's Q multiplied by `damping(t)` at each
 /// moment (the gas around it changing with the pressure), held over a
 /// beat like the drive.
@@ -296,28 +342,17 @@ pub fn run_with_damping(
                 Some((g - 0.5 * g * dg, (m0.time - 0.5 * dtau * g) * s))
             };
             let (a, t) = (row.amplitude, row.time);
-            let Some(k1) = flow(a, t) else {
-                end(&mut finish, failed(a, drive(t)));
-                break;
+            let (da, dt, last_cycle) = match rk4_cycles(&flow, a, t, n, omega) {
+                Ok(step) => step,
+                Err(at) => {
+                    end(&mut finish, failed(a, drive(at)));
+                    break;
+                }
             };
-            let Some(k2) = flow(a + 0.5 * n * k1.0, t + 0.5 * n * k1.1 / omega) else {
-                end(&mut finish, failed(a, drive(t + 0.5 * n * k1.1 / omega)));
-                break;
-            };
-            let Some(k3) = flow(a + 0.5 * n * k2.0, t + 0.5 * n * k2.1 / omega) else {
-                end(&mut finish, failed(a, drive(t + 0.5 * n * k2.1 / omega)));
-                break;
-            };
-            let Some(k4) = flow(a + n * k3.0, t + n * k3.1 / omega) else {
-                end(&mut finish, failed(a, drive(t + n * k3.1 / omega)));
-                break;
-            };
-            let da = n / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0);
-            let dt = n / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1) / omega;
             row.amplitude = a + da;
             add_time(&mut row, dt);
             row.beats += step_beats;
-            row.rate = rate_of(k4.1 / omega / cycle as f64);
+            row.rate = rate_of(last_cycle / omega / cycle as f64);
             finish.multi_steps += 1;
         } else {
             let beat = row.beats % cycle;
@@ -344,24 +379,7 @@ pub fn run_with_damping(
         }
         let due = match options.every {
             None => true,
-            Some(e) => {
-                if row.time >= next_row - 1e-9 * e || row.time >= options.duration {
-                    // The next row's time after this one: step by step as
-                    // rows come, at once past a long beat (a clock all
-                    // but stopped takes years a beat: counting those rows
-                    // one by one never ended).
-                    let behind = (row.time + 1e-9 * e - next_row) / e;
-                    if behind > 16.0 {
-                        next_row += behind.floor() * e;
-                    }
-                    while next_row <= row.time + 1e-9 * e && next_row.is_finite() {
-                        next_row += e;
-                    }
-                    true
-                } else {
-                    false
-                }
-            }
+            Some(e) => row_due(e, &mut next_row, row.time, options.duration),
         };
         if due && !sink(&row) {
             end(&mut finish, Ending::Sink);

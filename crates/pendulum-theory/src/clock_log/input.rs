@@ -46,32 +46,15 @@ pub(crate) const LEAST: usize = 4;
 /// The least bins the weather, the drift and the walk need.
 pub(crate) const FOR_TERMS: usize = 10;
 
-/// Checks `input` and leaves out what cannot be used.
-pub(crate) fn prepare(input: &LogInput) -> Result<Prepared, Refusal> {
-    let n = input.time_s.len();
-    if input.values.len() != n {
-        return Err(Refusal::field(
-            "values",
-            format!("has {} values for {n} times", input.values.len()),
-        ));
-    }
-    let mut columns: Vec<(&'static ColumnSpec, Vec<f64>)> = Vec::new();
-    for c in &input.columns {
-        let spec = column_spec(&c.name)?;
-        if columns.iter().any(|(s, _)| s.name == spec.name) {
-            return Err(Refusal::field(spec.name, "is given twice"));
-        }
-        columns.push((spec, checked_column(spec, &c.values, n)?));
-    }
-    let pulses = match &input.pulse_width_s {
-        Some(p) => Some(checked("pulse_width", p, n, None)?),
-        None => None,
-    };
-    // Samples whose time does not advance (a logger's stamp repeated,
-    // files joined with an overlap: at most 1% of them) are left out.
+/// Which samples to keep, and the warning: samples whose time does not
+/// advance (a logger's stamp repeated, files joined with an overlap: at
+/// most 1% of them) are left out; more than that is a log out of order,
+/// kept whole for the check that refuses it by line.
+fn repeated_times(time_s: &[f64]) -> (Vec<bool>, Vec<LogWarning>) {
+    let n = time_s.len();
     let mut keep = vec![true; n];
     let (mut last, mut repeated, mut first_repeated) = (f64::NEG_INFINITY, 0, None);
-    for (i, &t) in input.time_s.iter().enumerate() {
+    for (i, &t) in time_s.iter().enumerate() {
         if t > last || !t.is_finite() {
             last = if t.is_finite() { t } else { last };
         } else {
@@ -82,41 +65,21 @@ pub(crate) fn prepare(input: &LogInput) -> Result<Prepared, Refusal> {
     }
     let mut warnings = Vec::new();
     if repeated * 100 > n {
-        // Out of order: refused by line below.
         keep.fill(true);
     } else if let Some(first) = first_repeated {
         warnings.push(LogWarning::TimesRepeated {
             dropped: repeated,
-            first_time_s: input.time_s[first],
+            first_time_s: time_s[first],
         });
     }
-    let kind = input.kind.unwrap_or(LogKind::Offset);
-    if kind == LogKind::HalfPeriods {
-        let odd = missed_beats(&input.values, &mut keep)?;
-        if odd > 0 {
-            warnings.push(LogWarning::BeatsMissed { left_out: odd });
-        }
-    }
-    let pick = |v: &[f64]| -> Vec<f64> {
-        v.iter()
-            .zip(&keep)
-            .filter(|(_, &k)| k)
-            .map(|(x, _)| *x)
-            .collect()
-    };
-    let times = pick(&input.time_s);
-    let values = pick(&input.values);
-    let mut columns: Vec<(&'static ColumnSpec, Vec<f64>)> =
-        columns.into_iter().map(|(s, v)| (s, pick(&v))).collect();
-    let pulses = pulses.map(|p| pick(&p));
+    (keep, warnings)
+}
+
+/// The kept samples checked: finite, times rising, values that change,
+/// half periods positive and evenly spaced.
+fn check_samples(times: &[f64], values: &[f64], kind: LogKind) -> Result<(), Refusal> {
     let n = times.len();
-    if n < LEAST + 1 {
-        return Err(Refusal::data(format!(
-            "a log needs at least {} samples (four rates for a mean rate and its error), got {n}",
-            LEAST + 1
-        )));
-    }
-    for (i, (&t, &v)) in times.iter().zip(&values).enumerate() {
+    for (i, (&t, &v)) in times.iter().zip(values).enumerate() {
         crate::analysis::require_finite_sample("time", i, t)?;
         crate::analysis::require_finite_sample("values", i, v)?;
         if i > 0 && t <= times[i - 1] {
@@ -145,8 +108,73 @@ pub(crate) fn prepare(input: &LogInput) -> Result<Prepared, Refusal> {
                 "a half period must be positive",
             ));
         }
-        evenly_spaced(&values)?;
+        evenly_spaced(values)?;
     }
+    Ok(())
+}
+
+/// The typical spacing of `times` (at least two), s: the median of at
+/// most 100,000 intervals evenly spread.
+fn typical_spacing(times: &[f64]) -> f64 {
+    let n = times.len();
+    let stride = ((n - 1) / 100_000).max(1);
+    let mut spacing: Vec<f64> = (0..n - 1)
+        .step_by(stride)
+        .map(|i| times[i + 1] - times[i])
+        .collect();
+    let half = spacing.len() / 2;
+    *spacing.select_nth_unstable_by(half, f64::total_cmp).1
+}
+
+/// Checks `input` and leaves out what cannot be used.
+pub(crate) fn prepare(input: &LogInput) -> Result<Prepared, Refusal> {
+    let n = input.time_s.len();
+    if input.values.len() != n {
+        return Err(Refusal::field(
+            "values",
+            format!("has {} values for {n} times", input.values.len()),
+        ));
+    }
+    let mut columns: Vec<(&'static ColumnSpec, Vec<f64>)> = Vec::new();
+    for c in &input.columns {
+        let spec = column_spec(&c.name)?;
+        if columns.iter().any(|(s, _)| s.name == spec.name) {
+            return Err(Refusal::field(spec.name, "is given twice"));
+        }
+        columns.push((spec, checked_column(spec, &c.values, n)?));
+    }
+    let pulses = match &input.pulse_width_s {
+        Some(p) => Some(checked("pulse_width", p, n, None)?),
+        None => None,
+    };
+    let (mut keep, mut warnings) = repeated_times(&input.time_s);
+    let kind = input.kind.unwrap_or(LogKind::Offset);
+    if kind == LogKind::HalfPeriods {
+        let odd = missed_beats(&input.values, &mut keep)?;
+        if odd > 0 {
+            warnings.push(LogWarning::BeatsMissed { left_out: odd });
+        }
+    }
+    let pick = |v: &[f64]| -> Vec<f64> {
+        v.iter()
+            .zip(&keep)
+            .filter(|(_, &k)| k)
+            .map(|(x, _)| *x)
+            .collect()
+    };
+    let times = pick(&input.time_s);
+    let values = pick(&input.values);
+    let mut columns: Vec<(&'static ColumnSpec, Vec<f64>)> =
+        columns.into_iter().map(|(s, v)| (s, pick(&v))).collect();
+    let pulses = pulses.map(|p| pick(&p));
+    let n = times.len();
+    if n < LEAST + 1 {
+        return Err(Refusal::data(format!(
+            "a log needs at least {} samples (four rates for a mean rate and its error), got {n}",
+            LEAST + 1
+        )));
+    }
+    check_samples(&times, &values, kind)?;
     let nominal_half = input
         .nominal
         .map(crate::listening::analysis::nominal_period)
@@ -180,14 +208,7 @@ pub(crate) fn prepare(input: &LogInput) -> Result<Prepared, Refusal> {
             }
         }
     }
-    // The typical spacing, from at most 100,000 intervals evenly spread.
-    let stride = ((n - 1) / 100_000).max(1);
-    let mut spacing: Vec<f64> = (0..n - 1)
-        .step_by(stride)
-        .map(|i| times[i + 1] - times[i])
-        .collect();
-    let half = spacing.len() / 2;
-    let dt = *spacing.select_nth_unstable_by(half, f64::total_cmp).1;
+    let dt = typical_spacing(&times);
     let span = times[n - 1] - times[0];
     let bin = bin_length(input.bin_s, dt, span)?;
     // Work, measured on a year of 3 s samples in hourly bins: about

@@ -484,28 +484,10 @@ pub fn gravity_cause(g: f64) -> Option<&'static str> {
     })
 }
 
-/// Fits a period table (see the module notes).
-///
-/// # Examples
-///
-/// ```
-/// use pendulum_theory::fitting::period_table::{analyse, Against, PeriodTableInput};
-/// use std::f64::consts::TAU;
-///
-/// // Small-swing periods at four lengths, T = 2π √(L/g) with g = 9.81 m/s².
-/// let length = [0.25, 0.5, 0.75, 1.0];
-/// let period: Vec<f64> = length.iter().map(|l| TAU * (l / 9.81_f64).sqrt()).collect();
-/// let fit = analyse(&PeriodTableInput {
-///     period: &period,
-///     length: Some(&length),
-///     ..Default::default()
-/// })?;
-/// assert_eq!(fit.against, Against::Length);
-/// assert!((fit.parameters["g_m_s2"] - 9.81).abs() < 1e-9);
-/// assert!(fit.parameters["length_offset_m"].abs() < 1e-9);
-/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
-/// ```
-pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
+/// The table's inputs checked (each refusal names its field and row),
+/// and the work judged; returns each row's period ratio `T(A)/T₀` at its
+/// amplitude (1 where no amplitude is given).
+fn validated(input: &PeriodTableInput<'_>) -> Result<Vec<f64>, Refusal> {
     let period = input.period;
     let n = period.len();
     require_finite_samples("period", period)?;
@@ -634,7 +616,33 @@ pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
         n as f64 * SECONDS_PER_ROW,
         input.force,
     )?;
+    Ok(ratio)
+}
 
+/// Fits a period table (see the module notes).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::fitting::period_table::{analyse, Against, PeriodTableInput};
+/// use std::f64::consts::TAU;
+///
+/// // Small-swing periods at four lengths, T = 2π √(L/g) with g = 9.81 m/s².
+/// let length = [0.25, 0.5, 0.75, 1.0];
+/// let period: Vec<f64> = length.iter().map(|l| TAU * (l / 9.81_f64).sqrt()).collect();
+/// let fit = analyse(&PeriodTableInput {
+///     period: &period,
+///     length: Some(&length),
+///     ..Default::default()
+/// })?;
+/// assert_eq!(fit.against, Against::Length);
+/// assert!((fit.parameters["g_m_s2"] - 9.81).abs() < 1e-9);
+/// assert!(fit.parameters["length_offset_m"].abs() < 1e-9);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
+pub fn analyse(input: &PeriodTableInput<'_>) -> Result<PeriodTable, Refusal> {
+    let ratio = validated(input)?;
+    let n = input.period.len();
     let weights: Vec<f64> = match input.period_standard_error {
         Some(s) => s.iter().map(|s| 1.0 / (s * s)).collect(),
         None => vec![1.0; n],

@@ -681,7 +681,6 @@ fn fit_released(
     theta: &[f64],
     observed: Observed,
 ) -> Result<TrajectoryFit, FitError> {
-    let linear = linear_of(observed);
     // Five parameters and a residual to judge them by.
     let points = time.len().min(theta.len());
     if points <= 5 {
@@ -692,12 +691,85 @@ fn fit_released(
     }
     let t0 = time.first().copied().unwrap_or(0.0);
     let t: Vec<f64> = time.iter().map(|x| x - t0).collect();
-    // Over a growing window: a long record of large swings, whose period
-    // changes with the amplitude, loses a fit started from the whole
-    // record's phase (a false minimum, issue 23); a few periods first,
-    // then twice as many, each fit started from the last, follow it.
-    // (A window the linear model cannot fit, one where the swing stops,
-    // say, leaves the whole record in one.)
+    let (windows, mut lin, lin_first) = staged_linear(&t, theta, observed)?;
+    canonical_linear(&mut lin);
+    let (w0, w0_error) = linear_natural_frequency(&lin, t.last().copied().unwrap_or(0.0));
+    let linear_fit = |fit: Fit, rejected: Option<f64>| TrajectoryFit {
+        model: TrajectoryModel::Linear,
+        law: Law::VISCOUS,
+        fit,
+        natural_angular_frequency: w0,
+        natural_angular_frequency_error: w0_error,
+        nonlinear_rms_rejected: rejected,
+        held_samples: 0,
+        held_seconds: 0.0,
+        observed,
+    };
+    if model == TrajectoryModel::Linear {
+        return Ok(linear_fit(lin, None));
+    }
+    let mut initial = nonlinear_start(&lin_first);
+    for &n in &windows[..windows.len() - 1] {
+        let curve = NonlinearCurve::new(&t[..n], Law::VISCOUS, observed);
+        // A window too short to determine every parameter (the damping
+        // over a few periods of a high Q) leaves the start as it was for
+        // the next, longer one.
+        if let Ok(f) = fit_curve(&curve, &t[..n], &theta[..n], None, &initial) {
+            initial = f.parameters;
+        }
+    }
+    let curve = NonlinearCurve::new(&t, Law::VISCOUS, observed);
+    let linear_rms = lin.residual_rms;
+    // A nonlinear fit that fails outright (its parameters not determined
+    // from this start) leaves the linear one, which says so.
+    let Ok(fit) = fit_curve(&curve, &t, theta, None, &initial) else {
+        return Ok(linear_fit(lin, Some(f64::NAN)));
+    };
+    let fit = last_release(&curve, &t, theta, fit)?;
+    // A nonlinear fit that ran off (its release amplitude driven to the
+    // top, or not determined by the data: a release rewound through heavy
+    // damping, a record that does not follow a free decay) and fits worse
+    // than the linear one is not reported: the linear fit is returned, and
+    // says so. (A sound nonlinear fit may still be a little worse than the
+    // linear one on data that follow the linear equation exactly.)
+    let (a, a_error) = (fit.parameters[0].abs(), fit.standard_errors[0]);
+    let ran_off = a >= 3.0 || a_error.is_nan() || a_error >= a;
+    if ran_off && (fit.residual_rms.is_nan() || fit.residual_rms > linear_rms) {
+        return Ok(linear_fit(lin, Some(fit.residual_rms)));
+    }
+    // Drag and friction, each and both, from the viscous fit: kept when
+    // the information criterion prefers them and their coefficients are
+    // determined.
+    let (fit, law) = with_damping_laws(&t, theta, fit, observed);
+    let mut fit = fit;
+    report_released(&mut fit);
+    let (w, e) = (fit.parameters[1].abs(), fit.standard_errors[1]);
+    Ok(TrajectoryFit {
+        model,
+        law,
+        fit,
+        natural_angular_frequency: w,
+        natural_angular_frequency_error: e,
+        nonlinear_rms_rejected: None,
+        held_samples: 0,
+        held_seconds: 0.0,
+        observed,
+    })
+}
+
+/// The linear fit over growing windows (see [`stages`]): a long record
+/// of large swings, whose period changes with the amplitude, loses a fit
+/// started from the whole record's phase (a false minimum, issue 23); a
+/// few periods first, then twice as many, each fit started from the
+/// last, follow it. (A window the linear model cannot fit, one where the
+/// swing stops, say, leaves the whole record in one.) Returns the
+/// windows, the fit of the whole and the fit of the first window.
+fn staged_linear(
+    t: &[f64],
+    theta: &[f64],
+    observed: Observed,
+) -> Result<(Vec<usize>, Fit, Fit), FitError> {
+    let linear = linear_of(observed);
     let staged = |windows: &[usize]| -> Result<(Fit, Fit), FitError> {
         let first = windows[0];
         let mut lin = fit_curve(
@@ -713,21 +785,72 @@ fn fit_released(
         }
         Ok((lin, lin_first))
     };
-    let mut windows = stages(&t, theta);
-    let (mut lin, lin_first) = match staged(&windows) {
-        Ok(fits) => fits,
+    let windows = stages(t, theta);
+    match staged(&windows) {
+        Ok((lin, first)) => Ok((windows, lin, first)),
         Err(_) if windows.len() > 1 => {
-            windows = vec![t.len()];
-            staged(&windows)?
+            let whole = vec![t.len()];
+            let (lin, first) = staged(&whole)?;
+            Ok((whole, lin, first))
         }
-        Err(e) => return Err(e),
-    };
-    // The same curve with A >= 0 and φ in (-π, π]: a negative amplitude is
-    // a phase shifted by π.
+        Err(e) => Err(e),
+    }
+}
+
+/// The natural angular frequency (rad/s) and its standard error from the
+/// linear fit of a record ending at `t_end` (s): its `ω_d` undamped and
+/// carried to the finite amplitude the record has at its middle.
+fn linear_natural_frequency(lin: &Fit, t_end: f64) -> (f64, f64) {
+    let (a, wd, zeta) = (
+        lin.parameters[0].abs(),
+        lin.parameters[1],
+        lin.parameters[2],
+    );
+    let damping_factor = (1.0 - zeta * zeta).max(f64::MIN_POSITIVE).sqrt();
+    let mid = 0.5 * t_end;
+    let a_mid = (a * (-zeta * wd / damping_factor * mid).exp()).min(3.1);
+    let ratio = Amplitude::from_radians(a_mid)
+        .map(period_ratio)
+        .unwrap_or(1.0);
+    (
+        wd / damping_factor * ratio,
+        lin.standard_errors[1] / damping_factor * ratio,
+    )
+}
+
+/// The release is the last crest at or before the first sample: a
+/// release a whole period (or more) earlier fits the same curve with a
+/// larger amplitude, so it is moved one period later, to the crest the
+/// fitted motion reaches there, and fitted again from that start (three
+/// times at most).
+fn last_release(
+    curve: &NonlinearCurve<'_>,
+    t: &[f64],
+    theta: &[f64],
+    mut fit: Fit,
+) -> Result<Fit, FitError> {
+    for _ in 0..3 {
+        let p = &fit.parameters;
+        let ratio = release_period_ratio(p[0]);
+        if p[3].abs() < std::f64::consts::TAU * ratio {
+            break;
+        }
+        let Some((time, angle)) = crest_after_one_period(&Law::VISCOUS.full(p)) else {
+            break;
+        };
+        let start = [angle, p[1], p[2], p[3] - p[1].abs() * time, p[4]];
+        fit = fit_curve(curve, t, theta, None, &start)?;
+    }
+    Ok(fit)
+}
+
+/// The linear fit's curve written with `A >= 0` and `φ` in `(-π, π]` (a
+/// negative amplitude is a phase shifted by π).
+fn canonical_linear(lin: &mut Fit) {
     if lin.parameters[0] < 0.0 {
         lin.parameters[0] = -lin.parameters[0];
         lin.parameters[3] += std::f64::consts::PI;
-        rescale(&mut lin, 0, -1.0);
+        rescale(lin, 0, -1.0);
     }
     let wrapped = lin.parameters[3].rem_euclid(std::f64::consts::TAU);
     lin.parameters[3] = if wrapped > std::f64::consts::PI {
@@ -735,36 +858,14 @@ fn fit_released(
     } else {
         wrapped
     };
-    let (a, wd, zeta) = (
-        lin.parameters[0].abs(),
-        lin.parameters[1],
-        lin.parameters[2],
-    );
-    let damping_factor = (1.0 - zeta * zeta).max(f64::MIN_POSITIVE).sqrt();
-    // The amplitude in the middle of the record sets the finite-amplitude correction.
-    let mid = 0.5 * t.last().copied().unwrap_or(0.0);
-    let a_mid = (a * (-zeta * wd / damping_factor * mid).exp()).min(3.1);
-    let ratio = Amplitude::from_radians(a_mid)
-        .map(period_ratio)
-        .unwrap_or(1.0);
-    let w0 = wd / damping_factor * ratio;
-    let w0_error = lin.standard_errors[1] / damping_factor * ratio;
-    let linear_fit = |fit: Fit, rejected: Option<f64>| TrajectoryFit {
-        model: TrajectoryModel::Linear,
-        law: Law::VISCOUS,
-        fit,
-        natural_angular_frequency: w0,
-        natural_angular_frequency_error: w0_error,
-        nonlinear_rms_rejected: rejected,
-        held_samples: 0,
-        held_seconds: 0.0,
-        observed,
-    };
-    if model == TrajectoryModel::Linear {
-        return Ok(linear_fit(lin, None));
-    }
-    // The nonlinear fit starts from the linear fit of the first window
-    // (where the phase is sure), over the same growing windows.
+}
+
+/// The nonlinear fit's start `[A, ω_n, ζ, φ, θ_off]` from the linear fit
+/// of the first window (where the phase is sure): released from rest at
+/// the crest before the first sample, which the linear fit's phase
+/// places `φ/ω_d` earlier; a release more than three quarters of a
+/// period before the first sample is taken as the crest just after it.
+fn nonlinear_start(lin_first: &Fit) -> Vec<f64> {
     let (a1, wd1, zeta1) = {
         let p = &lin_first.parameters;
         (p[0].abs(), p[1], p[2])
@@ -774,8 +875,6 @@ fn fit_released(
         .map(period_ratio)
         .unwrap_or(1.0);
     let wn = wd1 / damping1 * ratio1;
-    // Release from rest at the crest before the first sample: the phase
-    // φ of the linear fit places it φ/ω_d earlier.
     let mut phase = lin_first.parameters[3];
     if lin_first.parameters[0] < 0.0 {
         phase += std::f64::consts::PI;
@@ -793,85 +892,30 @@ fn fit_released(
         phase
     };
     let a_release = a1 * (zeta1 * wd1 / damping1 * phase / wd1).exp();
-    let mut initial = vec![
+    vec![
         a_release,
         wn,
         zeta1.max(0.0),
         phase,
         lin_first.parameters[4],
-    ];
-    for &n in &windows[..windows.len() - 1] {
-        let curve = NonlinearCurve::new(&t[..n], Law::VISCOUS, observed);
-        // A window too short to determine every parameter (the damping
-        // over a few periods of a high Q) leaves the start as it was for
-        // the next, longer one.
-        if let Ok(f) = fit_curve(&curve, &t[..n], &theta[..n], None, &initial) {
-            initial = f.parameters;
-        }
-    }
-    let curve = NonlinearCurve::new(&t, Law::VISCOUS, observed);
-    let linear_rms = lin.residual_rms;
-    // A nonlinear fit that fails outright (its parameters not determined
-    // from this start) leaves the linear one, which says so.
-    let Ok(mut fit) = fit_curve(&curve, &t, theta, None, &initial) else {
-        return Ok(linear_fit(lin, Some(f64::NAN)));
-    };
-    // The release is the last crest at or before the first sample: a
-    // release a whole period (or more) earlier fits the same curve with a
-    // larger amplitude, so move it one period later, to the crest the
-    // fitted motion reaches there, and fit again from that start.
-    for _ in 0..3 {
-        let p = &fit.parameters;
-        let ratio = release_period_ratio(p[0]);
-        if p[3].abs() < std::f64::consts::TAU * ratio {
-            break;
-        }
-        let Some((time, angle)) = crest_after_one_period(&Law::VISCOUS.full(p)) else {
-            break;
-        };
-        let start = [angle, p[1], p[2], p[3] - p[1].abs() * time, p[4]];
-        fit = fit_curve(&curve, &t, theta, None, &start)?;
-    }
-    // A nonlinear fit that ran off (its release amplitude driven to the
-    // top, or not determined by the data: a release rewound through heavy
-    // damping, a record that does not follow a free decay) and fits worse
-    // than the linear one is not reported: the linear fit is returned, and
-    // says so. (A sound nonlinear fit may still be a little worse than the
-    // linear one on data that follow the linear equation exactly.)
-    let (a, a_error) = (fit.parameters[0].abs(), fit.standard_errors[0]);
-    let ran_off = a >= 3.0 || a_error.is_nan() || a_error >= a;
-    if ran_off && (fit.residual_rms.is_nan() || fit.residual_rms > linear_rms) {
-        return Ok(linear_fit(lin, Some(fit.residual_rms)));
-    }
-    // Drag and friction, each and both, from the viscous fit: kept when
-    // the information criterion prefers them and their coefficients are
-    // determined.
-    let (fit, law) = with_damping_laws(&t, theta, fit, observed);
-    // Report the phase as a fraction of the true (finite-amplitude) period:
-    // the release lies phase/2π of a period before the first sample.
-    let mut fit = fit;
+    ]
+}
+
+/// The nonlinear fit as reported: its phase as a fraction of the true
+/// (finite-amplitude) period (the release lies phase/2π of a period
+/// before the first sample), its amplitude and its damping laws'
+/// coefficients positive.
+fn report_released(fit: &mut Fit) {
     let ratio = release_period_ratio(fit.parameters[0]);
     fit.parameters[3] /= ratio;
     fit.standard_errors[3] /= ratio;
-    rescale(&mut fit, 3, 1.0 / ratio);
+    rescale(fit, 3, 1.0 / ratio);
     for j in (0..1).chain(5..fit.parameters.len()) {
         if fit.parameters[j] < 0.0 {
             fit.parameters[j] = -fit.parameters[j];
-            rescale(&mut fit, j, -1.0);
+            rescale(fit, j, -1.0);
         }
     }
-    let (w, e) = (fit.parameters[1].abs(), fit.standard_errors[1]);
-    Ok(TrajectoryFit {
-        model,
-        law,
-        fit,
-        natural_angular_frequency: w,
-        natural_angular_frequency_error: e,
-        nonlinear_rms_rejected: None,
-        held_samples: 0,
-        held_seconds: 0.0,
-        observed,
-    })
 }
 
 /// The covariance of a fit whose parameter `j` was multiplied by `factor`

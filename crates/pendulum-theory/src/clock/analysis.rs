@@ -793,6 +793,132 @@ fn lag_step(y0: f64, a: f64, b: f64, h: f64, tau: f64) -> f64 {
     b - slope_tau + (y0 - a + slope_tau) * (-h / tau).exp()
 }
 
+/// The times at which the parts' lags are followed: the weather's rows
+/// `rows`, with steps of a quarter of the shortest of the `lags` that
+/// matter between them (at most [`MAX_LAG_POINTS`] over the span), and
+/// after the last row, while the air holds its state and the parts go on
+/// settling towards it, to twenty of the longest or the run's end
+/// `until`, whichever comes first.
+fn lag_times(rows: &[f64], until: f64, lags: &[f64]) -> Vec<f64> {
+    let shortest = lags
+        .iter()
+        .copied()
+        .filter(|&t| t > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    let longest = lags.iter().copied().fold(0.0, f64::max);
+    let last = rows.last().copied().unwrap_or(0.0);
+    let settled = until.min(last + 20.0 * longest).max(last);
+    let span = settled - rows.first().copied().unwrap_or(0.0);
+    let step = if shortest.is_finite() {
+        (0.25 * shortest).max(span / MAX_LAG_POINTS as f64)
+    } else {
+        f64::INFINITY
+    };
+    let mut time = Vec::new();
+    let mut ends: Vec<f64> = rows.to_vec();
+    if settled > last && step.is_finite() {
+        ends.push(settled);
+    }
+    for (k, &t) in ends.iter().enumerate() {
+        time.push(t);
+        if let Some(&next) = ends.get(k + 1) {
+            let n = ((next - t) / step).ceil();
+            if n.is_finite() && n > 1.0 {
+                for j in 1..n as usize {
+                    time.push(t + (next - t) * j as f64 / n);
+                }
+            }
+        }
+    }
+    time
+}
+
+/// The rate the gas gives `design` at each of the weather's rows
+/// against `here_rate` (the first row's, s/day), and the factor on the
+/// clock's Q, `q_factor` of the gas's Q there; each row's gas checked as
+/// the first row's `gas0` was (the humidity a row's air can hold at its
+/// own temperature and pressure), a column a row lacks taken from
+/// `first` (temperature °C, pressure Pa).
+fn gas_rows(
+    design: &CompoundPendulum,
+    w: &Weather,
+    g: f64,
+    gas0: &crate::gas::GasState,
+    first: (f64, f64),
+    here_rate: f64,
+    q_factor: &dyn Fn(f64) -> f64,
+) -> Result<(Vec<f64>, Vec<f64>), Refusal> {
+    let at = |c: &Option<Vec<f64>>, i: usize, c0: f64| c.as_ref().map_or(c0, |v| v[i]);
+    let mut gas_rate = Vec::with_capacity(w.time.len());
+    let mut gas_q = Vec::with_capacity(w.time.len());
+    for i in 0..w.time.len() {
+        let (t, p) = (
+            at(&w.temperature_c, i, first.0),
+            at(&w.pressure_pa, i, first.1),
+        );
+        let humidity = match &w.humidity_percent {
+            Some(h) => h[i] / 100.0,
+            None => gas0.at_pressure(p).humidity,
+        };
+        let state = crate::gas::GasState::new(gas0.gas, p, t, humidity).map_err(|e| {
+            let column = match e.field_name() {
+                // The humidity's own column, else the pressure that thinned
+                // the air (its humidity scaled with it), else the heat.
+                Some("humidity") if w.humidity_percent.is_some() => "humidity",
+                Some("humidity" | "pressure") if w.pressure_pa.is_some() => "pressure",
+                _ => "temperature_c",
+            };
+            Refusal::sample(column, i, e.reason)
+        })?;
+        let there = design.in_gas(&state, g);
+        gas_rate.push(there.rates.total - here_rate);
+        gas_q.push(q_factor(there.q));
+    }
+    Ok((gas_rate, gas_q))
+}
+
+/// The parts' time constants (s): thermal, whether each takes up water,
+/// and of moisture; and those of them that the weather moves (thermal
+/// when the temperature or its gradient is logged, of moisture when the
+/// humidity or the temperature is).
+struct PartLags {
+    lags: Vec<f64>,
+    wet: Vec<bool>,
+    wet_lags: Vec<f64>,
+    moving: Vec<f64>,
+}
+
+/// The [`PartLags`] of `design` under the weather `w`.
+fn part_lags(design: &CompoundPendulum, w: &Weather) -> PartLags {
+    let parts_of = design.parts();
+    let lags: Vec<f64> = parts_of.iter().map(|p| p.time_constant).collect();
+    let wet: Vec<bool> = parts_of
+        .iter()
+        .map(|p| p.material.moisture_expansion.is_some())
+        .collect();
+    let wet_lags: Vec<f64> = parts_of.iter().map(|p| p.moisture_time_constant).collect();
+    let thermal_moves = w.temperature_c.is_some() || w.gradient_k_per_m.is_some();
+    let water_moves = wet.iter().any(|&x| x) && (w.humidity_percent.is_some() || thermal_moves);
+    let moving: Vec<f64> = lags
+        .iter()
+        .copied()
+        .filter(|_| thermal_moves)
+        .chain(
+            wet_lags
+                .iter()
+                .zip(&wet)
+                .filter(|(_, &x)| x && water_moves)
+                .map(|(&t, _)| t),
+        )
+        .collect();
+    PartLags {
+        lags,
+        wet,
+        wet_lags,
+        moving,
+    }
+}
+
 /// The weather's effect on `design` in `gas` (the first row's pressure
 /// and temperature taken for the composition: air of 50% humidity at
 /// 1,013.25 hPa pumped to that pressure) for a clock of total Q `q` at the
@@ -833,7 +959,6 @@ fn weather_effect(
         None => 0.0,
     };
     let gas0 = GasState::new(gas, p0, t0, humidity)?;
-    let at = |c: &Option<Vec<f64>>, i: usize, c0: f64| c.as_ref().map_or(c0, |v| v[i]);
     let here = design.in_gas(&gas0, g);
     let q_gas0 = here.q;
     let mut warnings = Vec::new();
@@ -858,90 +983,21 @@ fn weather_effect(
     };
     // The gas's rate and Q factor at each row (smooth in the row's
     // pressure, temperature and humidity: linear between rows).
-    let mut gas_rate = Vec::with_capacity(w.time.len());
-    let mut gas_q = Vec::with_capacity(w.time.len());
-    for i in 0..w.time.len() {
-        let (t, p) = (at(&w.temperature_c, i, t0), at(&w.pressure_pa, i, p0));
-        let humidity = match &w.humidity_percent {
-            Some(h) => h[i] / 100.0,
-            None => gas0.at_pressure(p).humidity,
-        };
-        // Each row checked as the first was (the humidity a row's air can
-        // hold, at its own temperature and pressure).
-        let state = GasState::new(gas, p, t, humidity).map_err(|e| {
-            let column = match e.field_name() {
-                // The humidity's own column, else the pressure that thinned
-                // the air (its humidity scaled with it), else the heat.
-                Some("humidity") if w.humidity_percent.is_some() => "humidity",
-                Some("humidity" | "pressure") if w.pressure_pa.is_some() => "pressure",
-                _ => "temperature_c",
-            };
-            Refusal::sample(column, i, e.reason)
-        })?;
-        let there = design.in_gas(&state, g);
-        gas_rate.push(there.rates.total - here.rates.total);
-        gas_q.push(match pivot {
-            Some(qp) => 1.0 / (1.0 / qp + 1.0 / there.q) / q,
-            None => there.q / q_gas0,
-        });
-    }
+    let q_factor = |gas_q: f64| match pivot {
+        Some(qp) => 1.0 / (1.0 / qp + 1.0 / gas_q) / q,
+        None => gas_q / q_gas0,
+    };
+    let (gas_rate, gas_q) = gas_rows(design, w, g, &gas0, (t0, p0), here.rates.total, &q_factor)?;
     // The parts' lags: thermal (when the temperature or its gradient
     // changes) and, for parts that take up water, of moisture (when the
     // humidity or the temperature changes).
-    let parts_of = design.parts();
-    let lags: Vec<f64> = parts_of.iter().map(|p| p.time_constant).collect();
-    let wet: Vec<bool> = parts_of
-        .iter()
-        .map(|p| p.material.moisture_expansion.is_some())
-        .collect();
-    let wet_lags: Vec<f64> = parts_of.iter().map(|p| p.moisture_time_constant).collect();
-    let thermal_moves = w.temperature_c.is_some() || w.gradient_k_per_m.is_some();
-    let water_moves = wet.iter().any(|&x| x) && (w.humidity_percent.is_some() || thermal_moves);
-    let relevant: Vec<f64> = lags
-        .iter()
-        .copied()
-        .filter(|_| thermal_moves)
-        .chain(
-            wet_lags
-                .iter()
-                .zip(&wet)
-                .filter(|(_, &x)| x && water_moves)
-                .map(|(&t, _)| t),
-        )
-        .collect();
-    let shortest = relevant
-        .iter()
-        .copied()
-        .filter(|&t| t > 0.0)
-        .fold(f64::INFINITY, f64::min);
-    let longest = relevant.iter().copied().fold(0.0, f64::max);
-    // After the last row the air holds its state and the parts go on
-    // settling towards it: twenty of the longest time constants, or to
-    // the run's end.
-    let last = w.time.last().copied().unwrap_or(0.0);
-    let settled = until.min(last + 20.0 * longest).max(last);
-    let span = settled - w.time.first().copied().unwrap_or(0.0);
-    let step = if shortest.is_finite() {
-        (0.25 * shortest).max(span / MAX_LAG_POINTS as f64)
-    } else {
-        f64::INFINITY
-    };
-    let mut time = Vec::new();
-    let mut ends: Vec<f64> = w.time.clone();
-    if settled > last && step.is_finite() {
-        ends.push(settled);
-    }
-    for (k, &t) in ends.iter().enumerate() {
-        time.push(t);
-        if let Some(&next) = ends.get(k + 1) {
-            let n = ((next - t) / step).ceil();
-            if n.is_finite() && n > 1.0 {
-                for j in 1..n as usize {
-                    time.push(t + (next - t) * j as f64 / n);
-                }
-            }
-        }
-    }
+    let PartLags {
+        lags,
+        wet,
+        wet_lags,
+        moving,
+    } = part_lags(design, w);
+    let time = lag_times(&w.time, until, &moving);
     let column_at = |c: &Option<Vec<f64>>, c0: f64, t: f64| match c {
         Some(v) => super::long_run::piecewise_linear(&w.time, v, t),
         None => c0,

@@ -310,29 +310,10 @@ pub(crate) fn pendulum_of(length: f64, g: Option<f64>) -> Result<Pendulum, Refus
     })
 }
 
-/// Analyses a run-down (see the module notes).
-///
-/// # Examples
-///
-/// ```
-/// use pendulum_theory::fitting::rundown::{analyse, RunDownInput};
-///
-/// // A 2 s pendulum of Q = 500 read every 10 s: A = 0.1 e^(-ζωt), ζ = 1/(2Q).
-/// let (zeta, omega) = (1.0 / 1000.0, std::f64::consts::PI);
-/// let time: Vec<f64> = (0..60).map(|k| 10.0 * k as f64).collect();
-/// let amplitude: Vec<f64> = time.iter().map(|t| 0.1 * (-zeta * omega * t).exp()).collect();
-/// let fit = analyse(&RunDownInput {
-///     time: &time,
-///     amplitude: &amplitude,
-///     period: Some(2.0),
-///     ..Default::default()
-/// })?;
-/// assert_eq!(fit.preferred, Some("viscous"));
-/// let viscous = fit.models[0].fitted.as_ref().unwrap();
-/// assert!((viscous.q_viscous.unwrap() - 500.0).abs() < 1e-6);
-/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
-/// ```
-pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
+/// The run-down's inputs checked (each refusal names its field and row)
+/// and the work judged: the laws to fit, the pendulum (given its
+/// length) and the bob's mass.
+fn validated(input: &RunDownInput<'_>) -> Result<Checked, Refusal> {
     let (time, amplitude) = (input.time, input.amplitude);
     check_pairs("time", "amplitude", time, amplitude)?;
     check_times("time", time)?;
@@ -455,9 +436,27 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
         rows as f64 * SECONDS_PER_ROW,
         input.force,
     )?;
-    // The turning points' half period: the slope of their times against
-    // their half-swing count, with its standard error.
-    let turning = match input.turning_count {
+    Ok(Checked {
+        models,
+        pendulum,
+        mass,
+    })
+}
+
+/// What [`validated`] gives: the laws to fit, the pendulum (given its
+/// length) and the bob's mass, kg.
+struct Checked {
+    models: Vec<DecayModel>,
+    pendulum: Option<Pendulum>,
+    mass: Option<f64>,
+}
+
+/// The turning points' half period (s) and its standard error: the slope
+/// of their times against their half-swing count (three at least), else
+/// the half period given with none.
+fn turning_half_period(input: &RunDownInput<'_>) -> Option<(f64, f64)> {
+    let time = input.time;
+    match input.turning_count {
         Some(count) if count.len() >= 3 => {
             let (a, b) = super::straight_line(count, time);
             let mean = count.iter().sum::<f64>() / count.len() as f64;
@@ -471,7 +470,39 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
             (b > 0.0 && b.is_finite()).then_some((b, if se.is_finite() { se } else { 0.0 }))
         }
         _ => input.turning_half_period.map(|h| (h, 0.0)),
-    };
+    }
+}
+
+/// Analyses a run-down (see the module notes).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::fitting::rundown::{analyse, RunDownInput};
+///
+/// // A 2 s pendulum of Q = 500 read every 10 s: A = 0.1 e^(-ζωt), ζ = 1/(2Q).
+/// let (zeta, omega) = (1.0 / 1000.0, std::f64::consts::PI);
+/// let time: Vec<f64> = (0..60).map(|k| 10.0 * k as f64).collect();
+/// let amplitude: Vec<f64> = time.iter().map(|t| 0.1 * (-zeta * omega * t).exp()).collect();
+/// let fit = analyse(&RunDownInput {
+///     time: &time,
+///     amplitude: &amplitude,
+///     period: Some(2.0),
+///     ..Default::default()
+/// })?;
+/// assert_eq!(fit.preferred, Some("viscous"));
+/// let viscous = fit.models[0].fitted.as_ref().unwrap();
+/// assert!((viscous.q_viscous.unwrap() - 500.0).abs() < 1e-6);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
+pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
+    let (time, amplitude) = (input.time, input.amplitude);
+    let Checked {
+        models,
+        pendulum,
+        mass,
+    } = validated(input)?;
+    let turning = turning_half_period(input);
     let (omega, omega_source) = match (input.period, turning, &pendulum) {
         (Some(p), _, _) => (Some(std::f64::consts::TAU / p), Some("period")),
         (None, Some((h, _)), _) => (Some(std::f64::consts::PI / h), Some("turning_points")),

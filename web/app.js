@@ -182,7 +182,7 @@ function listed(box, title, items) {
   const ul = document.createElement("ul");
   for (const item of items) {
     const li = document.createElement("li");
-    li.textContent = item;
+    li.textContent = typeof item === "string" ? item : item.message;
     ul.append(li);
   }
   box.append(h, ul);

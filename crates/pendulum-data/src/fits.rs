@@ -39,6 +39,20 @@ fn refused(refusal: &Refusal, data: &SaySample<'_>) -> ReadError {
     }
 }
 
+/// A name the library reads (`parse`), `None` when not given; its
+/// refusal is its option's (`--model: 'x' is not one of …`).
+fn parsed<T>(
+    name: Option<&str>,
+    parse: fn(&str) -> Result<Option<T>, Refusal>,
+) -> Result<Option<T>, ReadError> {
+    match name {
+        None => Ok(None),
+        Some(name) => {
+            parse(name).map_err(|r| refused(&r, &|_, reason| ReadError::other(reason.to_string())))
+        }
+    }
+}
+
 /// What a decay is fitted with, beside the file.
 #[derive(Clone, Debug, Default)]
 pub struct DecayOptions {
@@ -138,7 +152,7 @@ pub fn decay(
         ));
     }
     let input = RunDownInput {
-        model: options.model.as_deref(),
+        model: parsed(options.model.as_deref(), rundown::parse_model)?,
         period: options.period,
         length: options.length.map(|l| l.0),
         length_standard_error: options.length_standard_error,
@@ -404,7 +418,7 @@ pub fn trajectory(
         time: &track.time,
         angle: &track.angle,
         angular_velocity: &axes,
-        model: options.model.as_deref(),
+        model: parsed(options.model.as_deref(), tracked::parse_model)?,
         length,
         length_standard_error: match options.length {
             Some(_) => options.length_standard_error,

@@ -4,7 +4,7 @@
 //! or `fit period` fits it, by the same code (`pendulum_data::fits`).
 //! The reply's `ok` is the command's `--json`; beside it `figure` (the
 //! command's `--plot`, as data: panels of series, which the page draws),
-//! `warnings` (the sentences its text prints) and `notes` (what the
+//! `warnings` (as its JSON has them) and `notes` (what the
 //! reader left out, its warnings on standard error).
 //!
 //! The options are the flags' values, each key named with its unit
@@ -16,6 +16,7 @@ use crate::measured::{Pivot, Positions};
 use crate::request::{reply_of, Failure, Gravity};
 use crate::{AngleUnit, ReadError, ReadOptions, Source};
 use pendulum_theory::fitting::tracked::LengthSource;
+use pendulum_theory::warning::{Warn, Warning};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
@@ -189,8 +190,9 @@ struct Fitted<T: Serialize> {
     /// The command's `--plot`, as data, its time axes in the unit their
     /// span suits.
     figure: Figure,
-    /// The sentences of the analysis's warnings.
-    warnings: Vec<String>,
+    /// The analysis's warnings, as its JSON has them (code, sentence and
+    /// figure).
+    warnings: Vec<Warning>,
     /// What the reader left out (a sentence each).
     notes: Vec<String>,
 }
@@ -272,8 +274,8 @@ fn fit_of(request: &FitRequest, bytes: &[u8]) -> Result<String, Failure> {
     text.map_err(|e| Failure::request(format!("could not encode JSON: {e}")))
 }
 
-/// The reply: the JSON, the figure, the warnings' sentences and the notes.
-fn encode<T: Serialize, W: std::fmt::Display>(
+/// The reply: the JSON, the figure, the warnings and the notes.
+fn encode<T: Serialize, W: Warn>(
     json: &T,
     figure: Figure,
     warnings: &[W],
@@ -282,7 +284,7 @@ fn encode<T: Serialize, W: std::fmt::Display>(
     serde_json::to_string(&Fitted {
         ok: json,
         figure: in_time_units(&figure),
-        warnings: warnings.iter().map(ToString::to_string).collect(),
+        warnings: warnings.iter().map(Warning::of).collect(),
         notes: format.notes.clone(),
     })
 }

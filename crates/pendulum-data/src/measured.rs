@@ -407,7 +407,43 @@ pub fn track_of(
         .map(|v| flip * v)
         .collect();
     let y = y.as_slice();
-    let (mut pivot, radius) = match positions.pivot {
+    let (mut pivot, radius) = pivot_of(&table, positions, x, y, flip)?;
+    let angle: Vec<f64> = x
+        .iter()
+        .zip(y)
+        .map(|(&xi, &yi)| angle_about(xi, yi, pivot.x, pivot.y))
+        .collect();
+    refuse_bob_above_pivot(&table, positions, &angle, y, &pivot, flip)?;
+    // Back in the file's coordinates for the JSON.
+    pivot.y *= flip;
+    let radius = radius.map(|(r, e)| match positions.scale {
+        Some(s) => (r * s, e * s),
+        None => (r, e),
+    });
+    Ok(Track {
+        table,
+        time,
+        angle,
+        angular_velocity: Vec::new(),
+        pivot: Some(pivot),
+        track_radius: radius.map(|r| r.0),
+        track_radius_error: radius.map(|r| r.1),
+        time_rebuilt: None,
+    })
+}
+
+/// The pivot of x and y positions (`y` already flipped by `flip` when y
+/// grows downward): given, the default (0,0), or the centre of the circle
+/// the bob traced. Returns it, with the fitted circle's radius and its
+/// standard error, in file units.
+fn pivot_of(
+    table: &Table,
+    positions: &Positions,
+    x: &[f64],
+    y: &[f64],
+    flip: f64,
+) -> Result<(PivotJson, Option<(f64, f64)>), ReadError> {
+    Ok(match positions.pivot {
         Some(Pivot::Fit) => {
             // The arc of the record's longest run: marks after a tracking
             // gap (a stray point elsewhere in the picture) are no part of
@@ -447,12 +483,20 @@ pub fn track_of(
             },
             None,
         ),
-    };
-    let angle: Vec<f64> = x
-        .iter()
-        .zip(y)
-        .map(|(&xi, &yi)| angle_about(xi, yi, pivot.x, pivot.y))
-        .collect();
+    })
+}
+
+/// Refuses angles that put the bob level with or above its pivot (`y`
+/// and the pivot flipped by `flip` when y grows downward), naming the
+/// first such row and the ways out not yet tried.
+fn refuse_bob_above_pivot(
+    table: &Table,
+    positions: &Positions,
+    angle: &[f64],
+    y: &[f64],
+    pivot: &PivotJson,
+    flip: f64,
+) -> Result<(), ReadError> {
     // A bob above its pivot means the pivot is wrong, or y points down:
     // the advice names what was not tried.
     if let Some(i) = angle
@@ -487,20 +531,5 @@ pub fn track_of(
             ),
         ));
     }
-    // Back in the file's coordinates for the JSON.
-    pivot.y *= flip;
-    let radius = radius.map(|(r, e)| match positions.scale {
-        Some(s) => (r * s, e * s),
-        None => (r, e),
-    });
-    Ok(Track {
-        table,
-        time,
-        angle,
-        angular_velocity: Vec::new(),
-        pivot: Some(pivot),
-        track_radius: radius.map(|r| r.0),
-        track_radius_error: radius.map(|r| r.1),
-        time_rebuilt: None,
-    })
+    Ok(())
 }

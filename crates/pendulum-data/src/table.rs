@@ -17,6 +17,7 @@
 //! Every refusal names the file, and where it can the line, the column and
 //! the separator detected.
 
+use crate::formats::Converted;
 use crate::{Layout, ReadError, Source};
 use serde::Serialize;
 use std::io::{BufRead, Read};
@@ -1198,7 +1199,146 @@ pub fn stream_table<E: From<ReadError>>(
         layout,
         reader: handle,
     } = source;
-    let fail = |message: String| E::from(ReadError::other(format!("{file}: {message}")));
+    let Opened {
+        mut lines,
+        mut converted,
+        is_project,
+    } = open_text(&file, layout, handle)?;
+    // The first lines decide the separator; they are kept to be replayed.
+    let sample = lines.sample()?;
+    let shape = shape_of(&file, sample, is_project)?;
+    let header = read_header(&file, options, &shape)?;
+    let columns = choose_columns(&file, options, choose, &shape, &header)?;
+    let names: Vec<String> = columns.used.iter().map(|f| f.header.clone()).collect();
+    let mut format = format_of(&shape, &columns, names.clone(), &mut converted);
+    let mut rows = Rows::new(&file, options, &shape, &columns);
+    for (line_number, line) in shape.sample.iter().skip(shape.first_numeric) {
+        if rows.read(*line_number, line, &mut format)? {
+            each(&rows.row, *line_number)?;
+        }
+    }
+    while let Some((number, line)) = lines.next_line()? {
+        if rows.read(number, &line, &mut format)? {
+            each(&rows.row, number)?;
+        }
+    }
+    note_run(&file, options, rows.runs, &mut format)?;
+    let converted = converted.as_ref().map(|(_, c)| c);
+    note_left_out(
+        &file,
+        converted,
+        &columns.used,
+        &header.headers,
+        &mut format,
+    );
+    Ok((file, columns.roles, names, format))
+}
+
+/// A refusal of the file called `file`: its name, then `message`.
+fn refusal(file: &str, message: String) -> ReadError {
+    ReadError::other(format!("{file}: {message}"))
+}
+
+/// A table's text read line by line within the limits of a measurement
+/// file, each line numbered as the file numbers it.
+struct Lines<'a, 'f> {
+    /// The file, for messages.
+    file: &'f str,
+    /// The table's text.
+    reader: Box<dyn BufRead + 'a>,
+    /// The file's line of each line of a converted text (a TICC log's
+    /// readings under their own line numbers).
+    line_map: Vec<u64>,
+    /// The lines read.
+    raw_lines: usize,
+    /// The bytes read.
+    total: u64,
+    /// The file's line of the latest line read.
+    number: u64,
+}
+
+impl Lines<'_, '_> {
+    /// The next line, without its line end or a byte-order mark, and its
+    /// file line; `None` at the end. A file or a line over the limits is
+    /// refused.
+    fn next_line(&mut self) -> Result<Option<(u64, String)>, ReadError> {
+        let fail = |message: String| refusal(self.file, message);
+        let mut bytes = Vec::new();
+        let read = (&mut self.reader)
+            .take(MAX_LINE_BYTES + 1)
+            .read_until(b'\n', &mut bytes)
+            .map_err(|e| fail(format!("cannot read it: {e}")))?;
+        if read == 0 {
+            return Ok(None);
+        }
+        self.raw_lines += 1;
+        let number = self
+            .line_map
+            .get(self.raw_lines - 1)
+            .copied()
+            .unwrap_or(self.number + 1);
+        self.number = number;
+        self.total += read as u64;
+        if self.total > MAX_FILE_BYTES {
+            return Err(fail(format!(
+                "is larger than the {} GiB a measurement file may have",
+                MAX_FILE_BYTES >> 30
+            )));
+        }
+        if read as u64 > MAX_LINE_BYTES && bytes.last() != Some(&b'\n') {
+            return Err(fail(format!(
+                "line {number} is longer than {} KiB: not a table of numbers",
+                MAX_LINE_BYTES >> 10
+            )));
+        }
+        let text = String::from_utf8_lossy(&bytes);
+        let text = text.trim_start_matches('\u{feff}');
+        Ok(Some((
+            number,
+            text.trim_end_matches(['\n', '\r']).to_string(),
+        )))
+    }
+
+    /// The first lines that are not blank or a `#` comment, up to
+    /// `SNIFF_LINES` of them, each with its file line: what the layout is
+    /// decided on.
+    fn sample(&mut self) -> Result<Vec<(u64, String)>, ReadError> {
+        let mut sample: Vec<(u64, String)> = Vec::new();
+        while sample.len() < SNIFF_LINES {
+            let Some((number, line)) = self.next_line()? else {
+                break;
+            };
+            let t = line.trim();
+            if t.is_empty() || t.starts_with('#') {
+                continue;
+            }
+            sample.push((number, line));
+        }
+        Ok(sample)
+    }
+}
+
+/// A file opened as a table's text.
+struct Opened<'a, 'f> {
+    /// Its lines.
+    lines: Lines<'a, 'f>,
+    /// For a format read whole: its name, and what its reader made of the
+    /// file (the text taken out).
+    converted: Option<(&'static str, Converted)>,
+    /// Whether it is a Tracker project.
+    is_project: bool,
+}
+
+/// Opens the bytes of `file` as a table's text: a format read whole (told
+/// by the layout, else by the first bytes) is converted to text first.
+/// Returns its lines and what the conversion made; a file that cannot be
+/// read, is too large or that its format's reader refuses is refused.
+fn open_text<'a, 'f>(
+    file: &'f str,
+    layout: Layout,
+    handle: Box<dyn BufRead + 'a>,
+) -> Result<Opened<'a, 'f>, ReadError> {
+    let fail = |message: String| refusal(file, message);
     let mut handle = handle;
     // A format read whole: by the file's name, else by its first bytes.
     let whole = match layout {
@@ -1210,7 +1350,7 @@ pub fn stream_table<E: From<ReadError>>(
     };
     let is_project = whole.is_some_and(|f| f.name == crate::tracker::FORMAT.name);
     let mut converted = None;
-    let mut reader: Box<dyn BufRead> = if let Some(format) = whole {
+    let reader: Box<dyn BufRead + 'a> = if let Some(format) = whole {
         // Its contents become the table's text.
         let mut bytes = Vec::new();
         handle
@@ -1230,58 +1370,108 @@ pub fn stream_table<E: From<ReadError>>(
     } else {
         Box::new(handle.take(MAX_FILE_BYTES + 1))
     };
-    let mut total = 0_u64;
     // The file's line of each line of a converted text (a TICC log's
     // readings under their own line numbers).
     let line_map = converted
         .as_mut()
         .map(|c| std::mem::take(&mut c.1.lines))
         .unwrap_or_default();
-    let mut raw_lines = 0_usize;
-    let mut next_line = |number: &mut u64| -> Result<Option<String>, E> {
-        let mut bytes = Vec::new();
-        let read = (&mut reader)
-            .take(MAX_LINE_BYTES + 1)
-            .read_until(b'\n', &mut bytes)
-            .map_err(|e| fail(format!("cannot read it: {e}")))?;
-        if read == 0 {
-            return Ok(None);
-        }
-        raw_lines += 1;
-        *number = line_map.get(raw_lines - 1).copied().unwrap_or(*number + 1);
-        total += read as u64;
-        if total > MAX_FILE_BYTES {
-            return Err(fail(format!(
-                "is larger than the {} GiB a measurement file may have",
-                MAX_FILE_BYTES >> 30
-            )));
-        }
-        if read as u64 > MAX_LINE_BYTES && bytes.last() != Some(&b'\n') {
-            return Err(fail(format!(
-                "line {number} is longer than {} KiB: not a table of numbers",
-                MAX_LINE_BYTES >> 10
-            )));
-        }
-        let text = String::from_utf8_lossy(&bytes);
-        let text = text.trim_start_matches('\u{feff}');
-        Ok(Some(text.trim_end_matches(['\n', '\r']).to_string()))
-    };
-    // The first lines decide the separator; they are kept to be replayed.
-    let mut number = 0_u64;
-    let mut sample: Vec<(u64, String)> = Vec::new();
-    while sample.len() < SNIFF_LINES {
-        let Some(line) = next_line(&mut number)? else {
-            break;
-        };
-        let t = line.trim();
-        if t.is_empty() || t.starts_with('#') {
-            continue;
-        }
-        sample.push((number, line));
+    Ok(Opened {
+        lines: Lines {
+            file,
+            reader,
+            line_map,
+            raw_lines: 0,
+            total: 0,
+            number: 0,
+        },
+        converted,
+        is_project,
+    })
+}
+
+/// How a table's lines split into cells and read as numbers.
+#[derive(Clone, Copy)]
+struct Dialect {
+    /// What separates the cells.
+    separator: Separator,
+    /// Numbers are written with a decimal comma.
+    decimal_comma: bool,
+}
+
+impl Dialect {
+    /// Whether `line` is a row of numbers.
+    fn numeric(self, line: &str) -> bool {
+        is_numeric(&self.separator.split(line), self.decimal_comma)
     }
+
+    /// The number of cells of `line`.
+    fn width_of(self, line: &str) -> usize {
+        self.separator.split(line).len()
+    }
+}
+
+/// The layout of a table, read from its first lines.
+struct Shape {
+    /// The separator and the decimal mark.
+    dialect: Dialect,
+    /// The separator's name, for the output's `format.separator`.
+    separator_name: &'static str,
+    /// The separator and the decimal mark in words, for messages.
+    shown_separator: String,
+    /// The first lines, each with its file line (the rows among them are
+    /// replayed).
+    sample: Vec<(u64, String)>,
+    /// The number of cells of a row of numbers.
+    width: usize,
+    /// The first row of numbers, in `sample`.
+    first_numeric: usize,
+}
+
+/// The layout of a table whose first lines are `sample`: its separator and
+/// decimal mark sniffed, its rows the numeric lines of the most common
+/// width. A table without rows of numbers is refused (a Tracker project
+/// told how to export its data).
+fn shape_of(file: &str, sample: Vec<(u64, String)>, is_project: bool) -> Result<Shape, ReadError> {
     let texts: Vec<String> = sample.iter().map(|(_, l)| l.clone()).collect();
     let (separator, separator_name, decimal_comma) = sniff(&texts);
-    let shown_separator = if separator == Separator::Whole {
+    let shown_separator = shown_separator(separator, separator_name, decimal_comma);
+    let dialect = Dialect {
+        separator,
+        decimal_comma,
+    };
+    let width = row_width(&sample, dialect);
+    let first_numeric = sample
+        .iter()
+        .position(|(_, l)| dialect.numeric(l) && Some(dialect.width_of(l)) == width);
+    let Some(first_numeric) = first_numeric else {
+        return Err(refusal(
+            file,
+            format!(
+                "no rows of numbers found (read as {shown_separator}){}",
+                if is_project {
+                    "; a Tracker project (.trk) holds its data as XML: export the track's data \
+                     table from Tracker (File > Export > Data) and give that file"
+                } else {
+                    ""
+                }
+            ),
+        ));
+    };
+    Ok(Shape {
+        dialect,
+        separator_name,
+        shown_separator,
+        sample,
+        width: width.unwrap_or(1),
+        first_numeric,
+    })
+}
+
+/// The separator and the decimal mark in words, for messages: `one
+/// column`, `comma-separated`, `tab-separated with decimal commas`.
+fn shown_separator(separator: Separator, separator_name: &str, decimal_comma: bool) -> String {
+    if separator == Separator::Whole {
         format!(
             "one column{}",
             if decimal_comma {
@@ -1294,12 +1484,17 @@ pub fn stream_table<E: From<ReadError>>(
         format!("{separator_name}-separated with decimal commas")
     } else {
         format!("{separator_name}-separated")
-    };
+    }
+}
+
+/// The number of cells of a table's rows, read from its first lines
+/// `sample`; `None` if none of them is a row of numbers.
+fn row_width(sample: &[(u64, String)], dialect: Dialect) -> Option<usize> {
     // The rows of data are the numeric lines of the most common width;
     // numeric lines of another width before the first of them are the
     // file's metadata (a logger's settings), named by the line above.
-    let numeric = |l: &str| is_numeric(&separator.split(l), decimal_comma);
-    let width_of = |l: &str| separator.split(l).len();
+    let numeric = |l: &str| dialect.numeric(l);
+    let width_of = |l: &str| dialect.width_of(l);
     let mut widths: Vec<(usize, usize)> = Vec::new();
     for (_, l) in sample.iter().filter(|(_, l)| numeric(l)) {
         let w = width_of(l);
@@ -1317,29 +1512,55 @@ pub fn stream_table<E: From<ReadError>>(
             .and_then(|i| i.checked_sub(1))
             .is_some_and(|i| !numeric(&sample[i].1) && width_of(&sample[i].1) == w)
     };
-    let width = widths
+    widths
         .iter()
         .max_by_key(|&&(w, c)| (c, under_header(w), w))
-        .map(|&(w, _)| w);
-    let first_numeric = sample
-        .iter()
-        .position(|(_, l)| numeric(l) && Some(width_of(l)) == width);
-    let Some(first_numeric) = first_numeric else {
-        return Err(fail(format!(
-            "no rows of numbers found (read as {shown_separator}){}",
-            if is_project {
-                "; a Tracker project (.trk) holds its data as XML: export the track's data \
-                 table from Tracker (File > Export > Data) and give that file"
-            } else {
-                ""
-            }
-        )));
+        .map(|&(w, _)| w)
+}
+
+/// What stands above a table's rows.
+struct Header {
+    /// The names of the columns, from the header line or `--columns`.
+    headers: Vec<String>,
+    /// The file's settings (a logger's), each name with its value.
+    metadata: Vec<(String, f64)>,
+}
+
+/// Reads what stands above the rows of a table of `shape`: the file's
+/// settings, and the names of the columns from the line over the first
+/// row or `--columns`. A header run together with the first row, a
+/// missing one, or one naming other columns than the rows hold is refused.
+fn read_header(file: &str, options: &ReadOptions, shape: &Shape) -> Result<Header, ReadError> {
+    let (metadata, settings_line) = settings(shape);
+    let header_line = shape
+        .first_numeric
+        .checked_sub(1)
+        .filter(|&i| Some(i) != settings_line)
+        .map(|i| shape.sample[i].1.as_str())
+        .filter(|l| !shape.dialect.numeric(l));
+    refuse_glued(file, shape, header_line)?;
+    let headers: Vec<String> = match (&options.columns, header_line) {
+        (Some(names), _) => names.clone(),
+        (None, None) => return Err(no_header(file, options, &metadata, shape.width)),
+        (None, Some(line)) => header_cells(file, options, shape, line)?,
     };
+    Ok(Header { headers, metadata })
+}
+
+/// The file's settings above the rows of a table of `shape`, each name
+/// with its value, and the line (in the sample) of the last settings'
+/// numbers, if any.
+fn settings(shape: &Shape) -> (Vec<(String, f64)>, Option<usize>) {
+    let Dialect {
+        separator,
+        decimal_comma,
+    } = shape.dialect;
+    let sample = &shape.sample;
     // Settings: a line of names over a line of as many numbers, under any
     // separator (a one-column file's settings are comma-separated).
     let mut metadata: Vec<(String, f64)> = Vec::new();
     let mut settings_line = None;
-    for j in 1..first_numeric {
+    for j in 1..shape.first_numeric {
         let (names, values) = (&sample[j - 1].1, &sample[j].1);
         let pair = [
             separator,
@@ -1366,19 +1587,16 @@ pub fn stream_table<E: From<ReadError>>(
             settings_line = Some(j);
         }
     }
-    let described = || {
-        metadata
-            .iter()
-            .map(|(n, v)| format!("{n} = {v}"))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let header_line = first_numeric
-        .checked_sub(1)
-        .filter(|&i| Some(i) != settings_line)
-        .map(|i| &sample[i].1)
-        .filter(|l| !numeric(l));
-    let width = width.unwrap_or(1);
+    (metadata, settings_line)
+}
+
+/// Refuses a header line of a table of `shape` that holds the first row
+/// of numbers too.
+fn refuse_glued(file: &str, shape: &Shape, header_line: Option<&str>) -> Result<(), ReadError> {
+    let Dialect {
+        separator,
+        decimal_comma,
+    } = shape.dialect;
     // A header run together with the first row (its line end lost) is
     // refused by its line, with --columns too: it was taken as the header,
     // or skipped under --columns, and its row dropped without a word.
@@ -1387,89 +1605,149 @@ pub fn stream_table<E: From<ReadError>>(
             Separator::Char('\t') | Separator::Spaces | Separator::Whole => " ".to_string(),
             Separator::Char(c) => c.to_string(),
         };
-        glued_row(&separator.split(line), width, decimal_comma, &join)
+        glued_row(&separator.split(line), shape.width, decimal_comma, &join)
     }) {
-        return Err(fail(format!(
-            "line {} holds the header and the first row of numbers run together \
-             ('{names}' then '{row}'): put the row on a line of its own",
-            sample[first_numeric - 1].0
-        )));
+        return Err(refusal(
+            file,
+            format!(
+                "line {} holds the header and the first row of numbers run together \
+                 ('{names}' then '{row}'): put the row on a line of its own",
+                shape.sample[shape.first_numeric - 1].0
+            ),
+        ));
     }
-    let headers: Vec<String> = match (&options.columns, header_line) {
-        (Some(names), _) => names.clone(),
-        (None, None) => {
-            let above = if metadata.is_empty() {
-                String::new()
-            } else {
-                format!(
-                    " (the lines above the data are read as the file's settings: {})",
-                    described()
-                )
-            };
-            if options.no_columns_flag {
-                return Err(fail(format!(
-                    "no header line{above}: name the columns in a first line (e.g. \
-                     time_s,temperature_c)"
-                )));
-            }
-            return Err(fail(format!(
-                "no header line{above}: name the columns with --columns (e.g. --columns \
-                 time_s,angle_deg{})",
-                if width == 1 {
-                    ", or angle_deg alone"
-                } else {
-                    ""
-                }
-            )));
-        }
-        (None, Some(line)) => {
-            let mut cells: Vec<String> = separator
-                .split(line)
-                .into_iter()
-                .map(String::from)
-                .collect();
-            let named: Vec<&String> = cells.iter().filter(|c| !c.trim().is_empty()).collect();
-            // `x y dx dy` written with spaces in a tab-separated file.
-            if named.len() == 1 && named[0].split_whitespace().count() == width {
-                cells = named[0].split_whitespace().map(String::from).collect();
-            }
-            // A header must name the columns the rows hold: names over
-            // columns that are not there shift every meaning.
-            let names = cells.iter().filter(|c| !c.trim().is_empty()).count();
-            let held = sample[first_numeric..]
-                .iter()
-                .filter(|(_, l)| numeric(l) && width_of(l) == width)
-                .map(|(_, l)| {
-                    separator
-                        .split(l)
-                        .iter()
-                        .filter(|c| !c.trim().is_empty())
-                        .count()
-                })
-                .max()
-                .unwrap_or(width);
-            if names != held && cells.len() != width {
-                return Err(fail(format!(
-                    "the header (line {}) names {names} columns ({}) where the rows hold {held}: \
-                     {}",
-                    sample[first_numeric - 1].0,
-                    cells
-                        .iter()
-                        .filter(|c| !c.trim().is_empty())
-                        .cloned()
-                        .collect::<Vec<_>>()
-                        .join(", "),
-                    if options.no_columns_flag {
-                        "give each row a cell under each name (numbers with a decimal comma \
-                         need a semicolon or a tab between the cells)"
-                    } else {
-                        "name the columns with --columns (e.g. --columns time_s,angle_deg)"
-                    }
-                )));
-            }
-            cells
-        }
+    Ok(())
+}
+
+/// The refusal of a table without a header line (`width` cells a row),
+/// naming the settings read above its rows and how to name its columns.
+fn no_header(
+    file: &str,
+    options: &ReadOptions,
+    metadata: &[(String, f64)],
+    width: usize,
+) -> ReadError {
+    let described = || {
+        metadata
+            .iter()
+            .map(|(n, v)| format!("{n} = {v}"))
+            .collect::<Vec<_>>()
+            .join(", ")
     };
+    let above = if metadata.is_empty() {
+        String::new()
+    } else {
+        format!(
+            " (the lines above the data are read as the file's settings: {})",
+            described()
+        )
+    };
+    if options.no_columns_flag {
+        return refusal(
+            file,
+            format!(
+                "no header line{above}: name the columns in a first line (e.g. \
+                 time_s,temperature_c)"
+            ),
+        );
+    }
+    refusal(
+        file,
+        format!(
+            "no header line{above}: name the columns with --columns (e.g. --columns \
+             time_s,angle_deg{})",
+            if width == 1 {
+                ", or angle_deg alone"
+            } else {
+                ""
+            }
+        ),
+    )
+}
+
+/// The names of the columns of a table of `shape`, the cells of its
+/// header `line`. A header that names more or fewer columns than the rows
+/// hold is refused.
+fn header_cells(
+    file: &str,
+    options: &ReadOptions,
+    shape: &Shape,
+    line: &str,
+) -> Result<Vec<String>, ReadError> {
+    let (separator, width) = (shape.dialect.separator, shape.width);
+    let mut cells: Vec<String> = separator
+        .split(line)
+        .into_iter()
+        .map(String::from)
+        .collect();
+    let named: Vec<&String> = cells.iter().filter(|c| !c.trim().is_empty()).collect();
+    // `x y dx dy` written with spaces in a tab-separated file.
+    if named.len() == 1 && named[0].split_whitespace().count() == width {
+        cells = named[0].split_whitespace().map(String::from).collect();
+    }
+    // A header must name the columns the rows hold: names over
+    // columns that are not there shift every meaning.
+    let names = cells.iter().filter(|c| !c.trim().is_empty()).count();
+    let held = shape.sample[shape.first_numeric..]
+        .iter()
+        .filter(|(_, l)| shape.dialect.numeric(l) && shape.dialect.width_of(l) == width)
+        .map(|(_, l)| {
+            separator
+                .split(l)
+                .iter()
+                .filter(|c| !c.trim().is_empty())
+                .count()
+        })
+        .max()
+        .unwrap_or(width);
+    if names != held && cells.len() != width {
+        return Err(refusal(
+            file,
+            format!(
+                "the header (line {}) names {names} columns ({}) where the rows hold {held}: \
+                 {}",
+                shape.sample[shape.first_numeric - 1].0,
+                cells
+                    .iter()
+                    .filter(|c| !c.trim().is_empty())
+                    .cloned()
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                if options.no_columns_flag {
+                    "give each row a cell under each name (numbers with a decimal comma \
+                     need a semicolon or a tab between the cells)"
+                } else {
+                    "name the columns with --columns (e.g. --columns time_s,angle_deg)"
+                }
+            ),
+        ));
+    }
+    Ok(cells)
+}
+
+/// The columns a table is read by.
+struct Columns {
+    /// The roles chosen, in the order asked for.
+    roles: Vec<Role>,
+    /// Their columns, in the same order.
+    used: Vec<Found>,
+    /// The rate times are made from: `--frame-rate`, or the file's sample
+    /// rate for a file that writes no times.
+    rate: Option<f64>,
+}
+
+/// The columns `choose` picks among those `header` names (a time column
+/// made from the file's sample rate when it writes none). A choice refused,
+/// or a column chosen that cannot be read in SI, is refused.
+fn choose_columns(
+    file: &str,
+    options: &ReadOptions,
+    choose: &Choose<'_>,
+    shape: &Shape,
+    header: &Header,
+) -> Result<Columns, ReadError> {
+    let (headers, metadata) = (&header.headers, &header.metadata);
+    let shown_separator = &shape.shown_separator;
     // A logger's sample rate among the settings makes the times of a file
     // that writes none.
     let file_rate = metadata
@@ -1477,7 +1755,7 @@ pub fn stream_table<E: From<ReadError>>(
         .find(|(n, _)| is_rate_name(n))
         .map(|&(_, v)| v)
         .filter(|v| *v > 0.0 && v.is_finite());
-    let mut found = find_columns(&headers, options);
+    let mut found = find_columns(headers, options);
     let made_time = options.frame_rate.is_none()
         && file_rate.is_some()
         && !found.iter().any(|f| f.role == Role::Time);
@@ -1496,56 +1774,80 @@ pub fn stream_table<E: From<ReadError>>(
     }
     let rate = options.frame_rate.or(file_rate.filter(|_| made_time));
     let roles = choose(&found).map_err(|m| {
-        fail(format!(
-            "{m} (found: {}; read as {shown_separator})",
-            headers.join(", ")
-        ))
+        refusal(
+            file,
+            format!(
+                "{m} (found: {}; read as {shown_separator})",
+                headers.join(", ")
+            ),
+        )
     })?;
-    let mut used: Vec<&Found> = Vec::with_capacity(roles.len());
+    let mut used: Vec<Found> = Vec::with_capacity(roles.len());
     for role in &roles {
         let f = found
             .iter()
             .find(|f| f.role == *role)
             .expect("choose returns found roles");
-        match (&f.unit, f.factor) {
-            (_, Some(_)) => {}
-            (_, None) if f.role == Role::Ticks => {
-                return Err(fail(format!(
-                    "column '{}' counts a clock's ticks: give the clock's rate with --tick-rate \
-                     HZ",
-                    f.header
-                )))
-            }
-            (None, None) => {
-                return Err(fail(format!(
-                    "column '{}' has no unit: give --angle-unit deg or --angle-unit rad",
-                    f.header
-                )))
-            }
-            (Some(u), None) => {
-                return Err(fail(format!(
-                    "column '{}': '{u}' is not a unit of {} (use {})",
-                    f.header,
-                    f.role.name(),
-                    units_for(f.role)
-                )))
-            }
-        }
-        used.push(f);
+        check_unit(file, f)?;
+        used.push(f.clone());
     }
-    let names: Vec<String> = used.iter().map(|f| f.header.clone()).collect();
-    let time_column = roles
-        .iter()
-        .position(|&r| r == Role::Time || r == Role::Ticks);
-    let mut format = Format {
-        separator: separator_name,
-        decimal: if decimal_comma { "comma" } else { "point" },
-        columns_used: names.clone(),
+    Ok(Columns { roles, used, rate })
+}
+
+/// Refuses a column chosen without a factor to SI: ticks without the
+/// clock's rate, an angle without a unit, or a unit not of its kind.
+fn check_unit(file: &str, f: &Found) -> Result<(), ReadError> {
+    match (&f.unit, f.factor) {
+        (_, Some(_)) => Ok(()),
+        (_, None) if f.role == Role::Ticks => Err(refusal(
+            file,
+            format!(
+                "column '{}' counts a clock's ticks: give the clock's rate with --tick-rate \
+                 HZ",
+                f.header
+            ),
+        )),
+        (None, None) => Err(refusal(
+            file,
+            format!(
+                "column '{}' has no unit: give --angle-unit deg or --angle-unit rad",
+                f.header
+            ),
+        )),
+        (Some(u), None) => Err(refusal(
+            file,
+            format!(
+                "column '{}': '{u}' is not a unit of {} (use {})",
+                f.header,
+                f.role.name(),
+                units_for(f.role)
+            ),
+        )),
+    }
+}
+
+/// What is read from a table of `shape` by `columns` (headed `names`),
+/// before its rows: the sheet and track of a converted file are taken out
+/// of `converted`.
+fn format_of(
+    shape: &Shape,
+    columns: &Columns,
+    names: Vec<String>,
+    converted: &mut Option<(&'static str, Converted)>,
+) -> Format {
+    Format {
+        separator: shape.separator_name,
+        decimal: if shape.dialect.decimal_comma {
+            "comma"
+        } else {
+            "point"
+        },
+        columns_used: names,
         rows: 0,
         skipped_rows: 0,
         skipped_lines: Vec::new(),
         notes: Vec::new(),
-        frame_rate: rate,
+        frame_rate: columns.rate,
         reader: converted.as_ref().map_or("text table", |c| c.0),
         tracker_track: converted.as_mut().and_then(|c| c.1.track.take()),
         sheet: converted.as_mut().and_then(|c| c.1.sheet.take()),
@@ -1557,201 +1859,361 @@ pub fn stream_table<E: From<ReadError>>(
         readings_per_time: None,
         gate_labels: Vec::new(),
         time_origin_s: None,
-    };
-    let mut row = vec![0.0; used.len()];
-    let mut first_time: Option<f64> = None;
-    let mut index = 0_u64;
-    // The run being read (from 1), and its first and latest times.
-    let mut runs = 1_usize;
-    let mut run_span: Option<(f64, f64)> = None;
-    let mut day_offset = 0.0_f64;
-    let mut time_offsets: Option<bool> = None;
-    let mut handle_line = |line_number: u64, line: &str, format: &mut Format| {
+    }
+}
+
+/// The reading of a table's rows: what each is read against, the row
+/// read, and what the rows before it left.
+struct Rows<'s> {
+    /// The file, for messages.
+    file: &'s str,
+    options: &'s ReadOptions,
+    shape: &'s Shape,
+    /// The columns used, in the order of `row`.
+    used: &'s [Found],
+    /// The time (or ticks) column, in `row`.
+    time_column: Option<usize>,
+    /// The rate times are made from.
+    rate: Option<f64>,
+    /// The latest row read, in SI.
+    row: Vec<f64>,
+    /// The time of the first row of the run read, as written.
+    first_time: Option<f64>,
+    /// The rows of numbers read so far.
+    index: u64,
+    /// The run being read (from 1), and its first and latest times.
+    runs: usize,
+    run_span: Option<(f64, f64)>,
+    /// The days passed (times of day past midnight), s.
+    day_offset: f64,
+    /// Whether the date-times read so far have an offset from UTC.
+    time_offsets: Option<bool>,
+}
+
+impl<'s> Rows<'s> {
+    /// Ready to read the rows of `file`, a table of `shape`, by `columns`.
+    fn new(
+        file: &'s str,
+        options: &'s ReadOptions,
+        shape: &'s Shape,
+        columns: &'s Columns,
+    ) -> Self {
+        Rows {
+            file,
+            options,
+            shape,
+            used: &columns.used,
+            time_column: columns
+                .roles
+                .iter()
+                .position(|&r| r == Role::Time || r == Role::Ticks),
+            rate: columns.rate,
+            row: vec![0.0; columns.used.len()],
+            first_time: None,
+            index: 0,
+            runs: 1,
+            run_span: None,
+            day_offset: 0.0,
+            time_offsets: None,
+        }
+    }
+
+    /// Reads `line` (the file's line `line_number`) into `self.row`,
+    /// counting it in `format`. Returns whether it is a row to hand on (not
+    /// blank or a comment, without a blank cell, in the run read); a line
+    /// that cannot be read is refused.
+    fn read(
+        &mut self,
+        line_number: u64,
+        line: &str,
+        format: &mut Format,
+    ) -> Result<bool, ReadError> {
         let t = line.trim();
         if t.is_empty() || t.starts_with('#') {
-            return Ok(());
+            return Ok(false);
         }
-        let cells = separator.split(line);
+        let cells = self.shape.dialect.separator.split(line);
+        self.refuse_extra_cells(line_number, &cells)?;
+        let row_index = self.index;
+        self.index += 1;
+        let blank = self.read_cells(line_number, &cells, format)?;
+        if blank {
+            format.skipped_rows += 1;
+            if format.skipped_lines.len() < 3 {
+                format.skipped_lines.push(line_number);
+            }
+            return Ok(false);
+        }
+        if let Some(k) = self.time_column {
+            if !self.place_time(k, row_index, line_number, format)? {
+                return Ok(false);
+            }
+        }
+        format.rows += 1;
+        if format.rows > MAX_ROWS {
+            return Err(refusal(
+                self.file,
+                format!(
+                    "has more than {MAX_ROWS} rows of numbers, the most a measurement file may have"
+                ),
+            ));
+        }
+        Ok(true)
+    }
+
+    /// Refuses a line of numbers with more cells than the table's rows hold.
+    fn refuse_extra_cells(&self, line_number: u64, cells: &[&str]) -> Result<(), ReadError> {
+        let Dialect {
+            separator,
+            decimal_comma,
+        } = self.shape.dialect;
+        let (width, shown_separator) = (self.shape.width, &self.shape.shown_separator);
         // A row of numbers with more cells than the table's rows hold
         // would shift no meaning, but says the file is not what it seems.
-        if options.columns.is_none()
+        if self.options.columns.is_none()
             && cells.len() > width
             && cells[width..].iter().any(|c| !c.trim().is_empty())
-            && is_numeric(&cells, decimal_comma)
+            && is_numeric(cells, decimal_comma)
         {
-            return Err(fail(format!(
-                "line {line_number} holds {} cells where the rows before it hold {width} \
-                 (read as {shown_separator}){}",
-                cells.len(),
-                if separator == Separator::Char(',') {
-                    ": numbers with a decimal comma need a semicolon or a tab between the cells"
-                } else {
-                    ""
-                }
-            )));
+            return Err(refusal(
+                self.file,
+                format!(
+                    "line {line_number} holds {} cells where the rows before it hold {width} \
+                     (read as {shown_separator}){}",
+                    cells.len(),
+                    if separator == Separator::Char(',') {
+                        ": numbers with a decimal comma need a semicolon or a tab between the cells"
+                    } else {
+                        ""
+                    }
+                ),
+            ));
         }
-        let row_index = index;
-        index += 1;
+        Ok(())
+    }
+
+    /// Reads the cells of the columns used into `self.row`, in SI (a gate's
+    /// label as its number, new labels added to `format`). Returns whether
+    /// one of them is blank; a cell that is not a number is refused.
+    fn read_cells(
+        &mut self,
+        line_number: u64,
+        cells: &[&str],
+        format: &mut Format,
+    ) -> Result<bool, ReadError> {
         let mut blank = false;
+        let used = self.used;
         for (k, f) in used.iter().enumerate() {
             if f.index == MADE_COLUMN {
                 continue; // Made from the rate below.
             }
             let cell = cells.get(f.index).copied().unwrap_or("");
             if f.role == Role::Gate {
-                // A label, numbered in the order first seen.
-                let label = cell.trim().trim_matches('"');
-                if label.is_empty() {
-                    blank = true;
-                    continue;
+                match gate_number(&mut format.gate_labels, cell) {
+                    Some(i) => self.row[k] = i,
+                    None => blank = true,
                 }
-                let i = match format.gate_labels.iter().position(|l| l == label) {
-                    Some(i) => i,
-                    None => {
-                        format.gate_labels.push(label.to_string());
-                        format.gate_labels.len() - 1
-                    }
-                };
-                row[k] = i as f64;
                 continue;
             }
-            if Some(k) == time_column {
-                // Date-times with an offset and without one do not mix:
-                // the naive ones would be read as UTC, hours away.
-                if let Some(offset) = datetime_has_offset(cell) {
-                    match time_offsets {
-                        Some(first) if first != offset => {
-                            return Err(fail(format!(
-                                "line {line_number}, column {}: '{}' {} where the times \
-                                 before it {}: give every time its offset, or none",
-                                f.header,
-                                cell.trim(),
-                                if offset {
-                                    "has an offset from UTC"
-                                } else {
-                                    "has no offset from UTC"
-                                },
-                                if first { "have one" } else { "have none" }
-                            )));
-                        }
-                        _ => time_offsets = Some(offset),
-                    }
-                }
+            if Some(k) == self.time_column {
+                self.check_offset(line_number, f, cell)?;
             }
-            match cell_value(cell, decimal_comma) {
-                Some(Some(v)) => row[k] = v * f.factor.unwrap_or(1.0) + f.offset,
-                Some(None) if options.refuse_blank => {
-                    return Err(fail(format!(
-                        "line {line_number}, column {}: empty: every row of this file needs \
-                         a value in every column it uses (fill the cell, or leave the column \
-                         out)",
-                        f.header
-                    )));
+            match cell_value(cell, self.shape.dialect.decimal_comma) {
+                Some(Some(v)) => self.row[k] = v * f.factor.unwrap_or(1.0) + f.offset,
+                Some(None) if self.options.refuse_blank => {
+                    return Err(refusal(
+                        self.file,
+                        format!(
+                            "line {line_number}, column {}: empty: every row of this file needs \
+                             a value in every column it uses (fill the cell, or leave the column \
+                             out)",
+                            f.header
+                        ),
+                    ));
                 }
                 Some(None) => blank = true,
-                None => {
-                    // A NaN or infinite cell in the library's words (the
-                    // same value from Python gets the same sentence).
-                    let what = match cell.trim().trim_matches('"').parse::<f64>() {
-                        Ok(v) if v.is_nan() => {
-                            "must be a finite number, got a value that is not a number".to_string()
-                        }
-                        Ok(_) => "must be a finite number, got an infinite value".to_string(),
-                        Err(_) => format!("'{cell}' is not a number (read as {shown_separator})"),
-                    };
-                    return Err(fail(format!(
-                        "line {line_number}, column {}: {what}",
-                        f.header
-                    )));
+                None => return Err(self.not_a_number(line_number, f, cell)),
+            }
+        }
+        Ok(blank)
+    }
+
+    /// Refuses a date-time `cell` of the time column `f` with an offset
+    /// from UTC after times without one, or the other way round.
+    fn check_offset(&mut self, line_number: u64, f: &Found, cell: &str) -> Result<(), ReadError> {
+        // Date-times with an offset and without one do not mix:
+        // the naive ones would be read as UTC, hours away.
+        if let Some(offset) = datetime_has_offset(cell) {
+            match self.time_offsets {
+                Some(first) if first != offset => {
+                    return Err(refusal(
+                        self.file,
+                        format!(
+                            "line {line_number}, column {}: '{}' {} where the times \
+                             before it {}: give every time its offset, or none",
+                            f.header,
+                            cell.trim(),
+                            if offset {
+                                "has an offset from UTC"
+                            } else {
+                                "has no offset from UTC"
+                            },
+                            if first { "have one" } else { "have none" }
+                        ),
+                    ));
                 }
+                _ => self.time_offsets = Some(offset),
             }
         }
-        if blank {
-            format.skipped_rows += 1;
-            if format.skipped_lines.len() < 3 {
-                format.skipped_lines.push(line_number);
+        Ok(())
+    }
+
+    /// The refusal of a `cell` of column `f` that is not a finite number.
+    fn not_a_number(&self, line_number: u64, f: &Found, cell: &str) -> ReadError {
+        let shown_separator = &self.shape.shown_separator;
+        // A NaN or infinite cell in the library's words (the
+        // same value from Python gets the same sentence).
+        let what = match cell.trim().trim_matches('"').parse::<f64>() {
+            Ok(v) if v.is_nan() => {
+                "must be a finite number, got a value that is not a number".to_string()
             }
-            return Ok(());
+            Ok(_) => "must be a finite number, got an infinite value".to_string(),
+            Err(_) => format!("'{cell}' is not a number (read as {shown_separator})"),
+        };
+        refusal(
+            self.file,
+            format!("line {line_number}, column {}: {what}", f.header),
+        )
+    }
+
+    /// Sets the time in column `k` of the row counted `row_index`: made
+    /// from the rate, kept as written, or measured from the first row of
+    /// the run read (setting `format`'s origin). Returns whether the row is
+    /// in the run read.
+    fn place_time(
+        &mut self,
+        k: usize,
+        row_index: u64,
+        line_number: u64,
+        format: &mut Format,
+    ) -> Result<bool, ReadError> {
+        if let Some(rate) = self.rate {
+            // Frames counted from the first row of numbers.
+            self.row[k] = row_index as f64 / rate;
+        } else if self.options.absolute_time {
+            format.time_origin_s = Some(0.0);
+        } else {
+            self.follow_runs(k, line_number)?;
+            if self.options.run.is_some_and(|want| want != self.runs) {
+                return Ok(false);
+            }
+            let origin = *self.first_time.get_or_insert(self.row[k]);
+            format.time_origin_s = Some(origin);
+            self.row[k] -= origin;
         }
-        if let Some(k) = time_column {
-            if let Some(rate) = rate {
-                // Frames counted from the first row of numbers.
-                row[k] = row_index as f64 / rate;
-            } else if options.absolute_time {
-                format.time_origin_s = Some(0.0);
+        Ok(true)
+    }
+
+    /// Carries the time in column `k` past midnight into the next day, and
+    /// counts a time that goes back as the start of a new run; without
+    /// `--run`, a time that goes back is refused.
+    fn follow_runs(&mut self, k: usize, line_number: u64) -> Result<(), ReadError> {
+        // Times that go back over half the run so far start a new
+        // run (a logger restarted, runs pasted one after another).
+        // Times of day that pass midnight go on into the next day.
+        if let Some((_, previous)) = self.run_span {
+            let raw = self.row[k] + self.day_offset;
+            if (82_800.0..86_400.0).contains(&(previous - self.day_offset))
+                && (0.0..3_600.0).contains(&(raw - self.day_offset))
+                && raw < previous
+            {
+                self.day_offset += 86_400.0;
+            }
+        }
+        self.row[k] += self.day_offset;
+        let raw = self.row[k];
+        if let Some((start, previous)) = self.run_span {
+            if raw < previous && raw <= start + 0.5 * (previous - start) {
+                self.runs += 1;
+                if self.options.run.is_none() {
+                    return Err(refusal(
+                        self.file,
+                        format!(
+                            "line {line_number}, column {}: {raw} is not after the \
+                             previous {previous}: sort the rows by time, or, if the file \
+                             holds runs one after another (the times restart), give --run 1 \
+                             for the first, --run 2 for the next, …",
+                            self.used[k].header
+                        ),
+                    ));
+                }
+                self.run_span = Some((raw, raw));
             } else {
-                // Times that go back over half the run so far start a new
-                // run (a logger restarted, runs pasted one after another).
-                // Times of day that pass midnight go on into the next day.
-                if let Some((_, previous)) = run_span {
-                    let raw = row[k] + day_offset;
-                    if (82_800.0..86_400.0).contains(&(previous - day_offset))
-                        && (0.0..3_600.0).contains(&(raw - day_offset))
-                        && raw < previous
-                    {
-                        day_offset += 86_400.0;
-                    }
-                }
-                row[k] += day_offset;
-                let raw = row[k];
-                if let Some((start, previous)) = run_span {
-                    if raw < previous && raw <= start + 0.5 * (previous - start) {
-                        runs += 1;
-                        if options.run.is_none() {
-                            return Err(fail(format!(
-                                "line {line_number}, column {}: {raw} is not after the \
-                                 previous {previous}: sort the rows by time, or, if the file \
-                                 holds runs one after another (the times restart), give --run 1 \
-                                 for the first, --run 2 for the next, …",
-                                used[k].header
-                            )));
-                        }
-                        run_span = Some((raw, raw));
-                    } else {
-                        run_span = Some((start, raw));
-                    }
-                } else {
-                    run_span = Some((raw, raw));
-                }
-                if options.run.is_some_and(|want| want != runs) {
-                    return Ok(());
-                }
-                let origin = *first_time.get_or_insert(row[k]);
-                format.time_origin_s = Some(origin);
-                row[k] -= origin;
+                self.run_span = Some((start, raw));
             }
+        } else {
+            self.run_span = Some((raw, raw));
         }
-        format.rows += 1;
-        if format.rows > MAX_ROWS {
-            return Err(fail(format!(
-                "has more than {MAX_ROWS} rows of numbers, the most a measurement file may have"
-            )));
+        Ok(())
+    }
+}
+
+/// The number of a gate's label in `cell`, labels numbered in the order
+/// first seen (a new one added to `labels`); `None` for a blank cell.
+fn gate_number(labels: &mut Vec<String>, cell: &str) -> Option<f64> {
+    // A label, numbered in the order first seen.
+    let label = cell.trim().trim_matches('"');
+    if label.is_empty() {
+        return None;
+    }
+    let i = match labels.iter().position(|l| l == label) {
+        Some(i) => i,
+        None => {
+            labels.push(label.to_string());
+            labels.len() - 1
         }
-        each(&row, line_number)
     };
-    for (line_number, line) in sample.iter().skip(first_numeric) {
-        handle_line(*line_number, line, &mut format)?;
-    }
-    while let Some(line) = next_line(&mut number)? {
-        handle_line(number, &line, &mut format)?;
-    }
+    Some(i as f64)
+}
+
+/// Notes in `format` the run read (`--run`) and the runs `file` holds; a
+/// run it does not hold is refused.
+fn note_run(
+    file: &str,
+    options: &ReadOptions,
+    runs: usize,
+    format: &mut Format,
+) -> Result<(), ReadError> {
     if let Some(want) = options.run {
         if want > runs {
-            return Err(E::from(ReadError::option(
+            return Err(ReadError::option(
                 "run",
                 format!(
                     "{file} holds {runs} run{}; there is no run {want}",
                     if runs == 1 { "" } else { "s" }
                 ),
-            )));
+            ));
         }
         format.run = Some(want);
         format.runs = Some(runs);
     }
+    Ok(())
+}
+
+/// Notes, among what the reader says, what was left out of `file`: what
+/// the format's reader left out (`converted`), the rows skipped for a blank
+/// cell, and columns of a kind after the first of `headers`.
+fn note_left_out(
+    file: &str,
+    converted: Option<&Converted>,
+    used: &[Found],
+    headers: &[String],
+    format: &mut Format,
+) {
     // Nothing left out without a word: what the format's reader left
     // out, rows skipped for a blank cell, and columns of a kind after the
     // first, which are not read.
-    if let Some((_, c)) = &converted {
+    if let Some(c) = converted {
         format
             .notes
             .extend(c.notes.iter().map(|n| format!("{file}: {n}")));
@@ -1771,7 +2233,7 @@ pub fn stream_table<E: From<ReadError>>(
             }
         ));
     }
-    for f in &used {
+    for f in used {
         let others: Vec<String> = headers
             .iter()
             .enumerate()
@@ -1790,7 +2252,6 @@ pub fn stream_table<E: From<ReadError>>(
             ));
         }
     }
-    Ok((file, roles, names, format))
 }
 
 /// A chooser for commands that need exactly these roles (each given as

@@ -93,6 +93,22 @@ fn always(v: f64) -> Result<f64, InputError> {
     Ok(v)
 }
 
+/// The damping given as `(form, value)`, read by the library (a form it
+/// does not know is its `ValueError`).
+fn given_damping(
+    damping: Option<(String, f64)>,
+) -> PyResult<Option<pendulum_theory::damped::analysis::DampingGiven>> {
+    damping
+        .map(|(f, v)| pendulum_theory::damped::analysis::DampingGiven::parse(&f, v))
+        .transpose()
+        .map_err(refusal)
+}
+
+/// A library refusal as Python's `ValueError`, in the library's words.
+fn refusal(r: Refusal) -> PyErr {
+    PyValueError::new_err(r.to_string())
+}
+
 #[pyfunction]
 fn ellipk<'py>(py: Python<'py>, m: In<'py>) -> PyResult<Array<'py>> {
     elementwise!(py, [m], |m: f64| always(ellipk_m(m)))
@@ -316,12 +332,21 @@ fn simulate<'py>(
     tolerance: Option<f64>,
     force: bool,
 ) -> PyResult<(Array1<'py>, Array1<'py>, Array1<'py>, String)> {
-    use simulation::analysis::{damping_of, prepare, SimulationInput};
-    let refused = |r: Refusal| PyValueError::new_err(r.to_string());
+    use simulation::analysis::{damping_of, method_of, parse_drag_law, prepare, SimulationInput};
     let damping = damping
         .map(|(field, value)| damping_of(&field, value))
         .transpose()
-        .map_err(refused)?;
+        .map_err(refusal)?;
+    let drag = drag
+        .iter()
+        .map(|(name, k)| Ok((parse_drag_law(name)?, *k)))
+        .collect::<Result<Vec<_>, Refusal>>()
+        .map_err(refusal)?;
+    let method = method
+        .as_deref()
+        .map(method_of)
+        .transpose()
+        .map_err(refusal)?;
     let prepared = prepare(&SimulationInput {
         length,
         g,
@@ -337,7 +362,7 @@ fn simulate<'py>(
         force,
         elastic_share: None,
     })
-    .map_err(refused)?;
+    .map_err(refusal)?;
     let mut turns = Turns {
         pendulum: prepared.model.pendulum,
         time: Vec::new(),
@@ -594,7 +619,12 @@ fn fit_decay(
     mass: Option<f64>,
     force: bool,
 ) -> PyResult<String> {
-    use pendulum_theory::fitting::rundown::{analyse, RunDownInput};
+    use pendulum_theory::fitting::rundown::{analyse, parse_model, RunDownInput};
+    let model = model
+        .map(parse_model)
+        .transpose()
+        .map_err(refusal)?
+        .flatten();
     let (time, amplitude) = (values(&time, "time")?, values(&amplitude, "amplitude")?);
     answer(py.detach(|| {
         analyse(&RunDownInput {
@@ -770,7 +800,12 @@ fn fit_trajectory(
     angular_velocity: Option<Vec<In<'_>>>,
     length_uncertainty: Option<f64>,
 ) -> PyResult<String> {
-    use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
+    use pendulum_theory::fitting::tracked::{analyse, parse_model, LengthSource, TrackInput};
+    let model = model
+        .map(parse_model)
+        .transpose()
+        .map_err(refusal)?
+        .flatten();
     let time = values(&time, "time")?;
     let angle = angle.as_ref().map(|a| values(a, "angle")).transpose()?;
     // One array per gyroscope axis.
@@ -1168,6 +1203,7 @@ fn damped(
     force: bool,
 ) -> PyResult<String> {
     use pendulum_theory::damped::analysis::{damped, DampedInput};
+    let damping = given_damping(damping)?;
     answer(damped(&DampedInput {
         length,
         g,
@@ -1225,6 +1261,7 @@ fn report<'py>(
     g: Option<f64>,
 ) -> PyResult<(String, Array1<'py>, Array1<'py>, Array1<'py>)> {
     use pendulum_theory::report::{report, ReportInput};
+    let damping = given_damping(damping)?;
     let input = ReportInput {
         length,
         design: parts.map(design_of).transpose()?,

@@ -65,7 +65,7 @@ def test_close_to_a_stop_the_run_ends_and_says_so():
                                 drive_energy=2e-5)
     run = result["long_run"]
     assert np.all(np.isfinite(rows["time_s"])) and run["duration_s"] > 3 * DAY
-    assert "(a clock all but stopped)" in run["warnings"][0]
+    assert "(a clock all but stopped)" in run["warnings"][0]["message"]
 
 
 # --- one unit per quantity: pressures in hPa, named so -----------------------

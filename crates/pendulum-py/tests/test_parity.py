@@ -266,7 +266,8 @@ def test_self_checks_warn_from_python_too():
 def test_a_three_second_track_warns_from_python_too():
     t, th, kw = TRAJECTORY["three_seconds"]
     warnings = pt.fit_trajectory(t, th, **kw)["warnings"]
-    assert any(w.startswith("zeta not determined") for w in warnings)
+    assert any(w["message"].startswith("zeta not determined") for w in warnings)
+    assert any(w["code"] == "zeta_undetermined" and w["figure"] == "zeta" for w in warnings)
 
 
 # --- fit beats --------------------------------------------------------------
@@ -1480,8 +1481,8 @@ def test_weather_needs_a_design(tmp_path):
 
 def test_sizes_in_millimetres_written_as_metres_are_warned():
     parts = DESIGN["sizes_in_mm_as_numbers"][0]
-    assert "millimetres" in pt.design(parts)["warnings"][0]
-    assert "millimetres" in pt.regulate(12.0, length=994.0)["warnings"][0]
+    assert "millimetres" in pt.design(parts)["warnings"][0]["message"]
+    assert "millimetres" in pt.regulate(12.0, length=994.0)["warnings"][0]["message"]
     assert pt.design([ROD, BOB])["warnings"] == []
 
 

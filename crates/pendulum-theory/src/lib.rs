@@ -79,6 +79,7 @@ pub mod suspension;
 mod test_noise;
 pub mod tide;
 pub mod train;
+pub mod warning;
 
 pub use error::{InputError, Problem, Quantity};
 pub use pendulum::{Amplitude, Pendulum, STANDARD_GRAVITY};

@@ -12,6 +12,7 @@ use crate::analysis::Refusal;
 use crate::clock::analysis::{DEFAULT_MASS_KG, DEFAULT_Q};
 use crate::compound::datasheet::{datasheet, Air, Datasheet};
 use crate::compound::description::Design;
+use crate::damped::analysis::DampingGiven;
 use crate::damped::analysis::{damped, Damped, DampedInput};
 use crate::error::format_significant;
 use crate::period::table::{table, Amplitudes, PeriodInput, PeriodRow};
@@ -19,6 +20,7 @@ use crate::simulation::{
     half_swing_rate, simulate, work_estimate, Action, Method, Model, Observer, Options,
     TurningPoint,
 };
+use crate::warning::Warning;
 use crate::Pendulum;
 use serde::Serialize;
 
@@ -54,10 +56,9 @@ pub struct ReportInput {
     pub g: Option<f64>,
     /// Working amplitude, rad (default [`DEFAULT_AMPLITUDE_DEG`]).
     pub amplitude: Option<f64>,
-    /// The viscous damping as (form, value), as
-    /// [`crate::damped::analysis::damping_given`] takes it (default Q =
+    /// The viscous damping, in one of its forms (default Q =
     /// [`DEFAULT_Q`]).
-    pub damping: Option<(String, f64)>,
+    pub damping: Option<DampingGiven>,
     /// Bob mass for the energy budget, kg (default the design's effective
     /// mass, else [`DEFAULT_MASS_KG`]).
     pub mass: Option<f64>,
@@ -121,7 +122,7 @@ pub struct Report {
     /// What to know before trusting the report: a design on a suspension
     /// spring whose run-down and figures swing the rigid pendulum of its
     /// equivalent length ([`crate::suspension::rigid_swing_warning`]).
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
 }
 
 /// Collects the run-down's turning points; stops when `proceed` says so.
@@ -161,7 +162,7 @@ impl Observer for Turns<'_> {
 ///
 /// // A seconds pendulum of Q = 1000 at the default 3°: the run-down lasts
 /// // until the swing halves, ln 2 / (ζ ω_n) with ζ = 1/(2Q): 441 s.
-/// let damping = Some(("q".to_string(), 1000.0));
+/// let damping = Some(pendulum_theory::damped::analysis::DampingGiven::Q(1000.0));
 /// let input = ReportInput { length: Some(0.99362), damping, ..Default::default() };
 /// let r = report(&input, &mut || true)?;
 /// let half_life = std::f64::consts::LN_2 * 2.0 * 1000.0 / (9.80665_f64 / 0.99362).sqrt();
@@ -209,15 +210,12 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
     .map_err(|r| rename(r, "length", length_field))?
     .remove(0);
     let mass = input.mass.or(design_mass).unwrap_or(DEFAULT_MASS_KG);
-    let damping = input
-        .damping
-        .clone()
-        .unwrap_or_else(|| ("q".to_string(), DEFAULT_Q));
+    let damping = input.damping.unwrap_or(DampingGiven::Q(DEFAULT_Q));
     let damped = damped(&DampedInput {
         length,
         g,
         amplitude,
-        damping: Some(damping.clone()),
+        damping: Some(damping),
         friction_angle: None,
         mass: Some(mass),
         extrema: Some(0),
@@ -232,10 +230,7 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
     }
     let zeta = damped.zeta;
     if !(zeta == 0.0 || ZETA_RANGE.contains(&zeta)) {
-        let field = crate::damped::analysis::DAMPING_FIELDS
-            .into_iter()
-            .find(|&f| f == damping.0)
-            .unwrap_or("zeta");
+        let field = damping.field();
         return Err(Refusal::field(
             field,
             format!(
@@ -255,6 +250,7 @@ pub fn report(input: &ReportInput, proceed: &mut dyn FnMut() -> bool) -> Result<
         rundown,
         datasheet: sheet,
         warnings: crate::suspension::rigid_swing_warning(share, amplitude)
+            .map(|w| Warning::new("rigid_on_spring", w, Some("amplitude_rad")))
             .into_iter()
             .collect(),
     })

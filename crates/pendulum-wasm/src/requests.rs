@@ -8,7 +8,7 @@
 pub use pendulum_data::request::{reply_of, Failure, Gravity};
 use pendulum_theory::analysis::Refusal;
 use pendulum_theory::compound::regulate::{regulate, Nut, Regulated};
-use pendulum_theory::damped::analysis::{damped, Damped, DampedInput};
+use pendulum_theory::damped::analysis::{damped, Damped, DampedInput, DampingGiven};
 use pendulum_theory::listening::analysis::{listen_to_samples, ListenInput, Listening, Oscillator};
 use pendulum_theory::listening::live::{LiveListener, Provisional};
 use pendulum_theory::listening::windows::Window;
@@ -239,8 +239,8 @@ pub fn damped_of(r: &DampedRequest) -> Result<Damped, Failure> {
     ];
     let mut given = forms
         .iter()
-        .filter_map(|(f, v)| v.map(|v| (f.to_string(), v)));
-    let damping = given.next();
+        .filter_map(|(f, v)| v.map(|v| DampingGiven::parse(f, v)));
+    let damping = given.next().transpose()?;
     if given.next().is_some() {
         return Err(Failure::request(
             "give one of q, log_decrement, decay_time_s, damping_coefficient, zeta",

@@ -436,7 +436,7 @@ fn render_text(r: &ClockResult, swings_file: Option<&str>) -> String {
         );
     }
     for w in &r.warnings {
-        out.row("WARNING", w.clone());
+        out.row("WARNING", w.to_string());
     }
     let mut text = out.render();
     if let Some(rows) = &r.isochronism {
@@ -504,7 +504,7 @@ fn render_text(r: &ClockResult, swings_file: Option<&str>) -> String {
             o.row("Written", f.to_string());
         }
         for w in &run.warnings {
-            o.row("WARNING", w.clone());
+            o.row("WARNING", w.to_string());
         }
         text.push('\n');
         text.push_str(&o.render());

@@ -5,6 +5,7 @@ use crate::args::{DampingArgs, GravityArgs, SwingArgs};
 use crate::error::CliError;
 use crate::units::{Length, Number, Time};
 use pendulum_theory::analysis::Refusal;
+use pendulum_theory::damped::analysis::DampingGiven;
 use pendulum_theory::damping::Damping;
 use pendulum_theory::{Amplitude, Pendulum, Quantity};
 use serde::Serialize;
@@ -140,7 +141,7 @@ pub fn damping_field(d: &crate::args::DampingArgs) -> &'static str {
 
 /// The damping form given, by the library's name, with its value (a
 /// decay time in seconds); `None` when none was given.
-pub fn damping_given(args: &DampingArgs) -> Result<Option<(String, f64)>, CliError> {
+pub fn damping_given(args: &DampingArgs) -> Result<Option<DampingGiven>, CliError> {
     let number = |n: &Option<Number>| n.map(|n| n.0);
     let given = match damping_field(args) {
         "q" => number(&args.q),
@@ -149,7 +150,10 @@ pub fn damping_given(args: &DampingArgs) -> Result<Option<(String, f64)>, CliErr
         "damping_coefficient" => number(&args.damping_coefficient),
         _ => number(&args.zeta),
     };
-    Ok(given.map(|v| (damping_field(args).to_string(), v)))
+    given
+        .map(|v| DampingGiven::parse(damping_field(args), v))
+        .transpose()
+        .map_err(|e| refused(&e))
 }
 
 /// The damping form given, converted by the library for `p` (with a
@@ -159,10 +163,10 @@ pub fn damping(
     mass: Option<f64>,
     p: &Pendulum,
 ) -> Result<Option<Damping>, CliError> {
-    let Some((field, value)) = damping_given(args)? else {
+    let Some(given) = damping_given(args)? else {
         return Ok(None);
     };
-    pendulum_theory::damped::analysis::damping_given(&field, value, p, mass)
+    pendulum_theory::damped::analysis::damping_given(given, p, mass)
         .map(|(d, _)| Some(d))
         .map_err(|e| refused(&e))
 }

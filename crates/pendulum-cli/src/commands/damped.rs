@@ -159,7 +159,7 @@ fn text(json: &DampedJson) -> String {
         s.row("Trajectory", format!("{} ({} samples)", t.path, t.samples));
     }
     for w in &j.warnings {
-        s.row("WARNING", w.clone());
+        s.row("WARNING", w.to_string());
     }
     let mut out = s.render();
     out.push_str("\nTurning points\n");

@@ -219,7 +219,7 @@ pub fn rows(d: &Datasheet, gravity: &ResolvedGravity) -> Vec<(String, String)> {
         rows.push(("Nut".into(), text));
     }
     for w in &d.warnings {
-        rows.push(("WARNING".into(), w.clone()));
+        rows.push(("WARNING".into(), w.to_string()));
     }
     rows
 }

@@ -89,7 +89,7 @@ pub fn run(args: &RegulateArgs) -> Result<String, CliError> {
         );
     }
     for w in &result.warnings {
-        s.row("WARNING", w.clone());
+        s.row("WARNING", w.to_string());
     }
     Ok(s.render())
 }

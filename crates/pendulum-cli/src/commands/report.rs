@@ -312,7 +312,7 @@ fn rows(r: &Report, gravity: &common::ResolvedGravity, pendulum: &Pendulum) -> V
         "circular error falls as the swing shrinks",
     ));
     for w in &r.warnings {
-        rows.push(Row("Warning", w.clone(), ""));
+        rows.push(Row("Warning", w.to_string(), ""));
     }
     rows
 }

@@ -13,7 +13,7 @@ use crate::work::{self, Progress};
 use clap::ValueEnum;
 use pendulum_theory::damped::State;
 use pendulum_theory::simulation::analysis::{
-    prepare, Prepared, Simulation, SimulationInput, SAMPLES_PER_PERIOD,
+    method_of, parse_drag_law, prepare, Prepared, Simulation, SimulationInput, SAMPLES_PER_PERIOD,
 };
 use pendulum_theory::simulation::forces::DRAG_LAWS;
 use pendulum_theory::simulation::{
@@ -84,7 +84,8 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
             })?;
             let value =
                 parse_number(value).map_err(|e| CliError::flag(&format!("--drag {name}"), e))?;
-            Ok((name.trim().to_string(), value))
+            let law = parse_drag_law(name.trim()).map_err(|e| common::refused(&e))?;
+            Ok((law, value))
         })
         .collect::<Result<Vec<_>, CliError>>()?;
     let input = SimulationInput {
@@ -99,7 +100,9 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         method: args
             .method
             .and_then(|m| m.to_possible_value())
-            .map(|v| v.get_name().to_string()),
+            .map(|v| method_of(v.get_name()))
+            .transpose()
+            .map_err(|e| common::refused(&e))?,
         tolerance,
         sample_interval,
         force: args.force,

@@ -9,7 +9,7 @@ use crate::plot::{render, Figure, Panel, Series, Target};
 use pendulum_theory::analysis::Refusal;
 use pendulum_theory::stability::{
     grid, stability, DataKind, DeviationUnit, Gridded, Measured, Outliers, Stability,
-    StabilityInput, StabilityRow, StabilityWarning, Taus, ADEV, DEVIATIONS,
+    StabilityInput, StabilityRow, Taus, ADEV, DEVIATIONS,
 };
 use serde::Serialize;
 
@@ -295,60 +295,7 @@ pub(crate) fn text(file: &str, s: &Stability, gridded: Option<&Gridded>) -> Stri
         ));
     }
     for w in &s.warnings {
-        out.push_str(&match w {
-            StabilityWarning::Gaps { missing, of } => format!(
-                "warning: {missing} of {of} samples missing (gaps): the terms that touch them are left out\n"
-            ),
-            StabilityWarning::NoNoiseType => "warning: too few points to tell the noise at any τ (30 needed): no intervals\n".to_string(),
-            StabilityWarning::Accidents {
-                glitches,
-                jumps,
-                first_time_s,
-                largest,
-                adev_factor,
-                removed,
-            } => {
-                let unit = match s.kind {
-                    DataKind::Phase => " s",
-                    DataKind::Frequency => " (fractional frequency)",
-                };
-                let counted = |n: usize, one: &str, many: &str| match n {
-                    0 => None,
-                    1 => Some(format!("1 {one}")),
-                    _ => Some(format!("{n} {many}")),
-                };
-                let counts: Vec<String> = [
-                    counted(*glitches, "glitch", "glitches"),
-                    counted(*jumps, "jump", "jumps"),
-                ]
-                .into_iter()
-                .flatten()
-                .collect();
-                let what = format!(
-                    "{} (the first at {} s from the start, the largest {}{unit})",
-                    counts.join(" and "),
-                    num(*first_time_s, 8),
-                    num(*largest, 3)
-                );
-                if *removed {
-                    format!("warning: {what} taken out (--outliers remove): with them ADEV at τ = {} s was {} times as large\n", num(s.tau0_s, 4), num(*adev_factor, 3))
-                } else {
-                    format!("warning: ADEV and the noise types: {what} raise ADEV at τ = {} s {} times, and the noise types read from it; --outliers remove takes them out (`pendulum log` does)\n", num(s.tau0_s, 4), num(*adev_factor, 3))
-                }
-            }
-            StabilityWarning::Periodic {
-                period_s,
-                amplitude_s_per_day,
-                from_tau_s,
-                to_tau_s,
-            } => format!(
-                "warning: ADEV from τ = {} to {} s is a periodic signal's (period {} h, {} s/day), not noise: no noise type or interval there; `pendulum log` models a daily cycle with the room's temperature\n",
-                num(*from_tau_s, 4),
-                num(*to_tau_s, 4),
-                num(period_s / 3600.0, 4),
-                num(*amplitude_s_per_day, 3)
-            ),
-        });
+        out.push_str(&format!("warning: {w}\n"));
     }
     out
 }

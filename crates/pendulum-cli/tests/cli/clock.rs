@@ -634,7 +634,9 @@ fn a_clock_out_of_beat() {
     assert!((b - 20.0).abs() < 1e-3, "{by_time}");
     let delta = f(&by_time, "out_of_beat_deg");
     assert!(delta > 0.0 && delta < 0.2, "{by_time}");
-    assert!(by_time["warnings"][0]
+    assert_eq!(by_time["warnings"][0]["code"], "out_of_beat", "{by_time}");
+    assert_eq!(by_time["warnings"][0]["figure"], "out_of_beat_deg");
+    assert!(by_time["warnings"][0]["message"]
         .as_str()
         .unwrap()
         .contains("out of beat"));

@@ -536,13 +536,14 @@ fn millimetres_written_as_metres_are_warned() {
                 length = 140\ndiameter = 80\ncentre = 1000\n";
     std::fs::write(&path, text).unwrap();
     let sheet = json(&["design", path.to_str().unwrap()]);
-    let warning = sheet["warnings"][0].as_str().unwrap_or_default();
+    let warning = sheet["warnings"][0]["message"].as_str().unwrap_or_default();
     assert!(warning.contains("millimetres"), "{sheet}");
     let ok = json(&["design", &example("seconds-steel-brass.toml")]);
     assert_eq!(ok["warnings"].as_array().map(Vec::len), Some(0), "{ok}");
     let r = json(&["regulate", "--length", "994", "--rate", "10"]);
-    let warning = r["warnings"][0].as_str().unwrap_or_default();
+    let warning = r["warnings"][0]["message"].as_str().unwrap_or_default();
     assert!(warning.contains("millimetres"), "{r}");
+    assert_eq!(r["warnings"][0]["code"], "length_implausible", "{r}");
 }
 
 /// Every compensator `--write`s a design that keeps the period of the

@@ -451,7 +451,7 @@ fn a_drive_file_rate_change_of_a_stopped_clock_is_refused_by_line() {
     let (_, args) = run("-86399.999999");
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
     let v = json(&args);
-    let warning = v["long_run"]["warnings"][0].as_str().unwrap();
+    let warning = v["long_run"]["warnings"][0]["message"].as_str().unwrap();
     assert!(warning.contains("days after the 2 days asked"), "{warning}");
     assert!(warning.contains("(a clock all but stopped)"), "{warning}");
     // A constant 2 s/day for two days puts the clock 4 s further ahead

@@ -137,7 +137,9 @@ fn a_missed_pulse_is_named_and_can_be_removed() {
     );
     let removed = json(&["stability", &stepped, "--outliers", "remove"]);
     let w = &removed["warnings"][0];
-    assert_eq!(w["kind"], "accidents");
+    assert_eq!(w["code"], "accidents");
+    assert_eq!(w["figure"], "adev");
+    assert!(w["message"].as_str().unwrap().contains("taken out"), "{w}");
     assert_eq!(w["removed"], true);
     assert!(f(w, "adev_factor") > 10.0, "{w}");
     let rows = |v: &serde_json::Value| -> Vec<f64> {

@@ -664,7 +664,8 @@ def fit_file(path, fit, *, columns=None, angle_unit=None, frame_rate=None, run=N
     Returns the command's JSON as a dict, every key and number the same,
     with two keys beside: ``figure`` (its ``--plot`` as panels of series)
     and ``notes`` (what the reader left out, which the command says on
-    standard error); ``warnings`` are the sentences the command prints. A refusal raises ``ValueError`` with the
+    standard error); each warning is ``{"code", "message", "figure"}``, as in
+    every result. A refusal raises ``ValueError`` with the
     command's sentence.
 
     >>> import pendulum_theory as pt

@@ -15,6 +15,7 @@ use crate::analysis::{require_finite, require_finite_sample, Refusal};
 use crate::compound::{CompoundPendulum, PartState};
 use crate::error::format_significant;
 use crate::pendulum::{Pendulum, STANDARD_GRAVITY};
+use crate::warning::Warning;
 use serde::Serialize;
 
 /// Quality factor of the free pendulum when none is given (a good
@@ -309,7 +310,7 @@ pub struct RunSummary {
     pub nominal_period_s: f64,
     /// What to check.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
 }
 
 /// A clock's analysis.
@@ -348,7 +349,7 @@ pub struct ClockResult {
     pub long_run: Option<RunSummary>,
     /// What to check.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
     /// What to do ([`crate::advice`]): set it in beat, when it is out.
     pub advice: Vec<crate::advice::Advice>,
 }
@@ -776,7 +777,7 @@ struct WeatherEffect {
     /// given Q less the gas's share at the first row) held.
     q_factors: Vec<f64>,
     /// What to check.
-    warnings: Vec<String>,
+    warnings: Vec<Warning>,
 }
 
 /// The most times a lagging design's weather is evaluated at.
@@ -919,6 +920,27 @@ fn part_lags(design: &CompoundPendulum, w: &Weather) -> PartLags {
     }
 }
 
+/// The losses that are not the gas's, as a Q: `1/(1/q − 1/q_gas)` for the
+/// clock's Q `q` and the gas's alone `q_gas`; none, with a warning, when
+/// `q` is above what the gas alone allows (the pressure's change of the
+/// damping is then the gas's alone).
+fn pivot_q(q: f64, q_gas: f64, warnings: &mut Vec<Warning>) -> Option<f64> {
+    if q < q_gas {
+        return Some(1.0 / (1.0 / q - 1.0 / q_gas));
+    }
+    warnings.push(Warning::new(
+        "q_above_gas",
+        format!(
+            "the Q given ({}) is above what the gas alone allows this design ({}): the \
+             pressure's change of the damping is taken as the gas's alone",
+            format_significant(q, 5),
+            format_significant(q_gas, 5)
+        ),
+        Some("q"),
+    ));
+    None
+}
+
 /// The weather's effect on `design` in `gas` (the first row's pressure
 /// and temperature taken for the composition: air of 50% humidity at
 /// 1,013.25 hPa pumped to that pressure) for a clock of total Q `q` at the
@@ -964,23 +986,14 @@ fn weather_effect(
     let mut warnings = Vec::new();
     if let Some(h) = &w.humidity_percent {
         if h.iter().all(|&v| v <= 1.0) && h.iter().any(|&v| v > 0.0) {
-            warnings.push(crate::gas::per_cent_warning(
-                "the humidity never passes 1 %",
+            warnings.push(Warning::new(
+                "per_cent_as_fraction",
+                crate::gas::per_cent_warning("the humidity never passes 1 %"),
+                Some("humidity_percent"),
             ));
         }
     }
-    // The losses that are not the gas's, as a Q.
-    let pivot = if q < q_gas0 {
-        Some(1.0 / (1.0 / q - 1.0 / q_gas0))
-    } else {
-        warnings.push(format!(
-            "the Q given ({}) is above what the gas alone allows this design ({}): the \
-             pressure's change of the damping is taken as the gas's alone",
-            format_significant(q, 5),
-            format_significant(q_gas0, 5)
-        ));
-        None
-    };
+    let pivot = pivot_q(q, q_gas0, &mut warnings);
     // The gas's rate and Q factor at each row (smooth in the row's
     // pressure, temperature and humidity: linear between rows).
     let q_factor = |gas_q: f64| match pivot {
@@ -1141,33 +1154,41 @@ pub fn analyse(input: &ClockInput, sink: &mut dyn RunSink) -> Result<ClockResult
     let beat = 0.5 * steady.period;
     if steady.beat_error >= AUDIBLY_OUT_OF_BEAT * beat {
         let split = 50.0 * steady.beat_error / beat;
-        warnings.push(format!(
-            "out of beat: the ticks come {}/{} (a beat error of {} ms); move the crutch {}° \
+        warnings.push(Warning::new(
+            "out_of_beat",
+            format!(
+                "out of beat: the ticks come {}/{} (a beat error of {} ms); move the crutch {}° \
              ({} mm at the bob) towards the side the pendulum swings to in the longer gap, to \
              set it in beat{}",
-            format_significant(50.0 + split, 3),
-            format_significant(50.0 - split, 3),
-            format_significant(1e3 * steady.beat_error, 3),
-            format_significant(built.out_of_beat.to_degrees().abs(), 3),
-            format_significant(1e3 * built.out_of_beat.abs() * clock.pendulum.length_m(), 3),
-            if steady.beat_error >= crate::listening::analysis::OUT_OF_BEAT * beat {
-                " (so uneven that `listen` would take it for a beat misread)"
-            } else {
-                ""
-            }
+                format_significant(50.0 + split, 3),
+                format_significant(50.0 - split, 3),
+                format_significant(1e3 * steady.beat_error, 3),
+                format_significant(built.out_of_beat.to_degrees().abs(), 3),
+                format_significant(1e3 * built.out_of_beat.abs() * clock.pendulum.length_m(), 3),
+                if steady.beat_error >= crate::listening::analysis::OUT_OF_BEAT * beat {
+                    " (so uneven that `listen` would take it for a beat misread)"
+                } else {
+                    ""
+                }
+            ),
+            Some("out_of_beat_deg"),
         ));
     }
     let (integrated, airy) = (steady.escapement_rate, steady.escapement_rate_first_order);
     if (integrated - airy).abs() > AIRY_FAR.0 * integrated.abs().max(airy.abs())
         && (integrated - airy).abs() > AIRY_FAR.1
     {
-        warnings.push(format!(
-            "Airy's first-order integral gives the escapement {} s/day where the integrated \
+        warnings.push(Warning::new(
+            "airy_first_order_off",
+            format!(
+                "Airy's first-order integral gives the escapement {} s/day where the integrated \
              swing gives {}: the escapement disturbs the swing beyond first order (a drive, \
              friction or recoil large against the pendulum); the integrated figure is the \
              one to use",
-            format_significant(airy, 4),
-            format_significant(integrated, 4)
+                format_significant(airy, 4),
+                format_significant(integrated, 4)
+            ),
+            Some("escapement_rate_s_per_day"),
         ));
     }
     let isochronism = match &input.isochronism {
@@ -1318,7 +1339,7 @@ struct RunRates {
     /// The factor on the damping through the run (the air's pressure).
     damping: Option<Schedule>,
     /// The weather's warnings.
-    warnings: Vec<String>,
+    warnings: Vec<Warning>,
 }
 
 /// The long run of [`analyse`].
@@ -1413,13 +1434,17 @@ fn long(
             let overshoot = finish.last.time - input.duration;
             if overshoot > input.every.unwrap_or(0.0).max(2.0 * steady.period) {
                 let rate = finish.last.rate;
-                warnings.push(format!(
-                    "the run ends {} days after the {} days asked: at a rate of {} s/day one \
+                warnings.push(Warning::new(
+                    "run_overshoots",
+                    format!(
+                        "the run ends {} days after the {} days asked: at a rate of {} s/day one \
                      beat lasts {} s (a clock all but stopped)",
-                    format_significant(overshoot / 86_400.0, 4),
-                    format_significant(input.duration / 86_400.0, 4),
-                    format_significant(rate, 12),
-                    format_significant(nominal_period / 2.0 * period_factor(rate), 3),
+                        format_significant(overshoot / 86_400.0, 4),
+                        format_significant(input.duration / 86_400.0, 4),
+                        format_significant(rate, 12),
+                        format_significant(nominal_period / 2.0 * period_factor(rate), 3),
+                    ),
+                    Some("duration_s"),
                 ));
             }
             Ok(RunSummary {
@@ -1581,7 +1606,11 @@ mod tests {
                 "{r:?}"
             );
             assert!(r.time_error_s.is_finite() && r.time_error_s < 0.0, "{r:?}");
-            assert!(r.warnings[0].contains("(a clock all but stopped)"), "{r:?}");
+            assert!(
+                r.warnings[0].code == "run_overshoots"
+                    && r.warnings[0].message.contains("(a clock all but stopped)"),
+                "{r:?}"
+            );
         }
         // A run that ends on time says nothing of it.
         c.run = Some(run(-3600.0));

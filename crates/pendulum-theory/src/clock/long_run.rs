@@ -203,6 +203,117 @@ fn row_due(every: f64, next_row: &mut f64, time: f64, duration: f64) -> bool {
     true
 }
 
+/// What a long run steps with: the clock, its schedules and the
+/// figures every step uses.
+struct Stepper<'a> {
+    clock: &'a Clock,
+    drive: &'a dyn Fn(f64) -> f64,
+    stretch: &'a dyn Fn(f64) -> f64,
+    damping: &'a dyn Fn(f64) -> f64,
+    /// The pendulum's natural angular frequency, rad/s.
+    omega: f64,
+    /// Half the nominal period, s.
+    nominal_beat: f64,
+    /// The escapement's cycle, in beats.
+    cycle: u64,
+    /// Whether the escapement shifts the swing's time (not symmetric).
+    shift: bool,
+}
+
+impl Stepper<'_> {
+    /// One half swing from amplitude `a` at beat `beat` of the cycle, drive
+    /// `d` and time `t` (s): the map of [`half_swing_map`] at the Q of that
+    /// moment, its duration lengthened by a suspension spring's share of the
+    /// circular error; `None` where the swing cannot be made.
+    fn half_swing(&self, a: f64, beat: u64, d: f64, t: f64, shift: bool) -> Option<HalfSwing> {
+        let q = self.clock.q * (self.damping)(t);
+        half_swing_map(Some(self.clock.escapement.as_ref()), q, d, beat, a, shift).map(|h| {
+            HalfSwing {
+                time: h.time * self.clock.spring_factor(a),
+                ..h
+            }
+        })
+    }
+
+    /// The rate (s/day) a clock keeps whose beats take `beat_time` s.
+    fn rate_of(&self, beat_time: f64) -> f64 {
+        86_400.0 * (self.nominal_beat / beat_time - 1.0)
+    }
+
+    /// The beats' durations (s) over the escapement's first whole cycle
+    /// from `amplitude` with drive `d` (zeros from a beat that cannot be
+    /// made on): the rate at the start.
+    fn first_cycle(&self, amplitude: f64, d: f64) -> Vec<f64> {
+        let mut recent = vec![0.0; self.cycle as usize];
+        let mut a = amplitude;
+        for (beat, seconds) in recent.iter_mut().enumerate() {
+            let Some(h) = self.half_swing(a, beat as u64, d, 0.0, self.shift) else {
+                break;
+            };
+            *seconds = h.time * (self.stretch)(0.0) / self.omega;
+            a = h.amplitude;
+        }
+        recent
+    }
+
+    /// One whole cycle of the escapement from amplitude `a`, drive `d`, at
+    /// time `t`: the amplitude after it and its scaled duration.
+    fn cycle_map(&self, a: f64, d: f64, t: f64, shift: bool) -> Option<HalfSwing> {
+        let mut swing = HalfSwing {
+            amplitude: a,
+            time: 0.0,
+        };
+        for beat in 0..self.cycle {
+            let h = self.half_swing(swing.amplitude, beat, d, t, shift)?;
+            swing = HalfSwing {
+                amplitude: h.amplitude,
+                time: swing.time + h.time,
+            };
+        }
+        Some(swing)
+    }
+
+    /// The modified equation's flow at amplitude `a` and time `t`: the
+    /// amplitude's change and the (stretched, scaled) duration per cycle,
+    /// `g - g g'/2` and `τ - τ' g/2`. The drive at each stage's time: the
+    /// flow is not autonomous. The neighbours only give the derivatives
+    /// of the map, for the second-order term: the escapement's time shift
+    /// (Airy's integral, most of an asymmetric escapement's work) moves
+    /// them by 1e-4 of that term, and is left out.
+    fn flow(&self, a: f64, t: f64) -> Option<(f64, f64)> {
+        let d = (self.drive)(t);
+        let h = 1e-6 * a;
+        let m0 = self.cycle_map(a, d, t, self.shift)?;
+        let mp = self.cycle_map(a + h, d, t, false)?;
+        let mm = self.cycle_map(a - h, d, t, false)?;
+        let g = m0.amplitude - a;
+        let dg = ((mp.amplitude - a - h) - (mm.amplitude - a + h)) / (2.0 * h);
+        let dtau = (mp.time - mm.time) / (2.0 * h);
+        let s = (self.stretch)(t);
+        Some((g - 0.5 * g * dg, (m0.time - 0.5 * dtau * g) * s))
+    }
+
+    /// The beats the next step may take at `time` (s), a whole number of
+    /// cycles: up to the next row or the end (`target`, s), a twentieth of
+    /// the amplitude's relaxation (`Q/π` periods), and 4096.
+    fn step_beats(&self, time: f64, target: f64) -> u64 {
+        let beat_estimate = std::f64::consts::PI / self.omega;
+        let room = ((target - time) / beat_estimate).floor();
+        let relaxation_beats =
+            (self.clock.q * (self.damping)(time) / std::f64::consts::PI * 2.0).max(1.0);
+        (room.min(relaxation_beats / 20.0).min(4096.0) as u64) / self.cycle * self.cycle
+    }
+}
+
+/// The true time of `row` advanced by `dt` (s), as a compensated sum
+/// of the half swings (`carry` holds what the sum has lost).
+fn add_time(row: &mut Row, carry: &mut f64, dt: f64) {
+    let y = dt - *carry;
+    let t = row.time + y;
+    *carry = (t - row.time) - y;
+    row.time = t;
+}
+
 /// [`run`] with the pendulum's Q multiplied by `damping(t)` at each
 /// moment (the gas around it changing with the pressure), held over a
 /// beat like the drive.
@@ -214,22 +325,18 @@ pub fn run_with_damping(
     options: &LongRun,
     sink: &mut dyn FnMut(&Row) -> bool,
 ) -> Finish {
-    let omega = clock.pendulum.natural_angular_frequency();
-    let nominal_beat = 0.5 * options.nominal_period;
     let escapement = clock.escapement.as_ref();
-    let shift = !escapement.symmetric();
-    // A suspension spring's share of the circular error, a factor on each
-    // half swing's duration.
-    let map_with = |a: f64, beat: u64, d: f64, t: f64, shift: bool| {
-        half_swing_map(Some(escapement), clock.q * damping(t), d, beat, a, shift).map(|h| {
-            HalfSwing {
-                time: h.time * clock.spring_factor(a),
-                ..h
-            }
-        })
+    let stepper = Stepper {
+        clock,
+        drive,
+        stretch,
+        damping,
+        omega: clock.pendulum.natural_angular_frequency(),
+        nominal_beat: 0.5 * options.nominal_period,
+        cycle: escapement.cycle(),
+        shift: !escapement.symmetric(),
     };
-    let map = |a: f64, beat: u64, d: f64, t: f64| map_with(a, beat, d, t, shift);
-    let rate_of = |beat_time: f64| 86_400.0 * (nominal_beat / beat_time - 1.0);
+    let (omega, cycle) = (stepper.omega, stepper.cycle);
     let mut row = Row {
         time: 0.0,
         beats: 0,
@@ -245,34 +352,17 @@ pub fn run_with_damping(
         stopped: false,
         ending: Ending::Duration,
     };
-    // True time as a compensated sum of the half swings.
     let mut carry = 0.0;
-    let mut add_time = |row: &mut Row, dt: f64| {
-        let y = dt - carry;
-        let t = row.time + y;
-        carry = (t - row.time) - y;
-        row.time = t;
-    };
     // The rate at the start: over the escapement's first whole cycle.
-    let cycle = escapement.cycle();
-    let mut recent = vec![0.0; cycle as usize];
-    let mut a = row.amplitude;
-    for (beat, seconds) in recent.iter_mut().enumerate() {
-        let Some(h) = map(a, beat as u64, row.drive, 0.0) else {
-            break;
-        };
-        *seconds = h.time * stretch(0.0) / omega;
-        a = h.amplitude;
-    }
+    let mut recent = stepper.first_cycle(row.amplitude, row.drive);
     if recent.iter().all(|&s| s > 0.0) {
-        row.rate = rate_of(recent.iter().sum::<f64>() / cycle as f64);
+        row.rate = stepper.rate_of(recent.iter().sum::<f64>() / cycle as f64);
     }
     if !sink(&row) {
         finish.stopped = true;
         finish.ending = Ending::Sink;
         return finish;
     }
-    let relaxation_beats = |t: f64| (clock.q * damping(t) / std::f64::consts::PI * 2.0).max(1.0);
     let mut next_row = options.every.unwrap_or(0.0);
     let end = |finish: &mut Finish, ending: Ending| {
         finish.stopped = true;
@@ -297,52 +387,19 @@ pub fn run_with_damping(
             end(&mut finish, Ending::RateOutOfRange);
             break;
         }
-        let beat_estimate = std::f64::consts::PI / omega;
         // Beats until the next row (or the end).
         let target = match options.every {
             Some(_) => next_row.min(options.duration),
             None => options.duration,
         };
-        let room = ((target - row.time) / beat_estimate).floor();
-        let step_beats =
-            (room.min(relaxation_beats(row.time) / 20.0).min(4096.0) as u64) / cycle * cycle;
+        let step_beats = stepper.step_beats(row.time, target);
         if options.every.is_some() && cycle <= MULTI_STEP_CYCLE && step_beats >= 16 {
             // Many beats at once: RK4 on the modified equation of the map
             // of one whole cycle of the escapement.
             let n = (step_beats / cycle) as f64;
-            let cycle_map = |a: f64, d: f64, t: f64, shift: bool| -> Option<HalfSwing> {
-                let mut swing = HalfSwing {
-                    amplitude: a,
-                    time: 0.0,
-                };
-                for beat in 0..cycle {
-                    let h = map_with(swing.amplitude, beat, d, t, shift)?;
-                    swing = HalfSwing {
-                        amplitude: h.amplitude,
-                        time: swing.time + h.time,
-                    };
-                }
-                Some(swing)
-            };
-            // The drive at each stage's time: the flow is not autonomous.
-            // The neighbours only give the derivatives of the map, for the
-            // modified equation's second-order term: the escapement's time
-            // shift (Airy's integral, most of an asymmetric escapement's
-            // work) moves them by 1e-4 of that term, and is left out.
-            let flow = |a: f64, t: f64| -> Option<(f64, f64)> {
-                let d = drive(t);
-                let h = 1e-6 * a;
-                let m0 = cycle_map(a, d, t, shift)?;
-                let mp = cycle_map(a + h, d, t, false)?;
-                let mm = cycle_map(a - h, d, t, false)?;
-                let g = m0.amplitude - a;
-                let dg = ((mp.amplitude - a - h) - (mm.amplitude - a + h)) / (2.0 * h);
-                let dtau = (mp.time - mm.time) / (2.0 * h);
-                let s = stretch(t);
-                Some((g - 0.5 * g * dg, (m0.time - 0.5 * dtau * g) * s))
-            };
             let (a, t) = (row.amplitude, row.time);
-            let (da, dt, last_cycle) = match rk4_cycles(&flow, a, t, n, omega) {
+            let (da, dt, last_cycle) = match rk4_cycles(&|a, t| stepper.flow(a, t), a, t, n, omega)
+            {
                 Ok(step) => step,
                 Err(at) => {
                     end(&mut finish, failed(a, drive(at)));
@@ -350,29 +407,30 @@ pub fn run_with_damping(
                 }
             };
             row.amplitude = a + da;
-            add_time(&mut row, dt);
+            add_time(&mut row, &mut carry, dt);
             row.beats += step_beats;
-            row.rate = rate_of(last_cycle / omega / cycle as f64);
+            row.rate = stepper.rate_of(last_cycle / omega / cycle as f64);
             finish.multi_steps += 1;
         } else {
             let beat = row.beats % cycle;
-            let Some(h) = map(row.amplitude, beat, d, row.time) else {
+            let Some(h) = stepper.half_swing(row.amplitude, beat, d, row.time, stepper.shift)
+            else {
                 end(&mut finish, failed(row.amplitude, d));
                 break;
             };
             let seconds = h.time * stretch(row.time) / omega;
             row.amplitude = h.amplitude;
-            add_time(&mut row, seconds);
+            add_time(&mut row, &mut carry, seconds);
             row.beats += 1;
             // The rate over the last whole cycle of the escapement (its
             // beats differ when it is out of beat, or a free pendulum's
             // impulse falls on one of them).
             recent[beat as usize] = seconds;
-            row.rate = rate_of(recent.iter().sum::<f64>() / cycle as f64);
+            row.rate = stepper.rate_of(recent.iter().sum::<f64>() / cycle as f64);
             finish.single_steps += 1;
         }
         row.drive = d;
-        row.time_error = row.beats as f64 * nominal_beat - row.time;
+        row.time_error = row.beats as f64 * stepper.nominal_beat - row.time;
         if row.amplitude < escapement.unlocking_amplitude() {
             end(&mut finish, Ending::PendulumStopped);
             break;

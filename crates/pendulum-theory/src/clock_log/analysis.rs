@@ -11,19 +11,20 @@ use super::daily::daily_cycle;
 use super::input::{mean, prepare, Prepared};
 use super::jumps::{clean_offsets, rate_outliers, Wrap};
 use super::model::{mean_level, smoothed_walk, Fit};
-use super::periodic::{periodic, running_mean, whole_cycle, Periodic};
+use super::periodic::{periodic, running_mean, whole_cycle, Periodic, PeriodicFound};
 use super::result::{
-    Coefficients, LogInput, LogKind, LogResult, LogWarning, Partial, ReferenceWeather, Term,
+    Coefficients, DesignComparison, LogInput, LogKind, LogResult, LogWarning, Partial,
+    ReferenceWeather, Term,
 };
 use super::series::{
     interval_means, lagged_interval_means, offsets_to_bins, rates_to_bins, Bins, Coarse,
 };
 use super::swing::{swing, Swing};
-use super::terms::{Source, TERMS};
+use super::terms::{ModelTerm, Source, TERMS};
 use crate::analysis::Refusal;
 use crate::fitting::beats::standard_rate_near;
 use crate::stability::{
-    stability, Accident, AccidentKind, DataKind, Outliers, StabilityInput, Taus,
+    stability, Accident, AccidentKind, DataKind, Outliers, StabilityInput, StabilityRow, Taus,
 };
 use crate::tide::{gravity_change, rate_s_per_day};
 
@@ -184,6 +185,9 @@ pub fn analyse(input: &LogInput) -> Result<LogResult, Refusal> {
     warnings.extend(checked);
     let (rate, rate_var) = mean_level(&fitted, &bins.rate, &x, &bins.weight);
     let names = design.names(&choice);
+    for w in &mut warnings {
+        w.date(input.epoch_unix_s);
+    }
     let mut result = assemble(Assembly {
         input,
         prepared: &prepared,
@@ -278,6 +282,7 @@ fn binned(p: &mut Prepared, warnings: &mut Vec<LogWarning>) -> Result<Series, Re
                     count: out.len(),
                     first_time_s: p.times[first],
                     largest_s_per_day: largest,
+                    epoch_unix_s: None,
                 });
                 let mut drop = vec![false; p.times.len()];
                 for (i, _) in &out {
@@ -390,6 +395,7 @@ fn accident_warnings(accidents: &[Accident], warnings: &mut Vec<LogWarning>) {
             count: of(AccidentKind::Jump).count(),
             first_time_s: first.time_s,
             largest_s: largest(&mut of(AccidentKind::Jump)),
+            epoch_unix_s: None,
         });
     }
     if let Some(first) = of(AccidentKind::Glitch).next() {
@@ -398,6 +404,7 @@ fn accident_warnings(accidents: &[Accident], warnings: &mut Vec<LogWarning>) {
             samples: of(AccidentKind::Glitch).map(|a| a.samples).sum(),
             first_time_s: first.time_s,
             largest_s: largest(&mut of(AccidentKind::Glitch)),
+            epoch_unix_s: None,
         });
     }
 }
@@ -627,78 +634,45 @@ struct Assembly<'a> {
     warnings: Vec<LogWarning>,
 }
 
-fn assemble(a: Assembly) -> Result<LogResult, Refusal> {
-    let Assembly {
-        input,
-        prepared: p,
-        series,
-        design,
-        choice,
-        fitted,
-        names,
-        judged,
-        lags,
-        walk,
-        rate,
-        widen,
-        mut warnings,
-    } = a;
-    let bins = &series.bins;
-    let m = bins.rate.len();
-    let se: Vec<f64> = (0..names.len())
-        .map(|i| fitted.cov[(i, i)].sqrt() * widen)
-        .collect();
-    let index = |name: &str| names.iter().position(|n| n == name);
-    let (mut values, mut errors) = (vec![None; TERMS.len()], vec![None; TERMS.len()]);
-    for (i, t) in TERMS.iter().enumerate() {
-        if let Some(k) = index(t.name) {
-            values[i] = Some(fitted.beta[k]);
-            errors[i] = Some(se[k]);
-        }
-    }
-    let first_step = 1
-        + (0..TERMS.len())
-            .filter(|&i| choice.terms[i] && design.columns[i].is_some())
-            .count();
-    let steps = design.steps.len();
-    let coefficients = Coefficients {
-        values: values.clone(),
-        steps_s_per_day: (0..steps).map(|k| fitted.beta[first_step + k]).collect(),
-    };
-    let standard_errors = Coefficients {
-        values: errors.clone(),
-        steps_s_per_day: (0..steps).map(|k| se[first_step + k]).collect(),
-    };
-    let correlations: Vec<Vec<f64>> = (0..names.len())
-        .map(|i| {
-            (0..names.len())
-                .map(|j| fitted.cov[(i, j)] * widen * widen / (se[i] * se[j]))
-                .collect()
-        })
-        .collect();
-    // A kept term's figures are the final model's (its lag searched
-    // again and its uncertainty carried); a term left out gives what the
-    // model with it put back allows.
-    let terms: Vec<Term> = judged
-        .into_iter()
-        .map(|(i, kept, j)| {
-            let (estimate, standard_error) = match (kept, values.get(i).copied().flatten()) {
-                (true, Some(v)) => (Some(v), errors[i]),
-                _ => (j.estimate.map(|e| e.0), j.estimate.map(|e| e.1 * widen)),
-            };
-            Term {
-                name: TERMS.get(i).map_or("random_walk", |t| t.name),
-                kept,
-                delta_bic: j.delta_bic,
-                estimate,
-                standard_error,
-            }
-        })
-        .collect();
+/// The final model's coefficients by term, with their standard errors
+/// (widened for the noise's correlation) and correlations.
+struct Estimates {
+    /// Each term's value, in [`TERMS`]' order (`None`: not in the model).
+    values: Vec<Option<f64>>,
+    /// Each term's standard error, likewise.
+    errors: Vec<Option<f64>>,
+    coefficients: Coefficients,
+    standard_errors: Coefficients,
+    correlations: Vec<Vec<f64>>,
+}
+
+/// Each weather term's variable a bin, in its unit.
+type WeatherPerBin = Vec<(&'static ModelTerm, Vec<f64>)>;
+
+/// The model a bin (the walk included), the residuals with it out, and
+/// their weighted rms (s/day).
+struct Modelled {
+    model: Vec<f64>,
+    residuals: Vec<f64>,
+    residual_rms: f64,
+}
+
+/// Builds the result from the fit: the figures, their checks against what
+/// pendulums can do and against the design, the stability of the log and
+/// of its residuals, the periodic errors the model leaves, and the
+/// series the plots draw.
+fn assemble(mut a: Assembly) -> Result<LogResult, Refusal> {
+    let mut warnings = std::mem::take(&mut a.warnings);
+    let estimates = a.estimates();
+    let terms = a.judged_terms(&estimates);
     // The lag, reported with its range.
     let temperature = TERMS.iter().position(|t| t.name == "temperature");
-    let lag = lags.iter().find(|(i, _)| Some(*i) == temperature);
-    if let Some((_, l)) = lag {
+    let lag = a
+        .lags
+        .iter()
+        .find(|(i, _)| Some(*i) == temperature)
+        .map(|l| l.1.clone());
+    if let Some(l) = &lag {
         if l.at_limit {
             warnings.push(LogWarning::LagAtLimit { lag_s: l.tau });
         }
@@ -707,64 +681,207 @@ fn assemble(a: Assembly) -> Result<LogResult, Refusal> {
         means: TERMS
             .iter()
             .enumerate()
-            .filter(|(i, t)| t.column.is_some() && choice.terms[*i] && design.columns[*i].is_some())
-            .filter_map(|(i, t)| Some((t, design.means[i]?)))
+            .filter(|(i, t)| {
+                t.column.is_some() && a.choice.terms[*i] && a.design.columns[*i].is_some()
+            })
+            .filter_map(|(i, t)| Some((t, a.design.means[i]?)))
             .collect(),
     };
-    // Checks against what pendulums can do.
-    for (i, t) in TERMS.iter().enumerate() {
-        if let Some(v) = values[i] {
-            if let Some(reason) = (t.implausible)(v, design.means[i].unwrap_or(0.0)) {
-                warnings.push(LogWarning::Implausible {
-                    term: t.name,
-                    reason,
+    a.plausibility(&estimates, &mut warnings);
+    let design_comparison = a.against_design(&estimates)?;
+    let modelled = a.modelled();
+    let (stability, residual_stability) = a.stabilities()?;
+    let m = a.series.bins.rate.len();
+    let x = a.design.matrix(a.choice, m);
+    let found = a.periodic_errors(&x, &mut warnings)?;
+    let (weather_per_bin, partials) = a.partials(&estimates.values, &modelled.residuals);
+    let bins = &a.series.bins;
+    let per_bin = (0..m)
+        .map(|i| {
+            let (model, residual) = (modelled.model[i], modelled.residuals[i]);
+            [bins.centre[i], bins.rate[i], model, residual]
+        })
+        .collect();
+    let (p, input, fitted) = (a.prepared, a.input, a.fitted);
+    let drift = TERMS.iter().position(|t| t.source == Source::Time);
+    Ok(LogResult {
+        kind: p.kind,
+        epoch_unix_s: input.epoch_unix_s,
+        samples: input.time_s.len(),
+        span_s: p.span,
+        bin_s: p.bin,
+        bins: m,
+        rate_s_per_day: a.rate.0,
+        rate_standard_error_s_per_day: a.rate.1,
+        reference_time_s: a.design.t_ref,
+        rate_at_end_s_per_day: a.end_rate(&x, modelled.model[m - 1]),
+        drift_s_per_day_per_day: drift.and_then(|i| estimates.values[i]),
+        drift_standard_error_s_per_day_per_day: drift.and_then(|i| estimates.errors[i]),
+        coefficients: estimates.coefficients,
+        standard_errors: estimates.standard_errors,
+        parameters: std::mem::take(&mut a.names),
+        correlations: estimates.correlations,
+        temperature_lag_s: lag.as_ref().map(|l| l.tau),
+        temperature_lag_range_s: lag.as_ref().map(|l| l.range),
+        reference_weather,
+        terms,
+        white_noise_s_per_day: fitted.sigma2.sqrt(),
+        random_walk_s_per_day_per_day: (fitted.lambda * fitted.sigma2 * DAY / p.bin).sqrt(),
+        residual_rms_s_per_day: modelled.residual_rms,
+        stability,
+        residual_stability,
+        design: design_comparison,
+        wraps: a.series.wraps.clone(),
+        accidents: a.series.accidents.clone(),
+        warnings,
+        spectrum: found.spectrum,
+        arbors: p.arbors.clone(),
+        folds: found.folds,
+        swing: found.swing,
+        beat_error_s: found.beat_error_s,
+        beat_s: None,
+        advice: Vec::new(),
+        per_bin,
+        partials,
+        weather_per_bin,
+    })
+}
+
+impl Assembly<'_> {
+    /// The coefficients by term and the rate steps, their standard errors
+    /// widened by `widen`, and the parameters' correlations.
+    fn estimates(&self) -> Estimates {
+        let (fitted, names, widen) = (self.fitted, &self.names, self.widen);
+        let se: Vec<f64> = (0..names.len())
+            .map(|i| fitted.cov[(i, i)].sqrt() * widen)
+            .collect();
+        let index = |name: &str| names.iter().position(|n| n == name);
+        let (mut values, mut errors) = (vec![None; TERMS.len()], vec![None; TERMS.len()]);
+        for (i, t) in TERMS.iter().enumerate() {
+            if let Some(k) = index(t.name) {
+                values[i] = Some(fitted.beta[k]);
+                errors[i] = Some(se[k]);
+            }
+        }
+        let first_step = 1
+            + (0..TERMS.len())
+                .filter(|&i| self.choice.terms[i] && self.design.columns[i].is_some())
+                .count();
+        let steps = self.design.steps.len();
+        let coefficients = Coefficients {
+            values: values.clone(),
+            steps_s_per_day: (0..steps).map(|k| fitted.beta[first_step + k]).collect(),
+        };
+        let standard_errors = Coefficients {
+            values: errors.clone(),
+            steps_s_per_day: (0..steps).map(|k| se[first_step + k]).collect(),
+        };
+        let correlations: Vec<Vec<f64>> = (0..names.len())
+            .map(|i| {
+                (0..names.len())
+                    .map(|j| fitted.cov[(i, j)] * widen * widen / (se[i] * se[j]))
+                    .collect()
+            })
+            .collect();
+        Estimates {
+            values,
+            errors,
+            coefficients,
+            standard_errors,
+            correlations,
+        }
+    }
+
+    /// Each judged term: a kept term's figures are the final model's (its
+    /// lag searched again and its uncertainty carried); a term left out
+    /// gives what the model with it put back allows.
+    fn judged_terms(&mut self, e: &Estimates) -> Vec<Term> {
+        let widen = self.widen;
+        std::mem::take(&mut self.judged)
+            .into_iter()
+            .map(|(i, kept, j)| {
+                let (estimate, standard_error) = match (kept, e.values.get(i).copied().flatten()) {
+                    (true, Some(v)) => (Some(v), e.errors[i]),
+                    _ => (j.estimate.map(|e| e.0), j.estimate.map(|e| e.1 * widen)),
+                };
+                Term {
+                    name: TERMS.get(i).map_or("random_walk", |t| t.name),
+                    kept,
+                    delta_bic: j.delta_bic,
+                    estimate,
+                    standard_error,
+                }
+            })
+            .collect()
+    }
+
+    /// Warns of a coefficient no pendulum could have (each term's own
+    /// test), and of a tidal admittance more than 4 standard errors from 1.
+    fn plausibility(&self, e: &Estimates, warnings: &mut Vec<LogWarning>) {
+        for (i, t) in TERMS.iter().enumerate() {
+            if let Some(v) = e.values[i] {
+                if let Some(reason) = (t.implausible)(v, self.design.means[i].unwrap_or(0.0)) {
+                    warnings.push(LogWarning::Implausible {
+                        term: t.name,
+                        reason,
+                    });
+                }
+            }
+        }
+        if let (Some(k), Some(s)) = (e.coefficients.get("tide"), e.standard_errors.get("tide")) {
+            let from_one = (k - 1.0) / s;
+            if from_one.abs() > 4.0 && s < 0.5 {
+                warnings.push(LogWarning::TideAdmittance {
+                    admittance: k,
+                    from_one_se: from_one,
                 });
             }
         }
     }
-    if let (Some(k), Some(s)) = (coefficients.get("tide"), standard_errors.get("tide")) {
-        let from_one = (k - 1.0) / s;
-        if from_one.abs() > 4.0 && s < 0.5 {
-            warnings.push(LogWarning::TideAdmittance {
-                admittance: k,
-                from_one_se: from_one,
-            });
+
+    /// The coefficients against the pendulum's design, when one is given.
+    fn against_design(&self, e: &Estimates) -> Result<Option<DesignComparison>, Refusal> {
+        let Some(d) = &self.input.design else {
+            return Ok(None);
+        };
+        let means: Vec<(usize, f64)> = (0..TERMS.len())
+            .filter_map(|i| Some((i, self.design.means[i]?)))
+            .collect();
+        super::checks::against_design(d, &means, &e.coefficients, &e.standard_errors).map(Some)
+    }
+
+    /// The model a bin, the walk included; the residuals with it out and
+    /// their rms weighted as the bins are.
+    fn modelled(&self) -> Modelled {
+        let bins = &self.series.bins;
+        let m = bins.rate.len();
+        let model: Vec<f64> = (0..m)
+            .map(|i| bins.rate[i] - self.fitted.residuals[i] + self.walk[i])
+            .collect();
+        let residuals: Vec<f64> = (0..m).map(|i| bins.rate[i] - model[i]).collect();
+        let total_weight: f64 = bins.weight.iter().sum();
+        let residual_rms = (residuals
+            .iter()
+            .zip(&bins.weight)
+            .map(|(r, w)| w * r * r)
+            .sum::<f64>()
+            / total_weight)
+            .sqrt();
+        Modelled {
+            model,
+            residuals,
+            residual_rms,
         }
     }
-    let design_comparison = match &input.design {
-        Some(d) => {
-            let means: Vec<(usize, f64)> = (0..TERMS.len())
-                .filter_map(|i| Some((i, design.means[i]?)))
-                .collect();
-            Some(super::checks::against_design(
-                d,
-                &means,
-                &coefficients,
-                &standard_errors,
-            )?)
+
+    /// Stability: the cleaned series at its own spacing, and the residuals
+    /// (the walk left in: it is the clock's) a bin; none when the input
+    /// skips it.
+    fn stabilities(&self) -> Result<(Vec<StabilityRow>, Vec<StabilityRow>), Refusal> {
+        if self.input.skip_stability {
+            return Ok((Vec::new(), Vec::new()));
         }
-        None => None,
-    };
-
-    // The model a bin, the walk included; the residuals with it out.
-    let model: Vec<f64> = (0..m)
-        .map(|i| bins.rate[i] - fitted.residuals[i] + walk[i])
-        .collect();
-    let residuals: Vec<f64> = (0..m).map(|i| bins.rate[i] - model[i]).collect();
-    let total_weight: f64 = bins.weight.iter().sum();
-    let residual_rms = (residuals
-        .iter()
-        .zip(&bins.weight)
-        .map(|(r, w)| w * r * r)
-        .sum::<f64>()
-        / total_weight)
-        .sqrt();
-
-    // Stability: the cleaned series at its own spacing, the residuals
-    // (the walk left in: it is the clock's) a bin.
-    let (raw_stability, residual_stability) = if input.skip_stability {
-        (Vec::new(), Vec::new())
-    } else {
+        let (p, series) = (self.prepared, self.series);
         let mut raw_series = series.raw.clone();
         let mut raw_times = p.times.clone();
         if series.raw.len() != raw_times.len() {
@@ -782,8 +899,8 @@ fn assemble(a: Assembly) -> Result<LogResult, Refusal> {
             outliers: Outliers::Keep,
         })?
         .rows;
-        let fraction: Vec<f64> = fitted.residuals.iter().map(|r| r / DAY).collect();
-        let residual = crate::stability::grid(&bins.centre, &fraction, Some(p.bin))?;
+        let fraction: Vec<f64> = self.fitted.residuals.iter().map(|r| r / DAY).collect();
+        let residual = crate::stability::grid(&series.bins.centre, &fraction, Some(p.bin))?;
         let residual_stability = stability(&StabilityInput {
             data: residual.data,
             kind: DataKind::Frequency,
@@ -794,142 +911,117 @@ fn assemble(a: Assembly) -> Result<LogResult, Refusal> {
         })
         .map(|s| s.rows)
         .unwrap_or_default();
-        (raw_stability, residual_stability)
-    };
+        Ok((raw_stability, residual_stability))
+    }
 
-    // Periodic errors of what the weather, drift and steps leave.
-    if let (Some(train), Some(h)) = (&input.train, series.half) {
-        if let Some(train_bph) = train.beats_per_hour() {
-            let log_bph = 3600.0 / h;
-            if (train_bph / log_bph - 1.0).abs() > 0.01 {
-                warnings.push(LogWarning::TrainBeat { train_bph, log_bph });
+    /// Periodic errors of what the weather, drift and steps leave (every
+    /// column of the design `x` but the constant and the tide), with a
+    /// warning when the train's beat and the log's differ by over 1%.
+    fn periodic_errors(
+        &self,
+        x: &[Vec<f64>],
+        warnings: &mut Vec<LogWarning>,
+    ) -> Result<PeriodicFound, Refusal> {
+        let (p, series) = (self.prepared, self.series);
+        if let (Some(train), Some(h)) = (&self.input.train, series.half) {
+            if let Some(train_bph) = train.beats_per_hour() {
+                let log_bph = 3600.0 / h;
+                if (train_bph / log_bph - 1.0).abs() > 0.01 {
+                    warnings.push(LogWarning::TrainBeat { train_bph, log_bph });
+                }
             }
         }
+        let tide_slot = TERMS.iter().position(|t| t.source == Source::Tide);
+        let not_tidal: Vec<f64> = (0..series.bins.rate.len())
+            .map(|i| {
+                x.iter()
+                    .zip(&self.fitted.beta)
+                    .enumerate()
+                    .filter(|(k, _)| {
+                        *k > 0 && Some(self.names[*k].as_str()) != tide_slot.map(|s| TERMS[s].name)
+                    })
+                    .map(|(_, (c, b))| c[i] * b)
+                    .sum()
+            })
+            .collect();
+        periodic(&Periodic {
+            times: &p.times,
+            raw: &series.raw,
+            kind: series.raw_kind,
+            half: (p.kind == LogKind::HalfPeriods)
+                .then_some(series.half)
+                .flatten(),
+            dt: p.dt,
+            arbors: &p.arbors,
+            swing: series.swing.clone(),
+            model: (&series.bins.centre, &not_tidal),
+        })
     }
-    let tide_slot = TERMS.iter().position(|t| t.source == Source::Tide);
-    let x = design.matrix(choice, m);
-    let not_tidal: Vec<f64> = (0..m)
-        .map(|i| {
-            x.iter()
-                .zip(&fitted.beta)
-                .enumerate()
-                .filter(|(k, _)| {
-                    *k > 0 && Some(names[*k].as_str()) != tide_slot.map(|s| TERMS[s].name)
+
+    /// The weather a bin and each weather term's partial residuals (the
+    /// residuals with the term's own part put back, against its variable),
+    /// for plots.
+    fn partials(&self, values: &[Option<f64>], residuals: &[f64]) -> (WeatherPerBin, Vec<Partial>) {
+        let (p, design, bins) = (self.prepared, self.design, &self.series.bins);
+        let m = bins.rate.len();
+        let mut weather_per_bin = Vec::new();
+        for (i, t) in TERMS.iter().enumerate() {
+            if let (Some(c), true) = (t.column, design.columns[i].is_some()) {
+                if let Some(v) = p.column(c.name) {
+                    weather_per_bin.push((
+                        t,
+                        bins.average(&interval_means(&p.times, &scaled(v, i), None)),
+                    ));
+                }
+            }
+        }
+        let partials = TERMS
+            .iter()
+            .enumerate()
+            .filter(|(_, t)| t.source != Source::Time)
+            .filter_map(|(i, t)| {
+                let beta = values[i]?;
+                let column = design.columns[i].as_ref()?;
+                let offset = design.means[i].unwrap_or(0.0);
+                let raw_weather = weather_per_bin
+                    .iter()
+                    .find(|(w, _)| w.name == t.name)
+                    .map(|w| &w.1);
+                let present = |k: usize| raw_weather.is_none_or(|w| w[k].is_finite());
+                let (mut xs, mut ys) = (Vec::new(), Vec::new());
+                for k in (0..m).filter(|&k| present(k)) {
+                    xs.push(column[k] + offset);
+                    ys.push(residuals[k] + beta * column[k] + self.rate.0);
+                }
+                let mean_x = mean(&xs);
+                Some(Partial {
+                    term: t,
+                    slope: beta,
+                    at_mean: self.rate.0 + beta * (mean_x - offset),
+                    mean: mean_x,
+                    x: xs,
+                    y: ys,
                 })
-                .map(|(_, (c, b))| c[i] * b)
-                .sum()
-        })
-        .collect();
-    let found = periodic(&Periodic {
-        times: &p.times,
-        raw: &series.raw,
-        kind: series.raw_kind,
-        half: (p.kind == LogKind::HalfPeriods)
-            .then_some(series.half)
-            .flatten(),
-        dt: p.dt,
-        arbors: &p.arbors,
-        swing: series.swing.clone(),
-        model: (&bins.centre, &not_tidal),
-    })?;
-
-    // The weather a bin and each term's partial residuals, for plots.
-    let mut weather_per_bin = Vec::new();
-    for (i, t) in TERMS.iter().enumerate() {
-        if let (Some(c), true) = (t.column, design.columns[i].is_some()) {
-            if let Some(v) = p.column(c.name) {
-                weather_per_bin.push((
-                    t,
-                    bins.average(&interval_means(&p.times, &scaled(v, i), None)),
-                ));
-            }
-        }
+            })
+            .collect();
+        (weather_per_bin, partials)
     }
-    let partials = TERMS
-        .iter()
-        .enumerate()
-        .filter(|(_, t)| t.source != Source::Time)
-        .filter_map(|(i, t)| {
-            let beta = values[i]?;
-            let column = design.columns[i].as_ref()?;
-            let offset = design.means[i].unwrap_or(0.0);
-            let raw_weather = weather_per_bin
-                .iter()
-                .find(|(w, _)| w.name == t.name)
-                .map(|w| &w.1);
-            let present = |k: usize| raw_weather.is_none_or(|w| w[k].is_finite());
-            let (mut xs, mut ys) = (Vec::new(), Vec::new());
-            for k in (0..m).filter(|&k| present(k)) {
-                xs.push(column[k] + offset);
-                ys.push(residuals[k] + beta * column[k] + rate.0);
-            }
-            let mean_x = mean(&xs);
-            Some(Partial {
-                term: t,
-                slope: beta,
-                at_mean: rate.0 + beta * (mean_x - offset),
-                mean: mean_x,
-                x: xs,
-                y: ys,
-            })
-        })
-        .collect();
-    let per_bin = (0..m)
-        .map(|i| [bins.centre[i], bins.rate[i], model[i], residuals[i]])
-        .collect();
-    // The model at the last bin less every weather term (and the lags'
-    // starts): the rate now, at the mean weather.
-    let drift = TERMS.iter().position(|t| t.source == Source::Time);
-    let end_rate = model[m - 1]
-        - x.iter()
-            .zip(&fitted.beta)
-            .zip(&names)
-            .filter(|(_, n)| {
-                n.as_str() != "rate"
-                    && Some(n.as_str()) != drift.map(|d| TERMS[d].name)
-                    && !n.starts_with("step_")
-            })
-            .map(|((c, b), _)| c[m - 1] * b)
-            .sum::<f64>();
-    Ok(LogResult {
-        kind: p.kind,
-        epoch_unix_s: input.epoch_unix_s,
-        samples: input.time_s.len(),
-        span_s: p.span,
-        bin_s: p.bin,
-        bins: m,
-        rate_s_per_day: rate.0,
-        rate_standard_error_s_per_day: rate.1,
-        reference_time_s: design.t_ref,
-        rate_at_end_s_per_day: end_rate,
-        drift_s_per_day_per_day: drift.and_then(|i| values[i]),
-        drift_standard_error_s_per_day_per_day: drift.and_then(|i| errors[i]),
-        coefficients,
-        standard_errors,
-        parameters: names,
-        correlations,
-        temperature_lag_s: lag.map(|l| l.1.tau),
-        temperature_lag_range_s: lag.map(|l| l.1.range),
-        reference_weather,
-        terms,
-        white_noise_s_per_day: fitted.sigma2.sqrt(),
-        random_walk_s_per_day_per_day: (fitted.lambda * fitted.sigma2 * DAY / p.bin).sqrt(),
-        residual_rms_s_per_day: residual_rms,
-        stability: raw_stability,
-        residual_stability,
-        design: design_comparison,
-        wraps: series.wraps.clone(),
-        accidents: series.accidents.clone(),
-        warnings,
-        spectrum: found.spectrum,
-        arbors: p.arbors.clone(),
-        folds: found.folds,
-        swing: found.swing,
-        beat_error_s: found.beat_error_s,
-        beat_s: None,
-        advice: Vec::new(),
-        per_bin,
-        partials,
-        weather_per_bin,
-    })
+
+    /// The model at the last bin (`last_model`) less every weather term
+    /// (and the lags' starts): the rate now, at the mean weather, s/day.
+    fn end_rate(&self, x: &[Vec<f64>], last_model: f64) -> f64 {
+        let m = self.series.bins.rate.len();
+        let drift = TERMS.iter().position(|t| t.source == Source::Time);
+        last_model
+            - x.iter()
+                .zip(&self.fitted.beta)
+                .zip(&self.names)
+                .filter(|(_, n)| {
+                    n.as_str() != "rate"
+                        && Some(n.as_str()) != drift.map(|d| TERMS[d].name)
+                        && !n.starts_with("step_")
+                })
+                .map(|((c, b), _)| c[m - 1] * b)
+                .sum::<f64>()
+    }
 }

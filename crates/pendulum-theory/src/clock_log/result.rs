@@ -6,11 +6,13 @@ use super::swing::Swing;
 use super::terms::{ModelTerm, TERMS};
 use super::wheels::{Arbor, Fold, TrainInput};
 use crate::compound::description::Design;
+use crate::error::format_significant;
 use crate::period::Nominal;
 use crate::stability::{Accident, StabilityRow};
 use crate::tide::Station;
 use serde::ser::SerializeMap;
 use serde::{Serialize, Serializer};
+use std::fmt;
 
 /// What a log's values are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -241,7 +243,7 @@ impl Serialize for ReferenceWeather {
 
 /// What a reader of the result must know.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
+#[serde(remote = "Self", tag = "code", rename_all = "snake_case")]
 pub enum LogWarning {
     /// Whole-beat jumps of the offsets were undone.
     WrapsUndone {
@@ -257,6 +259,10 @@ pub enum LogWarning {
         first_time_s: f64,
         /// The largest, s.
         largest_s: f64,
+        /// The Unix time of the log's time 0, when known, s (its time is
+        /// then written as a date).
+        #[serde(skip)]
+        epoch_unix_s: Option<f64>,
     },
     /// Offsets read wrong and then right again (a missed pulse) were
     /// left out.
@@ -269,6 +275,9 @@ pub enum LogWarning {
         first_time_s: f64,
         /// The largest, s.
         largest_s: f64,
+        /// The Unix time of the log's time 0, when known, s.
+        #[serde(skip)]
+        epoch_unix_s: Option<f64>,
     },
     /// Rates far out of line with their neighbours were left out.
     RatesLeftOut {
@@ -278,6 +287,9 @@ pub enum LogWarning {
         first_time_s: f64,
         /// The largest departure, s/day.
         largest_s_per_day: f64,
+        /// The Unix time of the log's time 0, when known, s.
+        #[serde(skip)]
+        epoch_unix_s: Option<f64>,
     },
     /// A coefficient no pendulum has: the units or the columns are
     /// likely wrong.
@@ -349,6 +361,223 @@ pub enum LogWarning {
         /// Beats an hour of the log.
         log_bph: f64,
     },
+}
+
+impl LogWarning {
+    /// Dates the warning's times from the log's time 0 at `epoch` (Unix
+    /// s), when the log has dates.
+    pub fn date(&mut self, epoch: Option<f64>) {
+        match self {
+            LogWarning::JumpsUndone { epoch_unix_s, .. }
+            | LogWarning::GlitchesLeftOut { epoch_unix_s, .. }
+            | LogWarning::RatesLeftOut { epoch_unix_s, .. } => *epoch_unix_s = epoch,
+            _ => {}
+        }
+    }
+}
+
+/// A log's time `t` (s from its time 0) in words: a UTC date when the
+/// log has dates (`epoch`, Unix s), else seconds.
+fn log_time(t: f64, epoch: Option<f64>) -> String {
+    match epoch {
+        Some(e) => iso_utc(e + t),
+        None => format!("{} s", format_significant(t, 10)),
+    }
+}
+
+/// Unix time `t` (s) as an ISO 8601 UTC date and time, to the
+/// millisecond when it has one (`2026-03-01T12:00:00Z`,
+/// `…T12:00:00.250Z`): the proleptic Gregorian calendar from the day
+/// count (H. Hinnant's `civil_from_days`, exact over ±10⁵ years).
+pub fn iso_utc(t: f64) -> String {
+    let ms = (t * 1e3).round();
+    if !ms.is_finite() || ms.abs() > 3e15 {
+        return format!("{t}");
+    }
+    let ms = ms as i64;
+    let (days, in_day) = (ms.div_euclid(86_400_000), ms.rem_euclid(86_400_000));
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    let (h, m, s, milli) = (
+        in_day / 3_600_000,
+        in_day / 60_000 % 60,
+        in_day / 1000 % 60,
+        in_day % 1000,
+    );
+    if milli == 0 {
+        format!("{year:04}-{month:02}-{day:02}T{h:02}:{m:02}:{s:02}Z")
+    } else {
+        format!("{year:04}-{month:02}-{day:02}T{h:02}:{m:02}:{s:02}.{milli:03}Z")
+    }
+}
+
+impl fmt::Display for LogWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let num = format_significant;
+        match self {
+            LogWarning::JumpsUndone {
+                count,
+                first_time_s,
+                largest_s,
+                epoch_unix_s,
+            } => write!(
+                f,
+                "rate: {count} jumps of the offset taken out (the first at {}, the largest {} s): \
+                 the clock set or stopped, or the reference changed; the rate is read across \
+                 them, and a stop's lost time is not in it",
+                log_time(*first_time_s, *epoch_unix_s),
+                num(*largest_s, 4)
+            ),
+            LogWarning::GlitchesLeftOut {
+                count,
+                samples,
+                first_time_s,
+                largest_s,
+                epoch_unix_s,
+            } => write!(
+                f,
+                "rate and stability: {count} glitches left out ({samples} offsets read wrong and \
+                 then right, the first at {}, the largest {} s off: a missed pulse?)",
+                log_time(*first_time_s, *epoch_unix_s),
+                num(*largest_s, 4)
+            ),
+            LogWarning::RatesLeftOut {
+                count,
+                first_time_s,
+                largest_s_per_day,
+                epoch_unix_s,
+            } => write!(
+                f,
+                "rate: {count} rates far out of line with their neighbours left out (the first \
+                 at {}, the largest {} s/day off)",
+                log_time(*first_time_s, *epoch_unix_s),
+                num(*largest_s_per_day, 4)
+            ),
+            LogWarning::LagAtLimit { lag_s } => write!(
+                f,
+                "temperature: its lag, {} h, is the longest this log can tell: the lag may be \
+                 longer, and the temperature coefficient larger with it",
+                num(lag_s / 3600.0, 3)
+            ),
+            LogWarning::ErrorsWidened {
+                factor,
+                autocorrelation,
+            } => write!(
+                f,
+                "every standard error (the rate's and the coefficients') widened {}×: the \
+                 residuals are correlated beyond the noise model (lag-1 autocorrelation {})",
+                num(*factor, 3),
+                num(*autocorrelation, 2)
+            ),
+            LogWarning::WrapsUndone { count } => write!(
+                f,
+                "rate: {count} whole-beat jumps of the offset undone (the reference slipped a \
+                 tick); the rate is read across them"
+            ),
+            LogWarning::Implausible { term, reason } => write!(f, "{term}: {reason}"),
+            LogWarning::TideAdmittance {
+                admittance,
+                from_one_se,
+            } => write!(
+                f,
+                "tide: the admittance {} is {} standard errors from 1: something else shares \
+                 the tide's periods (a daily temperature cycle?), or the times are not UTC",
+                num(*admittance, 3),
+                num(*from_one_se, 2)
+            ),
+            LogWarning::Short { what } => write!(f, "{what}: the log is too short to tell it"),
+            LogWarning::TimesRepeated {
+                dropped,
+                first_time_s,
+            } => write!(
+                f,
+                "{dropped} samples whose time did not advance left out (the first at {} s): a \
+                 logger's repeated stamp, or files joined with an overlap",
+                num(*first_time_s, 10)
+            ),
+            LogWarning::BeatsMissed { left_out } => write!(
+                f,
+                "{left_out} half periods under half or over 1.5 times the typical one left out \
+                 (a transit the gate missed, a stray trigger): the beats they span count as a \
+                 gap"
+            ),
+            LogWarning::EventIgnored { time_s, reason } => write!(
+                f,
+                "the event at {} s of the log is left out: {reason}",
+                num(*time_s, 10)
+            ),
+            LogWarning::PulsesIgnored => f.write_str(
+                "the pulse widths are left aside: give --flag-width and --gate-radius to read \
+                 the swing's amplitude, Q and steadiness from them",
+            ),
+            LogWarning::TrainBeat { train_bph, log_bph } => write!(
+                f,
+                "the train gives {} beats an hour, the log {}: check --train and \
+                 --arbor-turns-per-hour",
+                num(*train_bph, 6),
+                num(*log_bph, 6)
+            ),
+            LogWarning::RateAgainstMean => f.write_str(
+                "no standard beat within 2% of the half periods: the rate is against their \
+                 mean; give --bph or --period",
+            ),
+        }
+    }
+}
+
+impl crate::warning::Warn for LogWarning {
+    fn code(&self) -> &'static str {
+        match self {
+            LogWarning::WrapsUndone { .. } => "wraps_undone",
+            LogWarning::JumpsUndone { .. } => "jumps_undone",
+            LogWarning::GlitchesLeftOut { .. } => "glitches_left_out",
+            LogWarning::RatesLeftOut { .. } => "rates_left_out",
+            LogWarning::Implausible { .. } => "implausible",
+            LogWarning::TideAdmittance { .. } => "tide_admittance",
+            LogWarning::Short { .. } => "short",
+            LogWarning::LagAtLimit { .. } => "lag_at_limit",
+            LogWarning::ErrorsWidened { .. } => "errors_widened",
+            LogWarning::TimesRepeated { .. } => "times_repeated",
+            LogWarning::RateAgainstMean => "rate_against_mean",
+            LogWarning::BeatsMissed { .. } => "beats_missed",
+            LogWarning::EventIgnored { .. } => "event_ignored",
+            LogWarning::PulsesIgnored => "pulses_ignored",
+            LogWarning::TrainBeat { .. } => "train_beat",
+        }
+    }
+
+    fn figure(&self) -> Option<&'static str> {
+        match self {
+            LogWarning::WrapsUndone { .. }
+            | LogWarning::JumpsUndone { .. }
+            | LogWarning::GlitchesLeftOut { .. }
+            | LogWarning::RatesLeftOut { .. }
+            | LogWarning::RateAgainstMean => Some("rate_s_per_day"),
+            LogWarning::Implausible { term, .. } => Some(term),
+            LogWarning::TideAdmittance { .. } => Some("tide"),
+            LogWarning::Short { .. } => None,
+            LogWarning::LagAtLimit { .. } => Some("temperature_lag_s"),
+            LogWarning::ErrorsWidened { .. } => Some("rate_standard_error_s_per_day"),
+            LogWarning::TimesRepeated { .. } | LogWarning::BeatsMissed { .. } => Some("samples"),
+            LogWarning::EventIgnored { .. } => Some("steps_s_per_day"),
+            LogWarning::PulsesIgnored => Some("swing"),
+            LogWarning::TrainBeat { .. } => Some("arbors"),
+        }
+    }
+}
+
+impl Serialize for LogWarning {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let fields = LogWarning::serialize(self, serde_json::value::Serializer);
+        crate::warning::serialize_with_fields(self, fields, s)
+    }
 }
 
 /// The analysis of a log.
@@ -518,5 +747,21 @@ impl LogResult {
             known: known.clone(),
         })?;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::iso_utc;
+
+    #[test]
+    fn unix_times_are_written_as_utc_dates() {
+        // Known instants: the epoch, a leap day, a billennium, before 1970.
+        assert_eq!(iso_utc(0.0), "1970-01-01T00:00:00Z");
+        assert_eq!(iso_utc(951_782_400.0), "2000-02-29T00:00:00Z");
+        assert_eq!(iso_utc(1_700_000_000.0), "2023-11-14T22:13:20Z");
+        assert_eq!(iso_utc(-1.0), "1969-12-31T23:59:59Z");
+        assert_eq!(iso_utc(1_700_000_000.25), "2023-11-14T22:13:20.250Z");
+        assert_eq!(iso_utc(4_107_542_400.0), "2100-03-01T00:00:00Z");
     }
 }

@@ -140,11 +140,16 @@ pub enum CompensationWarning {
     },
 }
 
-impl CompensationWarning {
-    /// A stable code for programs.
-    pub fn code(&self) -> &'static str {
+impl crate::warning::Warn for CompensationWarning {
+    fn code(&self) -> &'static str {
         match self {
             CompensationWarning::PeriodNotKept { .. } => "period_not_kept",
+        }
+    }
+
+    fn figure(&self) -> Option<&'static str> {
+        match self {
+            CompensationWarning::PeriodNotKept { .. } => Some("period_s"),
         }
     }
 }
@@ -160,15 +165,7 @@ impl std::fmt::Display for CompensationWarning {
     }
 }
 
-impl Serialize for CompensationWarning {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
-        let mut m = s.serialize_map(Some(2))?;
-        m.serialize_entry("code", self.code())?;
-        m.serialize_entry("message", &self.to_string())?;
-        m.end()
-    }
-}
+crate::warning::serialize_as_warning!(CompensationWarning);
 
 /// The index of the part `name`.
 fn part_index(design: &CompoundPendulum, name: &str) -> Result<usize, Refusal> {
@@ -360,8 +357,48 @@ fn sized(
     result: &mut Compensation,
 ) -> Result<Option<CompoundPendulum>, Refusal> {
     let kind = input.compensator.as_deref().map(str::to_ascii_lowercase);
-    // A tube lifts the bob as it warms: it can only cancel a loss.
-    let lifting = |what: &str| -> Option<Refusal> {
+    let sizing = Sizing {
+        design,
+        input,
+        part,
+        before,
+    };
+    let compensated = match kind.as_deref() {
+        None => None,
+        Some("gridiron") => Some(sizing.gridiron(result)?),
+        Some("mercury") | Some("mercury jar") | Some("jar") => Some(sizing.mercury_jar(result)?),
+        Some(name)
+            if tube_pair(name).is_some_and(|(a, b)| {
+                Material::named(a).is_some() && Material::named(b).is_some()
+            }) =>
+        {
+            Some(sizing.tube_in_tube(name, result)?)
+        }
+        Some(name) => Some(sizing.tube(name, result)?),
+    };
+    Ok(compensated)
+}
+
+/// What sizing a compensator for a design takes: the design, the sizes
+/// asked for, the part the compensator goes under or replaces, and the
+/// design's temperature coefficient before it, s/day per °C.
+struct Sizing<'a> {
+    /// The design to compensate.
+    design: &'a CompoundPendulum,
+    /// The compensator asked for and its sizes.
+    input: &'a CompensateInput,
+    /// The part a tube goes under or a jar replaces.
+    part: &'a str,
+    /// The design's coefficient, s/day per °C.
+    before: f64,
+}
+
+impl Sizing<'_> {
+    /// The refusal of a tube (`what`: "a tube") when the design is already
+    /// compensated or already gains as it warms: a tube lifts the bob as
+    /// it warms, so it can only cancel a loss. `None` when it can.
+    fn lifting(&self, what: &str) -> Option<Refusal> {
+        let before = self.before;
         if before.abs() < 1e-6 {
             return Some(Refusal::field(
                 "compensator",
@@ -377,228 +414,258 @@ fn sized(
                 format!(
                     "the design already gains as it warms ({} s/day per °C): {what} lifting the {} would add to it; support the bob nearer its centre, or use a rod that expands more",
                     format_significant(before, 3),
-                    part
+                    self.part
                 ),
             )
         })
-    };
-    let compensated = match kind.as_deref() {
-        None => None,
-        Some("gridiron") => {
-            let (steel, brass) = (
-                Material::named("steel")
-                    .ok_or_else(|| Refusal::data("steel is not in the table"))?,
-                Material::named("brass")
-                    .ok_or_else(|| Refusal::data("brass is not in the table"))?,
-            );
-            let (compensated, brass_length) =
-                design.with_gridiron(&steel, &brass).ok_or_else(|| {
-                    Refusal::field(
-                        "compensator",
-                        "no steel and brass gridiron of this rod's drop cancels the coefficient (the design needs a rod hanging from the pivot)",
-                    )
-                })?;
-            result.compensator = Some("gridiron".into());
-            result.brass_length_m = Some(brass_length);
-            Some(compensated)
-        }
-        Some("mercury") | Some("mercury jar") | Some("jar") => {
-            let bob = part_index(design, part)?;
-            let jar = table_material(
-                "jar_material",
-                input
-                    .jar_material
-                    .as_deref()
-                    .unwrap_or(DEFAULT_JAR_MATERIAL),
-            )?;
-            if jar.liquid {
-                return Err(Refusal::field("jar_material", "a jar must be a solid"));
-            }
-            let diameter = match input.jar_diameter {
-                Some(d) => positive_length("jar_diameter", d)?,
-                None => match design.parts()[bob].shape {
-                    Shape::Cylinder { diameter, .. } => diameter,
-                    _ => DEFAULT_JAR_DIAMETER_M,
-                },
-            };
-            let wall = positive_length("jar_wall", input.jar_wall.unwrap_or(DEFAULT_JAR_WALL_M))?;
-            let (compensated, height) = design
-                .with_mercury_jar(bob, &jar, diameter, wall)
-                .ok_or_else(|| {
-                    Refusal::field(
-                        "compensator",
-                        format!(
-                            "no mercury up to 0.5 m deep in a {} mm {} jar cancels this design's coefficient (the '{}' must rest on a nut or stirrup, and the jar be wider than its walls and the rod)",
-                            format_significant(diameter * 1e3, 4),
-                            jar.name,
-                            part
-                        ),
-                    )
-                })?;
-            let mercury = compensated
-                .parts()
-                .iter()
-                .find(|p| p.material.liquid)
-                .map(|p| p.mass());
-            result.compensator = Some("mercury jar".into());
-            result.mercury_height_m = Some(height);
-            result.mercury_mass_kg = mercury;
-            result.jar_material = Some(jar.name.clone());
-            result.jar_diameter_m = Some(diameter);
-            result.jar_wall_m = Some(wall);
-            Some(compensated)
-        }
-        Some(name)
-            if tube_pair(name).is_some_and(|(a, b)| {
-                Material::named(a).is_some() && Material::named(b).is_some()
-            }) =>
-        {
-            let (inner_name, outer_name) = tube_pair(name).unwrap_or_default();
-            let inner = table_material("compensator", inner_name)?;
-            let outer = table_material("compensator", outer_name)?;
-            for (field, given) in [
-                ("tube_diameter", input.tube_diameter),
-                ("tube_bore", input.tube_bore),
-            ] {
-                if given.is_some() {
-                    return Err(Refusal::field(
-                        field,
-                        "is for a single tube: a tube inside a tube is sized from the rod (each \
-                         bore 1 mm over what it surrounds, walls of 1.5 mm)",
-                    ));
-                }
-            }
-            if let Some(e) = lifting("a tube inside a tube") {
-                return Err(e);
-            }
-            if inner.liquid || outer.liquid {
-                return Err(Refusal::field(
+    }
+
+    /// The design with a steel and brass gridiron in place of its rod,
+    /// the brass in its series, m, set in `result`.
+    fn gridiron(&self, result: &mut Compensation) -> Result<CompoundPendulum, Refusal> {
+        let (steel, brass) = (
+            Material::named("steel").ok_or_else(|| Refusal::data("steel is not in the table"))?,
+            Material::named("brass").ok_or_else(|| Refusal::data("brass is not in the table"))?,
+        );
+        let (compensated, brass_length) =
+            self.design.with_gridiron(&steel, &brass).ok_or_else(|| {
+                Refusal::field(
                     "compensator",
-                    "a liquid goes in a jar: give --compensator mercury",
-                ));
-            }
-            let bob = part_index(design, part)?;
-            let rod_diameter = rod_diameter(design)?;
-            let (compensated, length) = design
-                .with_tube_in_tube(bob, inner.clone(), outer.clone(), rod_diameter, TUBE_WALL_M)
-                .map_err(|why| {
-                    no_tube(
-                        why,
-                        &format!("{} tube inside a {} tube", inner.name, outer.name),
-                        part,
-                        "the inner tube must expand more than the outer and the rod together",
-                    )
-                })?;
-            let tube = |name: &str| {
-                compensated
-                    .parts()
-                    .iter()
-                    .find(|p| p.name == name)
-                    .map(|p| p.shape)
-            };
-            if let Some(Shape::Cylinder { diameter, bore, .. }) = tube("outer tube") {
-                result.tube_diameter_m = Some(diameter);
-                result.tube_bore_m = Some(bore);
-            }
-            result.compensator = Some(format!("{} in {}", inner.name, outer.name));
-            result.inner_tube_material = Some(inner.name.clone());
-            result.outer_tube_material = Some(outer.name.clone());
-            result.tube_length_m = Some(length);
-            Some(compensated)
+                    "no steel and brass gridiron of this rod's drop cancels the coefficient (the design needs a rod hanging from the pivot)",
+                )
+            })?;
+        result.compensator = Some("gridiron".into());
+        result.brass_length_m = Some(brass_length);
+        Ok(compensated)
+    }
+
+    /// The design with a jar of mercury in place of the part: the
+    /// mercury's height, m, and mass, kg, and the jar's material, diameter
+    /// and wall, m, set in `result`.
+    fn mercury_jar(&self, result: &mut Compensation) -> Result<CompoundPendulum, Refusal> {
+        let (design, input, part) = (self.design, self.input, self.part);
+        let bob = part_index(design, part)?;
+        let jar = table_material(
+            "jar_material",
+            input
+                .jar_material
+                .as_deref()
+                .unwrap_or(DEFAULT_JAR_MATERIAL),
+        )?;
+        if jar.liquid {
+            return Err(Refusal::field("jar_material", "a jar must be a solid"));
         }
-        Some(name) => {
-            // "zinc-" or "in steel": a pair with a side missing, not zinc.
-            let trimmed = name.trim();
-            if trimmed.starts_with('-')
-                || trimmed.ends_with('-')
-                || trimmed.starts_with("in ")
-                || trimmed.ends_with(" in")
-            {
-                return Err(Refusal::field(
-                    "compensator",
-                    format!(
-                        "'{name}' names one tube of a pair: give both, inner-outer (zinc-steel) \
-                         or inner in outer"
-                    ),
-                ));
-            }
-            let material = table_material(
-                "compensator",
-                if name == "collar" { "brass" } else { name },
-            )
-            .map_err(|_| {
+        let diameter = match input.jar_diameter {
+            Some(d) => positive_length("jar_diameter", d)?,
+            None => match design.parts()[bob].shape {
+                Shape::Cylinder { diameter, .. } => diameter,
+                _ => DEFAULT_JAR_DIAMETER_M,
+            },
+        };
+        let wall = positive_length("jar_wall", input.jar_wall.unwrap_or(DEFAULT_JAR_WALL_M))?;
+        let (compensated, height) = design
+            .with_mercury_jar(bob, &jar, diameter, wall)
+            .ok_or_else(|| {
                 Refusal::field(
                     "compensator",
                     format!(
-                        "'{name}' is neither gridiron, mercury, collar, a tube in a tube (zinc-steel) nor a material of the table ({})",
-                        Material::names().join(", ")
+                        "no mercury up to 0.5 m deep in a {} mm {} jar cancels this design's coefficient (the '{}' must rest on a nut or stirrup, and the jar be wider than its walls and the rod)",
+                        format_significant(diameter * 1e3, 4),
+                        jar.name,
+                        part
                     ),
                 )
             })?;
-            if material.liquid {
-                return Err(Refusal::field(
-                    "compensator",
-                    "a liquid goes in a jar: give --compensator mercury",
-                ));
-            }
-            let bob = part_index(design, part)?;
-            if let Some(e) = lifting("a tube") {
-                return Err(e);
-            }
-            let rod_diameter = rod_diameter(design)?;
-            let bore = positive_length(
-                "tube_bore",
-                input.tube_bore.unwrap_or(rod_diameter + TUBE_CLEARANCE_M),
-            )?;
-            if bore <= rod_diameter {
-                return Err(Refusal::field(
-                    "tube_bore",
-                    format!(
-                        "the tube's bore ({} mm) must clear the rod ({} mm across)",
-                        format_significant(bore * 1e3, 4),
-                        format_significant(rod_diameter * 1e3, 4)
-                    ),
-                ));
-            }
-            let diameter = positive_length(
-                "tube_diameter",
-                input.tube_diameter.unwrap_or(bore + 2.0 * TUBE_WALL_M),
-            )?;
-            if diameter <= bore {
-                // Said of the flag the user gave (the other is derived).
-                let field = if input.tube_diameter.is_some() {
-                    "tube_diameter"
-                } else {
-                    "tube_bore"
-                };
+        let mercury = compensated
+            .parts()
+            .iter()
+            .find(|p| p.material.liquid)
+            .map(|p| p.mass());
+        result.compensator = Some("mercury jar".into());
+        result.mercury_height_m = Some(height);
+        result.mercury_mass_kg = mercury;
+        result.jar_material = Some(jar.name.clone());
+        result.jar_diameter_m = Some(diameter);
+        result.jar_wall_m = Some(wall);
+        Ok(compensated)
+    }
+
+    /// The design with a tube inside a tube under the part, named `name`
+    /// (`zinc-steel`, `zinc in steel`), sized from the rod: the tubes'
+    /// materials, length, m, and the outer tube's diameter and bore, m,
+    /// set in `result`.
+    fn tube_in_tube(
+        &self,
+        name: &str,
+        result: &mut Compensation,
+    ) -> Result<CompoundPendulum, Refusal> {
+        let (design, input, part) = (self.design, self.input, self.part);
+        let (inner_name, outer_name) = tube_pair(name).unwrap_or_default();
+        let inner = table_material("compensator", inner_name)?;
+        let outer = table_material("compensator", outer_name)?;
+        for (field, given) in [
+            ("tube_diameter", input.tube_diameter),
+            ("tube_bore", input.tube_bore),
+        ] {
+            if given.is_some() {
                 return Err(Refusal::field(
                     field,
-                    format!(
-                        "the tube's bore ({} mm) must be less than its diameter ({} mm)",
-                        format_significant(bore * 1e3, 4),
-                        format_significant(diameter * 1e3, 4)
-                    ),
+                    "is for a single tube: a tube inside a tube is sized from the rod (each \
+                     bore 1 mm over what it surrounds, walls of 1.5 mm)",
                 ));
             }
-            let (compensated, length) = design
-                .with_compensating_tube(bob, material.clone(), diameter, bore)
-                .map_err(|why| {
-                    no_tube(
-                        why,
-                        &format!("{} tube", material.name),
-                        part,
-                        "the tube must expand more than the rod, by enough to lift the bob over \
-                         its length: zinc (30e-6/K) or a tube inside a tube",
-                    )
-                })?;
-            result.compensator = Some(material.name);
-            result.tube_length_m = Some(length);
+        }
+        if let Some(e) = self.lifting("a tube inside a tube") {
+            return Err(e);
+        }
+        if inner.liquid || outer.liquid {
+            return Err(Refusal::field(
+                "compensator",
+                "a liquid goes in a jar: give --compensator mercury",
+            ));
+        }
+        let bob = part_index(design, part)?;
+        let rod_diameter = rod_diameter(design)?;
+        let (compensated, length) = design
+            .with_tube_in_tube(bob, inner.clone(), outer.clone(), rod_diameter, TUBE_WALL_M)
+            .map_err(|why| {
+                no_tube(
+                    why,
+                    &format!("{} tube inside a {} tube", inner.name, outer.name),
+                    part,
+                    "the inner tube must expand more than the outer and the rod together",
+                )
+            })?;
+        let tube = |name: &str| {
+            compensated
+                .parts()
+                .iter()
+                .find(|p| p.name == name)
+                .map(|p| p.shape)
+        };
+        if let Some(Shape::Cylinder { diameter, bore, .. }) = tube("outer tube") {
             result.tube_diameter_m = Some(diameter);
             result.tube_bore_m = Some(bore);
-            Some(compensated)
         }
-    };
-    Ok(compensated)
+        result.compensator = Some(format!("{} in {}", inner.name, outer.name));
+        result.inner_tube_material = Some(inner.name.clone());
+        result.outer_tube_material = Some(outer.name.clone());
+        result.tube_length_m = Some(length);
+        Ok(compensated)
+    }
+
+    /// The material of a single tube named `name` (`collar`: brass);
+    /// refused when the name is one side of a pair, not in the table, or a
+    /// liquid.
+    fn tube_material(&self, name: &str) -> Result<Material, Refusal> {
+        // "zinc-" or "in steel": a pair with a side missing, not zinc.
+        let trimmed = name.trim();
+        if trimmed.starts_with('-')
+            || trimmed.ends_with('-')
+            || trimmed.starts_with("in ")
+            || trimmed.ends_with(" in")
+        {
+            return Err(Refusal::field(
+                "compensator",
+                format!(
+                    "'{name}' names one tube of a pair: give both, inner-outer (zinc-steel) \
+                     or inner in outer"
+                ),
+            ));
+        }
+        let material = table_material(
+            "compensator",
+            if name == "collar" { "brass" } else { name },
+        )
+        .map_err(|_| {
+            Refusal::field(
+                "compensator",
+                format!(
+                    "'{name}' is neither gridiron, mercury, collar, a tube in a tube (zinc-steel) nor a material of the table ({})",
+                    Material::names().join(", ")
+                ),
+            )
+        })?;
+        if material.liquid {
+            return Err(Refusal::field(
+                "compensator",
+                "a liquid goes in a jar: give --compensator mercury",
+            ));
+        }
+        Ok(material)
+    }
+
+    /// A single tube's bore and outer diameter, m, as given or by default
+    /// (1 mm over the rod of `rod_diameter`, m, and walls of 1.5 mm);
+    /// refused unless the bore clears the rod and the diameter the bore.
+    fn tube_size(&self, rod_diameter: f64) -> Result<(f64, f64), Refusal> {
+        let input = self.input;
+        let bore = positive_length(
+            "tube_bore",
+            input.tube_bore.unwrap_or(rod_diameter + TUBE_CLEARANCE_M),
+        )?;
+        if bore <= rod_diameter {
+            return Err(Refusal::field(
+                "tube_bore",
+                format!(
+                    "the tube's bore ({} mm) must clear the rod ({} mm across)",
+                    format_significant(bore * 1e3, 4),
+                    format_significant(rod_diameter * 1e3, 4)
+                ),
+            ));
+        }
+        let diameter = positive_length(
+            "tube_diameter",
+            input.tube_diameter.unwrap_or(bore + 2.0 * TUBE_WALL_M),
+        )?;
+        if diameter <= bore {
+            // Said of the flag the user gave (the other is derived).
+            let field = if input.tube_diameter.is_some() {
+                "tube_diameter"
+            } else {
+                "tube_bore"
+            };
+            return Err(Refusal::field(
+                field,
+                format!(
+                    "the tube's bore ({} mm) must be less than its diameter ({} mm)",
+                    format_significant(bore * 1e3, 4),
+                    format_significant(diameter * 1e3, 4)
+                ),
+            ));
+        }
+        Ok((bore, diameter))
+    }
+
+    /// The design with a single tube (or collar) of the material `name`
+    /// under the part: its material, length, diameter and bore, m, set in
+    /// `result`.
+    fn tube(&self, name: &str, result: &mut Compensation) -> Result<CompoundPendulum, Refusal> {
+        let material = self.tube_material(name)?;
+        let bob = part_index(self.design, self.part)?;
+        if let Some(e) = self.lifting("a tube") {
+            return Err(e);
+        }
+        let rod_diameter = rod_diameter(self.design)?;
+        let (bore, diameter) = self.tube_size(rod_diameter)?;
+        let (compensated, length) = self
+            .design
+            .with_compensating_tube(bob, material.clone(), diameter, bore)
+            .map_err(|why| {
+                no_tube(
+                    why,
+                    &format!("{} tube", material.name),
+                    self.part,
+                    "the tube must expand more than the rod, by enough to lift the bob over \
+                     its length: zinc (30e-6/K) or a tube inside a tube",
+                )
+            })?;
+        result.compensator = Some(material.name);
+        result.tube_length_m = Some(length);
+        result.tube_diameter_m = Some(diameter);
+        result.tube_bore_m = Some(bore);
+        Ok(compensated)
+    }
 }
 
 /// The refusal of a tube compensator (`what`: "zinc tube") under the part

@@ -21,11 +21,13 @@
 //! bisection.
 
 use super::description::Design;
-use super::rate_of_length_ratio;
+use super::gas::InGas;
+use super::{rate_of_length_ratio, CompoundPendulum};
 use crate::analysis::Refusal;
 use crate::error::format_significant;
 use crate::gas::{Gas, GasState};
 use crate::pendulum::{Pendulum, STANDARD_GRAVITY};
+use crate::warning::Warning;
 use serde::Serialize;
 
 /// The air a datasheet is for when none is given: standard pressure, Pa.
@@ -233,7 +235,7 @@ pub struct Datasheet {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub spring: Option<SpringSheet>,
     /// What to check before trusting the sheet.
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
     /// The gas as taken: pressure, Pa.
     pub pressure_pa: f64,
     /// Relative humidity, 0 to 1 (in the JSON `humidity_percent`, %; 0 in
@@ -351,6 +353,96 @@ pub const LOW_Q_SHIFT_S_PER_DAY: f64 = 0.1;
 /// `air`.
 pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet, Refusal> {
     let kind = air.gas.unwrap_or(Gas::Air);
+    let (gas, regulated_at) = checked_air(air)?;
+    let (p, t, h) = (gas.pressure_pa, gas.temperature_c, gas.humidity);
+    let g = crate::analysis::require_finite("g", g.unwrap_or(STANDARD_GRAVITY))?;
+    let pendulum = &design.pendulum.in_gravity(g);
+    let props = pendulum.properties();
+    let period = small_swing_period(props.equivalent_length, g)?;
+    let warmer = pendulum
+        .at_temperature(t - regulated_at)
+        .map_err(|e| Refusal::data(e.to_string()))?
+        .properties()
+        .equivalent_length;
+    let (in_gas, coefficient) = swinging_in(pendulum, &gas, g)?;
+    let rates = in_gas.rates;
+    let rho = gas.density();
+    let drive = KeptArc {
+        pendulum,
+        gas: &gas,
+        g,
+        here: &in_gas,
+        // The pivot's losses as a damping torque, the same at every pressure.
+        pivot: air
+            .pivot_q
+            .map_or(0.0, |qp| in_gas.inertia * in_gas.omega / qp),
+        share: pendulum.spring_effect().map_or(0.0, |e| e.elastic_share),
+    };
+    let cancelling = cancelling_arc(&|a| drive.net_per_hpa(a)).map(f64::to_degrees);
+    let q = crate::analysis::finite(drive.q(&in_gas, air.amplitude_rad));
+    let here = air
+        .amplitude_rad
+        .map(|a| (a, rates.total + drive.circular(a)));
+    let against_pressure = drive.pressure_table(here);
+    let damping_total = in_gas.damping;
+    let nut = nut_rates(design, pendulum);
+    Ok(Datasheet {
+        parts: part_rows(pendulum),
+        mass_kg: props.mass,
+        centre_of_mass_m: props.centre_of_mass,
+        inertia_kg_m2: props.inertia,
+        equivalent_length_m: props.equivalent_length,
+        period_s: period,
+        g_m_s2: g,
+        temperature_coefficient_s_per_day_per_c: pendulum.temperature_coefficient(),
+        temperature_rate_s_per_day: rate_of_length_ratio(warmer / props.equivalent_length),
+        gradient_coefficient_s_per_day_per_k_per_m: pendulum.gradient_coefficient(),
+        // Only air carries a humidity: a dry tank's gas has none to vary.
+        humidity_coefficient_s_per_day_per_percent: (kind == Gas::Air)
+            .then(|| pendulum.humidity_coefficient(h, t))
+            .flatten(),
+        wood_moisture_percent: takes_water(pendulum)
+            .then(|| crate::moisture::equilibrium_moisture_content(h, t)),
+        temperature_c: t,
+        regulated_at_c: regulated_at,
+        air_density_kg_m3: rho,
+        air_rate_s_per_day: rates.total,
+        air_buoyancy_rate_s_per_day: rates.buoyancy,
+        pressure_coefficient_s_per_day_per_hpa: coefficient,
+        gas: kind,
+        gas_viscosity_pa_s: gas.viscosity(),
+        mean_free_path_m: gas.mean_free_path(),
+        gas_damping_n_m_s: damping_total,
+        q_gas: crate::analysis::finite(in_gas.q),
+        q_pivot: air.pivot_q,
+        q,
+        gas_parts: gas_parts(pendulum, &in_gas),
+        semi_arc_deg: air.amplitude_rad.map(f64::to_degrees),
+        circular_pressure_coefficient_s_per_day_per_hpa: air
+            .amplitude_rad
+            .and_then(|a| crate::analysis::finite(drive.net_per_hpa(a) - coefficient)),
+        net_pressure_coefficient_s_per_day_per_hpa: air
+            .amplitude_rad
+            .and_then(|a| crate::analysis::finite(drive.net_per_hpa(a))),
+        cancelling_semi_arc_deg: cancelling,
+        against_pressure,
+        nut: nut.name,
+        nut_rate_s_per_day_per_mm: nut.per_mm,
+        nut_pitch_m: nut.pitch,
+        nut_rate_s_per_day_per_turn: nut.per_turn,
+        nut_rate_s_per_day_per_division: nut.per_division,
+        spring: spring_sheet(pendulum),
+        warnings: warnings(pendulum, props.equivalent_length, q, air.humidity),
+        pressure_pa: p,
+        humidity: h,
+    })
+}
+
+/// The gas `air` describes, its defaults filled in, and the temperature
+/// the clock was regulated at, °C; refused when a value is out of its
+/// range (the pivot's Q below 1, a semi-arc past 60°).
+fn checked_air(air: &Air) -> Result<(GasState, f64), Refusal> {
+    let kind = air.gas.unwrap_or(Gas::Air);
     let pressure = air.pressure_pa.unwrap_or(DEFAULT_PRESSURE_PA);
     // Room air pumped down keeps its composition: below the standard
     // pressure the default humidity falls with it.
@@ -365,7 +457,6 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
         air.temperature_c.unwrap_or(DEFAULT_TEMPERATURE_C),
         air.humidity.unwrap_or(humidity_default),
     )?;
-    let (p, t, h) = (gas.pressure_pa, gas.temperature_c, gas.humidity);
     let regulated_at = within(
         "regulated_at",
         air.regulated_at_c.unwrap_or(DEFAULT_TEMPERATURE_C),
@@ -392,22 +483,31 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
             ));
         }
     }
-    let g = crate::analysis::require_finite("g", g.unwrap_or(STANDARD_GRAVITY))?;
-    let pendulum = &design.pendulum.in_gravity(g);
-    let props = pendulum.properties();
-    let period = Pendulum::new(props.equivalent_length, g)
+    Ok((gas, regulated_at))
+}
+
+/// The period of small swings in a vacuum, s, of the simple pendulum of
+/// the equivalent length `length`, m, under `g`, m/s²; the refusal names
+/// `g` when gravity is at fault, else the design.
+fn small_swing_period(length: f64, g: f64) -> Result<f64, Refusal> {
+    Ok(Pendulum::new(length, g)
         .map_err(|e| match e.quantity {
             crate::error::Quantity::Gravity => Refusal::input("g", &e),
             _ => Refusal::input("design", &e),
         })?
-        .small_angle_period();
-    let warmer = pendulum
-        .at_temperature(t - regulated_at)
-        .map_err(|e| Refusal::data(e.to_string()))?
-        .properties()
-        .equivalent_length;
-    let in_gas = pendulum.in_gas(&gas, g);
-    let coefficient = pendulum.pressure_coefficient(&gas, g);
+        .small_angle_period())
+}
+
+/// `pendulum` in `gas` under `g`, m/s², and its barometric coefficient,
+/// s/day per hPa; refused when the gas floats it (a part no denser than
+/// the gas) or damps it below Q 1/2.
+fn swinging_in(
+    pendulum: &CompoundPendulum,
+    gas: &GasState,
+    g: f64,
+) -> Result<(InGas, f64), Refusal> {
+    let in_gas = pendulum.in_gas(gas, g);
+    let coefficient = pendulum.pressure_coefficient(gas, g);
     if !(in_gas.rates.total.is_finite() && coefficient.is_finite()) {
         return Err(Refusal::data(format!(
             "in {} at {} hPa the pendulum floats: the gas it displaces weighs as much as it \
@@ -424,84 +524,141 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
             if g < 1e-3 { "; check g" } else { "" }
         )));
     }
-    let rates = in_gas.rates;
-    let rho = gas.density();
-    // The pivot's losses as a damping torque, the same at every pressure.
-    let pivot = air
-        .pivot_q
-        .map_or(0.0, |qp| in_gas.inertia * in_gas.omega / qp);
-    // The rate of the circular error at semi-arc a (losing: negative).
-    // On a suspension spring the circular error shrinks by its elastic
-    // share ([`crate::suspension::period_ratio`]).
-    let share = pendulum.spring_effect().map_or(0.0, |e| e.elastic_share);
-    let circular = |a: f64| {
-        if share > 0.0 {
-            return DAY * (1.0 / crate::suspension::period_ratio(a, share) - 1.0);
+    Ok((in_gas, coefficient))
+}
+
+/// A clock whose drive keeps a semi-arc at the sheet's pressure: what the
+/// arc, the circular error and the rate at another pressure follow from.
+struct KeptArc<'a> {
+    /// The design, in the sheet's gravity.
+    pendulum: &'a CompoundPendulum,
+    /// The gas at the sheet's pressure.
+    gas: &'a GasState,
+    /// Gravity, m/s².
+    g: f64,
+    /// The design in that gas.
+    here: &'a InGas,
+    /// The pivot's losses as a damping torque, N m s (0 when none given).
+    pivot: f64,
+    /// A suspension spring's elastic share of the restoring torque (0
+    /// without one).
+    share: f64,
+}
+
+impl KeptArc<'_> {
+    /// The rate of the circular error at semi-arc `a`, rad, s/day (losing:
+    /// negative). On a suspension spring the circular error shrinks by its
+    /// elastic share ([`crate::suspension::period_ratio`]).
+    fn circular(&self, a: f64) -> f64 {
+        if self.share > 0.0 {
+            return DAY * (1.0 / crate::suspension::period_ratio(a, self.share) - 1.0);
         }
         crate::Amplitude::from_radians(a)
             .map_or(f64::NAN, |a| 0.0 - DAY * crate::period::circular_error(a))
-    };
-    // The rate (gas and circular error) at pressure `pp` of a clock whose
-    // drive keeps semi-arc `a` at the sheet's pressure; None past 60°.
-    let at = |pp: f64, a: f64| {
-        if pp == p {
+    }
+
+    /// The design in the gas at pressure `pp`, Pa, and the semi-arc, rad,
+    /// its drive keeps there when it keeps `a` at the sheet's pressure;
+    /// `None` past 60°.
+    fn at(&self, pp: f64, a: f64) -> (InGas, Option<f64>) {
+        if pp == self.gas.pressure_pa {
             // Here the arc is the one given (not a root found again).
-            return (in_gas.clone(), Some(a));
+            return (self.here.clone(), Some(a));
         }
-        let there = pendulum.in_gas(&gas.at_pressure(pp), g);
-        let loss = in_gas.loss_over_arc_squared(a, pivot);
+        let there = self.pendulum.in_gas(&self.gas.at_pressure(pp), self.g);
+        let loss = self.here.loss_over_arc_squared(a, self.pivot);
         if loss.is_nan() || loss <= 0.0 {
             // Nothing damps it: nothing changes its arc.
             return (there, Some(a));
         }
-        let arc = there.arc_for_loss_of(&in_gas, a, pivot);
+        let arc = there.arc_for_loss_of(self.here, a, self.pivot);
         (there, (arc <= MAX_SEMI_ARC_RAD).then_some(arc))
-    };
-    let net_per_hpa = |a: f64| {
-        let rate = |f: f64| match at(p * f, a) {
-            (there, Some(arc)) => there.rates.total + circular(arc),
+    }
+
+    /// The barometric coefficient, s/day per hPa, of the gas and the
+    /// circular error together as the arc kept at `a`, rad, changes with
+    /// the pressure: a central difference of ±1% of the pressure.
+    fn net_per_hpa(&self, a: f64) -> f64 {
+        let p = self.gas.pressure_pa;
+        let rate = |f: f64| match self.at(p * f, a) {
+            (there, Some(arc)) => there.rates.total + self.circular(arc),
             (_, None) => f64::NAN,
         };
         (rate(1.01) - rate(0.99)) / (0.02 * p) * 100.0
-    };
-    let cancelling = cancelling_arc(&net_per_hpa).map(f64::to_degrees);
-    let q = crate::analysis::finite(air.amplitude_rad.map_or(
-        in_gas.inertia * in_gas.omega / (in_gas.damping + pivot),
-        |a| in_gas.q_at(a, pivot),
-    ));
-    let here = air.amplitude_rad.map(|a| (a, rates.total + circular(a)));
-    let mut pressures: Vec<f64> = TABLE_PRESSURES_PA.to_vec();
-    if !pressures.contains(&p) {
-        pressures.push(p);
-        pressures.sort_by(f64::total_cmp);
     }
-    let against_pressure = pressures
-        .iter()
-        .map(|&pp| {
-            let (there, arc) = match here {
-                Some((a, _)) => at(pp, a),
-                None => (pendulum.in_gas(&gas.at_pressure(pp), g), None),
-            };
-            PressureRow {
-                pressure_pa: pp,
-                density_kg_m3: gas.at_pressure(pp).density(),
-                q_gas: crate::analysis::finite(there.q),
-                q: crate::analysis::finite(
-                    arc.map_or(there.inertia * there.omega / (there.damping + pivot), |a| {
-                        there.q_at(a, pivot)
-                    }),
-                ),
-                gas_rate_s_per_day: there.rates.total,
-                semi_arc_deg: arc.map(f64::to_degrees),
-                circular_rate_s_per_day: arc.map(circular),
-                rate_change_s_per_day: arc
-                    .zip(here)
-                    .map(|(a, (_, r0))| there.rates.total + circular(a) - r0),
-            }
-        })
-        .filter(|r| r.gas_rate_s_per_day.is_finite() && r.q_gas.is_none_or(f64::is_finite))
-        .collect();
-    let damping_total = in_gas.damping;
+
+    /// The Q of the design in the gas `there` with the pivot's losses: at
+    /// a vanishing arc, or at the semi-arc `arc`, rad, with the form drag.
+    fn q(&self, there: &InGas, arc: Option<f64>) -> f64 {
+        arc.map_or(
+            there.inertia * there.omega / (there.damping + self.pivot),
+            |a| there.q_at(a, self.pivot),
+        )
+    }
+
+    /// The row of the pressure table at `pp`, Pa: with the arc the drive
+    /// keeps there when `here` (the semi-arc given, rad, and the rate at
+    /// it, s/day) is, and the rate's change against `here`'s.
+    fn pressure_row(&self, pp: f64, here: Option<(f64, f64)>) -> PressureRow {
+        let (there, arc) = match here {
+            Some((a, _)) => self.at(pp, a),
+            None => (
+                self.pendulum.in_gas(&self.gas.at_pressure(pp), self.g),
+                None,
+            ),
+        };
+        PressureRow {
+            pressure_pa: pp,
+            density_kg_m3: self.gas.at_pressure(pp).density(),
+            q_gas: crate::analysis::finite(there.q),
+            q: crate::analysis::finite(self.q(&there, arc)),
+            gas_rate_s_per_day: there.rates.total,
+            semi_arc_deg: arc.map(f64::to_degrees),
+            circular_rate_s_per_day: arc.map(|a| self.circular(a)),
+            rate_change_s_per_day: arc
+                .zip(here)
+                .map(|(a, (_, r0))| there.rates.total + self.circular(a) - r0),
+        }
+    }
+
+    /// The pressure table: a row at each of [`TABLE_PRESSURES_PA`] and at
+    /// the sheet's own pressure, in order, leaving out the pressures at
+    /// which the gas floats the pendulum; `here` as for
+    /// [`KeptArc::pressure_row`].
+    fn pressure_table(&self, here: Option<(f64, f64)>) -> Vec<PressureRow> {
+        let p = self.gas.pressure_pa;
+        let mut pressures: Vec<f64> = TABLE_PRESSURES_PA.to_vec();
+        if !pressures.contains(&p) {
+            pressures.push(p);
+            pressures.sort_by(f64::total_cmp);
+        }
+        pressures
+            .iter()
+            .map(|&pp| self.pressure_row(pp, here))
+            .filter(|r| r.gas_rate_s_per_day.is_finite() && r.q_gas.is_none_or(f64::is_finite))
+            .collect()
+    }
+}
+
+/// The rating nut's lines of the datasheet, each `None` unless the nut
+/// moves the rate.
+struct NutRates {
+    /// The nut's name.
+    name: Option<String>,
+    /// The rate change as it moves 1 mm down, s/day.
+    per_mm: Option<f64>,
+    /// Its thread's pitch, m.
+    pitch: Option<f64>,
+    /// The rate change per turn, s/day.
+    per_turn: Option<f64>,
+    /// The rate change per division, s/day.
+    per_division: Option<f64>,
+}
+
+/// The rating nut of `design` (the part with a thread, or the part named
+/// `nut`) and the rate change, s/day, per mm, per turn and per division
+/// as it moves `pendulum`'s bob down.
+fn nut_rates(design: &Design, pendulum: &CompoundPendulum) -> NutRates {
     let nut = design
         .thread
         .map(|th| th.part)
@@ -510,11 +667,155 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
     let pitch = design.thread.map(|th| th.pitch);
     let per_turn = per_metre.zip(pitch).map(|(r, p)| r * p);
     let per_division = per_turn.zip(design.thread.and_then(|th| th.divisions));
-    let takes_water = pendulum
+    NutRates {
+        name: per_metre.and(nut).map(|i| pendulum.parts()[i].name.clone()),
+        per_mm: per_metre.map(|r| r * 1e-3),
+        pitch: per_metre.and(pitch),
+        per_turn,
+        per_division: per_division.map(|(r, d)| r / f64::from(d)),
+    }
+}
+
+/// Whether any part of `pendulum` takes up water (wood).
+fn takes_water(pendulum: &CompoundPendulum) -> bool {
+    pendulum
         .parts()
         .iter()
-        .any(|q| q.material.moisture_expansion.is_some());
-    let across_grain = pendulum
+        .any(|q| q.material.moisture_expansion.is_some())
+}
+
+/// Each part's row: its name, material, mass, kg, and centre below the
+/// pivot, m.
+fn part_rows(pendulum: &CompoundPendulum) -> Vec<PartRow> {
+    pendulum
+        .parts()
+        .iter()
+        .zip(pendulum.centres())
+        .map(|(q, &c)| PartRow {
+            name: q.name.clone(),
+            material: q.material.name.clone(),
+            mass_kg: q.mass(),
+            centre_m: c,
+        })
+        .collect()
+}
+
+/// Each part's share of the gas's effect `in_gas`: its added-mass
+/// coefficient and its share of the damping (0 when nothing damps).
+fn gas_parts(pendulum: &CompoundPendulum, in_gas: &InGas) -> Vec<PartGas> {
+    let damping_total = in_gas.damping;
+    pendulum
+        .parts()
+        .iter()
+        .zip(&in_gas.parts)
+        .map(|(part, f)| PartGas {
+            name: part.name.clone(),
+            added_mass_coefficient: f.added_mass_coefficient,
+            damping_share: if damping_total > 0.0 {
+                f.damping / damping_total
+            } else {
+                0.0
+            },
+        })
+        .collect()
+}
+
+/// What `pendulum`'s suspension spring does, when it hangs from one: its
+/// bending length, pivot and rate, and the temperature coefficient its
+/// modulus makes, s/day per °C.
+fn spring_sheet(pendulum: &CompoundPendulum) -> Option<SpringSheet> {
+    pendulum.spring_effect().map(|e| SpringSheet {
+        bending_length_m: e.bending_length,
+        effective_pivot_m: e.effective_pivot,
+        rate_s_per_day: e.rate,
+        elastic_share: e.elastic_share,
+        modulus_temperature_coefficient_s_per_day_per_c: pendulum.temperature_coefficient()
+            - pendulum
+                .without_spring_thermoelasticity()
+                .temperature_coefficient(),
+        second_mode_hz: e.second_mode_hz,
+    })
+}
+
+/// The sheet's warnings, in order: an `equivalent_length`, m, longer
+/// than any clock's, a stiff suspension spring, a Q `q` so low that the
+/// damping moves the period, a `humidity` of 1% or less (a fraction of 1
+/// given for a percentage?), and each part that takes up water but is no
+/// rod.
+fn warnings(
+    pendulum: &CompoundPendulum,
+    equivalent_length: f64,
+    q: Option<f64>,
+    humidity: Option<f64>,
+) -> Vec<Warning> {
+    let length = crate::pendulum::length_warning(equivalent_length)
+        .map(|w| Warning::new("length_implausible", w, Some("equivalent_length_m")));
+    let spring =
+        stiff_spring_warning(pendulum).map(|w| Warning::new("stiff_spring", w, Some("spring")));
+    length
+        .into_iter()
+        .chain(spring)
+        .chain(
+            q.map(|q| (q, DAY / (8.0 * q * q)))
+                .filter(|&(_, shift)| shift >= LOW_Q_SHIFT_S_PER_DAY)
+                .map(|(q, shift)| {
+                    Warning::new(
+                        "low_q",
+                        format!(
+                            "Q {} is far below a clock pendulum's: the damping itself \
+                             lengthens the period by 1/(8Q²), {} s/day, which the rates \
+                             here leave out",
+                            crate::error::format_significant(q, 3),
+                            crate::error::format_significant(shift, 3)
+                        ),
+                        Some("q"),
+                    )
+                }),
+        )
+        .chain(humidity.filter(|&h| h > 0.0 && h <= 0.01).map(|h| {
+            let said = crate::gas::per_cent_warning(&format!(
+                "the humidity is {} %",
+                crate::error::format_significant(100.0 * h, 3)
+            ));
+            Warning::new("per_cent_as_fraction", said, Some("humidity"))
+        }))
+        .chain(across_grain(pendulum).map(|name| {
+            let said = format!(
+                "'{name}' takes up water but is not a rod (a cylinder five times as long \
+                 as it is wide): only its growth along its \
+                 length (wood's along the grain) is modelled, not the 20 to 40 times larger \
+                 swelling across the grain"
+            );
+            Warning::new(
+                "swelling_across_grain",
+                said,
+                Some("humidity_coefficient_s_per_day_per_percent"),
+            )
+        }))
+        .collect()
+}
+
+/// The warning of a suspension spring that gives more than
+/// [`STIFF_SPRING_SHARE`] of the restoring torque, if `pendulum` hangs
+/// from one.
+fn stiff_spring_warning(pendulum: &CompoundPendulum) -> Option<String> {
+    pendulum.spring_effect().and_then(|e| {
+        (e.elastic_share > STIFF_SPRING_SHARE).then(|| {
+            format!(
+                "the suspension spring is stiff: it gives {}% of the restoring torque \
+                 (its bending length {} mm); the pendulum bends it rather than turning \
+                 about it, and its temperature and its fatigue dominate the rate",
+                crate::error::format_significant(100.0 * e.elastic_share, 3),
+                crate::error::format_significant(1e3 * e.bending_length, 3)
+            )
+        })
+    })
+}
+
+/// The names of `pendulum`'s parts with mass that take up water but are
+/// no rod, so swell across their grain.
+fn across_grain(pendulum: &CompoundPendulum) -> impl Iterator<Item = String> + '_ {
+    pendulum
         .parts()
         .iter()
         .filter(|q| {
@@ -525,128 +826,5 @@ pub fn datasheet(design: &Design, g: Option<f64>, air: &Air) -> Result<Datasheet
                 && !matches!(q.shape, super::Shape::Cylinder { length, diameter, .. }
                     if length >= 5.0 * diameter)
         })
-        .map(|q| q.name.clone());
-    Ok(Datasheet {
-        parts: pendulum
-            .parts()
-            .iter()
-            .zip(pendulum.centres())
-            .map(|(q, &c)| PartRow {
-                name: q.name.clone(),
-                material: q.material.name.clone(),
-                mass_kg: q.mass(),
-                centre_m: c,
-            })
-            .collect(),
-        mass_kg: props.mass,
-        centre_of_mass_m: props.centre_of_mass,
-        inertia_kg_m2: props.inertia,
-        equivalent_length_m: props.equivalent_length,
-        period_s: period,
-        g_m_s2: g,
-        temperature_coefficient_s_per_day_per_c: pendulum.temperature_coefficient(),
-        temperature_rate_s_per_day: rate_of_length_ratio(warmer / props.equivalent_length),
-        gradient_coefficient_s_per_day_per_k_per_m: pendulum.gradient_coefficient(),
-        // Only air carries a humidity: a dry tank's gas has none to vary.
-        humidity_coefficient_s_per_day_per_percent: (kind == Gas::Air)
-            .then(|| pendulum.humidity_coefficient(h, t))
-            .flatten(),
-        wood_moisture_percent: takes_water
-            .then(|| crate::moisture::equilibrium_moisture_content(h, t)),
-        temperature_c: t,
-        regulated_at_c: regulated_at,
-        air_density_kg_m3: rho,
-        air_rate_s_per_day: rates.total,
-        air_buoyancy_rate_s_per_day: rates.buoyancy,
-        pressure_coefficient_s_per_day_per_hpa: coefficient,
-        gas: kind,
-        gas_viscosity_pa_s: gas.viscosity(),
-        mean_free_path_m: gas.mean_free_path(),
-        gas_damping_n_m_s: damping_total,
-        q_gas: crate::analysis::finite(in_gas.q),
-        q_pivot: air.pivot_q,
-        q,
-        gas_parts: pendulum
-            .parts()
-            .iter()
-            .zip(&in_gas.parts)
-            .map(|(part, f)| PartGas {
-                name: part.name.clone(),
-                added_mass_coefficient: f.added_mass_coefficient,
-                damping_share: if damping_total > 0.0 {
-                    f.damping / damping_total
-                } else {
-                    0.0
-                },
-            })
-            .collect(),
-        semi_arc_deg: air.amplitude_rad.map(f64::to_degrees),
-        circular_pressure_coefficient_s_per_day_per_hpa: air
-            .amplitude_rad
-            .and_then(|a| crate::analysis::finite(net_per_hpa(a) - coefficient)),
-        net_pressure_coefficient_s_per_day_per_hpa: air
-            .amplitude_rad
-            .and_then(|a| crate::analysis::finite(net_per_hpa(a))),
-        cancelling_semi_arc_deg: cancelling,
-        against_pressure,
-        nut: per_metre.and(nut).map(|i| pendulum.parts()[i].name.clone()),
-        nut_rate_s_per_day_per_mm: per_metre.map(|r| r * 1e-3),
-        nut_pitch_m: per_metre.and(pitch),
-        nut_rate_s_per_day_per_turn: per_turn,
-        nut_rate_s_per_day_per_division: per_division.map(|(r, d)| r / f64::from(d)),
-        spring: pendulum.spring_effect().map(|e| SpringSheet {
-            bending_length_m: e.bending_length,
-            effective_pivot_m: e.effective_pivot,
-            rate_s_per_day: e.rate,
-            elastic_share: e.elastic_share,
-            modulus_temperature_coefficient_s_per_day_per_c: pendulum.temperature_coefficient()
-                - pendulum
-                    .without_spring_thermoelasticity()
-                    .temperature_coefficient(),
-            second_mode_hz: e.second_mode_hz,
-        }),
-        warnings: crate::pendulum::length_warning(props.equivalent_length)
-            .into_iter()
-            .chain(pendulum.spring_effect().and_then(|e| {
-                (e.elastic_share > STIFF_SPRING_SHARE).then(|| {
-                    format!(
-                        "the suspension spring is stiff: it gives {}% of the restoring torque \
-                         (its bending length {} mm); the pendulum bends it rather than turning \
-                         about it, and its temperature and its fatigue dominate the rate",
-                        crate::error::format_significant(100.0 * e.elastic_share, 3),
-                        crate::error::format_significant(1e3 * e.bending_length, 3)
-                    )
-                })
-            }))
-            .chain(
-                q.map(|q| (q, DAY / (8.0 * q * q)))
-                    .filter(|&(_, shift)| shift >= LOW_Q_SHIFT_S_PER_DAY)
-                    .map(|(q, shift)| {
-                        format!(
-                            "Q {} is far below a clock pendulum's: the damping itself \
-                             lengthens the period by 1/(8Q²), {} s/day, which the rates here \
-                             leave out",
-                            crate::error::format_significant(q, 3),
-                            crate::error::format_significant(shift, 3)
-                        )
-                    }),
-            )
-            .chain(air.humidity.filter(|&h| h > 0.0 && h <= 0.01).map(|h| {
-                crate::gas::per_cent_warning(&format!(
-                    "the humidity is {} %",
-                    crate::error::format_significant(100.0 * h, 3)
-                ))
-            }))
-            .chain(across_grain.map(|name| {
-                format!(
-                    "'{name}' takes up water but is not a rod (a cylinder five times as long \
-                     as it is wide): only its growth along its \
-                     length (wood's along the grain) is modelled, not the 20 to 40 times larger \
-                     swelling across the grain"
-                )
-            }))
-            .collect(),
-        pressure_pa: p,
-        humidity: h,
-    })
+        .map(|q| q.name.clone())
 }

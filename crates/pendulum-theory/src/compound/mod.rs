@@ -394,6 +394,205 @@ fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> 
     }
 }
 
+/// The sizes of part `p` by field, m (a point's mass, kg).
+fn part_sizes(p: &Part) -> Vec<(&'static str, f64)> {
+    match p.shape {
+        Shape::Cylinder {
+            length,
+            diameter,
+            bore,
+        } => vec![("length", length), ("diameter", diameter), ("bore", bore)],
+        Shape::Disc {
+            diameter,
+            thickness,
+        }
+        | Shape::Lens {
+            diameter,
+            thickness,
+        } => vec![("diameter", diameter), ("thickness", thickness)],
+        Shape::Sphere { diameter } => vec![("diameter", diameter)],
+        Shape::Ring {
+            outer,
+            inner,
+            thickness,
+        } => vec![("outer", outer), ("inner", inner), ("thickness", thickness)],
+        Shape::Spring {
+            length,
+            width,
+            thickness,
+        } => vec![
+            ("length", length),
+            ("width", width),
+            ("thickness", thickness),
+        ],
+        Shape::Point => vec![("mass", p.point_mass)],
+    }
+}
+
+/// Checks part `p`'s sizes: each positive and finite (a bore or a ring's
+/// inner diameter may be 0), a bore less than its diameter, a ring's
+/// inner diameter less than its outer.
+fn check_sizes(p: &Part) -> Result<(), (&'static str, String)> {
+    for (field, v) in part_sizes(p) {
+        let may_be_zero = field == "bore" || field == "inner";
+        if !v.is_finite() || v < 0.0 || (v == 0.0 && !may_be_zero) {
+            return Err((
+                field,
+                format!("must be a positive number, got {}", shown(v)),
+            ));
+        }
+    }
+    if let Shape::Cylinder { diameter, bore, .. } = p.shape {
+        if bore >= diameter {
+            return Err(("bore", "must be less than the diameter".into()));
+        }
+    }
+    if let Shape::Ring { outer, inner, .. } = p.shape {
+        if inner >= outer {
+            return Err(("inner", "must be less than the outer diameter".into()));
+        }
+    }
+    Ok(())
+}
+
+/// Checks the density of part `p`'s material, kg/m³: more than 0 and at
+/// most [`MAX_DENSITY`] (a massless part and a point have none to check).
+fn check_density(p: &Part) -> Result<(), (&'static str, String)> {
+    if !p.massless && p.shape != Shape::Point {
+        let d = p.material.density;
+        if !(d > 0.0 && d <= MAX_DENSITY) {
+            return Err((
+                "density",
+                format!(
+                    "must be more than 0 and at most {MAX_DENSITY:e} kg/m³ (osmium, the \
+                     densest metal, is 22,590; an assembly taken as one part may be \
+                     denser over its envelope), got {}",
+                    shown(d)
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks that part `p` does not rest on or hang from a suspension spring
+/// among `parts`: parts are clamped below it.
+fn check_not_on_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> {
+    if let Some(j) = p.placement.support() {
+        if parts.get(j).is_some_and(|q| q.shape.is_spring()) {
+            return Err((
+                if matches!(p.placement, Placement::RestsOn(_)) {
+                    "rests_on"
+                } else {
+                    "hangs_from"
+                },
+                "nothing rests on or hangs from a suspension spring: parts are clamped \
+                 below it (placed by their centre)"
+                    .into(),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks how part `p` follows the air: its material's expansion, 1/K,
+/// its thermal and moisture time constants, s (0 to a year), and its
+/// material's growth per percentage point of moisture, 1/%.
+fn check_response(p: &Part) -> Result<(), (&'static str, String)> {
+    let alpha = p.material.expansion;
+    if !(MIN_EXPANSION..=MAX_EXPANSION).contains(&alpha) {
+        return Err((
+            "expansion",
+            format!(
+                "must be between {MIN_EXPANSION:e} and {MAX_EXPANSION:e} per K \
+                 (steel 1.2e-5, mercury's volume 1.8e-4; zirconium tungstate, which \
+                 shrinks as it warms, -9e-6), got {}",
+                shown(alpha)
+            ),
+        ));
+    }
+    if !(p.time_constant.is_finite() && (0.0..=MAX_TIME_CONSTANT_S).contains(&p.time_constant)) {
+        return Err((
+            "time_constant",
+            format!(
+                "must lie between 0 and {MAX_TIME_CONSTANT_S:e} s (a year), got {}",
+                shown(p.time_constant)
+            ),
+        ));
+    }
+    if !(p.moisture_time_constant.is_finite()
+        && (0.0..=MAX_TIME_CONSTANT_S).contains(&p.moisture_time_constant))
+    {
+        return Err((
+            "moisture_time_constant",
+            format!(
+                "must lie between 0 and {MAX_TIME_CONSTANT_S:e} s (a year), got {}",
+                shown(p.moisture_time_constant)
+            ),
+        ));
+    }
+    if let Some(m) = p.material.moisture_expansion {
+        if !(0.0..=MAX_MOISTURE_EXPANSION).contains(&m) {
+            return Err((
+                "moisture_expansion",
+                format!(
+                    "must lie between 0 and {MAX_MOISTURE_EXPANSION:e} per % of \
+                     moisture content (wood along the grain 5e-5), got {}",
+                    shown(m)
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks how part `p` is held: at a point within its own height, m, and
+/// a liquid as an upright cylinder resting on its jar's bottom.
+fn check_held(p: &Part) -> Result<(), (&'static str, String)> {
+    if let Placement::Held { height, .. } = p.placement {
+        if !(0.0..=p.shape.height()).contains(&height) {
+            return Err((
+                "support_height",
+                format!(
+                    "must lie between 0 and the part's own height ({} m), got {}",
+                    shown(p.shape.height()),
+                    shown(height)
+                ),
+            ));
+        }
+    }
+    if p.material.liquid {
+        let fits = matches!(p.shape, Shape::Cylinder { .. })
+            && matches!(p.placement, Placement::RestsOn(_));
+        if !fits {
+            return Err((
+                "rests_on",
+                "a liquid is an upright cylinder resting on the bottom of its jar".into(),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks part `p` among `parts` on its own (sizes, density, a spring,
+/// what carries it, expansion and time constants, how it is held); the
+/// error names the part and the field.
+fn check_part(p: &Part, parts: &[Part]) -> Result<(), DesignError> {
+    let fail = |(field, message): (&'static str, String)| DesignError {
+        part: p.name.clone(),
+        field,
+        message,
+    };
+    check_sizes(p).map_err(fail)?;
+    check_density(p).map_err(fail)?;
+    if p.shape.is_spring() {
+        check_spring(p, parts).map_err(fail)?;
+    }
+    check_not_on_spring(p, parts).map_err(fail)?;
+    check_response(p).map_err(fail)?;
+    check_held(p).map_err(fail)
+}
+
 impl CompoundPendulum {
     /// A pendulum of `parts`, checked: every size positive and finite,
     /// every part with mass (unless `massless`), nothing above or through
@@ -407,160 +606,7 @@ impl CompoundPendulum {
             });
         }
         for p in &parts {
-            let fail = |field: &'static str, message: String| DesignError {
-                part: p.name.clone(),
-                field,
-                message,
-            };
-            let dims: Vec<(&'static str, f64)> = match p.shape {
-                Shape::Cylinder {
-                    length,
-                    diameter,
-                    bore,
-                } => vec![("length", length), ("diameter", diameter), ("bore", bore)],
-                Shape::Disc {
-                    diameter,
-                    thickness,
-                }
-                | Shape::Lens {
-                    diameter,
-                    thickness,
-                } => vec![("diameter", diameter), ("thickness", thickness)],
-                Shape::Sphere { diameter } => vec![("diameter", diameter)],
-                Shape::Ring {
-                    outer,
-                    inner,
-                    thickness,
-                } => vec![("outer", outer), ("inner", inner), ("thickness", thickness)],
-                Shape::Spring {
-                    length,
-                    width,
-                    thickness,
-                } => vec![
-                    ("length", length),
-                    ("width", width),
-                    ("thickness", thickness),
-                ],
-                Shape::Point => vec![("mass", p.point_mass)],
-            };
-            for (field, v) in dims {
-                let may_be_zero = field == "bore" || field == "inner";
-                if !v.is_finite() || v < 0.0 || (v == 0.0 && !may_be_zero) {
-                    return Err(fail(
-                        field,
-                        format!("must be a positive number, got {}", shown(v)),
-                    ));
-                }
-            }
-            if let Shape::Cylinder { diameter, bore, .. } = p.shape {
-                if bore >= diameter {
-                    return Err(fail("bore", "must be less than the diameter".into()));
-                }
-            }
-            if let Shape::Ring { outer, inner, .. } = p.shape {
-                if inner >= outer {
-                    return Err(fail("inner", "must be less than the outer diameter".into()));
-                }
-            }
-            if !p.massless && p.shape != Shape::Point {
-                let d = p.material.density;
-                if !(d > 0.0 && d <= MAX_DENSITY) {
-                    return Err(fail(
-                        "density",
-                        format!(
-                            "must be more than 0 and at most {MAX_DENSITY:e} kg/m³ (osmium, the \
-                             densest metal, is 22,590; an assembly taken as one part may be \
-                             denser over its envelope), got {}",
-                            shown(d)
-                        ),
-                    ));
-                }
-            }
-            if p.shape.is_spring() {
-                check_spring(p, &parts).map_err(|(field, message)| fail(field, message))?;
-            }
-            if let Some(j) = p.placement.support() {
-                if parts.get(j).is_some_and(|q| q.shape.is_spring()) {
-                    return Err(fail(
-                        if matches!(p.placement, Placement::RestsOn(_)) {
-                            "rests_on"
-                        } else {
-                            "hangs_from"
-                        },
-                        "nothing rests on or hangs from a suspension spring: parts are clamped \
-                         below it (placed by their centre)"
-                            .into(),
-                    ));
-                }
-            }
-            let alpha = p.material.expansion;
-            if !(MIN_EXPANSION..=MAX_EXPANSION).contains(&alpha) {
-                return Err(fail(
-                    "expansion",
-                    format!(
-                        "must be between {MIN_EXPANSION:e} and {MAX_EXPANSION:e} per K \
-                         (steel 1.2e-5, mercury's volume 1.8e-4; zirconium tungstate, which \
-                         shrinks as it warms, -9e-6), got {}",
-                        shown(alpha)
-                    ),
-                ));
-            }
-            if !(p.time_constant.is_finite()
-                && (0.0..=MAX_TIME_CONSTANT_S).contains(&p.time_constant))
-            {
-                return Err(fail(
-                    "time_constant",
-                    format!(
-                        "must lie between 0 and {MAX_TIME_CONSTANT_S:e} s (a year), got {}",
-                        shown(p.time_constant)
-                    ),
-                ));
-            }
-            if !(p.moisture_time_constant.is_finite()
-                && (0.0..=MAX_TIME_CONSTANT_S).contains(&p.moisture_time_constant))
-            {
-                return Err(fail(
-                    "moisture_time_constant",
-                    format!(
-                        "must lie between 0 and {MAX_TIME_CONSTANT_S:e} s (a year), got {}",
-                        shown(p.moisture_time_constant)
-                    ),
-                ));
-            }
-            if let Some(m) = p.material.moisture_expansion {
-                if !(0.0..=MAX_MOISTURE_EXPANSION).contains(&m) {
-                    return Err(fail(
-                        "moisture_expansion",
-                        format!(
-                            "must lie between 0 and {MAX_MOISTURE_EXPANSION:e} per % of \
-                             moisture content (wood along the grain 5e-5), got {}",
-                            shown(m)
-                        ),
-                    ));
-                }
-            }
-            if let Placement::Held { height, .. } = p.placement {
-                if !(0.0..=p.shape.height()).contains(&height) {
-                    return Err(fail(
-                        "support_height",
-                        format!(
-                            "must lie between 0 and the part's own height ({} m), got {}",
-                            shown(p.shape.height()),
-                            shown(height)
-                        ),
-                    ));
-                }
-            }
-            if p.material.liquid {
-                let fits = matches!(p.shape, Shape::Cylinder { .. })
-                    && matches!(p.placement, Placement::RestsOn(_));
-                if !fits {
-                    return Err(fail(
-                        "rests_on",
-                        "a liquid is an upright cylinder resting on the bottom of its jar".into(),
-                    ));
-                }
-            }
+            check_part(p, &parts)?;
         }
         let centres = resolve(&parts, None)?;
         let pendulum = Self {
@@ -568,30 +614,46 @@ impl CompoundPendulum {
             centres,
             gravity: crate::pendulum::STANDARD_GRAVITY,
         };
+        pendulum.check_temperature_span()?;
+        pendulum.check_swings()?;
+        Ok(pendulum)
+    }
+
+    /// Checks that the design stays valid warmed or cooled by
+    /// [`TEMPERATURE_SPAN_K`] from its reference; the error is the one
+    /// met where it first fails.
+    fn check_temperature_span(&self) -> Result<(), DesignError> {
         // Every size is linear in the temperature, so a design valid at both
         // ends of the span is valid everywhere in it: the commands that warm
         // or cool it (datasheets, coefficients, long runs with weather) can
         // then never meet an invalid design.
         for span in [-TEMPERATURE_SPAN_K, TEMPERATURE_SPAN_K] {
-            if pendulum.at_temperature(span).is_err() {
+            if self.at_temperature(span).is_err() {
                 // Say where it first fails (bisection to 1e-6 of the span).
                 let (mut ok, mut bad) = (0.0, span);
                 for _ in 0..28 {
                     let mid = 0.5 * (ok + bad);
-                    if pendulum.at_temperature(mid).is_ok() {
+                    if self.at_temperature(mid).is_ok() {
                         ok = mid;
                     } else {
                         bad = mid;
                     }
                 }
-                return Err(pendulum.at_temperature(bad).err().unwrap_or(DesignError {
+                return Err(self.at_temperature(bad).err().unwrap_or(DesignError {
                     part: "-".into(),
                     field: "part",
                     message: format!("the design is not valid {span} °C from its reference"),
                 }));
             }
         }
-        let props = pendulum.properties();
+        Ok(())
+    }
+
+    /// Checks that the design swings: it has mass, what a suspension
+    /// spring carries hangs below it, and its centre of mass is below the
+    /// pivot.
+    fn check_swings(&self) -> Result<(), DesignError> {
+        let props = self.properties();
         if props.mass.is_nan() || props.mass <= 0.0 {
             return Err(DesignError {
                 part: "-".into(),
@@ -599,10 +661,10 @@ impl CompoundPendulum {
                 message: "the pendulum has no mass (every part is massless)".into(),
             });
         }
-        if let Some(i) = spring_index(&pendulum.parts) {
-            if pendulum.spring_effect().is_none() {
+        if let Some(i) = spring_index(&self.parts) {
+            if self.spring_effect().is_none() {
                 return Err(DesignError {
-                    part: pendulum.parts[i].name.clone(),
+                    part: self.parts[i].name.clone(),
                     field: "length",
                     message: "the parts it carries must hang below the spring: their centre of \
                               mass is above its bottom"
@@ -617,7 +679,7 @@ impl CompoundPendulum {
                 message: "the centre of mass is at the pivot: the pendulum would not swing".into(),
             });
         }
-        Ok(pendulum)
+        Ok(())
     }
 
     /// The parts.

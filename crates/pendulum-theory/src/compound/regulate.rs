@@ -8,6 +8,7 @@ use super::description::Design;
 use super::{length_regulation, RegulationError};
 use crate::analysis::{require_finite, Refusal};
 use crate::error::format_significant;
+use crate::warning::Warning;
 use serde::Serialize;
 
 /// The part moved when none is named and the design has no thread:
@@ -67,7 +68,7 @@ pub struct Regulation {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tray_mass_kg: Option<f64>,
     /// What to check before moving the bob.
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
 }
 
 /// The regulation of `pendulum` gaining `rate` s/day, with the nut's
@@ -233,8 +234,9 @@ pub fn regulate(
         tray_position_m: tray.map(|t| t.0),
         tray_mass_kg: tray.map(|t| t.1),
         warnings: crate::pendulum::length_warning(length)
+            .map(|w| Warning::new("length_implausible", w, Some("length_m")))
             .into_iter()
-            .chain(moved_instead)
+            .chain(moved_instead.map(|w| Warning::new("part_moved_instead", w, Some("shift_m"))))
             .collect(),
     })
 }

@@ -12,6 +12,7 @@ use crate::damping::Damping;
 use crate::energy::{energy_budget, EnergyBudget};
 use crate::error::{format_significant, Quantity};
 use crate::pendulum::{Amplitude, Pendulum, STANDARD_GRAVITY};
+use crate::warning::Warning;
 use serde::Serialize;
 
 /// Turning points listed when not given.
@@ -40,31 +41,73 @@ pub const DAMPING_FIELDS: [&str; 5] = [
     "damping_coefficient",
 ];
 
-/// The viscous damping given as `field` (one of [`DAMPING_FIELDS`]) with
-/// `value`, for `pendulum` with a bob of `mass` kg (the damping
-/// coefficient needs it).
+/// How a viscous damping is given: the form (one of [`DAMPING_FIELDS`])
+/// and its value in that form's unit (a decay time in s, a damping
+/// coefficient in N s, the others numbers).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DampingGiven {
+    /// The damping ratio ζ.
+    Zeta(f64),
+    /// The quality factor Q.
+    Q(f64),
+    /// The logarithmic decrement δ.
+    LogDecrement(f64),
+    /// The amplitude's decay time τ, s.
+    DecayTime(f64),
+    /// The damping coefficient c, N s (needs the bob's mass).
+    DampingCoefficient(f64),
+}
+
+impl DampingGiven {
+    /// The form named `field` (one of [`DAMPING_FIELDS`]) with `value`;
+    /// refused, naming the field `damping` and the forms, for any other
+    /// name.
+    pub fn parse(field: &str, value: f64) -> Result<Self, Refusal> {
+        Ok(match field {
+            "zeta" => DampingGiven::Zeta(value),
+            "q" => DampingGiven::Q(value),
+            "log_decrement" => DampingGiven::LogDecrement(value),
+            "decay_time" => DampingGiven::DecayTime(value),
+            "damping_coefficient" => DampingGiven::DampingCoefficient(value),
+            other => {
+                return Err(Refusal::field(
+                    "damping",
+                    format!("'{other}' is not one of {}", DAMPING_FIELDS.join(", ")),
+                ))
+            }
+        })
+    }
+
+    /// The form's name: its field in refusals and on the command line.
+    pub fn field(self) -> &'static str {
+        match self {
+            DampingGiven::Zeta(_) => "zeta",
+            DampingGiven::Q(_) => "q",
+            DampingGiven::LogDecrement(_) => "log_decrement",
+            DampingGiven::DecayTime(_) => "decay_time",
+            DampingGiven::DampingCoefficient(_) => "damping_coefficient",
+        }
+    }
+}
+
+/// The viscous damping `given`, for `pendulum` with a bob of `mass` kg
+/// (the damping coefficient needs it), with the form's name.
 pub fn damping_given(
-    field: &str,
-    value: f64,
+    given: DampingGiven,
     pendulum: &Pendulum,
     mass: Option<f64>,
 ) -> Result<(Damping, &'static str), Refusal> {
-    let Some(&name) = DAMPING_FIELDS.iter().find(|&&f| f == field) else {
-        return Err(Refusal::field(
-            "damping",
-            format!("'{field}' is not one of {}", DAMPING_FIELDS.join(", ")),
-        ));
-    };
-    let made = match name {
-        "zeta" => Damping::from_zeta(value),
-        "q" => Damping::from_q(value),
-        "log_decrement" => Damping::from_log_decrement(value),
-        "decay_time" => Damping::from_decay_time(value, pendulum),
-        _ => {
+    let name = given.field();
+    let made = match given {
+        DampingGiven::Zeta(v) => Damping::from_zeta(v),
+        DampingGiven::Q(v) => Damping::from_q(v),
+        DampingGiven::LogDecrement(v) => Damping::from_log_decrement(v),
+        DampingGiven::DecayTime(v) => Damping::from_decay_time(v, pendulum),
+        DampingGiven::DampingCoefficient(v) => {
             let m = mass.ok_or_else(|| {
                 Refusal::field("mass", "is needed with a damping coefficient (c, N s)")
             })?;
-            Damping::from_coefficient(value, m, pendulum)
+            Damping::from_coefficient(v, m, pendulum)
         }
     };
     made.map(|d| (d, name)).map_err(|e| match e.quantity {
@@ -82,8 +125,8 @@ pub struct DampedInput {
     pub g: Option<f64>,
     /// Release amplitude, rad.
     pub amplitude: f64,
-    /// The damping as (form, value): see [`damping_given`].
-    pub damping: Option<(String, f64)>,
+    /// The damping, in one of its forms.
+    pub damping: Option<DampingGiven>,
     /// Dry friction angle, rad (default 0).
     pub friction_angle: Option<f64>,
     /// Bob mass, kg, for the energy budget.
@@ -178,7 +221,7 @@ pub struct Damped {
     /// damped period ignores the amplitude).
     pub exact_period_s: f64,
     /// What a person must know about these results.
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
     /// The pendulum with its damping and friction, for the motion's
     /// samples and figures.
     #[serde(skip)]
@@ -193,14 +236,14 @@ pub struct Damped {
 /// # Examples
 ///
 /// ```
-/// use pendulum_theory::damped::analysis::{damped, DampedInput};
+/// use pendulum_theory::damped::analysis::{damped, DampedInput, DampingGiven};
 ///
 /// // A seconds pendulum of Q = 100 released at 0.05 rad: two turning points.
 /// let d = damped(&DampedInput {
 ///     length: 0.99362,
 ///     g: None,
 ///     amplitude: 0.05,
-///     damping: Some(("q".into(), 100.0)),
+///     damping: Some(DampingGiven::Q(100.0)),
 ///     friction_angle: None,
 ///     mass: None,
 ///     extrema: Some(2),
@@ -243,7 +286,7 @@ pub fn damped(input: &DampedInput) -> Result<Damped, Refusal> {
             },
         ));
     }
-    let (field, value) = input.damping.clone().ok_or_else(|| {
+    let given = input.damping.ok_or_else(|| {
         Refusal::field(
             "zeta",
             format!(
@@ -252,7 +295,7 @@ pub fn damped(input: &DampedInput) -> Result<Damped, Refusal> {
             ),
         )
     })?;
-    let (damping, _) = damping_given(&field, value, &pendulum, input.mass)?;
+    let (damping, _) = damping_given(given, &pendulum, input.mass)?;
     let damped = DampedPendulum::new(pendulum, damping);
     let r = input.friction_angle.unwrap_or(0.0);
     let friction = DryFriction::new(damped, r).map_err(|e| Refusal::input("friction_angle", &e))?;
@@ -296,18 +339,22 @@ pub fn damped(input: &DampedInput) -> Result<Damped, Refusal> {
     let exact_period = pendulum.period(amplitude);
     let mut warnings = Vec::new();
     if amplitude.degrees() > SMALL_ANGLE_LIMIT_DEG {
-        warnings.push(format!(
-            "at {}° the small-angle theory (book section 1-4) is only approximate: the exact \
+        warnings.push(Warning::new(
+            "small_angle_approximate",
+            format!(
+                "at {}° the small-angle theory (book section 1-4) is only approximate: the exact \
              period at this amplitude is {} s, not {}; `pendulum simulate` integrates the full \
              nonlinear damped motion",
-            format_significant(amplitude.degrees(), 10),
-            format_significant(exact_period, 7),
-            damped
-                .damped_period()
-                .map_or("the small-angle one".to_string(), |p| format!(
-                    "{} s",
-                    format_significant(p, 7)
-                ))
+                format_significant(amplitude.degrees(), 10),
+                format_significant(exact_period, 7),
+                damped
+                    .damped_period()
+                    .map_or("the small-angle one".to_string(), |p| format!(
+                        "{} s",
+                        format_significant(p, 7)
+                    ))
+            ),
+            Some("damped_period_s"),
         ));
     }
     Ok(Damped {

@@ -8,6 +8,7 @@ use super::beats::{AllanPoint, BeatAnalysis, BeatError, BeatStream};
 use crate::analysis::{require_finite_sample, Refusal};
 use crate::error::format_significant;
 use crate::period::SECONDS_PER_DAY;
+use crate::warning::Warn;
 use serde::Serialize;
 
 /// The ratios of nominal to measured beat taken: within the geometric
@@ -156,9 +157,8 @@ pub enum BeatWarning {
     },
 }
 
-impl BeatWarning {
-    /// A stable code for programs.
-    pub fn code(&self) -> &'static str {
+impl crate::warning::Warn for BeatWarning {
+    fn code(&self) -> &'static str {
         match self {
             BeatWarning::SidesDrift { .. } => "sides_drift",
             BeatWarning::SoundsCut { .. } => "sounds_cut",
@@ -172,6 +172,24 @@ impl BeatWarning {
             BeatWarning::RepeatsExactly { .. } => "repeats_exactly",
             BeatWarning::RateWanders { .. } => "rate_wanders",
             BeatWarning::BeatErrorUncertain { .. } => "beat_error_uncertain",
+        }
+    }
+
+    fn figure(&self) -> Option<&'static str> {
+        match self {
+            BeatWarning::SidesDrift { .. } | BeatWarning::BeatErrorUncertain { .. } => {
+                Some("beat_error_ms")
+            }
+            BeatWarning::SoundsCut { .. }
+            | BeatWarning::EdgesUnpaired { .. }
+            | BeatWarning::SoundsDiffer
+            | BeatWarning::RepeatsExactly { .. } => None,
+            BeatWarning::ClockLost { .. }
+            | BeatWarning::WindowsBiased { .. }
+            | BeatWarning::RateUncertain { .. }
+            | BeatWarning::RateWanders { .. } => Some("rate_s_per_day"),
+            BeatWarning::AmplitudeImpossible { .. } => Some("amplitude_deg"),
+            BeatWarning::BeatImplausible { .. } => Some("beats_per_hour"),
         }
     }
 }
@@ -315,11 +333,7 @@ impl std::fmt::Display for BeatWarning {
     }
 }
 
-impl Serialize for BeatWarning {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_str(self)
-    }
-}
+crate::warning::serialize_as_warning!(BeatWarning);
 
 /// Beats dropped and filled in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

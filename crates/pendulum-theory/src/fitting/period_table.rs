@@ -48,7 +48,7 @@ use crate::analysis::{judge_work, require_finite, require_finite_samples, Refusa
 use crate::pendulum::Amplitude;
 use crate::period::{period_ratio, period_ratio_series};
 use crate::STANDARD_GRAVITY;
-use serde::{Serialize, Serializer};
+use serde::Serialize;
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 use std::fmt;
@@ -176,15 +176,25 @@ pub enum PeriodWarning {
     },
 }
 
-impl PeriodWarning {
-    /// A stable code for programs.
-    pub fn code(&self) -> &'static str {
+impl crate::warning::Warn for PeriodWarning {
+    fn code(&self) -> &'static str {
         match self {
             PeriodWarning::ResidualsExceedUncertainties { .. } => "residuals_exceed_uncertainties",
             PeriodWarning::UncertaintiesOverstated { .. } => "uncertainties_overstated",
             PeriodWarning::GravityImplausible { .. } => "gravity_implausible",
             PeriodWarning::GravityOff { .. } => "gravity_off",
             PeriodWarning::LawDiffers { .. } => "law_differs",
+        }
+    }
+
+    fn figure(&self) -> Option<&'static str> {
+        match self {
+            PeriodWarning::ResidualsExceedUncertainties { figures, .. } => figures.first().copied(),
+            PeriodWarning::UncertaintiesOverstated { .. } => Some("chi_square"),
+            PeriodWarning::GravityImplausible { .. } | PeriodWarning::GravityOff { .. } => {
+                Some("g_m_s2")
+            }
+            PeriodWarning::LawDiffers { .. } => Some("circular_error_coefficient"),
         }
     }
 }
@@ -267,15 +277,7 @@ impl fmt::Display for PeriodWarning {
     }
 }
 
-impl Serialize for PeriodWarning {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
-        let mut m = s.serialize_map(Some(2))?;
-        m.serialize_entry("code", self.code())?;
-        m.serialize_entry("message", &self.to_string())?;
-        m.end()
-    }
-}
+crate::warning::serialize_as_warning!(PeriodWarning);
 
 /// The fit of a period table.
 #[derive(Clone, Debug, Serialize)]

@@ -19,6 +19,7 @@
 use super::beat_log::{analyse as beats_of, Beats, Nominal};
 use super::median;
 use crate::analysis::{require_finite, Refusal};
+use crate::warning::Warn;
 use serde::Serialize;
 
 /// Intervals of one parity shorter than this fraction of the other's

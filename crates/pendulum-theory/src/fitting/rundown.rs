@@ -31,8 +31,9 @@ pub struct RunDownInput<'a> {
     pub time: &'a [f64],
     /// The amplitude at each time, rad, in (0, π).
     pub amplitude: &'a [f64],
-    /// One law by name ([`DecayModel::name`]), or `all` (the default).
-    pub model: Option<&'a str>,
+    /// One law, or `None` for every law (`all`, the default).
+    /// [`parse_model`] reads a name.
+    pub model: Option<DecayModel>,
     /// The pendulum's period, s: its angular frequency turns the rates
     /// into ζ, Q, the friction angle and the drag.
     pub period: Option<f64>,
@@ -143,12 +144,18 @@ pub enum RunDownWarning {
     },
 }
 
-impl RunDownWarning {
-    /// A stable code for programs.
-    pub fn code(&self) -> &'static str {
+impl crate::warning::Warn for RunDownWarning {
+    fn code(&self) -> &'static str {
         match self {
             RunDownWarning::SwingTiny { .. } => "angles_look_like_radians",
             RunDownWarning::SamplesLeftOut { .. } => "samples_left_out",
+        }
+    }
+
+    fn figure(&self) -> Option<&'static str> {
+        match self {
+            RunDownWarning::SwingTiny { .. } => Some("amplitude0_rad"),
+            RunDownWarning::SamplesLeftOut { .. } => Some("points"),
         }
     }
 }
@@ -174,15 +181,7 @@ impl std::fmt::Display for RunDownWarning {
     }
 }
 
-impl Serialize for RunDownWarning {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
-        let mut m = s.serialize_map(Some(2))?;
-        m.serialize_entry("code", self.code())?;
-        m.serialize_entry("message", &self.to_string())?;
-        m.end()
-    }
-}
+crate::warning::serialize_as_warning!(RunDownWarning);
 
 /// The law next to the preferred one.
 #[derive(Clone, Debug, Serialize)]
@@ -256,7 +255,19 @@ pub struct Fitted {
 /// The model fitted when none is named: every law, compared.
 pub const DEFAULT_MODEL: &str = "all";
 
-/// The law names [`RunDownInput::model`] takes.
+/// The law named `name` ([`DecayModel::from_name`]), or `None` for
+/// [`DEFAULT_MODEL`] (every law); refused, naming the field `model` and
+/// the names, for any other.
+pub fn parse_model(name: &str) -> Result<Option<DecayModel>, Refusal> {
+    if name == DEFAULT_MODEL {
+        return Ok(None);
+    }
+    DecayModel::from_name(name)
+        .map(Some)
+        .ok_or_else(|| Refusal::field("model", format!("'{name}' is not one of {}", model_names())))
+}
+
+/// The law names [`parse_model`] takes, `all` last, comma-separated.
 pub fn model_names() -> String {
     let mut names: Vec<&str> = DecayModel::ALL.iter().map(|m| m.name()).collect();
     names.push(DEFAULT_MODEL);
@@ -339,10 +350,7 @@ fn validated(input: &RunDownInput<'_>) -> Result<Checked, Refusal> {
     }
     let models: Vec<DecayModel> = match input.model {
         None => DecayModel::ALL.to_vec(),
-        Some(name) if name == DEFAULT_MODEL => DecayModel::ALL.to_vec(),
-        Some(name) => vec![DecayModel::from_name(name).ok_or_else(|| {
-            Refusal::field("model", format!("'{name}' is not one of {}", model_names()))
-        })?],
+        Some(model) => vec![model],
     };
     if let Some(p) = input.period {
         require_finite("period", p)?;

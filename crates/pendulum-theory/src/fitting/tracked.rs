@@ -5,17 +5,19 @@
 //! call.
 
 use super::crest::measured_crest;
-use super::frames::{frame_grid, longest_run};
-use super::gyroscope::principal_axis;
+use super::frames::{frame_grid, longest_run, FrameGrid};
+use super::gyroscope::{principal_axis, PrincipalAxis};
 pub use super::noise_of;
 use super::rundown::{check_pairs, check_times};
-use super::trajectory::{fit_observed, swing_of, Observed, TrajectoryModel};
+use super::trajectory::{fit_observed, swing_of, Observed, TrajectoryFit, TrajectoryModel};
 use super::ErrorParts;
 use crate::analysis::{judge_work, require_finite, require_finite_samples, Refusal};
 use crate::error::format_significant;
+use crate::warning::Warn;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt;
+use std::ops::Range;
 
 /// Computing time of a sample (nonlinear fit with its damping laws), s:
 /// measured over the 200 generated records of `tests/all/coverage.rs`
@@ -89,9 +91,9 @@ pub struct TrackInput<'a> {
     /// ([`super::gyroscope::principal_axis`]) is fitted by the models'
     /// derivative, never integrated; the offset is the gyroscope's zero.
     pub angular_velocity: &'a [&'a [f64]],
-    /// `auto` (the default: nonlinear above a 5° swing), `linear` or
-    /// `nonlinear`.
-    pub model: Option<&'a str>,
+    /// The model: linear or nonlinear; `None` chooses (`auto`, the
+    /// default: nonlinear above a 5° swing). [`parse_model`] reads a name.
+    pub model: Option<TrajectoryModel>,
     /// The length g is computed with, m, and where it came from.
     pub length: Option<(f64, LengthSource)>,
     /// The length's standard uncertainty, m (measured with a tape, or a
@@ -221,9 +223,8 @@ pub enum TrackWarning {
     },
 }
 
-impl TrackWarning {
-    /// A stable code for programs (`gravity_implausible`, ...).
-    pub fn code(&self) -> &'static str {
+impl crate::warning::Warn for TrackWarning {
+    fn code(&self) -> &'static str {
         match self {
             TrackWarning::NonlinearRejected(_) => "nonlinear_rejected",
             TrackWarning::NoGravityFromLinear { .. } => "no_gravity_from_linear",
@@ -240,6 +241,27 @@ impl TrackWarning {
             TrackWarning::FirstCrestOff { .. } => "first_crest_off",
             TrackWarning::SamplesLeftOut { .. } => "samples_left_out",
             TrackWarning::AnglesLookLikeRadians { .. } => "angles_look_like_radians",
+        }
+    }
+
+    fn figure(&self) -> Option<&'static str> {
+        match self {
+            TrackWarning::NonlinearRejected(_) => Some("model"),
+            TrackWarning::ZetaUndetermined | TrackWarning::SwingGrows { .. } => Some("zeta"),
+            TrackWarning::ShapeUndetermined(names) => names.first().copied(),
+            TrackWarning::NoGravityFromLinear { .. }
+            | TrackWarning::GravityImplausible { .. }
+            | TrackWarning::AngleUnit { .. }
+            | TrackWarning::GravityOff { .. }
+            | TrackWarning::AnglesLookLikeRadians { .. } => Some("g_m_s2"),
+            TrackWarning::PeriodImplausible { .. } | TrackWarning::CrossingsDiffer { .. } => {
+                Some("omega_n_rad_s")
+            }
+            TrackWarning::PoorFit { rate: false, .. } => Some("residual_rms_rad"),
+            TrackWarning::PoorFit { rate: true, .. } => Some("residual_rms_rad_s"),
+            TrackWarning::FirstCrestOff { .. } => Some("amplitude_rad"),
+            TrackWarning::SamplesLeftOut { .. } => Some("points"),
+            TrackWarning::SeveralAxes { .. } => Some("gyroscope_axis_share"),
         }
     }
 }
@@ -385,11 +407,7 @@ fn degrees(rate: bool) -> &'static str {
     }
 }
 
-impl Serialize for TrackWarning {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_str(self)
-    }
-}
+crate::warning::serialize_as_warning!(TrackWarning);
 
 /// The analysis of a tracked swing.
 #[derive(Clone, Debug, Serialize)]
@@ -513,33 +531,114 @@ impl From<&super::frames::FrameGrid> for TimeRebuilt {
     }
 }
 
-/// The model fitted when none is named: the nonlinear one past 5°.
-pub const DEFAULT_MODEL: &str = "auto";
+/// A tracked record checked and cut to what is fitted: the angles, or a
+/// gyroscope's rotation about its principal axis, at their times (rebuilt
+/// on their frame grid where they were written rounded), the longest run
+/// of them kept.
+struct Record<'a> {
+    /// The times given, s.
+    input_time: &'a [f64],
+    /// The angles given, rad (empty for a gyroscope's rates).
+    input_angle: &'a [f64],
+    /// A gyroscope's principal axis and the rotation about it, rad/s.
+    principal: Option<PrincipalAxis>,
+    /// The times rebuilt on their frame grid, where they were written
+    /// rounded.
+    grid: Option<FrameGrid>,
+    /// The rows fitted: the record's longest run.
+    kept: Range<usize>,
+    /// Each run left out: first and last times, s, and samples.
+    left_out: Vec<[f64; 3]>,
+    /// What was measured: angles or angular velocities.
+    observed: Observed,
+    /// The swing, as an angle (a rate's over the record's frequency), rad.
+    swing_angle: f64,
+}
 
-/// Analyses a tracked swing (see the module notes).
-///
-/// # Examples
-///
-/// ```
-/// use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
-///
-/// // A 0.5 m pendulum (g = 9.81) released at 0.01 rad with ζ = 0.002, filmed
-/// // at 50 frames a second: the seed's section 1-4 closed form.
-/// let (w, z) = ((9.81_f64 / 0.5).sqrt(), 0.002_f64);
-/// let wd = w * (1.0 - z * z).sqrt();
-/// let time: Vec<f64> = (0..1000).map(|k| k as f64 / 50.0).collect();
-/// let angle: Vec<f64> = time.iter()
-///     .map(|&t| 0.01 * (-z * w * t).exp() * ((wd * t).cos() + z * w / wd * (wd * t).sin()))
-///     .collect();
-/// let length = Some((0.5, LengthSource::Given));
-/// let fit = analyse(&TrackInput { time: &time, angle: &angle, length, ..Default::default() })?;
-/// assert_eq!(fit.model, "linear"); // chosen below a 5° swing
-/// assert!((fit.q_viscous.unwrap() - 1.0 / (2.0 * z)).abs() < 1e-6); // Q = 1/(2ζ)
-/// assert!((fit.parameters["g_m_s2"] - 9.81).abs() < 1e-3);
-/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
-/// ```
-pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
-    let time = input.time;
+impl<'a> Record<'a> {
+    /// The record of `input` checked (each refusal names its field): the
+    /// values and their times paired, finite and increasing, the longest
+    /// run kept, and a swing there that a pendulum can make.
+    fn checked(input: &TrackInput<'a>) -> Result<Self, Refusal> {
+        let principal = gyroscope_rotation(input)?;
+        let (theta, observed, name) = match &principal {
+            Some(p) => (
+                p.rate.as_slice(),
+                Observed::AngularVelocity,
+                "angular_velocity",
+            ),
+            None => (input.angle, Observed::Angle, "angle"),
+        };
+        let rate = observed == Observed::AngularVelocity;
+        check_pairs("time", name, input.time, theta)?;
+        // Times written rounded (repeats among them) are rebuilt on their
+        // frame grid before they are judged.
+        require_finite_samples("time", input.time)?;
+        let grid = frame_grid(input.time);
+        let time = grid.as_ref().map_or(input.time, |g| g.time.as_slice());
+        check_times("time", time)?;
+        require_finite_samples(name, theta)?;
+        // A record in pieces (a tracker that lost the bob, a logger paused):
+        // its longest run is fitted, the rest left out and said.
+        let (kept, others) = longest_run(time);
+        let left_out: Vec<[f64; 3]> = others
+            .iter()
+            .map(|r| [time[r.start], time[r.end - 1], r.len() as f64])
+            .collect();
+        let (time, theta) = (&time[kept.clone()], &theta[kept.clone()]);
+        refuse_still(theta, rate)?;
+        // The swing, as an angle (a rate's over the record's frequency).
+        let swing_angle = swing_of(time, theta, observed);
+        refuse_half_turn(theta, swing_angle, rate)?;
+        Ok(Record {
+            input_time: input.time,
+            input_angle: input.angle,
+            principal,
+            grid,
+            kept,
+            left_out,
+            observed,
+            swing_angle,
+        })
+    }
+
+    /// The times fitted, s.
+    fn time(&self) -> &[f64] {
+        let time = self
+            .grid
+            .as_ref()
+            .map_or(self.input_time, |g| g.time.as_slice());
+        &time[self.kept.clone()]
+    }
+
+    /// The values fitted: angles, rad, or the angular velocities about the
+    /// gyroscope's principal axis, rad/s.
+    fn theta(&self) -> &[f64] {
+        let theta = self
+            .principal
+            .as_ref()
+            .map_or(self.input_angle, |p| p.rate.as_slice());
+        &theta[self.kept.clone()]
+    }
+
+    /// Whether the values fitted are a gyroscope's angular velocities.
+    fn rate(&self) -> bool {
+        self.observed == Observed::AngularVelocity
+    }
+
+    /// The interval between the first two samples fitted, s (0 for one
+    /// sample).
+    fn interval(&self) -> f64 {
+        let time = self.time();
+        time.get(1).zip(time.first()).map_or(0.0, |(b, a)| b - a)
+    }
+}
+
+/// A gyroscope's rotation about its principal axis, from the angular
+/// velocities given (one to three axes, each paired with the times and
+/// finite); `None` when angles are given instead. Refused when both are
+/// given, or when the rates never change.
+fn gyroscope_rotation(input: &TrackInput<'_>) -> Result<Option<PrincipalAxis>, Refusal> {
     let axes = input.angular_velocity;
     if !input.angle.is_empty() && !axes.is_empty() {
         return Err(Refusal::field(
@@ -554,52 +653,23 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         ));
     }
     for axis in axes {
-        check_pairs("time", "angular_velocity", time, axis)?;
+        check_pairs("time", "angular_velocity", input.time, axis)?;
         require_finite_samples("angular_velocity", axis)?;
     }
-    let principal = if axes.is_empty() {
-        None
-    } else {
-        Some(principal_axis(axes).ok_or_else(|| {
-            Refusal::data(
-                "the angular velocity never changes about any axis: there is no swing to fit; \
-                 is it the gyroscope of the swinging phone?",
-            )
-        })?)
-    };
-    let (theta, observed, name) = match &principal {
-        Some(p) => (
-            p.rate.as_slice(),
-            Observed::AngularVelocity,
-            "angular_velocity",
-        ),
-        None => (input.angle, Observed::Angle, "angle"),
-    };
-    let rate = observed == Observed::AngularVelocity;
-    check_pairs("time", name, time, theta)?;
-    // Times written rounded (repeats among them) are rebuilt on their
-    // frame grid before they are judged.
-    require_finite_samples("time", time)?;
-    let grid = frame_grid(time);
-    let rebuilt: Vec<f64>;
-    let time: &[f64] = match &grid {
-        Some(g) => {
-            rebuilt = g.time.clone();
-            &rebuilt
-        }
-        None => time,
-    };
-    check_times("time", time)?;
-    require_finite_samples(name, theta)?;
-    // A record in pieces (a tracker that lost the bob, a logger paused):
-    // its longest run is fitted, the rest left out and said.
-    let (kept, others) = longest_run(time);
-    let left_out: Vec<[f64; 3]> = others
-        .iter()
-        .map(|r| [time[r.start], time[r.end - 1], r.len() as f64])
-        .collect();
-    let first_row = kept.start;
-    let (time, theta) = (&time[kept.clone()], &theta[kept]);
+    if axes.is_empty() {
+        return Ok(None);
+    }
+    Ok(Some(principal_axis(axes).ok_or_else(|| {
+        Refusal::data(
+            "the angular velocity never changes about any axis: there is no swing to fit; \
+             is it the gyroscope of the swinging phone?",
+        )
+    })?))
+}
+
+/// Refuses values `theta` (angles, or angular velocities when `rate`)
+/// that never change: there is no swing to fit.
+fn refuse_still(theta: &[f64], rate: bool) -> Result<(), Refusal> {
     if let (Some(first), true) = (theta.first(), theta.len() > 1) {
         if theta.iter().all(|v| v == first) {
             return Err(Refusal::data(if rate {
@@ -617,8 +687,13 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             }));
         }
     }
-    // The swing, as an angle (a rate's over the record's frequency).
-    let swing_angle = swing_of(time, theta, observed);
+    Ok(())
+}
+
+/// Refuses a swing of half a turn or more from the middle, which no
+/// swinging pendulum makes: angular velocities (when `rate`) whose swing
+/// as an angle is `swing_angle` rad, or angles `theta` about their median.
+fn refuse_half_turn(theta: &[f64], swing_angle: f64, rate: bool) -> Result<(), Refusal> {
     if rate && swing_angle >= std::f64::consts::PI {
         return Err(Refusal::data(format!(
             "the angular velocity means a swing of {} rad ({}°) from the middle, more than the \
@@ -644,17 +719,28 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             )));
         }
     }
-    let requested = match input.model.unwrap_or(DEFAULT_MODEL) {
-        "auto" => "auto",
-        "linear" => "linear",
-        "nonlinear" => "nonlinear",
-        other => {
-            return Err(Refusal::field(
-                "model",
-                format!("'{other}' is not one of auto, linear, nonlinear"),
-            ))
-        }
-    };
+    Ok(())
+}
+
+/// The model named `name`: `linear` or `nonlinear`, or `None` for `auto`
+/// ([`DEFAULT_MODEL`]: nonlinear above a 5° swing); refused, naming the
+/// field `model`, for any other name.
+pub fn parse_model(name: &str) -> Result<Option<TrajectoryModel>, Refusal> {
+    match name {
+        "auto" => Ok(None),
+        "linear" => Ok(Some(TrajectoryModel::Linear)),
+        "nonlinear" => Ok(Some(TrajectoryModel::Nonlinear)),
+        other => Err(Refusal::field(
+            "model",
+            format!("'{other}' is not one of auto, linear, nonlinear"),
+        )),
+    }
+}
+
+/// Checks the length g is computed with, m (positive, and a measured
+/// one within [`LENGTH_RANGE_M`]), and its standard uncertainty, m
+/// (given with the length, positive and smaller than it).
+fn check_length(input: &TrackInput<'_>) -> Result<(), Refusal> {
     if let Some((l, source)) = input.length {
         require_finite("length", l)?;
         if !(l > 0.0 && l.is_finite()) {
@@ -701,21 +787,14 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
             _ => {}
         }
     }
-    judge_work(
-        "time",
-        format!("{} rows", time.len()),
-        time.len() as f64 * SECONDS_PER_ROW,
-        input.force,
-    )?;
-    let model = match requested {
-        "linear" => TrajectoryModel::Linear,
-        "nonlinear" => TrajectoryModel::Nonlinear,
-        _ => TrajectoryModel::auto_at(swing_angle),
-    };
-    let mut fit =
-        fit_observed(model, time, theta, observed).map_err(|e| Refusal::data(e.to_string()))?;
-    // Errors correlated from sample to sample carry less information than
-    // the fit assumed: every standard error is widened for it.
+    Ok(())
+}
+
+/// Widens `fit`'s standard errors (its covariance, and the natural
+/// angular frequency's error) by the AR(1) factor of its residuals after
+/// the held samples ([`correlation_inflation`]): returns their lag-one
+/// autocorrelation and the factor.
+fn widen_for_correlation(fit: &mut TrajectoryFit) -> (f64, f64) {
     let (autocorrelation, inflation) =
         correlation_inflation(&fit.fit.residuals[fit.held_samples.min(fit.fit.residuals.len())..]);
     for se in &mut fit.fit.standard_errors {
@@ -725,184 +804,291 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         *v *= inflation * inflation;
     }
     fit.natural_angular_frequency_error *= inflation;
-    let names = fit.names();
-    let mut parameters: BTreeMap<&'static str, f64> = names
-        .iter()
-        .zip(&fit.fit.parameters)
-        .map(|(n, v)| (*n, *v))
-        .collect();
-    let mut standard_errors: BTreeMap<&'static str, f64> = names
-        .iter()
-        .zip(&fit.fit.standard_errors)
-        .map(|(n, v)| (*n, *v))
-        .collect();
-    // The envelope amplitude is a magnitude; a negative one is the same
-    // curve shifted by π.
-    if let Some(a) = parameters.get_mut("amplitude_rad") {
-        *a = a.abs();
+    (autocorrelation, inflation)
+}
+
+/// The figures reported by name: the fitted parameters and those derived
+/// from them (g, the first crest), their standard errors, and what the
+/// standard errors of figures derived from a measured input are made of.
+struct Figures {
+    parameters: BTreeMap<&'static str, f64>,
+    standard_errors: BTreeMap<&'static str, f64>,
+    standard_error_parts: BTreeMap<&'static str, ErrorParts>,
+}
+
+impl Figures {
+    /// The parameters of `fit` and their standard errors by name, the
+    /// envelope amplitude as a magnitude.
+    fn of(fit: &TrajectoryFit) -> Self {
+        let names = fit.names();
+        let mut parameters: BTreeMap<&'static str, f64> = names
+            .iter()
+            .zip(&fit.fit.parameters)
+            .map(|(n, v)| (*n, *v))
+            .collect();
+        let standard_errors: BTreeMap<&'static str, f64> = names
+            .iter()
+            .zip(&fit.fit.standard_errors)
+            .map(|(n, v)| (*n, *v))
+            .collect();
+        // The envelope amplitude is a magnitude; a negative one is the same
+        // curve shifted by π.
+        if let Some(a) = parameters.get_mut("amplitude_rad") {
+            *a = a.abs();
+        }
+        Self {
+            parameters,
+            standard_errors,
+            standard_error_parts: BTreeMap::new(),
+        }
     }
-    let mut standard_error_parts: BTreeMap<&'static str, ErrorParts> = BTreeMap::new();
+
+    /// Sets the figure `name` to `value` with its standard error `se`.
+    fn insert(&mut self, name: &'static str, value: f64, se: f64) {
+        self.parameters.insert(name, value);
+        self.standard_errors.insert(name, se);
+    }
+}
+
+/// What a person must know about `fit` of `record`, in the order said:
+/// the fit's own note, the samples left out, the angles' unit, g or the
+/// period, the first crest, the gyroscope's axes, a swing that grows, the
+/// parameters `undetermined`, and the fit against the record. Adds g and
+/// the first crest to `figures`.
+fn track_warnings(
+    input: &TrackInput<'_>,
+    record: &Record<'_>,
+    fit: &TrajectoryFit,
+    figures: &mut Figures,
+    undetermined: &[&'static str],
+) -> Vec<TrackWarning> {
+    let time = record.time();
     let mut warnings: Vec<TrackWarning> = fit
         .fallback_note()
         .map(TrackWarning::NonlinearRejected)
         .into_iter()
         .collect();
-    if !left_out.is_empty() {
+    if !record.left_out.is_empty() {
         warnings.push(TrackWarning::SamplesLeftOut {
             kept: [time[0], time[time.len() - 1]],
-            left: left_out,
+            left: record.left_out.clone(),
         });
     }
-    if input.declared_degrees
-        && !rate
-        && !input.angle_from_positions
-        && swing_angle < TINY_SWING_DEG.to_radians()
-    {
-        use crate::pendulum::Amplitude;
-        use crate::period::period_ratio;
-        let ratio = |a: f64| Amplitude::from_radians(a.min(3.1)).map_or(1.0, period_ratio);
-        let other = swing_angle.to_degrees();
-        warnings.push(TrackWarning::AnglesLookLikeRadians {
-            swing: swing_angle,
-            g_change: (ratio(other) / ratio(swing_angle)).powi(2) - 1.0,
-        });
-    }
-    // The linear model's g carries a finite-amplitude bias larger than its
-    // standard error above a few degrees (the correction takes the
-    // amplitude at mid-record, but the swing decays through it).
-    if let Some((l, _)) = input.length {
-        if fit.model.gives_gravity_at(swing_angle) {
-            let (g, se) = fit.gravity(l);
-            // g = l ω²: the length's error adds in quadrature.
-            let parts = ErrorParts::gravity(g, se, l, input.length_standard_error);
-            let se = parts.total();
-            standard_error_parts.insert("g_m_s2", parts);
-            parameters.insert("g_m_s2", g);
-            standard_errors.insert("g_m_s2", se);
-            if let Some(likely) = implausible_gravity(g, input.length.map(|(_, s)| s)) {
-                warnings.push(TrackWarning::GravityImplausible { g, likely });
-            } else if let Some(w) =
-                // (Rates carry their unit, and one mistaken is a swing 57
-                // times too large, refused above, or too small.)
-                angle_unit_hint(g, se, swing_angle)
-                    .filter(|_| !input.angle_from_positions && !rate)
-            {
-                warnings.push(w);
-            } else if (g - crate::STANDARD_GRAVITY).abs()
-                > (GRAVITY_CHECK * crate::STANDARD_GRAVITY).max(3.0 * se)
-            {
-                warnings.push(TrackWarning::GravityOff { g });
-            }
-        } else {
-            warnings.push(TrackWarning::NoGravityFromLinear { swing: swing_angle });
-        }
-    }
-    // The first crest the record shows, beside the fitted amplitude (the
-    // envelope's at the first sample, or the release's up to a period
-    // before it): measured from the samples around it (angles; a
-    // gyroscope's rate has no crest to see), the fitted curve's beside it.
-    let interval = time.get(1).zip(time.first()).map_or(0.0, |(b, a)| b - a);
-    let held = fit.held_samples.min(time.len());
-    let white = noise_of(&fit.fit.residuals[held..]).unwrap_or(0.0);
-    if let Some([crest_time, time_error, amplitude, error]) = fit.first_crest(interval) {
-        let offset = parameters.get("offset_rad").copied().unwrap_or(0.0);
-        let offset_error = standard_errors.get("offset_rad").copied().unwrap_or(0.0);
-        let at = time[0] + crest_time;
-        let curve: Vec<f64> = theta
-            .iter()
-            .zip(&fit.fit.residuals)
-            .map(|(v, r)| v - r)
-            .collect();
-        let nearest = time[held..]
-            .partition_point(|&t| t < at)
-            .min(time.len() - held - 1)
-            + held;
-        let sign = if curve[nearest] >= offset { 1.0 } else { -1.0 };
-        let quarter = 0.25 * std::f64::consts::TAU / fit.natural_angular_frequency.max(1e-300);
-        let measured = (!rate)
-            .then(|| {
-                measured_crest(
-                    &time[held..],
-                    &theta[held..],
-                    &curve[held..],
-                    at,
-                    offset + sign * amplitude,
-                    0.5 * quarter,
-                    CREST_MIN_SIDE,
-                    white,
-                    sign,
-                )
-            })
-            .flatten();
-        match measured {
-            Some(c) => {
-                let value = sign * (c.value - offset);
-                let value_se = c.value_standard_error.hypot(offset_error);
-                parameters.insert("first_crest_time_s", c.time - time[0]);
-                standard_errors.insert("first_crest_time_s", c.time_standard_error);
-                parameters.insert("first_crest_amplitude_rad", value);
-                standard_errors.insert("first_crest_amplitude_rad", value_se);
-                parameters.insert("first_crest_fitted_amplitude_rad", amplitude);
-                standard_errors.insert("first_crest_fitted_amplitude_rad", error);
-                let apart = (value - amplitude).abs();
-                let sigma = value_se.hypot(error);
-                // (A record fitted exactly has no errors to judge by.)
-                if sigma > 0.0 && (apart / sigma).is_finite() && apart > CREST_SIGMA * sigma {
-                    warnings.push(TrackWarning::FirstCrestOff {
-                        measured: value,
-                        measured_error: value_se,
-                        fitted: amplitude,
-                        sigmas: apart / sigma,
-                    });
-                }
-            }
-            None => {
-                parameters.insert("first_crest_time_s", crest_time);
-                standard_errors.insert("first_crest_time_s", time_error);
-                parameters.insert("first_crest_amplitude_rad", amplitude);
-                standard_errors.insert("first_crest_amplitude_rad", error);
-            }
-        }
-    }
+    warnings.extend(radians_hint(input, record));
+    warnings.extend(gravity(input, record, fit, figures));
+    warnings.extend(first_crest(record, fit, figures));
     // Without a length g cannot be judged; the period still can.
     if input.length.is_none() {
-        let w0 = fit.natural_angular_frequency;
-        let length = crate::STANDARD_GRAVITY / (w0 * w0);
-        if w0 > 0.0 && length.is_finite() && !LENGTH_RANGE_M.contains(&length) {
-            warnings.push(TrackWarning::PeriodImplausible {
-                period: std::f64::consts::TAU / w0,
-                length,
-            });
-        }
+        warnings.extend(period_implausible(fit));
     }
-    if let Some(p) = principal
+    if let Some(p) = record
+        .principal
         .as_ref()
         .filter(|p| p.share < GYROSCOPE_AXIS_SHARE)
     {
         warnings.push(TrackWarning::SeveralAxes { share: p.share });
     }
-    let undetermined = fit.undetermined();
-    // A swing that grows: a negative damping beyond its errors, or the
-    // record's own last swings a fifth larger than its first.
-    if let (Some(&zeta), Some(&se)) = (parameters.get("zeta"), standard_errors.get("zeta")) {
-        let turns = super::turning::turning_points(
-            &time[fit.held_samples.min(time.len())..],
-            &theta[fit.held_samples.min(theta.len())..],
-        )
-        .turns;
-        let quarter = turns.len() / 4;
-        let mean = |t: &[super::turning::Turn]| {
-            t.iter().map(|t| t.amplitude).sum::<f64>() / t.len().max(1) as f64
-        };
-        let grows =
-            quarter >= 2 && mean(&turns[turns.len() - quarter..]) > 1.2 * mean(&turns[..quarter]);
-        if zeta < -3.0 * se || (grows && zeta < 0.0) {
-            warnings.push(TrackWarning::SwingGrows {
-                zeta,
-                standard_error: se,
-            });
+    warnings.extend(swing_grows(record, fit, figures));
+    warnings.extend(undetermined_warnings(undetermined, &figures.parameters));
+    warnings.extend(against_record(record, fit, &figures.parameters));
+    warnings
+}
+
+/// Angles declared in degrees (not computed from positions) whose swing
+/// never reaches [`TINY_SWING_DEG`]: a warning that they look like
+/// radians, with how much g would change were they read so.
+fn radians_hint(input: &TrackInput<'_>, record: &Record<'_>) -> Option<TrackWarning> {
+    let swing_angle = record.swing_angle;
+    (input.declared_degrees
+        && !record.rate()
+        && !input.angle_from_positions
+        && swing_angle < TINY_SWING_DEG.to_radians())
+    .then(|| {
+        use crate::pendulum::Amplitude;
+        use crate::period::period_ratio;
+        let ratio = |a: f64| Amplitude::from_radians(a.min(3.1)).map_or(1.0, period_ratio);
+        let other = swing_angle.to_degrees();
+        TrackWarning::AnglesLookLikeRadians {
+            swing: swing_angle,
+            g_change: (ratio(other) / ratio(swing_angle)).powi(2) - 1.0,
         }
+    })
+}
+
+/// g, m/s², from the length given and the fitted frequency, added to
+/// `figures` with its standard error (the length's part beside the
+/// fit's), and judged against standard gravity: a warning when it is no
+/// pendulum's on Earth, an angle unit looks mistaken, or the length looks
+/// wrong; or that the linear model gives no g at this swing. `None`
+/// without a length.
+fn gravity(
+    input: &TrackInput<'_>,
+    record: &Record<'_>,
+    fit: &TrajectoryFit,
+    figures: &mut Figures,
+) -> Option<TrackWarning> {
+    let (l, _) = input.length?;
+    let (swing_angle, rate) = (record.swing_angle, record.rate());
+    // The linear model's g carries a finite-amplitude bias larger than its
+    // standard error above a few degrees (the correction takes the
+    // amplitude at mid-record, but the swing decays through it).
+    if !fit.model.gives_gravity_at(swing_angle) {
+        return Some(TrackWarning::NoGravityFromLinear { swing: swing_angle });
     }
+    let (g, se) = fit.gravity(l);
+    // g = l ω²: the length's error adds in quadrature.
+    let parts = ErrorParts::gravity(g, se, l, input.length_standard_error);
+    let se = parts.total();
+    figures.standard_error_parts.insert("g_m_s2", parts);
+    figures.insert("g_m_s2", g, se);
+    if let Some(likely) = implausible_gravity(g, input.length.map(|(_, s)| s)) {
+        Some(TrackWarning::GravityImplausible { g, likely })
+    } else if let Some(w) =
+        // (Rates carry their unit, and one mistaken is a swing 57
+        // times too large, refused above, or too small.)
+        angle_unit_hint(g, se, swing_angle)
+            .filter(|_| !input.angle_from_positions && !rate)
+    {
+        Some(w)
+    } else if (g - crate::STANDARD_GRAVITY).abs()
+        > (GRAVITY_CHECK * crate::STANDARD_GRAVITY).max(3.0 * se)
+    {
+        Some(TrackWarning::GravityOff { g })
+    } else {
+        None
+    }
+}
+
+/// The first crest the record shows, beside the fitted amplitude (the
+/// envelope's at the first sample, or the release's up to a period
+/// before it): measured from the samples around it (angles; a
+/// gyroscope's rate has no crest to see), the fitted curve's beside it.
+/// Adds its time, s, and amplitude, rad, to `figures` (the fitted curve's
+/// where none is measured); a warning when the two are more than
+/// [`CREST_SIGMA`] standard errors apart.
+fn first_crest(
+    record: &Record<'_>,
+    fit: &TrajectoryFit,
+    figures: &mut Figures,
+) -> Option<TrackWarning> {
+    let (time, theta, rate) = (record.time(), record.theta(), record.rate());
+    let held = fit.held_samples.min(time.len());
+    let white = noise_of(&fit.fit.residuals[held..]).unwrap_or(0.0);
+    let [crest_time, time_error, amplitude, error] = fit.first_crest(record.interval())?;
+    let offset = figures.parameters.get("offset_rad").copied().unwrap_or(0.0);
+    let offset_error = figures
+        .standard_errors
+        .get("offset_rad")
+        .copied()
+        .unwrap_or(0.0);
+    let at = time[0] + crest_time;
+    let curve: Vec<f64> = theta
+        .iter()
+        .zip(&fit.fit.residuals)
+        .map(|(v, r)| v - r)
+        .collect();
+    let nearest = time[held..]
+        .partition_point(|&t| t < at)
+        .min(time.len() - held - 1)
+        + held;
+    let sign = if curve[nearest] >= offset { 1.0 } else { -1.0 };
+    let quarter = 0.25 * std::f64::consts::TAU / fit.natural_angular_frequency.max(1e-300);
+    let measured = (!rate)
+        .then(|| {
+            measured_crest(
+                &time[held..],
+                &theta[held..],
+                &curve[held..],
+                at,
+                offset + sign * amplitude,
+                0.5 * quarter,
+                CREST_MIN_SIDE,
+                white,
+                sign,
+            )
+        })
+        .flatten();
+    let Some(c) = measured else {
+        figures.insert("first_crest_time_s", crest_time, time_error);
+        figures.insert("first_crest_amplitude_rad", amplitude, error);
+        return None;
+    };
+    let value = sign * (c.value - offset);
+    let value_se = c.value_standard_error.hypot(offset_error);
+    figures.insert(
+        "first_crest_time_s",
+        c.time - time[0],
+        c.time_standard_error,
+    );
+    figures.insert("first_crest_amplitude_rad", value, value_se);
+    figures.insert("first_crest_fitted_amplitude_rad", amplitude, error);
+    let apart = (value - amplitude).abs();
+    let sigma = value_se.hypot(error);
+    // (A record fitted exactly has no errors to judge by.)
+    (sigma > 0.0 && (apart / sigma).is_finite() && apart > CREST_SIGMA * sigma).then_some(
+        TrackWarning::FirstCrestOff {
+            measured: value,
+            measured_error: value_se,
+            fitted: amplitude,
+            sigmas: apart / sigma,
+        },
+    )
+}
+
+/// A warning when `fit`'s small-angle period is no pendulum's of
+/// [`LENGTH_RANGE_M`] at standard gravity (the length it means, m,
+/// beside it): what is judged when no length is given.
+fn period_implausible(fit: &TrajectoryFit) -> Option<TrackWarning> {
+    let w0 = fit.natural_angular_frequency;
+    let length = crate::STANDARD_GRAVITY / (w0 * w0);
+    (w0 > 0.0 && length.is_finite() && !LENGTH_RANGE_M.contains(&length)).then(|| {
+        TrackWarning::PeriodImplausible {
+            period: std::f64::consts::TAU / w0,
+            length,
+        }
+    })
+}
+
+/// A swing that grows: a negative damping beyond its errors, or the
+/// record's own last swings a fifth larger than its first (with a
+/// negative ζ); `None` without a fitted ζ.
+fn swing_grows(
+    record: &Record<'_>,
+    fit: &TrajectoryFit,
+    figures: &Figures,
+) -> Option<TrackWarning> {
+    let (time, theta) = (record.time(), record.theta());
+    let (Some(&zeta), Some(&se)) = (
+        figures.parameters.get("zeta"),
+        figures.standard_errors.get("zeta"),
+    ) else {
+        return None;
+    };
+    let turns = super::turning::turning_points(
+        &time[fit.held_samples.min(time.len())..],
+        &theta[fit.held_samples.min(theta.len())..],
+    )
+    .turns;
+    let quarter = turns.len() / 4;
+    let mean = |t: &[super::turning::Turn]| {
+        t.iter().map(|t| t.amplitude).sum::<f64>() / t.len().max(1) as f64
+    };
+    let grows =
+        quarter >= 2 && mean(&turns[turns.len() - quarter..]) > 1.2 * mean(&turns[..quarter]);
+    (zeta < -3.0 * se || (grows && zeta < 0.0)).then_some(TrackWarning::SwingGrows {
+        zeta,
+        standard_error: se,
+    })
+}
+
+/// The warnings of the parameters the data do not determine
+/// (`undetermined`, of the fitted `parameters`): ζ where it is the whole
+/// damping, and the parameters of the motion's shape.
+fn undetermined_warnings(
+    undetermined: &[&'static str],
+    parameters: &BTreeMap<&'static str, f64>,
+) -> Vec<TrackWarning> {
+    let mut warnings = Vec::new();
     // An undetermined ζ is a warning where it is the whole damping (Q
     // then rests on it); beside drag or friction it is one part of a loss
     // that Q over the record measures, and its "not determined" stands
@@ -922,8 +1108,19 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     if !shape.is_empty() {
         warnings.push(TrackWarning::ShapeUndetermined(shape));
     }
-    // The fit checks itself against the record: residuals against the
-    // swing, and its zero crossings against the data's.
+    warnings
+}
+
+/// The fit checks itself against the record: a warning when its
+/// residuals are a large part ([`RESIDUAL_OF_SWING`]) of the swing about
+/// the fitted offset, and one when its zero crossings are not the data's.
+fn against_record(
+    record: &Record<'_>,
+    fit: &TrajectoryFit,
+    parameters: &BTreeMap<&'static str, f64>,
+) -> Vec<TrackWarning> {
+    let theta = record.theta();
+    let mut warnings = Vec::new();
     let offset = parameters
         .get("offset_rad")
         .or(parameters.get("rate_offset_rad_s"))
@@ -934,27 +1131,30 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         warnings.push(TrackWarning::PoorFit {
             rms: fit.fit.residual_rms,
             swing,
-            rate,
+            rate: record.rate(),
         });
     }
-    // The residuals against the record's own sample-to-sample noise: a
-    // pattern the model leaves, or tracking errors correlated from sample
-    // to sample. The standard errors already carry both (the residuals'
-    // variance scales them, as SciPy's curve_fit does, and their
-    // correlation widens them by the AR(1) factor): said beside them, not
-    // warned. (The residuals of angles read in steps are not in steps;
-    // the steps' rounding is in them all the same.)
-    let residual_to_noise = noise_of(&fit.fit.residuals[held..])
-        .map(|n| n.max(super::rounding_noise(theta)))
-        .map(|n| fit.fit.residual_rms / n)
-        .filter(|v| v.is_finite());
+    warnings.extend(crossings_differ(theta, &fit.fit.residuals, offset, swing));
+    warnings
+}
+
+/// A warning when the fitted curve (the values `theta` less their
+/// `residuals`) crosses the `offset` more than two times more or fewer
+/// than the data do, counted across a band of [`CROSSING_BAND`] of the
+/// largest `swing`: its frequency is not the record's.
+fn crossings_differ(
+    theta: &[f64],
+    residuals: &[f64],
+    offset: f64,
+    swing: f64,
+) -> Option<TrackWarning> {
     // Counted over the span where both swing beyond the band: a curve
     // that decays by another law leaves the band earlier or later than
     // the data, with the same frequency.
     let band = CROSSING_BAND * swing;
     let data = crossing_indices(theta.iter().copied(), offset, band);
     let model = crossing_indices(
-        theta.iter().zip(&fit.fit.residuals).map(|(v, r)| v - r),
+        theta.iter().zip(residuals).map(|(v, r)| v - r),
         offset,
         band,
     );
@@ -965,45 +1165,123 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     };
     let data = data.iter().filter(|&&i| i <= end).count();
     let model = model.iter().filter(|&&i| i <= end).count();
-    if data.abs_diff(model) > 2 {
-        warnings.push(TrackWarning::CrossingsDiffer { data, model });
-    }
-    let zeta = parameters
+    (data.abs_diff(model) > 2).then_some(TrackWarning::CrossingsDiffer { data, model })
+}
+
+/// The residual rms of `fit` over the record's own sample-to-sample noise
+/// (from the residuals' fourth differences, at least the rounding's of
+/// the values): `None` when it cannot be measured.
+fn residual_over_noise(record: &Record<'_>, fit: &TrajectoryFit) -> Option<f64> {
+    let held = fit.held_samples.min(record.time().len());
+    // The residuals against the record's own sample-to-sample noise: a
+    // pattern the model leaves, or tracking errors correlated from sample
+    // to sample. The standard errors already carry both (the residuals'
+    // variance scales them, as SciPy's curve_fit does, and their
+    // correlation widens them by the AR(1) factor): said beside them, not
+    // warned. (The residuals of angles read in steps are not in steps;
+    // the steps' rounding is in them all the same.)
+    noise_of(&fit.fit.residuals[held..])
+        .map(|n| n.max(super::rounding_noise(record.theta())))
+        .map(|n| fit.fit.residual_rms / n)
+        .filter(|v| v.is_finite())
+}
+
+/// The viscous part's `Q = 1/(2ζ)` and its standard error `σ_ζ / (2ζ²)`,
+/// when the fitted ζ is positive and not `undetermined`.
+fn viscous_q(figures: &Figures, undetermined: &[&'static str]) -> (Option<f64>, Option<f64>) {
+    let zeta = figures
+        .parameters
         .get("zeta")
         .copied()
         .filter(|&z| z > 0.0 && !undetermined.contains(&"zeta"));
     let q_viscous = zeta.map(|z| 0.5 / z);
     let q_viscous_standard_error = zeta
-        .and_then(|z| standard_errors.get("zeta").map(|se| se / (2.0 * z * z)))
+        .and_then(|z| {
+            figures
+                .standard_errors
+                .get("zeta")
+                .map(|se| se / (2.0 * z * z))
+        })
         .filter(|se| se.is_finite());
+    (q_viscous, q_viscous_standard_error)
+}
+
+/// The model fitted when none is named: the nonlinear one past 5°.
+pub const DEFAULT_MODEL: &str = "auto";
+
+/// Analyses a tracked swing (see the module notes).
+///
+/// # Examples
+///
+/// ```
+/// use pendulum_theory::fitting::tracked::{analyse, LengthSource, TrackInput};
+///
+/// // A 0.5 m pendulum (g = 9.81) released at 0.01 rad with ζ = 0.002, filmed
+/// // at 50 frames a second: the seed's section 1-4 closed form.
+/// let (w, z) = ((9.81_f64 / 0.5).sqrt(), 0.002_f64);
+/// let wd = w * (1.0 - z * z).sqrt();
+/// let time: Vec<f64> = (0..1000).map(|k| k as f64 / 50.0).collect();
+/// let angle: Vec<f64> = time.iter()
+///     .map(|&t| 0.01 * (-z * w * t).exp() * ((wd * t).cos() + z * w / wd * (wd * t).sin()))
+///     .collect();
+/// let length = Some((0.5, LengthSource::Given));
+/// let fit = analyse(&TrackInput { time: &time, angle: &angle, length, ..Default::default() })?;
+/// assert_eq!(fit.model, "linear"); // chosen below a 5° swing
+/// assert!((fit.q_viscous.unwrap() - 1.0 / (2.0 * z)).abs() < 1e-6); // Q = 1/(2ζ)
+/// assert!((fit.parameters["g_m_s2"] - 9.81).abs() < 1e-3);
+/// # Ok::<(), pendulum_theory::analysis::Refusal>(())
+/// ```
+pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
+    let record = Record::checked(input)?;
+    let requested = input.model.map_or(DEFAULT_MODEL, TrajectoryModel::name);
+    check_length(input)?;
+    let (time, theta, rate) = (record.time(), record.theta(), record.rate());
+    judge_work(
+        "time",
+        format!("{} rows", time.len()),
+        time.len() as f64 * SECONDS_PER_ROW,
+        input.force,
+    )?;
+    let model = input
+        .model
+        .unwrap_or_else(|| TrajectoryModel::auto_at(record.swing_angle));
+    let mut fit = fit_observed(model, time, theta, record.observed)
+        .map_err(|e| Refusal::data(e.to_string()))?;
+    // Errors correlated from sample to sample carry less information than
+    // the fit assumed: every standard error is widened for it.
+    let (autocorrelation, inflation) = widen_for_correlation(&mut fit);
+    let mut figures = Figures::of(&fit);
+    let undetermined = fit.undetermined();
+    let warnings = track_warnings(input, &record, &fit, &mut figures, &undetermined);
+    let residual_to_noise = residual_over_noise(&record, &fit);
+    let (q_viscous, q_viscous_standard_error) = viscous_q(&figures, &undetermined);
     // Q over the record, from the fitted motion's energy loss.
+    let held = fit.held_samples.min(time.len());
     let span = time.last().copied().unwrap_or(0.0) - time[held.min(time.len() - 1)];
-    let record = fit.record_q(span, interval);
+    let q_record = fit.record_q(span, record.interval());
+    let principal = record.principal.as_ref();
     Ok(Track {
         points: time.len(),
-        q_factor: record.and_then(|q| q.q()).filter(|q| q.is_finite()),
-        q_factor_standard_error: record.and_then(|q| q.q_standard_error()),
-        q_factor_lower_bound: record.and_then(|q| q.lower_bound()),
+        q_factor: q_record.and_then(|q| q.q()).filter(|q| q.is_finite()),
+        q_factor_standard_error: q_record.and_then(|q| q.q_standard_error()),
+        q_factor_lower_bound: q_record.and_then(|q| q.lower_bound()),
         q_viscous,
         q_viscous_standard_error,
-        model: match fit.model {
-            TrajectoryModel::Linear => "linear",
-            TrajectoryModel::Nonlinear => "nonlinear",
-        },
+        model: fit.model.name(),
         model_requested: requested,
         damping_law: fit.law.name(),
         held_samples: fit.held_samples,
-        parameters,
-        standard_errors,
+        parameters: figures.parameters,
+        standard_errors: figures.standard_errors,
         observed: if rate { "angular_velocity" } else { "angle" },
-        gyroscope_axis: principal.as_ref().map(|p| p.direction.clone()),
-        gyroscope_axis_share: principal.as_ref().map(|p| p.share),
+        gyroscope_axis: principal.map(|p| p.direction.clone()),
+        gyroscope_axis_share: principal.map(|p| p.share),
         residual_rms_rad: (!rate).then_some(fit.fit.residual_rms),
         residual_rms_rad_s: rate.then_some(fit.fit.residual_rms),
         residual_autocorrelation: autocorrelation,
         standard_error_inflation: inflation,
         residual_to_noise,
-        standard_error_parts,
+        standard_error_parts: figures.standard_error_parts,
         length_m: input.length.map(|(l, _)| l),
         length_standard_error_m: input
             .length
@@ -1015,8 +1293,8 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         undetermined,
         residuals: fit.fit.residuals,
         time: time.to_vec(),
-        first_row,
-        time_rebuilt: grid.as_ref().map(TimeRebuilt::from),
+        first_row: record.kept.start,
+        time_rebuilt: record.grid.as_ref().map(TimeRebuilt::from),
     })
 }
 

@@ -62,6 +62,16 @@ pub enum TrajectoryModel {
     Nonlinear,
 }
 
+impl TrajectoryModel {
+    /// Its name, as `--model` and the JSON's `model` write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            TrajectoryModel::Linear => "linear",
+            TrajectoryModel::Nonlinear => "nonlinear",
+        }
+    }
+}
+
 /// What a record measures of the swing.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Observed {

@@ -97,6 +97,12 @@ pub trait DragLaw: Sync {
 /// line above and an entry here.
 pub const DRAG_LAWS: &[&dyn DragLaw] = &[&quadratic::QuadraticDrag, &three_halves::ThreeHalvesDrag];
 
+impl std::fmt::Debug for dyn DragLaw {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// The law named `name`.
 pub fn drag_law(name: &str) -> Option<usize> {
     DRAG_LAWS.iter().position(|l| l.name() == name)

@@ -30,6 +30,7 @@ use crate::fitting::beat_log::{check_nominal, BeatWarning, Beats, Nominal, REPEA
 use crate::fitting::beats::{BeatAnalysis, BeatStream};
 use crate::lift::amplitude_from_lift;
 use crate::period::period_for_beat_rate;
+use crate::warning::Warn;
 use serde::Serialize;
 
 /// Seconds of the recording the beat is found from.
@@ -620,6 +621,281 @@ pub fn listen<S: SampleSource>(
     Ok(conclude(heard, &checked, input)?)
 }
 
+/// Refuses ticks kept on one side only, every other beat of `beat` s
+/// (the tocks too weak to time, or a beat half the clock's followed):
+/// the refusal names the `nominal` beat's field when one was given.
+fn refuse_one_side(ticks: &[Tick], beat: f64, nominal: Option<Nominal>) -> Result<(), Refusal> {
+    // Both sides in proportion: ticks kept on one side only are every
+    // other beat (the tocks too weak to time, or a beat half the clock's
+    // followed), and the analysis would fill the other side in as missed
+    // beats, with no beat error to show.
+    let tocks = ticks.iter().filter(|t| t.side == 1).count();
+    let sides = [ticks.len() - tocks, tocks];
+    if ticks.len() >= 2 * MIN_TICKS
+        && (sides[0].min(sides[1]) as f64) < ONE_SIDE * sides[0].max(sides[1]) as f64
+    {
+        let per_hour = |b: f64| format_significant(3600.0 / b, 6);
+        let cause = match nominal {
+            Some(_) => format!(
+                "the tocks are too weak to time at this beat, or the clock beats at {} beats an \
+                 hour (give that)",
+                per_hour(2.0 * beat)
+            ),
+            None => format!(
+                "the tocks are too weak to time, or the clock is far out of beat at {} beats an \
+                 hour (give --bph to say which)",
+                per_hour(0.5 * beat)
+            ),
+        };
+        let refusal = format!(
+            "only every other beat of {} beats an hour stands out ({} ticks on one side, {} on \
+             the other): {cause}",
+            per_hour(beat),
+            sides[0].max(sides[1]),
+            sides[0].min(sides[1])
+        );
+        return Err(match nominal {
+            Some(n) => Refusal::field(n.field(), refusal),
+            None => Refusal::data(refusal),
+        });
+    }
+    Ok(())
+}
+
+/// Refuses ticks that are fewer than [`HEARD_FRACTION`] of the beats
+/// between the first and the last: a beat not followed, whatever the
+/// `nominal` period (s) and the signal to noise `snr_db` (dB) say.
+fn refuse_unfollowed(ticks: &[Tick], nominal: Option<f64>, snr_db: f64) -> Result<(), Refusal> {
+    // Most beats between the first tick kept and the last must be heard: a
+    // handful of ticks over a stretch where the rest were lost is a beat
+    // not followed (a nominal beat searched a percent off, noise), and
+    // their rate is anything.
+    if let (Some(a), Some(b)) = (ticks.first(), ticks.last()) {
+        let spanned = (b.beat - a.beat + 1) as f64;
+        if (ticks.len() as f64) < HEARD_FRACTION * spanned {
+            let nominal_note = nominal.map_or(String::new(), |p| {
+                format!(
+                    ", or the clock does not beat at {} beats an hour",
+                    format_significant(7200.0 / p, 6)
+                )
+            });
+            return Err(Refusal::data(format!(
+                "only {} of the {} beats between the first tick heard and the last stand out of \
+                 the noise (signal to noise {} dB): the beat was not followed; record nearer \
+                 the clock, or in a quieter room{nominal_note}",
+                ticks.len(),
+                spanned,
+                format_significant(snr_db, 2)
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The beats with no tick kept, and the spans of the recording without
+/// ticks: what [`Gaps::of`] counts.
+struct Gaps {
+    /// Beats between the first tick kept and the last with no tick kept,
+    /// but for those in the spans cut.
+    missed: usize,
+    /// The clock's beats inside the spans cut.
+    cut_beats: usize,
+    /// The spans cut out as sounds that are not ticks, s from the start
+    /// (rescaled by the sound card's error, as the ticks are).
+    cuts: Vec<(f64, f64)>,
+    /// The spans outside `cuts` where no tick was heard (a clock lost), s
+    /// from the start (rescaled as `cuts`).
+    lost: Vec<(f64, f64)>,
+}
+
+impl Gaps {
+    /// The [`Gaps`] among `ticks` (numbered at `beat` s, their times as
+    /// the samples count them) of a recording `duration` s long with the
+    /// spans `cuts` cut out; the spans then rescaled by the sound card's
+    /// `scale`, as the ticks are.
+    fn of(ticks: &[Tick], cuts: &[(f64, f64)], beat: f64, duration: f64, scale: f64) -> Self {
+        // Missed: the beats between the first tick kept and the last with no
+        // tick kept (none before the first or after the last: a recording
+        // starts and stops where it will).
+        let missed = match (ticks.first(), ticks.last()) {
+            (Some(a), Some(b)) => ((b.beat - a.beat + 1) as usize).saturating_sub(ticks.len()),
+            _ => 0,
+        };
+        // Beats inside the spans cut are not missed: they are said with the
+        // spans.
+        let (in_cuts, beside_cuts) = beats_in_cuts(ticks, cuts, beat, duration);
+        let missed = missed.saturating_sub(in_cuts);
+        let in_cuts = in_cuts + beside_cuts;
+        let lost = lost_spans(ticks, cuts, beat, duration);
+        // (On the recording's clock, as the ticks are.)
+        let scaled = |spans: &[(f64, f64)]| -> Vec<(f64, f64)> {
+            spans.iter().map(|&(a, b)| (a * scale, b * scale)).collect()
+        };
+        Gaps {
+            missed,
+            cut_beats: in_cuts,
+            cuts: scaled(cuts),
+            lost: scaled(&lost),
+        }
+    }
+}
+
+/// The drop heard and the amplitude it gives with the lift angle.
+struct Swing {
+    /// From each beat's unlocking to its drop, s: ticks, tocks (`None`
+    /// where no second sound stands out).
+    drops: [Option<f64>; 2],
+    /// The amplitude from the lift angle and the drop, where the
+    /// oscillator can have it.
+    amplitude: Option<crate::lift::LiftAmplitude>,
+    /// What swings: given, or chosen by the beat.
+    oscillator: Oscillator,
+    /// An amplitude heard that the oscillator cannot have, rad.
+    impossible: Option<f64>,
+}
+
+impl Swing {
+    /// The [`Swing`] of the tracker's drops in `coarse` (s, rescaled by
+    /// the sound card's `scale`) at a mean beat of `mean_beat` s: the
+    /// amplitude from the lift angle of `input` and the mean of the two
+    /// sides' drops, refused (as `lift_angle`) where no swing crosses
+    /// that lift in that time.
+    fn heard(
+        coarse: &Coarse,
+        scale: f64,
+        mean_beat: f64,
+        input: &ListenInput,
+    ) -> Result<Self, Refusal> {
+        // The drop: the mean of the two sides' (a clock's pallets may differ).
+        let drops = coarse.drops.map(|d| d.map(|d| d * scale));
+        let heard: Vec<f64> = drops.iter().flatten().copied().collect();
+        let crossing = (!heard.is_empty()).then(|| heard.iter().sum::<f64>() / heard.len() as f64);
+        let amplitude = match (input.lift_angle, crossing) {
+            (Some(lift), Some(dt)) => Some(
+                amplitude_from_lift(lift, dt, 2.0 * mean_beat)
+                    .map_err(|e| Refusal::field("lift_angle", e.detail()))?,
+            ),
+            _ => None,
+        };
+        let oscillator = input
+            .oscillator
+            .unwrap_or_else(|| Oscillator::of_beat(mean_beat));
+        // An amplitude the oscillator cannot have is not given: warned with
+        // its figure.
+        let impossible = amplitude
+            .as_ref()
+            .map(|x| oscillator.amplitude(x))
+            .filter(|&swing| swing.is_nan() || swing > oscillator.largest_swing_rad());
+        let amplitude = amplitude.filter(|_| impossible.is_none());
+        Ok(Swing {
+            drops,
+            amplitude,
+            oscillator,
+            impossible,
+        })
+    }
+
+    /// The amplitude `f` takes from the lift amplitude, degrees, when a
+    /// lift angle was given (`lift_angle`, rad): `Some(None)` when no drop
+    /// was heard or the oscillator cannot have it.
+    fn lifted(
+        &self,
+        lift_angle: Option<f64>,
+        f: &dyn Fn(&crate::lift::LiftAmplitude) -> f64,
+    ) -> Option<Option<f64>> {
+        lift_angle.map(|_| self.amplitude.as_ref().map(|x| f(x).to_degrees()))
+    }
+}
+
+/// Refuses a beat error of [`OUT_OF_BEAT`] of the beat or more in the
+/// analysis `a`: no running clock's (its escapement would not unlock on
+/// that side), so the ticks were numbered on a beat not the clock's.
+fn refuse_out_of_beat(a: &BeatAnalysis) -> Result<(), Refusal> {
+    // A beat error of a fifth of the beat or more is no running clock's
+    // (its escapement would not unlock on that side): the ticks were
+    // numbered on a beat not the clock's (a gap misread, a loop).
+    if a.beat_error_ms * 1e-3 >= OUT_OF_BEAT * a.mean_beat {
+        return Err(Refusal::data(format!(
+            "the ticks give a beat error of {} ms, {}% of the beat of {} s, which no running \
+             clock has: the beat was not followed; give the beat rate (bph), or record longer",
+            format_significant(a.beat_error_ms, 3),
+            format_significant(100.0 * a.beat_error_ms * 1e-3 / a.mean_beat, 2),
+            format_significant(a.mean_beat, 4)
+        )));
+    }
+    Ok(())
+}
+
+/// Adds the warning `w` to `beats`, with its code.
+fn warn(beats: &mut Beats, w: BeatWarning) {
+    beats.warning_codes.push(w.code());
+    beats.warnings.push(w);
+}
+
+/// Adds to `beats` the warnings of what was heard beside the beat, in
+/// order: ticks and tocks that sound different (`differ`), `ticks` that
+/// repeat exactly (a loop of sound), the spans cut and the clock lost
+/// (`gaps`), and an amplitude the oscillator cannot have (`swing`).
+fn warn_of_sounds(beats: &mut Beats, differ: bool, ticks: &[Tick], gaps: &Gaps, swing: &Swing) {
+    if differ {
+        warn(beats, BeatWarning::SoundsDiffer);
+    }
+    if let Some((after_beats, spread_s)) = repeats(ticks) {
+        let w = BeatWarning::RepeatsExactly {
+            after_beats,
+            spread_s,
+        };
+        warn(beats, w);
+    }
+    if !gaps.cuts.is_empty() {
+        let w = BeatWarning::SoundsCut {
+            spans: gaps.cuts.clone(),
+            beats: gaps.cut_beats,
+        };
+        warn(beats, w);
+    }
+    if !gaps.lost.is_empty() {
+        let w = BeatWarning::ClockLost {
+            spans: gaps.lost.clone(),
+        };
+        warn(beats, w);
+    }
+    if let Some(swing_rad) = swing.impossible {
+        let oscillator = swing.oscillator;
+        let w = BeatWarning::AmplitudeImpossible {
+            amplitude_deg: swing_rad.to_degrees(),
+            largest_deg: oscillator.largest_swing_rad().to_degrees(),
+            pendulum: oscillator == Oscillator::Pendulum,
+        };
+        warn(beats, w);
+    }
+}
+
+/// The recording in windows of `window.every` s: those cut as it went on
+/// (live), else cut here from the ticks; with their totals, and the
+/// warnings they give added to `beats` (a rate that wanders, windows
+/// whose mean rate is not the whole recording's).
+fn windowed(
+    cut: Option<Vec<Window>>,
+    window: &WindowInput<'_>,
+    beats: &mut Beats,
+) -> (Vec<Window>, WindowTotals) {
+    let (w, totals) = match cut {
+        Some(w) => {
+            let totals = super::windows::totals(&w, window.every);
+            (w, totals)
+        }
+        None => windows(window),
+    };
+    if let Some(ratio) = totals.rate_scatter_over_se.filter(|&r| r > RATE_WANDERS) {
+        warn(beats, BeatWarning::RateWanders { ratio });
+    }
+    if let Some(w) = windows_biased(&totals, beats.rate_s_per_day, beats.rate_se_s_per_day) {
+        warn(beats, w);
+    }
+    (w, totals)
+}
+
 /// The ticks heard, checked and analysed: the clean-up, the checks that
 /// the beat was followed (both sides in proportion, most beats heard, a
 /// beat error a running clock can have), the beat analysis, the drop and
@@ -653,195 +929,37 @@ pub(crate) fn conclude(
     if ticks.len() < MIN_TICKS {
         return Err(too_few(ticks.len(), duration, beat, snr_db));
     }
-    // Both sides in proportion: ticks kept on one side only are every
-    // other beat (the tocks too weak to time, or a beat half the clock's
-    // followed), and the analysis would fill the other side in as missed
-    // beats, with no beat error to show.
-    let tocks = ticks.iter().filter(|t| t.side == 1).count();
-    let sides = [ticks.len() - tocks, tocks];
-    if ticks.len() >= 2 * MIN_TICKS
-        && (sides[0].min(sides[1]) as f64) < ONE_SIDE * sides[0].max(sides[1]) as f64
-    {
-        let per_hour = |b: f64| format_significant(3600.0 / b, 6);
-        let cause = match input.nominal {
-            Some(_) => format!(
-                "the tocks are too weak to time at this beat, or the clock beats at {} beats an \
-                 hour (give that)",
-                per_hour(2.0 * beat)
-            ),
-            None => format!(
-                "the tocks are too weak to time, or the clock is far out of beat at {} beats an \
-                 hour (give --bph to say which)",
-                per_hour(0.5 * beat)
-            ),
-        };
-        let refusal = format!(
-            "only every other beat of {} beats an hour stands out ({} ticks on one side, {} on \
-             the other): {cause}",
-            per_hour(beat),
-            sides[0].max(sides[1]),
-            sides[0].min(sides[1])
-        );
-        return Err(match input.nominal {
-            Some(n) => Refusal::field(n.field(), refusal),
-            None => Refusal::data(refusal),
-        });
-    }
-    // Most beats between the first tick kept and the last must be heard: a
-    // handful of ticks over a stretch where the rest were lost is a beat
-    // not followed (a nominal beat searched a percent off, noise), and
-    // their rate is anything.
-    if let (Some(a), Some(b)) = (ticks.first(), ticks.last()) {
-        let spanned = (b.beat - a.beat + 1) as f64;
-        if (ticks.len() as f64) < HEARD_FRACTION * spanned {
-            let nominal_note = nominal.map_or(String::new(), |p| {
-                format!(
-                    ", or the clock does not beat at {} beats an hour",
-                    format_significant(7200.0 / p, 6)
-                )
-            });
-            return Err(Refusal::data(format!(
-                "only {} of the {} beats between the first tick heard and the last stand out of \
-                 the noise (signal to noise {} dB): the beat was not followed; record nearer \
-                 the clock, or in a quieter room{nominal_note}",
-                ticks.len(),
-                spanned,
-                format_significant(snr_db, 2)
-            )));
-        }
-    }
-    // Missed: the beats between the first tick kept and the last with no
-    // tick kept (none before the first or after the last: a recording
-    // starts and stops where it will).
-    let missed = match (ticks.first(), ticks.last()) {
-        (Some(a), Some(b)) => ((b.beat - a.beat + 1) as usize).saturating_sub(ticks.len()),
-        _ => 0,
-    };
-    // Beats inside the spans cut are not missed: they are said with the
-    // spans.
-    let (in_cuts, beside_cuts) = beats_in_cuts(&ticks, &cuts, beat, duration);
-    let missed = missed.saturating_sub(in_cuts);
-    let in_cuts = in_cuts + beside_cuts;
-    let lost = lost_spans(&ticks, &cuts, beat, duration);
+    refuse_one_side(&ticks, beat, input.nominal)?;
+    refuse_unfollowed(&ticks, nominal, snr_db)?;
     let scale = 1.0 / (1.0 + ppm * 1e-6);
+    let gaps = Gaps::of(&ticks, &cuts, beat, duration, scale);
     for t in &mut ticks {
         t.time *= scale;
     }
     let a = analyse_ticks(&ticks, beat, nominal.map(|p| 0.5 * p))
         .map_err(|e| Refusal::data(e.to_string()))?;
-    // The drop: the mean of the two sides' (a clock's pallets may differ).
-    let drops = coarse.drops.map(|d| d.map(|d| d * scale));
-    let heard: Vec<f64> = drops.iter().flatten().copied().collect();
-    let crossing = (!heard.is_empty()).then(|| heard.iter().sum::<f64>() / heard.len() as f64);
-    let amplitude = match (input.lift_angle, crossing) {
-        (Some(lift), Some(dt)) => Some(
-            amplitude_from_lift(lift, dt, 2.0 * a.mean_beat)
-                .map_err(|e| Refusal::field("lift_angle", e.detail()))?,
-        ),
-        _ => None,
-    };
-    let oscillator = input
-        .oscillator
-        .unwrap_or_else(|| Oscillator::of_beat(a.mean_beat));
-    // An amplitude the oscillator cannot have is not given: warned with
-    // its figure.
-    let impossible = amplitude
-        .as_ref()
-        .map(|x| oscillator.amplitude(x))
-        .filter(|&swing| swing.is_nan() || swing > oscillator.largest_swing_rad());
-    let amplitude = amplitude.filter(|_| impossible.is_none());
-    let lifted = |f: &dyn Fn(&crate::lift::LiftAmplitude) -> f64| {
-        input
-            .lift_angle
-            .map(|_| amplitude.as_ref().map(|x| f(x).to_degrees()))
-    };
-    // A beat error of a fifth of the beat or more is no running clock's
-    // (its escapement would not unlock on that side): the ticks were
-    // numbered on a beat not the clock's (a gap misread, a loop).
-    if a.beat_error_ms * 1e-3 >= OUT_OF_BEAT * a.mean_beat {
-        return Err(Refusal::data(format!(
-            "the ticks give a beat error of {} ms, {}% of the beat of {} s, which no running \
-             clock has: the beat was not followed; give the beat rate (bph), or record longer",
-            format_significant(a.beat_error_ms, 3),
-            format_significant(100.0 * a.beat_error_ms * 1e-3 / a.mean_beat, 2),
-            format_significant(a.mean_beat, 4)
-        )));
-    }
+    let swing = Swing::heard(&coarse, scale, a.mean_beat, input)?;
+    let oscillator = swing.oscillator;
+    refuse_out_of_beat(&a)?;
     let in_beat_percent = crate::advice::split_percent(a.beat_error_ms * 1e-3, a.mean_beat);
     let (mean_beat, doubled) = (a.mean_beat, a.repaired.doubled);
     let mut beats = Beats::of(a);
-    if differ {
-        let w = BeatWarning::SoundsDiffer;
-        beats.warning_codes.push(w.code());
-        beats.warnings.push(w);
-    }
-    if let Some((after_beats, spread_s)) = repeats(&ticks) {
-        let w = BeatWarning::RepeatsExactly {
-            after_beats,
-            spread_s,
-        };
-        beats.warning_codes.push(w.code());
-        beats.warnings.push(w);
-    }
-    // (On the recording's clock, as the ticks are.)
-    let scaled = |spans: &[(f64, f64)]| -> Vec<(f64, f64)> {
-        spans.iter().map(|&(a, b)| (a * scale, b * scale)).collect()
-    };
-    let (cuts, lost) = (scaled(&cuts), scaled(&lost));
-    if !cuts.is_empty() {
-        let w = BeatWarning::SoundsCut {
-            spans: cuts.clone(),
-            beats: in_cuts,
-        };
-        beats.warning_codes.push(w.code());
-        beats.warnings.push(w);
-    }
-    if !lost.is_empty() {
-        let w = BeatWarning::ClockLost {
-            spans: lost.clone(),
-        };
-        beats.warning_codes.push(w.code());
-        beats.warnings.push(w);
-    }
-    if let Some(swing) = impossible {
-        let w = BeatWarning::AmplitudeImpossible {
-            amplitude_deg: swing.to_degrees(),
-            largest_deg: oscillator.largest_swing_rad().to_degrees(),
-            pendulum: oscillator == Oscillator::Pendulum,
-        };
-        beats.warning_codes.push(w.code());
-        beats.warnings.push(w);
-    }
+    warn_of_sounds(&mut beats, differ, &ticks, &gaps, &swing);
     let (windows, window_totals) = match input.every {
         Some(every) => {
             check_every(every, mean_beat)?;
-            let (w, totals) = match cut {
-                Some(w) => {
-                    let totals = super::windows::totals(&w, every);
-                    (w, totals)
-                }
-                None => windows(&WindowInput {
-                    ticks: &ticks,
-                    levels: &coarse.levels,
-                    spacings: &coarse.spacings,
-                    every,
-                    duration: duration * scale,
-                    nominal_beat: beats.nominal_beat_s,
-                    lift_angle: input.lift_angle,
-                    oscillator,
-                    scale,
-                }),
+            let window = WindowInput {
+                ticks: &ticks,
+                levels: &coarse.levels,
+                spacings: &coarse.spacings,
+                every,
+                duration: duration * scale,
+                nominal_beat: beats.nominal_beat_s,
+                lift_angle: input.lift_angle,
+                oscillator,
+                scale,
             };
-            if let Some(ratio) = totals.rate_scatter_over_se.filter(|&r| r > RATE_WANDERS) {
-                let w = BeatWarning::RateWanders { ratio };
-                beats.warning_codes.push(w.code());
-                beats.warnings.push(w);
-            }
-            if let Some(w) = windows_biased(&totals, beats.rate_s_per_day, beats.rate_se_s_per_day)
-            {
-                beats.warning_codes.push(w.code());
-                beats.warnings.push(w);
-            }
+            let (w, totals) = windowed(cut, &window, &mut beats);
             (w, Some(totals))
         }
         None => (Vec::new(), None),
@@ -854,20 +972,20 @@ pub(crate) fn conclude(
         // The beats from the first tick kept to the last, less the ticks
         // kept: missed, whether no sound was there or it was dropped as
         // noise (counted once, though the analysis fills the same gaps).
-        missed,
-        cut_s: cuts.iter().map(|&(a, b)| [a, b]).collect(),
-        cut_beats: in_cuts,
-        lost_s: lost.iter().map(|&(a, b)| [a, b]).collect(),
+        missed: gaps.missed,
+        cut_s: gaps.cuts.iter().map(|&(a, b)| [a, b]).collect(),
+        cut_beats: gaps.cut_beats,
+        lost_s: gaps.lost.iter().map(|&(a, b)| [a, b]).collect(),
         extra: doubled,
         beats,
         snr_db,
         timed_on: coarse.timing,
-        drop_ms: drops.map(|d| d.map(|d| d * 1e3)),
+        drop_ms: swing.drops.map(|d| d.map(|d| d * 1e3)),
         lift_angle_deg: input.lift_angle.map(f64::to_degrees),
         oscillator,
         oscillator_from_beat: input.oscillator.is_none(),
-        amplitude_deg: lifted(&|x| oscillator.amplitude(x)),
-        amplitude_first_order_deg: lifted(&|x| x.first_order),
+        amplitude_deg: swing.lifted(input.lift_angle, &|x| oscillator.amplitude(x)),
+        amplitude_first_order_deg: swing.lifted(input.lift_angle, &|x| x.first_order),
         windows,
         window_totals,
         findings: Vec::new(),

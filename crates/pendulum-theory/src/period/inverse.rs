@@ -11,6 +11,7 @@ use crate::analysis::{finite, require_finite, Refusal};
 use crate::error::format_significant;
 use crate::pendulum::{Amplitude, STANDARD_GRAVITY};
 use crate::period::period_for_beat_rate;
+use crate::warning::Warning;
 use serde::Serialize;
 
 /// The length a period needs.
@@ -121,7 +122,7 @@ pub struct AmplitudeResult {
     /// amplitude (`κ ε`); null when infinite.
     pub precision_relative: Option<f64>,
     /// What to know before trusting the amplitude.
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Warning>,
 }
 
 /// The amplitude a pendulum of `length` m under `g` swings at to keep
@@ -193,10 +194,14 @@ pub fn amplitude(
     let relative = estimate.condition_number * f64::EPSILON;
     let mut warnings = Vec::new();
     if relative.is_finite() && relative > PRECISION_WARNING {
-        warnings.push(format!(
-            "the period is so close to T0 that double precision alone leaves the amplitude \
-             uncertain by {}%",
-            format_significant(100.0 * relative, 2)
+        warnings.push(Warning::new(
+            "amplitude_imprecise",
+            format!(
+                "the period is so close to T0 that double precision alone leaves the \
+                 amplitude uncertain by {}%",
+                format_significant(100.0 * relative, 2)
+            ),
+            Some("amplitude_rad"),
         ));
     }
     Ok(AmplitudeResult {

@@ -4,7 +4,7 @@
 //! caller's [`Observer`], and a summary with typed warnings. The command
 //! line's `simulate` and Python's `simulate` are this call.
 
-use super::forces::{drag_law, DRAG_LAWS};
+use super::forces::{drag_law, DragLaw, DRAG_LAWS};
 use super::{
     simulate, work_estimate, Method, Model, Observer, Options, Outcome, SimulationError, Stopped,
     WorkEstimate,
@@ -53,12 +53,13 @@ pub struct SimulationInput {
     pub quadratic_drag: Option<f64>,
     /// Dry friction angle, rad (default 0).
     pub friction_angle: Option<f64>,
-    /// Drag laws by name ([`super::forces::DRAG_LAWS`]: `quadratic_drag`,
-    /// `three_halves_drag`, ...) with their coefficients; each at most
-    /// once, the quadratic drag here or above.
-    pub drag: Vec<(String, f64)>,
-    /// Method by name (default `dop853`).
-    pub method: Option<String>,
+    /// Drag laws of [`super::forces::DRAG_LAWS`] (`quadratic_drag`,
+    /// `three_halves_drag`, ...; [`parse_drag_law`] reads a name) with
+    /// their coefficients; each at most once, the quadratic drag here or
+    /// above.
+    pub drag: Vec<(&'static dyn DragLaw, f64)>,
+    /// The method (default [`DEFAULT_METHOD`]; [`method_of`] reads a name).
+    pub method: Option<Method>,
     /// Step tolerance (default [`DEFAULT_TOLERANCE`]).
     pub tolerance: Option<f64>,
     /// Report the state every this many seconds, if any.
@@ -153,11 +154,28 @@ impl fmt::Display for SimulationWarning {
     }
 }
 
-impl Serialize for SimulationWarning {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_str(self)
+impl crate::warning::Warn for SimulationWarning {
+    fn code(&self) -> &'static str {
+        match self {
+            SimulationWarning::EnergyGain { .. } => "energy_gain",
+            SimulationWarning::OverTheTop { .. } => "over_the_top",
+            SimulationWarning::StepTooSmall { .. } => "step_too_small",
+            SimulationWarning::RigidOnSpring { .. } => "rigid_on_spring",
+        }
+    }
+
+    fn figure(&self) -> Option<&'static str> {
+        match self {
+            SimulationWarning::EnergyGain { .. } => Some("final_amplitude_rad"),
+            SimulationWarning::OverTheTop { .. } | SimulationWarning::StepTooSmall { .. } => {
+                Some("final_time_s")
+            }
+            SimulationWarning::RigidOnSpring { .. } => Some("amplitude_rad"),
+        }
     }
 }
+
+crate::warning::serialize_as_warning!(SimulationWarning);
 
 /// The summary of a run.
 #[derive(Clone, Debug, Serialize)]
@@ -347,7 +365,10 @@ pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
             ));
         }
     }
-    let method = method_of(input.method.as_deref().unwrap_or(DEFAULT_METHOD))?;
+    let method = match input.method {
+        Some(m) => m,
+        None => method_of(DEFAULT_METHOD)?,
+    };
     let options = Options {
         duration,
         tolerance,
@@ -408,14 +429,13 @@ pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
 fn with_drag_laws(mut model: Model, input: &SimulationInput) -> Result<Model, Refusal> {
     let mut given = [false; DRAG_LAWS.len()];
     given[super::QUADRATIC_DRAG] = input.quadratic_drag.is_some();
-    for (name, k) in &input.drag {
-        let Some(i) = drag_law(name) else {
-            let names: Vec<&str> = DRAG_LAWS.iter().map(|l| l.name()).collect();
-            return Err(Refusal::field(
+    for (law, k) in &input.drag {
+        let i = drag_law(law.name()).ok_or_else(|| {
+            Refusal::field(
                 "drag",
-                format!("'{name}' is not one of {}", names.join(", ")),
-            ));
-        };
+                format!("'{}' is not in the list of drag laws", law.name()),
+            )
+        })?;
         let field = DRAG_LAWS[i].name();
         if std::mem::replace(&mut given[i], true) {
             return Err(Refusal::field(field, "is given twice"));
@@ -425,6 +445,21 @@ fn with_drag_laws(mut model: Model, input: &SimulationInput) -> Result<Model, Re
             .map_err(|reason| Refusal::field(field, reason))?;
     }
     Ok(model)
+}
+
+/// The drag law named `name` in [`DRAG_LAWS`]; refused, naming the field
+/// `drag` and the laws, for any other name.
+pub fn parse_drag_law(name: &str) -> Result<&'static dyn DragLaw, Refusal> {
+    match drag_law(name) {
+        Some(i) => Ok(DRAG_LAWS[i]),
+        None => {
+            let names: Vec<&str> = DRAG_LAWS.iter().map(|l| l.name()).collect();
+            Err(Refusal::field(
+                "drag",
+                format!("'{name}' is not one of {}", names.join(", ")),
+            ))
+        }
+    }
 }
 
 fn refusal(e: SimulationError, damping_field: &'static str) -> Refusal {

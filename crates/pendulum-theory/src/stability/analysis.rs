@@ -172,7 +172,7 @@ pub struct Best {
 
 /// What an analysis noticed that a reader must know.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
+#[serde(remote = "Self", tag = "code", rename_all = "snake_case")]
 pub enum StabilityWarning {
     /// Gaps (NaN samples) in the series.
     Gaps {
@@ -198,6 +198,12 @@ pub enum StabilityWarning {
         adev_factor: f64,
         /// Taken out (`--outliers remove`), or kept.
         removed: bool,
+        /// Phase or frequency: the unit of `largest`.
+        #[serde(skip)]
+        kind: DataKind,
+        /// The sample spacing, s: the τ of `adev_factor`.
+        #[serde(skip)]
+        tau0_s: f64,
     },
     /// A periodic signal dominates some averaging times: their rows are
     /// the signal's, not noise.
@@ -211,6 +217,112 @@ pub enum StabilityWarning {
         /// The longest.
         to_tau_s: f64,
     },
+}
+
+impl std::fmt::Display for StabilityWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let num = format_significant;
+        match self {
+            StabilityWarning::Gaps { missing, of } => write!(
+                f,
+                "{missing} of {of} samples missing (gaps): the terms that touch them are left out"
+            ),
+            StabilityWarning::NoNoiseType => {
+                f.write_str("too few points to tell the noise at any τ (30 needed): no intervals")
+            }
+            StabilityWarning::Accidents {
+                glitches,
+                jumps,
+                first_time_s,
+                largest,
+                adev_factor,
+                removed,
+                kind,
+                tau0_s,
+            } => {
+                let unit = match kind {
+                    DataKind::Phase => " s",
+                    DataKind::Frequency => " (fractional frequency)",
+                };
+                let counted = |n: usize, one: &str, many: &str| match n {
+                    0 => None,
+                    1 => Some(format!("1 {one}")),
+                    _ => Some(format!("{n} {many}")),
+                };
+                let counts: Vec<String> = [
+                    counted(*glitches, "glitch", "glitches"),
+                    counted(*jumps, "jump", "jumps"),
+                ]
+                .into_iter()
+                .flatten()
+                .collect();
+                let what = format!(
+                    "{} (the first at {} s from the start, the largest {}{unit})",
+                    counts.join(" and "),
+                    num(*first_time_s, 8),
+                    num(*largest, 3)
+                );
+                if *removed {
+                    write!(
+                        f,
+                        "{what} taken out (--outliers remove): with them ADEV at τ = {} s was {} \
+                         times as large",
+                        num(*tau0_s, 4),
+                        num(*adev_factor, 3)
+                    )
+                } else {
+                    write!(
+                        f,
+                        "ADEV and the noise types: {what} raise ADEV at τ = {} s {} times, and \
+                         the noise types read from it; --outliers remove takes them out \
+                         (`pendulum log` does)",
+                        num(*tau0_s, 4),
+                        num(*adev_factor, 3)
+                    )
+                }
+            }
+            StabilityWarning::Periodic {
+                period_s,
+                amplitude_s_per_day,
+                from_tau_s,
+                to_tau_s,
+            } => write!(
+                f,
+                "ADEV from τ = {} to {} s is a periodic signal's (period {} h, {} s/day), not \
+                 noise: no noise type or interval there; `pendulum log` models a daily cycle \
+                 with the room's temperature",
+                num(*from_tau_s, 4),
+                num(*to_tau_s, 4),
+                num(period_s / 3600.0, 4),
+                num(*amplitude_s_per_day, 3)
+            ),
+        }
+    }
+}
+
+impl crate::warning::Warn for StabilityWarning {
+    fn code(&self) -> &'static str {
+        match self {
+            StabilityWarning::Gaps { .. } => "gaps",
+            StabilityWarning::NoNoiseType => "no_noise_type",
+            StabilityWarning::Accidents { .. } => "accidents",
+            StabilityWarning::Periodic { .. } => "periodic",
+        }
+    }
+
+    fn figure(&self) -> Option<&'static str> {
+        match self {
+            StabilityWarning::NoNoiseType => Some("adev_low"),
+            _ => Some("adev"),
+        }
+    }
+}
+
+impl Serialize for StabilityWarning {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let fields = StabilityWarning::serialize(self, serde_json::value::Serializer);
+        crate::warning::serialize_with_fields(self, fields, s)
+    }
 }
 
 /// The stability of a series.
@@ -309,6 +421,8 @@ fn accidents(input: &StabilityInput, tau0: f64) -> (Vec<f64>, Option<StabilityWa
             .fold(0.0, |a: f64, b| if b.abs() > a.abs() { b } else { a }),
         adev_factor: factor,
         removed: input.outliers == Outliers::Remove,
+        kind: input.kind,
+        tau0_s: tau0,
     };
     if input.outliers == Outliers::Keep {
         cleaned = data.clone();

@@ -564,13 +564,18 @@ fn airy_far_off_is_warned_and_a_constant_force_never_starves() {
     );
     assert!((a - i).abs() > 0.05 * i.abs(), "{i} {a}");
     assert!(
-        far.warnings.iter().any(|w| w.contains("Airy")),
+        far.warnings
+            .iter()
+            .any(|w| w.code == "airy_first_order_off" && w.message.contains("Airy")),
         "{:?}",
         far.warnings
     );
     let near = at(Kind::from_name("recoil").unwrap(), 0.15);
     assert!(
-        !near.warnings.iter().any(|w| w.contains("Airy")),
+        !near
+            .warnings
+            .iter()
+            .any(|w| w.code == "airy_first_order_off"),
         "{:?}",
         near.warnings
     );

@@ -537,6 +537,7 @@ fn a_law_at_its_bound_is_a_smaller_law_in_the_list() {
 mod self_checks {
     use super::Noise;
     use pendulum_theory::fitting::tracked::{analyse, crossings, LengthSource, TrackInput};
+    use pendulum_theory::fitting::trajectory::TrajectoryModel;
 
     /// A 0.6 m pendulum swinging 8° at 30 frames a second for 20 s, the
     /// angle with 0.1° of noise; times scaled by `time_scale`.
@@ -652,7 +653,7 @@ mod self_checks {
         let c = analyse(&TrackInput {
             time: &t,
             angle: &a,
-            model: Some("linear"),
+            model: Some(TrajectoryModel::Linear),
             length: None,
             length_standard_error: None,
             force: false,
@@ -851,7 +852,7 @@ mod long_large_swings {
             let r = analyse(&TrackInput {
                 time: &t,
                 angle: &a,
-                model: Some("nonlinear"),
+                model: Some(pendulum_theory::fitting::trajectory::TrajectoryModel::Nonlinear),
                 length: Some((0.7, LengthSource::Given)),
                 length_standard_error: None,
                 force: true,

@@ -11,7 +11,7 @@ use crate::output::{self, num, Summary};
 use pendulum_theory::analysis::Refusal;
 use pendulum_theory::clock_log::terms::columns;
 use pendulum_theory::clock_log::{
-    analyse, LogColumn, LogInput, LogKind, LogResult, LogWarning, Source, TrainInput, TERMS,
+    analyse, LogColumn, LogInput, LogKind, LogResult, Source, TrainInput, TERMS,
 };
 use pendulum_theory::compound::regulate::Regulated;
 use pendulum_theory::period::Nominal;
@@ -463,7 +463,7 @@ pub(crate) fn text(file: &str, r: &LogResult) -> String {
     }
     out.push_str(&periodic(r));
     for w in &r.warnings {
-        out.push_str(&format!("warning: {}\n", warning(w, r.epoch_unix_s)));
+        out.push_str(&format!("warning: {w}\n"));
     }
     if r.advice.is_empty() && r.beat_s.is_none() {
         out.push_str(
@@ -604,91 +604,4 @@ fn stability_table(rows: &[StabilityRow]) -> String {
         })
         .collect();
     output::table(&["τ (s)", "ADEV", "68% interval", "s/day", "noise"], &body)
-}
-
-/// A warning in words.
-fn warning(w: &LogWarning, epoch: Option<f64>) -> String {
-    // A log time as a date when the log has dates, else in seconds.
-    let when = |t: f64| match epoch {
-        Some(e) => super::tide::iso(e + t),
-        None => format!("{} s", num(t, 10)),
-    };
-    match w {
-        LogWarning::JumpsUndone {
-            count,
-            first_time_s,
-            largest_s,
-        } => format!(
-            "rate: {count} jumps of the offset taken out (the first at {}, the largest {} s): the clock set or stopped, or the reference changed; the rate is read across them, and a stop's lost time is not in it",
-            when(*first_time_s),
-            num(*largest_s, 4)
-        ),
-        LogWarning::GlitchesLeftOut {
-            count,
-            samples,
-            first_time_s,
-            largest_s,
-        } => format!(
-            "rate and stability: {count} glitches left out ({samples} offsets read wrong and then right, the first at {}, the largest {} s off: a missed pulse?)",
-            when(*first_time_s),
-            num(*largest_s, 4)
-        ),
-        LogWarning::RatesLeftOut {
-            count,
-            first_time_s,
-            largest_s_per_day,
-        } => format!(
-            "rate: {count} rates far out of line with their neighbours left out (the first at {}, the largest {} s/day off)",
-            when(*first_time_s),
-            num(*largest_s_per_day, 4)
-        ),
-        LogWarning::LagAtLimit { lag_s } => format!(
-            "temperature: its lag, {} h, is the longest this log can tell: the lag may be longer, and the temperature coefficient larger with it",
-            num(lag_s / 3600.0, 3)
-        ),
-        LogWarning::ErrorsWidened {
-            factor,
-            autocorrelation,
-        } => format!(
-            "every standard error (the rate's and the coefficients') widened {}×: the residuals are correlated beyond the noise model (lag-1 autocorrelation {})",
-            num(*factor, 3),
-            num(*autocorrelation, 2)
-        ),
-        LogWarning::WrapsUndone { count } => format!(
-            "rate: {count} whole-beat jumps of the offset undone (the reference slipped a tick); the rate is read across them"
-        ),
-        LogWarning::Implausible { term, reason } => format!("{term}: {reason}"),
-        LogWarning::TideAdmittance {
-            admittance,
-            from_one_se,
-        } => format!(
-            "tide: the admittance {} is {} standard errors from 1: something else shares the tide's periods (a daily temperature cycle?), or the times are not UTC",
-            num(*admittance, 3),
-            num(*from_one_se, 2)
-        ),
-        LogWarning::Short { what } => format!("{what}: the log is too short to tell it"),
-        LogWarning::TimesRepeated {
-            dropped,
-            first_time_s,
-        } => format!(
-            "{dropped} samples whose time did not advance left out (the first at {} s): a logger's repeated stamp, or files joined with an overlap",
-            num(*first_time_s, 10)
-        ),
-        LogWarning::BeatsMissed { left_out } => format!(
-            "{left_out} half periods under half or over 1.5 times the typical one left out (a transit the gate missed, a stray trigger): the beats they span count as a gap"
-        ),
-        LogWarning::EventIgnored { time_s, reason } => format!(
-            "the event at {} s of the log is left out: {reason}",
-            num(*time_s, 10)
-        ),
-        LogWarning::PulsesIgnored => "the pulse widths are left aside: give --flag-width and --gate-radius to read the swing's amplitude, Q and steadiness from them".to_string(),
-        LogWarning::TrainBeat { train_bph, log_bph } => format!(
-            "the train gives {} beats an hour, the log {}: check --train and --arbor-turns-per-hour",
-            num(*train_bph, 6),
-            num(*log_bph, 6)
-        ),
-        LogWarning::RateAgainstMean => {
-            "no standard beat within 2% of the half periods: the rate is against their mean; give --bph or --period".to_string()
-        }
-    }
 }

@@ -92,65 +92,18 @@ pub fn to_toml(design: &CompoundPendulum, thread: Option<Thread>, title: &str) -
     for (i, p) in parts.iter().enumerate() {
         out.push_str("\n[[part]]\n");
         out.push_str(&format!("name = {}\n", quoted(&p.name)));
-        let mut fields: Vec<(&str, String)> = Vec::new();
-        let shape = match p.shape {
-            Shape::Cylinder {
-                length,
-                diameter,
-                bore,
-            } => {
-                fields.push(("length", mm(length)));
-                fields.push(("diameter", mm(diameter)));
-                if bore > 0.0 {
-                    fields.push(("bore", mm(bore)));
-                }
-                "cylinder"
-            }
-            Shape::Disc {
-                diameter,
-                thickness,
-            }
-            | Shape::Lens {
-                diameter,
-                thickness,
-            } => {
-                fields.push(("diameter", mm(diameter)));
-                fields.push(("thickness", mm(thickness)));
-                if matches!(p.shape, Shape::Disc { .. }) {
-                    "disc"
-                } else {
-                    "lens"
-                }
-            }
-            Shape::Sphere { diameter } => {
-                fields.push(("diameter", mm(diameter)));
-                "sphere"
-            }
-            Shape::Ring {
-                outer,
-                inner,
-                thickness,
-            } => {
-                fields.push(("outer", mm(outer)));
-                fields.push(("inner", mm(inner)));
-                fields.push(("thickness", mm(thickness)));
-                "ring"
-            }
-            Shape::Spring {
-                length,
-                width,
-                thickness,
-            } => {
-                fields.push(("length", mm(length)));
-                fields.push(("width", mm(width)));
-                fields.push(("thickness", mm(thickness)));
-                "spring"
-            }
-            Shape::Point => {
-                fields.push(("mass", format!("\"{} kg\"", p.point_mass)));
-                "point"
-            }
-        };
+        // Each size in mm (a point's mass in kg); a solid cylinder has no
+        // bore to write.
+        let fields: Vec<(&str, String)> = p
+            .sizes()
+            .into_iter()
+            .filter(|&(key, v)| !(key == "bore" && v <= 0.0))
+            .map(|(key, v)| match key {
+                "mass" => (key, format!("\"{v} kg\"")),
+                _ => (key, mm(v)),
+            })
+            .collect();
+        let shape = p.shape.name();
         out.push_str(&format!("shape = \"{shape}\"\n"));
         if p.shape != Shape::Point {
             let m = &p.material;

@@ -2,7 +2,7 @@
 //! as a user expects. Every test here failed on the code before the fix
 //! (NaN, inf, a hang, a half-written file, or a silently wrong answer).
 
-use super::util::{f, files_in, json, pendulum, refuses};
+use super::util::{f, files_in, interrupt, json, pendulum, refuses};
 use serde_json::Value;
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -578,11 +578,7 @@ fn ctrl_c_during_a_report_leaves_nothing() {
             assert!(started.elapsed() < Duration::from_secs(30), "never started");
             std::thread::sleep(Duration::from_millis(1));
         }
-        let status = std::process::Command::new("kill")
-            .args(["-INT", &child.id().to_string()])
-            .status()
-            .unwrap();
-        assert!(status.success());
+        interrupt(&child);
         let out = child.wait_with_output().unwrap();
         if out.status.code() == Some(0) {
             continue;

@@ -3,7 +3,7 @@
 //! the same recording read as a file; raw samples; Ctrl-C; what is
 //! refused.
 
-use super::util::{f, json, pendulum, refuses_given};
+use super::util::{f, interrupt, json, pendulum, refuses_given};
 use serde_json::Value;
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
@@ -242,11 +242,7 @@ fn ctrl_c_ends_with_the_totals() {
     // (The input stays open: only Ctrl-C can end the listening. Give the
     // listener time to take what was sent.)
     std::thread::sleep(Duration::from_secs(2));
-    let status = Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(status.success());
+    interrupt(&child);
     let out = child.wait_with_output().unwrap();
     drop(stdin);
     assert!(out.status.success(), "{:?}", out.status);

@@ -1,6 +1,6 @@
 //! `pendulum simulate`.
 
-use crate::util::{f, files_in, json, pendulum, refuses};
+use crate::util::{f, files_in, interrupt, json, pendulum, refuses};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -149,11 +149,7 @@ fn ctrl_c_leaves_complete_files() {
         std::thread::sleep(Duration::from_millis(20));
     }
     std::thread::sleep(Duration::from_millis(200));
-    let status = std::process::Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(status.success());
+    interrupt(&child);
     let out = child.wait_with_output().unwrap();
     // Interrupted: the files are complete, the summary is printed, and the
     // status is 130 as for any Unix tool stopped by Ctrl-C.

@@ -70,6 +70,15 @@ pub fn p<'a>(extra: &[&'a str]) -> Vec<&'a str> {
 }
 
 /// The names of the entries of `dir` (to check what a run left behind).
+/// Sends `child` Ctrl-C (SIGINT, by the system's `kill`).
+pub fn interrupt(child: &std::process::Child) {
+    let status = std::process::Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success());
+}
+
 pub fn files_in(dir: &std::path::Path) -> Vec<std::ffi::OsString> {
     std::fs::read_dir(dir)
         .unwrap()

@@ -128,6 +128,42 @@ pub struct Part {
 }
 
 impl Part {
+    /// Its sizes by the description's field names, m (a point's mass,
+    /// kg), in the order a description writes them.
+    pub fn sizes(&self) -> Vec<(&'static str, f64)> {
+        match self.shape {
+            Shape::Cylinder {
+                length,
+                diameter,
+                bore,
+            } => vec![("length", length), ("diameter", diameter), ("bore", bore)],
+            Shape::Disc {
+                diameter,
+                thickness,
+            }
+            | Shape::Lens {
+                diameter,
+                thickness,
+            } => vec![("diameter", diameter), ("thickness", thickness)],
+            Shape::Sphere { diameter } => vec![("diameter", diameter)],
+            Shape::Ring {
+                outer,
+                inner,
+                thickness,
+            } => vec![("outer", outer), ("inner", inner), ("thickness", thickness)],
+            Shape::Spring {
+                length,
+                width,
+                thickness,
+            } => vec![
+                ("length", length),
+                ("width", width),
+                ("thickness", thickness),
+            ],
+            Shape::Point => vec![("mass", self.point_mass)],
+        }
+    }
+
     /// Mass, kg.
     pub fn mass(&self) -> f64 {
         if self.massless {
@@ -394,46 +430,11 @@ fn check_spring(p: &Part, parts: &[Part]) -> Result<(), (&'static str, String)> 
     }
 }
 
-/// The sizes of part `p` by field, m (a point's mass, kg).
-fn part_sizes(p: &Part) -> Vec<(&'static str, f64)> {
-    match p.shape {
-        Shape::Cylinder {
-            length,
-            diameter,
-            bore,
-        } => vec![("length", length), ("diameter", diameter), ("bore", bore)],
-        Shape::Disc {
-            diameter,
-            thickness,
-        }
-        | Shape::Lens {
-            diameter,
-            thickness,
-        } => vec![("diameter", diameter), ("thickness", thickness)],
-        Shape::Sphere { diameter } => vec![("diameter", diameter)],
-        Shape::Ring {
-            outer,
-            inner,
-            thickness,
-        } => vec![("outer", outer), ("inner", inner), ("thickness", thickness)],
-        Shape::Spring {
-            length,
-            width,
-            thickness,
-        } => vec![
-            ("length", length),
-            ("width", width),
-            ("thickness", thickness),
-        ],
-        Shape::Point => vec![("mass", p.point_mass)],
-    }
-}
-
 /// Checks part `p`'s sizes: each positive and finite (a bore or a ring's
 /// inner diameter may be 0), a bore less than its diameter, a ring's
 /// inner diameter less than its outer.
 fn check_sizes(p: &Part) -> Result<(), (&'static str, String)> {
-    for (field, v) in part_sizes(p) {
+    for (field, v) in p.sizes() {
         let may_be_zero = field == "bore" || field == "inner";
         if !v.is_finite() || v < 0.0 || (v == 0.0 && !may_be_zero) {
             return Err((

@@ -78,6 +78,20 @@ pub enum Shape {
 }
 
 impl Shape {
+    /// Its name in a description (`cylinder`, `disc`, …; a rod and a tube
+    /// are cylinders).
+    pub fn name(&self) -> &'static str {
+        match self {
+            Shape::Cylinder { .. } => "cylinder",
+            Shape::Disc { .. } => "disc",
+            Shape::Lens { .. } => "lens",
+            Shape::Sphere { .. } => "sphere",
+            Shape::Ring { .. } => "ring",
+            Shape::Spring { .. } => "spring",
+            Shape::Point => "point",
+        }
+    }
+
     /// Volume, m³ (0 for a point).
     pub fn volume(&self) -> f64 {
         match *self {

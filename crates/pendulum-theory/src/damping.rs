@@ -30,6 +30,15 @@ impl Damping {
     /// No damping at all.
     pub const NONE: Damping = Damping { zeta: 0.0 };
 
+    /// A damping ratio of either sign, for a fitted model only: the fit of
+    /// a record with no damping to measure must be free to cross 0 (its
+    /// noise puts the best `ζ` on either side; a model held at 0 below it
+    /// has no slope there, and the fit no covariance). A negative `ζ` is a
+    /// swing that grows, which the fit's own warnings then say.
+    pub(crate) fn of_either_sign(zeta: f64) -> Option<Self> {
+        zeta.is_finite().then_some(Self { zeta })
+    }
+
     /// From the damping ratio `ζ >= 0` (`ζ = 1` is critical damping).
     pub fn from_zeta(zeta: f64) -> Result<Self, InputError> {
         Ok(Self {

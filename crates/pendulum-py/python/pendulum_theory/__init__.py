@@ -480,8 +480,11 @@ def _as_length_uncertainty(call):
 def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=None, mass=None,
               force=False):
     """Fits the amplitude-decay laws (viscous, coulomb, quadratic,
-    viscous+coulomb, viscous+quadratic, viscous+coulomb+quadratic (once
-    ``full``, still taken); ``model="all"`` for every one)
+    viscous+coulomb, viscous+quadratic, coulomb+quadratic,
+    viscous+coulomb+quadratic (once ``full``, still taken);
+    ``model="all"`` for every one; and, when named, those of the other drag
+    laws of ``simulate``'s list: three_halves, viscous+three_halves,
+    coulomb+three_halves, viscous+coulomb+three_halves)
     to ``amplitude`` (rad) at ``time`` (s), every rate held at least 0: the
     CLI's ``fit decay``, the same library call. With ``period`` (s) or
     ``length`` (m; ``g`` m/s², standard gravity if not given) the rates

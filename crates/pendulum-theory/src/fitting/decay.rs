@@ -13,6 +13,13 @@
 //! | `viscous+quadratic` | λ, κ | `λA0 e^{-λt} / (λ + κA0(1 - e^{-λt}))` | a Bernoulli equation: the usual pendulum in air |
 //! | `coulomb+quadratic` | μ, κ | `s tan(atan(2κA0/s) - st/2)/(2κ)`, `s = 2√(κμ)` | the Riccati solution below with λ = 0 |
 //! | `viscous+coulomb+quadratic` (once `full`) | λ, μ, κ | the Riccati solution below | all three |
+//! | `three_halves` and any other drag law of power `p` in [`DRAG_LAWS`], alone or `viscous+`, `coulomb+`, `viscous+coulomb+` | κ and λ, μ | [`power_decay_law`]: `dA/dt = -(μ + λA + κA^p)` | the law's file: `κ = k ω^{p−1} ⟨|sin|^{p+1}⟩` |
+//!
+//! The laws of a drag law other than the quadratic come from the list of
+//! [`crate::forces`]: a law added there is fitted here with nothing more.
+//! They are fitted when named, or unnamed when the law says so
+//! ([`DragLaw::searched`]: the 3/2 power does not, its decay being what
+//! viscous damping and quadratic drag together follow over a record).
 //!
 //! The full law is solved by shifting to the equilibrium `a* = -2μ/(λ + √D)`
 //! (`D = λ² - 4κμ`, a root of `κa² + λa + μ`), which turns it into the
@@ -39,7 +46,9 @@
 
 use super::quality::{loss_per_radian, RecordQ};
 use super::{fit_curve, propagate, straight_line, Fit, FitError};
+use crate::forces::{DragLaw, DRAG_LAWS};
 use crate::pendulum::{Amplitude, Pendulum};
+use crate::simulation::QUADRATIC_DRAG;
 
 /// The amplitude-decay laws.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,6 +68,41 @@ pub enum DecayModel {
     /// Viscous damping, dry friction and air drag
     /// (`viscous+coulomb+quadratic`, the trajectory fit's name for it).
     Full,
+    /// A drag law of [`DRAG_LAWS`] other than the quadratic one (whose
+    /// laws are the variants above, in closed form), by its index there,
+    /// alone or with the viscous and dry rates: `three_halves`,
+    /// `viscous+three_halves`, `coulomb+three_halves`,
+    /// `viscous+coulomb+three_halves`. A law added to the list is fitted
+    /// by these with nothing more.
+    Drag {
+        /// The law's index in [`DRAG_LAWS`].
+        law: usize,
+        /// With viscous damping.
+        viscous: bool,
+        /// With dry friction.
+        coulomb: bool,
+    },
+}
+
+/// The names of the laws of each drag law of [`DRAG_LAWS`] (by index):
+/// itself, then with viscous damping, dry friction, both. Made once.
+fn drag_model_names() -> &'static [[&'static str; 4]] {
+    static NAMES: std::sync::OnceLock<Vec<[&'static str; 4]>> = std::sync::OnceLock::new();
+    NAMES.get_or_init(|| {
+        DRAG_LAWS
+            .iter()
+            .map(|law| {
+                let n = law.decay_name();
+                let leak = |s: String| -> &'static str { Box::leak(s.into_boxed_str()) };
+                [
+                    n,
+                    leak(format!("viscous+{n}")),
+                    leak(format!("coulomb+{n}")),
+                    leak(format!("viscous+coulomb+{n}")),
+                ]
+            })
+            .collect()
+    })
 }
 
 /// A fitted quantity with its standard error.
@@ -114,9 +158,64 @@ impl DecayModel {
         DecayModel::Full,
     ];
 
+    /// Every law: the seven above, then those of each other drag law of
+    /// [`DRAG_LAWS`] (its four).
+    pub fn every() -> Vec<DecayModel> {
+        let mut out = Self::ALL.to_vec();
+        out.extend(Self::drag_models(|_| true));
+        out
+    }
+
+    /// The laws fitted when none is named: the seven above and those of
+    /// the other drag laws that are [`DragLaw::searched`].
+    pub fn searched() -> Vec<DecayModel> {
+        let mut out = Self::ALL.to_vec();
+        out.extend(Self::drag_models(|law| law.searched()));
+        out
+    }
+
+    /// The four laws of each drag law other than the quadratic one that
+    /// `keep` keeps.
+    fn drag_models(keep: impl Fn(&dyn DragLaw) -> bool) -> Vec<DecayModel> {
+        (0..DRAG_LAWS.len())
+            .filter(|&law| law != QUADRATIC_DRAG && keep(DRAG_LAWS[law]))
+            .flat_map(|law| {
+                [(false, false), (true, false), (false, true), (true, true)].map(
+                    |(viscous, coulomb)| DecayModel::Drag {
+                        law,
+                        viscous,
+                        coulomb,
+                    },
+                )
+            })
+            .collect()
+    }
+
+    /// The power of the law's drag rate κ (2 for the quadratic laws and
+    /// those without drag, whose κ is 0).
+    pub fn power(self) -> f64 {
+        match self {
+            DecayModel::Drag { law, .. } => DRAG_LAWS[law].power(),
+            _ => 2.0,
+        }
+    }
+
+    /// The drag law of its rate κ.
+    fn drag_law(self) -> &'static dyn DragLaw {
+        match self {
+            DecayModel::Drag { law, .. } => DRAG_LAWS[law],
+            _ => DRAG_LAWS[QUADRATIC_DRAG],
+        }
+    }
+
     /// The name on the command line and in JSON.
     pub fn name(self) -> &'static str {
         match self {
+            DecayModel::Drag {
+                law,
+                viscous,
+                coulomb,
+            } => drag_model_names()[law][usize::from(viscous) + 2 * usize::from(coulomb)],
             DecayModel::Viscous => "viscous",
             DecayModel::Coulomb => "coulomb",
             DecayModel::Quadratic => "quadratic",
@@ -134,7 +233,7 @@ impl DecayModel {
         if name == "full" {
             return Some(DecayModel::Full);
         }
-        Self::ALL.into_iter().find(|m| m.name() == name)
+        Self::every().into_iter().find(|m| m.name() == name)
     }
 
     /// Which of the rates λ (viscous), μ (dry), κ (quadratic) the law has.
@@ -147,20 +246,40 @@ impl DecayModel {
             DecayModel::ViscousQuadratic => [true, false, true],
             DecayModel::CoulombQuadratic => [false, true, true],
             DecayModel::Full => [true, true, true],
+            DecayModel::Drag {
+                viscous, coulomb, ..
+            } => [viscous, coulomb, true],
         }
     }
 
     /// Names of the fitted parameters: `amplitude0_rad`, then the rates.
     pub fn rate_names(self) -> Vec<&'static str> {
         let mut names = vec!["amplitude0_rad"];
+        let rate_names = [
+            RATE_NAMES[0],
+            RATE_NAMES[1],
+            self.drag_law().decay_rate_name(),
+        ];
         names.extend(
-            RATE_NAMES
+            rate_names
                 .iter()
                 .zip(self.rates())
                 .filter(|(_, used)| *used)
                 .map(|(n, _)| *n),
         );
         names
+    }
+
+    /// The physical parameters' names, in the order of the rates: `zeta`,
+    /// `friction_angle_rad`, and the drag law's coefficient
+    /// (`quadratic_drag_per_rad`, or the law's name: the key the
+    /// simulation takes it by).
+    fn physical_names(self) -> [&'static str; 3] {
+        let drag = match self {
+            DecayModel::Drag { law, .. } => DRAG_LAWS[law].name(),
+            _ => "quadratic_drag_per_rad",
+        };
+        ["zeta", "friction_angle_rad", drag]
     }
 
     /// `[A0, λ, μ, κ]` from the parameters `p` (in the order of
@@ -179,8 +298,23 @@ impl DecayModel {
 
     /// The amplitude at `t` for parameters `p` (in the order of [`Self::rate_names`]).
     pub fn amplitude(self, t: f64, p: &[f64]) -> f64 {
+        self.amplitudes(&[t], p)[0]
+    }
+
+    /// The amplitudes at each of `times` for parameters `p` (in the order
+    /// of [`Self::rate_names`]): one integration through the times where
+    /// the law has no closed form (see [`power_decay_law`]).
+    pub fn amplitudes(self, times: &[f64], p: &[f64]) -> Vec<f64> {
         let [a0, lambda, mu, kappa] = self.full_rates(p);
-        decay_law(t, a0, lambda, mu, kappa)
+        match self {
+            DecayModel::Drag { law, .. } => {
+                power_decay_law(times, a0, [lambda, mu, kappa], DRAG_LAWS[law].power())
+            }
+            _ => times
+                .iter()
+                .map(|&t| decay_law(t, a0, lambda, mu, kappa))
+                .collect(),
+        }
     }
 
     /// Starting parameters from straight-line fits of ln A, A and 1/A
@@ -190,14 +324,19 @@ impl DecayModel {
         let ln: Vec<f64> = a.iter().map(|v| v.max(f64::MIN_POSITIVE).ln()).collect();
         let (c_ln, s_ln) = straight_line(t, &ln);
         let (c_lin, s_lin) = straight_line(t, a);
-        let inv: Vec<f64> = a.iter().map(|v| 1.0 / v.max(f64::MIN_POSITIVE)).collect();
+        // The drag law alone: A^{1−p} rises along a line of slope (p−1)κ.
+        let p = self.power();
+        let inv: Vec<f64> = a
+            .iter()
+            .map(|v| v.max(f64::MIN_POSITIVE).powf(1.0 - p))
+            .collect();
         let (c_inv, s_inv) = straight_line(t, &inv);
-        let single = [-s_ln, -s_lin, s_inv];
+        let single = [-s_ln, -s_lin, s_inv / (p - 1.0)];
         let used = self.rates();
         let combined = used.iter().filter(|u| **u).count() > 1;
         let a0 = match used {
             [false, true, false] => c_lin,
-            [false, false, true] => 1.0 / c_inv,
+            [false, false, true] => c_inv.powf(1.0 / (1.0 - p)),
             _ => c_ln.exp(),
         };
         let mut p = vec![a0];
@@ -251,6 +390,70 @@ pub fn decay_law(t: f64, a0: f64, lambda: f64, mu: f64, kappa: f64) -> f64 {
         let phase = ((2.0 * kappa * a0 + lambda) / s).atan() - 0.5 * s * t;
         (s * phase.tan() - lambda) / (2.0 * kappa)
     }
+}
+
+/// The amplitudes at `times` of `dA/dt = −(μ + λA + κA^p)`, `A(0) = a0`,
+/// `rates = [λ, μ, κ]`, for a drag law of power `p > 1`.
+///
+/// Method: without dry friction, a Bernoulli equation: `u = A^{1−p}`
+/// obeys `u' = (p−1)(λu + κ)`, so `u = u0 e^x + (p−1)κt · expm1(x)/x`,
+/// `x = (p−1)λt` (the ratio by its series below 1e-8), exact. With it, the
+/// classical fourth-order Runge-Kutta method through the times in order
+/// from 0 (either way), in steps of at most 1/2000 of the largest `|t|`:
+/// a grid set by the times alone, so that the amplitudes are a smooth
+/// function of the rates (the fit's differences need that; a step chosen
+/// by the rates would jump). Past `A = 0` (a swing that friction stops)
+/// the equation goes on with `κ|A|^p`, as the closed forms do with `κA²`.
+/// Accuracy: at `p = 2` against the closed forms of [`decay_law`], which
+/// solve the same equation, within 1e-9 relative over decays of up to
+/// e^{-10} (`tests::the_power_law_matches_the_closed_forms`).
+pub fn power_decay_law(times: &[f64], a0: f64, rates: [f64; 3], p: f64) -> Vec<f64> {
+    let [lambda, mu, kappa] = rates;
+    if mu == 0.0 {
+        return times
+            .iter()
+            .map(|&t| {
+                let x = (p - 1.0) * lambda * t;
+                let ratio = if x.abs() < 1e-8 {
+                    1.0 + 0.5 * x
+                } else {
+                    x.exp_m1() / x
+                };
+                let u = a0.abs().powf(1.0 - p) * x.exp() + (p - 1.0) * kappa * t * ratio;
+                a0.signum() * u.powf(1.0 / (1.0 - p))
+            })
+            .collect();
+    }
+    let rhs = |a: f64| -(mu + lambda * a + kappa * a.abs().powf(p));
+    let longest = times.iter().fold(0.0_f64, |m, t| m.max(t.abs()));
+    let h_max = longest / 2000.0;
+    let mut order: Vec<usize> = (0..times.len()).collect();
+    order.sort_by(|&i, &j| times[i].total_cmp(&times[j]));
+    let mut out = vec![a0; times.len()];
+    // Forward from 0 through the times after it, back through those before.
+    let (before, after): (Vec<usize>, Vec<usize>) = order.iter().partition(|&&i| times[i] < 0.0);
+    for run in [after, before.into_iter().rev().collect()] {
+        let (mut t, mut a) = (0.0, a0);
+        for i in run {
+            let span = times[i] - t;
+            let steps = if h_max > 0.0 {
+                (span.abs() / h_max).ceil().max(1.0)
+            } else {
+                1.0
+            };
+            let h = span / steps;
+            for _ in 0..steps as usize {
+                let k1 = rhs(a);
+                let k2 = rhs(a + 0.5 * h * k1);
+                let k3 = rhs(a + 0.5 * h * k2);
+                let k4 = rhs(a + h * k3);
+                a += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+            }
+            t = times[i];
+            out[i] = a;
+        }
+    }
+    out
 }
 
 /// `ω = 2π/T(A)` at the median of `amplitudes` (rad): the angular frequency
@@ -355,10 +558,11 @@ pub fn fit_decay(
             standard_error,
         })
         .collect();
+    let physical = model.physical_names();
     let physical_name = |rate: &str| match rate {
-        "decay_rate_per_s" => "zeta",
-        "amplitude_fall_rad_per_s" => "friction_angle_rad",
-        _ => "quadratic_drag_per_rad",
+        "decay_rate_per_s" => physical[0],
+        "amplitude_fall_rad_per_s" => physical[1],
+        _ => physical[2],
     };
     let at_bound: Vec<&'static str> = (1..k)
         .filter(|&j| !free[j])
@@ -375,11 +579,13 @@ pub fn fit_decay(
         let physical: Vec<Estimate> = parameters
             .iter()
             .filter_map(|e| {
+                // κ = k ω^{p−1} ⟨|sin|^{p+1}⟩ (4bω/(3π) for the quadratic).
+                let drag = model.drag_law();
                 let factor = match e.name {
                     "decay_rate_per_s" => 1.0 / w,
                     "amplitude_fall_rad_per_s" => std::f64::consts::PI / (2.0 * w),
-                    "quadratic_decay_per_rad_s" => 3.0 * std::f64::consts::PI / (4.0 * w),
-                    _ => return None,
+                    "amplitude0_rad" => return None,
+                    _ => 1.0 / (w.powf(drag.power() - 1.0) * drag.sine_mean()),
                 };
                 Some(Estimate {
                     name: physical_name(e.name),
@@ -462,7 +668,7 @@ fn active_set(
             }
             p
         };
-        let curve = |t: f64, q: &[f64]| model.amplitude(t, &expand(q));
+        let curve = Amplitudes::new(model, time, &expand);
         let initial: Vec<f64> = index.iter().map(|&j| start[j]).collect();
         let fit = fit_curve(&curve, time, amplitude, None, &initial)?;
         let p = expand(&fit.parameters);
@@ -479,6 +685,57 @@ fn active_set(
                 start[j] = 0.0;
             }
             None => return Ok((fit, p, free, bound_errors)),
+        }
+    }
+}
+
+/// A law's amplitudes as the fit evaluates them: the whole record at
+/// once for each parameter set (one integration, where the law has no
+/// closed form), kept for the points that follow.
+struct Amplitudes<'a, E> {
+    model: DecayModel,
+    times: &'a [f64],
+    expand: &'a E,
+    cache: std::cell::RefCell<(Vec<f64>, Vec<f64>)>,
+    next: std::cell::Cell<usize>,
+}
+
+impl<'a, E: Fn(&[f64]) -> Vec<f64>> Amplitudes<'a, E> {
+    fn new(model: DecayModel, times: &'a [f64], expand: &'a E) -> Self {
+        Self {
+            model,
+            times,
+            expand,
+            cache: Default::default(),
+            next: Default::default(),
+        }
+    }
+}
+
+impl<E: Fn(&[f64]) -> Vec<f64>> super::Curve for Amplitudes<'_, E> {
+    fn value(&self, t: f64, q: &[f64]) -> f64 {
+        let p = (self.expand)(q);
+        if !matches!(self.model, DecayModel::Drag { .. }) {
+            return self.model.amplitude(t, &p);
+        }
+        let mut cache = self.cache.borrow_mut();
+        if cache.0 != q {
+            *cache = (q.to_vec(), self.model.amplitudes(self.times, &p));
+        }
+        // The fit asks for the points in order: the one after the last
+        // asked first.
+        let next = self.next.get();
+        let found = if self.times.get(next) == Some(&t) {
+            Some(next)
+        } else {
+            self.times.iter().position(|&x| x == t)
+        };
+        match found {
+            Some(i) => {
+                self.next.set(i + 1);
+                cache.1[i]
+            }
+            None => self.model.amplitude(t, &p),
         }
     }
 }
@@ -522,7 +779,7 @@ pub fn preferred(fits: &[DecayFit]) -> Option<DecayModel> {
 /// `-dA/dt · T/2`, for the energy budget.
 pub fn half_swing_loss(fit: &DecayFit, amplitude: f64, half_period: f64) -> f64 {
     let [_, lambda, mu, kappa] = fit.model.full_rates(&fit.fit.parameters);
-    (mu + lambda * amplitude + kappa * amplitude * amplitude) * half_period
+    (mu + lambda * amplitude + kappa * amplitude.abs().powf(fit.model.power())) * half_period
 }
 
 #[cfg(test)]
@@ -572,6 +829,64 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The general power law at `p = 2` against the closed forms (by
+    /// Runge-Kutta with dry friction, by its Bernoulli form without), in
+    /// the regimes of [`the_general_law_solves_its_equation`], over
+    /// times before 0 too; and at `p = 3/2` without friction, the
+    /// Bernoulli form against a fine independent Runge-Kutta run.
+    #[test]
+    fn the_power_law_matches_the_closed_forms() {
+        let times: Vec<f64> = (-40..=400).map(|i| f64::from(i) * 5.0).collect();
+        for (a0, lambda, mu, kappa) in [
+            (0.05, 3e-4, 5e-6, 0.01),
+            (0.05, 1e-5, 5e-6, 0.01),
+            (0.05, 0.0, 5e-6, 0.01),
+            (0.3, 6e-3, 0.0, 0.03),
+            (0.3, 0.0, 0.0, 0.03),
+            (0.05, 5e-3, 1e-7, 0.01),
+        ] {
+            let general = power_decay_law(&times, a0, [lambda, mu, kappa], 2.0);
+            for (&t, &a) in times.iter().zip(&general) {
+                let closed = decay_law(t, a0, lambda, mu, kappa);
+                assert!(
+                    (a - closed).abs() <= 1e-9 * closed.abs().max(1e-3 * a0),
+                    "({a0}, {lambda}, {mu}, {kappa}) at {t}: {a} vs {closed}"
+                );
+            }
+        }
+        let (a0, lambda, kappa) = (0.2, 2e-3, 0.05);
+        let law = power_decay_law(&[1000.0], a0, [lambda, 0.0, kappa], 1.5)[0];
+        let (mut a, h) = (a0, 0.001);
+        for _ in 0..1_000_000 {
+            let f = |a: f64| -(lambda * a + kappa * a.powf(1.5));
+            let (k1, k2) = (f(a), f(a + 0.5 * h * f(a)));
+            let k3 = f(a + 0.5 * h * k2);
+            let k4 = f(a + h * k3);
+            a += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+        }
+        assert!((law / a - 1.0).abs() < 1e-11, "{law} vs {a}");
+    }
+
+    /// Every drag law's laws are named, found by their names, and the
+    /// quadratic one's are the seven in closed form.
+    #[test]
+    fn every_drag_law_has_its_laws() {
+        let every = DecayModel::every();
+        assert_eq!(every.len(), 7 + 4 * (DRAG_LAWS.len() - 1));
+        for model in &every {
+            assert_eq!(DecayModel::from_name(model.name()), Some(*model));
+        }
+        assert_eq!(
+            DecayModel::from_name("viscous+three_halves").map(DecayModel::rate_names),
+            Some(vec![
+                "amplitude0_rad",
+                "decay_rate_per_s",
+                "three_halves_decay_per_sqrt_rad_s"
+            ])
+        );
+        assert!(DecayModel::searched().len() < every.len());
     }
 
     #[test]

@@ -269,7 +269,7 @@ pub fn parse_model(name: &str) -> Result<Option<DecayModel>, Refusal> {
 
 /// The law names [`parse_model`] takes, `all` last, comma-separated.
 pub fn model_names() -> String {
-    let mut names: Vec<&str> = DecayModel::ALL.iter().map(|m| m.name()).collect();
+    let mut names: Vec<&str> = DecayModel::every().iter().map(|m| m.name()).collect();
     names.push(DEFAULT_MODEL);
     names.join(", ")
 }
@@ -349,7 +349,7 @@ fn validated(input: &RunDownInput<'_>) -> Result<Checked, Refusal> {
         }
     }
     let models: Vec<DecayModel> = match input.model {
-        None => DecayModel::ALL.to_vec(),
+        None => DecayModel::searched(),
         Some(model) => vec![model],
     };
     if let Some(p) = input.period {
@@ -529,7 +529,7 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
         (Some("turning_points"), Some((h, se))) => se / h,
         _ => 0.0,
     };
-    for model in models {
+    for &model in &models {
         match fit_decay(model, time, amplitude, omega) {
             Ok(mut fit) => {
                 fit.record_q = fit.record_q.map(|q| q.with_omega_error(omega_error));
@@ -560,7 +560,7 @@ pub fn analyse(input: &RunDownInput<'_>) -> Result<RunDown, Refusal> {
         }),
         _ => None,
     };
-    let models = DecayModel::ALL
+    let models = models
         .iter()
         .filter_map(|&m| {
             if let Some(i) = fits.iter().position(|f| f.model == m) {

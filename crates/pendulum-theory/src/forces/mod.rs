@@ -18,7 +18,11 @@
 //! together with the viscous decay, its rate for the step and the work
 //! estimate, the range of its coefficient). A law is an input by its name
 //! on every front end (`--drag NAME=VALUE`, `drag={NAME: VALUE}`) and a
-//! key of the result; adding one is a file and a line in [`DRAG_LAWS`].
+//! key of the result. The decay fit reads the same list: each law's power
+//! and cycle average give its averaged amplitude equation, so that a law
+//! is fitted to a run-down (alone, or with viscous damping and dry
+//! friction: [`crate::fitting::decay::DecayModel::Drag`]) as well as
+//! simulated. Adding one is a file and a line in [`DRAG_LAWS`].
 
 use crate::integrate::State2;
 
@@ -91,6 +95,26 @@ pub trait DragLaw: Sync {
     /// whose free speed at the bottom is `free_speed` reaches under it
     /// (the stiffness the step size and the work estimate follow).
     fn rate(&self, k: f64, free_speed: f64) -> f64;
+
+    /// Its power `p`: the loss is `k v|v|^{p−1}`. A run-down's amplitude
+    /// then falls as `dA/dt = −κ A^p` (the energy balance over a cycle of
+    /// `θ = A cos ωt`), `κ = k ω^{p−1} ⟨|sin|^{p+1}⟩`, which is how the
+    /// decay fit reads the law (see [`DragLaw::sine_mean`]).
+    fn power(&self) -> f64;
+    /// `⟨|sin|^{p+1}⟩` over a cycle, `Γ(p/2 + 1)/(√π Γ(p/2 + 3/2))`
+    /// (DLMF 5.12.2 with the half-period integral of `sin^{p+1}`).
+    fn sine_mean(&self) -> f64;
+    /// Its name among the decay fit's laws (`quadratic`), and in the
+    /// laws it makes with the viscous and dry ones (`viscous+quadratic`).
+    fn decay_name(&self) -> &'static str;
+    /// The name, with its unit, of `κ`, the law's amplitude-decay rate in
+    /// `dA/dt = −κ A^p`: a parameter of the decay fit's law.
+    fn decay_rate_name(&self) -> &'static str;
+    /// Whether the fits try the law when none is named: a law that the
+    /// others together mimic over a record (a power between 1 and 2 is
+    /// what viscous damping and quadratic drag together approximate)
+    /// would split the choice between look-alikes; it is fitted when named.
+    fn searched(&self) -> bool;
 }
 
 /// The drag laws, by name. A new law is a file beside this one, its `mod`

@@ -50,4 +50,25 @@ impl DragLaw for QuadraticDrag {
             0.0
         }
     }
+
+    fn power(&self) -> f64 {
+        2.0
+    }
+
+    /// `4/(3π)`.
+    fn sine_mean(&self) -> f64 {
+        4.0 / (3.0 * std::f64::consts::PI)
+    }
+
+    fn decay_name(&self) -> &'static str {
+        "quadratic"
+    }
+
+    fn decay_rate_name(&self) -> &'static str {
+        "quadratic_decay_per_rad_s"
+    }
+
+    fn searched(&self) -> bool {
+        true
+    }
 }

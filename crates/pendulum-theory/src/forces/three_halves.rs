@@ -65,4 +65,27 @@ impl DragLaw for ThreeHalvesDrag {
             0.0
         }
     }
+
+    fn power(&self) -> f64 {
+        1.5
+    }
+
+    /// `Γ(7/4)/(√π Γ(9/4))` (SciPy's `gamma`: 0.45765585810108783).
+    fn sine_mean(&self) -> f64 {
+        0.457_655_858_101_087_83
+    }
+
+    fn decay_name(&self) -> &'static str {
+        "three_halves"
+    }
+
+    fn decay_rate_name(&self) -> &'static str {
+        "three_halves_decay_per_sqrt_rad_s"
+    }
+
+    /// Not tried unless named: over a record, viscous damping and
+    /// quadratic drag together follow a power between 1 and 2.
+    fn searched(&self) -> bool {
+        false
+    }
 }

@@ -876,6 +876,8 @@ pub struct FitTrajectoryArgs {
     pub design: Option<InputPath>,
     #[arg(long, value_name = "MODEL", help = with_default("Section 1-4's closed form (linear), the nonlinear equation integrated inside the fit (nonlinear), or auto: nonlinear when the largest swing exceeds 5°", pendulum_theory::fitting::tracked::DEFAULT_MODEL))]
     pub model: Option<String>,
+    #[arg(long, value_name = "LAW", help = drag_law_help())]
+    pub drag_law: Option<String>,
     /// Write the residuals to this CSV file (time_s,residual_rad).
     #[arg(long, value_name = "FILE.csv")]
     pub residuals: Option<OutputPath>,
@@ -1443,6 +1445,8 @@ pub struct ClockArgs {
     pub mass: Option<Mass>,
     #[arg(long, value_name = "Q", allow_hyphen_values = true, help = with_default("Quality factor of the free pendulum", clock::DEFAULT_Q))]
     pub q: Option<Number>,
+    #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true, help = clock_drag_help())]
+    pub drag: Vec<String>,
     /// The escapement [default: deadbeat].
     #[arg(long, value_parser = escapement_parser())]
     pub escapement: Option<EscapementKind>,
@@ -1564,6 +1568,35 @@ pub struct DesignArgs {
 /// shown without the command line holding one.
 fn with_default(help: &str, default: impl std::fmt::Display) -> String {
     format!("{help} [default: {default}]")
+}
+
+/// The help of `fit trajectory --drag-law`: the library's drag laws, the
+/// ones it tries unnamed first.
+fn drag_law_help() -> String {
+    use pendulum_theory::simulation::forces::DRAG_LAWS;
+    let names = |searched: bool| -> Vec<&str> {
+        DRAG_LAWS
+            .iter()
+            .filter(|l| l.searched() == searched)
+            .map(|l| l.name())
+            .collect()
+    };
+    format!(
+        "The drag law the nonlinear fit tries beside viscous damping and dry friction (kept \
+         where the information criterion prefers it): {}, or {} [default: {}]",
+        names(true).join(", "),
+        names(false).join(", "),
+        names(true).join(", ")
+    )
+}
+
+/// The help of `clock --drag`: the simulation's drag laws, beside the Q.
+fn clock_drag_help() -> String {
+    format!(
+        "{}; beside the viscous damping of --q, in the integrated half swings and the long \
+         run alike",
+        drag_laws_help()
+    )
 }
 
 /// The help of `--drag`: the library's drag laws, each with its

@@ -345,6 +345,9 @@ pub struct TrajectoryOptions {
     /// The model to fit (`small`, `exact`, …); the library's choice by
     /// default.
     pub model: Option<String>,
+    /// The drag law the nonlinear fit tries (a name of the simulation's
+    /// list); the library's by default.
+    pub drag_law: Option<String>,
     /// The pendulum's length, m, and whether it came from a design.
     pub length: Option<(f64, LengthSource)>,
     /// The length's standard error, m.
@@ -419,6 +422,7 @@ pub fn trajectory(
         angle: &track.angle,
         angular_velocity: &axes,
         model: parsed(options.model.as_deref(), tracked::parse_model)?,
+        drag_law: parsed(options.drag_law.as_deref(), tracked::parse_drag_law)?,
         length,
         length_standard_error: match options.length {
             Some(_) => options.length_standard_error,

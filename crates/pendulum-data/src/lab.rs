@@ -89,6 +89,7 @@ pub struct TrajectoryRequest {
     pub from_s: Option<f64>,
     pub to_s: Option<f64>,
     pub model: Option<String>,
+    pub drag_law: Option<String>,
     pub length_m: Option<f64>,
     pub length_uncertainty_m: Option<f64>,
     #[serde(default)]
@@ -251,6 +252,7 @@ fn fit_of(request: &FitRequest, bytes: &[u8]) -> Result<String, Failure> {
                 from: r.from_s,
                 to: r.to_s,
                 model: r.model.clone(),
+                drag_law: r.drag_law.clone(),
                 length: length.map(|(l, _)| (l, LengthSource::Given)),
                 length_standard_error: r.length_uncertainty_m,
                 force: r.force,

@@ -788,7 +788,7 @@ fn fit_beats(
 
 /// The tracked-swing analysis (the CLI's `fit trajectory`) as JSON.
 #[pyfunction]
-#[pyo3(signature = (time, angle, model, length, force, angular_velocity, length_uncertainty=None))]
+#[pyo3(signature = (time, angle, model, length, force, angular_velocity, length_uncertainty=None, drag_law=None))]
 #[allow(clippy::too_many_arguments)]
 fn fit_trajectory(
     py: Python<'_>,
@@ -799,10 +799,18 @@ fn fit_trajectory(
     force: bool,
     angular_velocity: Option<Vec<In<'_>>>,
     length_uncertainty: Option<f64>,
+    drag_law: Option<&str>,
 ) -> PyResult<String> {
-    use pendulum_theory::fitting::tracked::{analyse, parse_model, LengthSource, TrackInput};
+    use pendulum_theory::fitting::tracked::{
+        analyse, parse_drag_law, parse_model, LengthSource, TrackInput,
+    };
     let model = model
         .map(parse_model)
+        .transpose()
+        .map_err(refusal)?
+        .flatten();
+    let drag_law = drag_law
+        .map(parse_drag_law)
         .transpose()
         .map_err(refusal)?
         .flatten();
@@ -828,6 +836,7 @@ fn fit_trajectory(
             angle: angle.unwrap_or(&[]),
             angular_velocity: rate.as_deref().unwrap_or(&[]),
             model,
+            drag_law,
             length: length.map(|l| (l, LengthSource::Given)),
             length_standard_error: length_uncertainty,
             force,
@@ -916,7 +925,7 @@ impl pendulum_theory::clock::analysis::RunSink for Columns {
 /// rows (time_s, beats, amplitude_rad, rate_s_per_day, time_error_s,
 /// drive_factor) when one was asked for. `None` is the library's default.
 #[pyfunction]
-#[pyo3(signature = (length, parts, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, beat_error, out_of_beat, drive_factor, drive_range, steps, run))]
+#[pyo3(signature = (length, parts, g, mass, q, escapement, lift_angle, drive_torque, drive_energy, friction, recoil, impulse_angle, every_beats, beat_error, out_of_beat, drive_factor, drive_range, steps, run, drag=Vec::new()))]
 #[allow(clippy::too_many_arguments)]
 fn clock<'py>(
     py: Python<'py>,
@@ -939,6 +948,7 @@ fn clock<'py>(
     drive_range: Option<(f64, f64)>,
     steps: Option<i64>,
     run: Option<RunArgs>,
+    drag: Vec<(String, f64)>,
 ) -> PyResult<(String, Option<Vec<Array1<'py>>>)> {
     use pendulum_theory::clock::analysis::{
         analyse, drive_of, escapement_named, BeatError, ClockInput, ClockPendulum, DriveFactors,
@@ -969,11 +979,22 @@ fn clock<'py>(
             ))
         }
     };
+    let drag = drag
+        .iter()
+        .map(|(name, k)| {
+            Ok((
+                pendulum_theory::simulation::analysis::parse_drag_law(name)?,
+                *k,
+            ))
+        })
+        .collect::<Result<Vec<_>, Refusal>>()
+        .map_err(refused)?;
     let input = ClockInput {
         pendulum,
         g,
         mass,
         q,
+        drag,
         escapement: escapement
             .as_deref()
             .map(escapement_named)

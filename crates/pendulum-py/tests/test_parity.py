@@ -641,6 +641,9 @@ def clock_args(length, kw, tmp_path):
             args += ["--drive-file", str(path)]
         elif k == "force":
             args += ["--force"] if v else []
+        elif k == "drag":
+            for name, value in v.items():
+                args += ["--drag", f"{name}={value!r}"]
         else:
             flag, unit = CLOCK_FLAGS[k]
             args += [flag, cli_value(v, unit)]
@@ -682,6 +685,11 @@ CLOCK = {
     "impulse_angle_past_170": {"drive_energy": 2e-5, "impulse_angle": 3.0},
     "drive_negative": {"drive_energy": -2e-5},
     "g_nan": {"drive_energy": 2e-5, "g": NAN},
+    "three_halves_drag": {"drive_energy": 2e-5, "drag": {"three_halves_drag": 5e-4}},
+    "two_drag_laws": {"drive_energy": 2e-5,
+                      "drag": {"quadratic_drag": 1e-3, "three_halves_drag": 1e-4}},
+    "drag_negative": {"drive_energy": 2e-5, "drag": {"three_halves_drag": -1.0}},
+    "drag_unknown": {"drive_energy": 2e-5, "drag": {"bogus": 1.0}},
 }
 
 

@@ -234,6 +234,7 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
         g: Some(gravity.g_m_s2),
         mass: args.mass.map(|m| m.0),
         q: args.q.map(|q| q.0),
+        drag: common::drag_laws(&args.drag)?,
         escapement: args.escapement,
         lift_angle: args.lift_angle.map(|a| a.0),
         drive: Some(args.drive.0),
@@ -284,7 +285,13 @@ pub fn run(args: &ClockArgs) -> Result<String, CliError> {
             _ => CliError::other(reason),
         }
     };
-    let result = analyse(&input, &mut rows).map_err(|r| CliError::refused(&r, FLAGS, &data))?;
+    let law_flags = common::drag_flags(&[]);
+    let flags: Vec<(&str, &str)> = FLAGS
+        .iter()
+        .copied()
+        .chain(law_flags.iter().map(|(n, f)| (*n, f.as_str())))
+        .collect();
+    let result = analyse(&input, &mut rows).map_err(|r| CliError::refused(&r, &flags, &data))?;
     if let Some(e) = rows.failure {
         return Err(e);
     }

@@ -258,3 +258,36 @@ fn listed(heading: &str, lines: impl Iterator<Item = String>) -> String {
     }
     format!("{heading}\n{items}")
 }
+
+/// The drag laws of `--drag NAME=VALUE` (repeated), each read by the
+/// library's list: the law and its coefficient in its own units.
+pub fn drag_laws(
+    given: &[String],
+) -> Result<Vec<(&'static dyn pendulum_theory::forces::DragLaw, f64)>, CliError> {
+    given
+        .iter()
+        .map(|t| {
+            let (name, value) = t.split_once('=').ok_or_else(|| {
+                CliError::flag(
+                    "--drag",
+                    format!("give NAME=VALUE (e.g. three_halves_drag=0.002), got '{t}'"),
+                )
+            })?;
+            let value = crate::units::parse_number(value)
+                .map_err(|e| CliError::flag(&format!("--drag {name}"), e))?;
+            let law = pendulum_theory::simulation::analysis::parse_drag_law(name.trim())
+                .map_err(|e| refused(&e))?;
+            Ok((law, value))
+        })
+        .collect()
+}
+
+/// The flags the drag laws' refusals are said of (`--drag NAME`, the
+/// field being the law's name), but for the laws in `except`.
+pub fn drag_flags(except: &[&str]) -> Vec<(&'static str, String)> {
+    pendulum_theory::forces::DRAG_LAWS
+        .iter()
+        .filter(|l| !except.contains(&l.name()))
+        .map(|l| (l.name(), format!("--drag {}", l.name())))
+        .collect()
+}

@@ -74,10 +74,18 @@ pub fn run(args: &FitDecayArgs) -> Result<String, CliError> {
 /// Whether the parameter `name` is the one the bound name `bound` (a
 /// physical or a rate name) refers to.
 fn bound_of(bound: &str, name: &str) -> bool {
+    // A drag law's rate and coefficient, by the names the library's list
+    // gives them (the quadratic's coefficient by its key).
+    let drag = |n: &str| {
+        n == "quadratic_drag_per_rad"
+            || pendulum_theory::forces::DRAG_LAWS
+                .iter()
+                .any(|l| l.name() == n || l.decay_rate_name() == n)
+    };
     let rate_of = |n: &str| match n {
         "zeta" | "decay_rate_per_s" => "viscous",
         "friction_angle_rad" | "amplitude_fall_rad_per_s" => "dry",
-        "quadratic_drag_per_rad" | "quadratic_decay_per_rad_s" => "drag",
+        _ if drag(n) => "drag",
         _ => "",
     };
     !rate_of(name).is_empty() && rate_of(name) == rate_of(bound)

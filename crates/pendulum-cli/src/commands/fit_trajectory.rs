@@ -34,6 +34,7 @@ pub fn run(args: &FitTrajectoryArgs) -> Result<String, CliError> {
         from: args.from.map(|t| t.0),
         to: args.to.map(|t| t.0),
         model: args.model.clone(),
+        drag_law: args.drag_law.clone(),
         length: given_length.map(|l| (l, source)),
         length_standard_error: args.length_uncertainty.map(|l| l.0),
         force: args.read.force,

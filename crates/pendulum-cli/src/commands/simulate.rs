@@ -8,14 +8,12 @@ use crate::file::CsvFile;
 use crate::interrupt;
 use crate::output::{self, num, Output, Summary};
 use crate::plot::{render, thin, Figure, Panel, Series, Target};
-use crate::units::parse_number;
 use crate::work::{self, Progress};
 use clap::ValueEnum;
 use pendulum_theory::damped::State;
 use pendulum_theory::simulation::analysis::{
-    method_of, parse_drag_law, prepare, Prepared, Simulation, SimulationInput, SAMPLES_PER_PERIOD,
+    method_of, prepare, Prepared, Simulation, SimulationInput, SAMPLES_PER_PERIOD,
 };
-use pendulum_theory::simulation::forces::DRAG_LAWS;
 use pendulum_theory::simulation::{
     half_swing_rate, Action, Observer, Options, Stopped, TurningPoint,
 };
@@ -72,22 +70,7 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
         }
     };
     let damping_field = common::damping_field(&args.swing.damping);
-    let drag = args
-        .drag
-        .iter()
-        .map(|t| {
-            let (name, value) = t.split_once('=').ok_or_else(|| {
-                CliError::flag(
-                    "--drag",
-                    format!("give NAME=VALUE (e.g. three_halves_drag=0.002), got '{t}'"),
-                )
-            })?;
-            let value =
-                parse_number(value).map_err(|e| CliError::flag(&format!("--drag {name}"), e))?;
-            let law = parse_drag_law(name.trim()).map_err(|e| common::refused(&e))?;
-            Ok((law, value))
-        })
-        .collect::<Result<Vec<_>, CliError>>()?;
+    let drag = common::drag_laws(&args.drag)?;
     let input = SimulationInput {
         length: pendulum.length_m(),
         g: Some(pendulum.g_m_s2()),
@@ -110,11 +93,11 @@ pub fn run(args: &SimulateArgs) -> Result<Output, CliError> {
     };
     // A drag law given by name is said of `--drag NAME` (the quadratic
     // drag has its own flag too).
-    let law_flags: Vec<(&str, String)> = DRAG_LAWS
-        .iter()
-        .filter(|l| l.name() != "quadratic_drag" || args.quadratic_drag.is_none())
-        .map(|l| (l.name(), format!("--drag {}", l.name())))
-        .collect();
+    let law_flags = common::drag_flags(if args.quadratic_drag.is_some() {
+        &["quadratic_drag"]
+    } else {
+        &[]
+    });
     let flags: Vec<(&str, &str)> = law_flags.iter().map(|(n, f)| (*n, f.as_str())).collect();
     let refused = |r: pendulum_theory::analysis::Refusal| {
         CliError::refused(&r, &flags, &|_, reason| CliError::other(reason))

@@ -517,7 +517,7 @@ def fit_decay(time, amplitude, model="all", *, period=None, length=None, g=None,
 
 
 def fit_trajectory(time, angle=None, model="auto", *, angular_velocity=None, length=None,
-                   length_uncertainty=None, force=False):
+                   length_uncertainty=None, force=False, drag_law=None):
     """Fits section 1-4's closed form (``"linear"``) or the nonlinear
     damped equation integrated inside the fit (``"nonlinear"``; ``"auto"``:
     nonlinear above a 5° swing) to ``angle`` (rad) at ``time`` (s), or by
@@ -528,7 +528,10 @@ def fit_trajectory(time, angle=None, model="auto", *, angular_velocity=None, len
     ``length_uncertainty`` (m, the CLI's ``--length-uncertainty``) and
     lists its parts (``standard_error_parts``). ``q_factor`` is Q over the
     record (the energy lost per cycle, whatever the damping law),
-    ``q_viscous`` the viscous part alone. Returns the CLI's JSON as a
+    ``q_viscous`` the viscous part alone. ``drag_law`` (a name of
+    ``simulate``'s ``drag`` laws, the CLI's ``--drag-law``) is the drag the
+    nonlinear fit tries beside viscous damping and dry friction (quadratic
+    drag unnamed). Returns the CLI's JSON as a
     dict (points, model, model_requested, observed, parameters,
     standard_errors, residual_rms_rad or residual_rms_rad_s,
     gyroscope_axis, length_m, length_source, warnings).
@@ -553,7 +556,8 @@ def fit_trajectory(time, angle=None, model="auto", *, angular_velocity=None, len
             rates = [_array(a)]
     d = _json.loads(_as_length_uncertainty(lambda: _native.fit_trajectory(
         _array(time), None if angle is None else _array(angle), _text(model), _number(length),
-        bool(force), rates, _number(length_uncertainty))))
+        bool(force), rates, _number(length_uncertainty),
+        None if drag_law is None else _text(drag_law))))
     return FitResult(d, d["parameters"], d["standard_errors"], d["model"])
 
 
@@ -748,7 +752,7 @@ def fit_photogate(time, *, gate=None, select=None, bob_diameter=None, bph=None, 
 def _clock(length, *, parts=None, drive_energy=None, drive_torque=None, q=None, escapement=None,
            lift_angle=None, mass=None, friction=None, recoil=None, impulse_angle=None,
            every_beats=None, beat_error=None, out_of_beat=None, g=None, drive_factor=None,
-           drive_range=None, steps=None, run=None):
+           drive_range=None, steps=None, run=None, drag=None):
     factors = None if drive_factor is None else [
         float(f) for f in _np.atleast_1d(_np.asarray(drive_factor, dtype=_np.float64)).ravel()]
     span = None if drive_range is None else (float(drive_range[0]), float(drive_range[1]))
@@ -756,7 +760,8 @@ def _clock(length, *, parts=None, drive_energy=None, drive_torque=None, q=None, 
         _number(length), None if parts is None else _parts(parts), _number(g), _number(mass), _number(q), _text(escapement),
         _number(lift_angle), _number(drive_torque), _number(drive_energy), _number(friction),
         _number(recoil), _number(impulse_angle), _count(every_beats), _number(beat_error),
-        _number(out_of_beat), factors, span, _count(steps), run)
+        _number(out_of_beat), factors, span, _count(steps), run,
+        [(str(k), float(v)) for k, v in (drag or {}).items()])
     return _json.loads(text), columns
 
 
@@ -780,6 +785,7 @@ def clock(
     drive_factor=None,
     drive_range=None,
     steps=None,
+    drag=None,
 ):
     """A pendulum kept going by an escapement (the CLI's ``clock``, the
     same library call): ``escapement`` is a name of
@@ -791,7 +797,9 @@ def clock(
     left out is the library's default (``pendulum clock --help`` lists
     them). Out of beat: ``beat_error`` (s, half the difference of the tick
     and tock intervals) or ``out_of_beat`` (rad, the escapement's offset
-    from the rest), the CLI's ``--beat-error``. Returns the command's
+    from the rest), the CLI's ``--beat-error``. ``drag``: drag laws beside
+    the viscous damping of ``q``, a dict as :func:`simulate` takes
+    (``{"three_halves_drag": 0.002}``, the CLI's ``--drag``). Returns the command's
     ``--json`` object as a dict: the clock
     (escapement, q, length_m, mass_kg, lift_angle_rad, the drive,
     minimum_drive_factor, out_of_beat_deg, out_of_beat_rate_s_per_day), ``steady`` (amplitude_rad, period_s, rate_s_per_day,
@@ -816,7 +824,8 @@ def clock(
                        escapement=escapement, lift_angle=lift_angle, mass=mass, friction=friction,
                        recoil=recoil, impulse_angle=impulse_angle, every_beats=every_beats,
                        beat_error=beat_error, out_of_beat=out_of_beat, g=g,
-                       drive_factor=drive_factor, drive_range=drive_range, steps=steps)
+                       drive_factor=drive_factor, drive_range=drive_range, steps=steps,
+                       drag=drag)
     return result
 
 

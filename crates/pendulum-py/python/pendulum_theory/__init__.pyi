@@ -66,6 +66,7 @@ def fit_trajectory(
     length: Optional[float] = ...,
     length_uncertainty: Optional[float] = ...,
     force: Any = ...,
+    drag_law: Optional[str] = ...,
 ) -> FitResult: ...
 def fit_beats(
     time: npt.ArrayLike,
@@ -145,6 +146,7 @@ def clock(
     drive_factor: Optional[ArrayLike] = ...,
     drive_range: Any = ...,
     steps: Any = ...,
+    drag: Optional[Dict[str, float]] = ...,
 ) -> Dict[str, Any]: ...
 def clock_run(
     length: float,

@@ -74,7 +74,7 @@ fn gauss_legendre() -> &'static ([f64; 24], [f64; 24]) {
 }
 
 /// `∫ f` over `[a, b]` by the 24-point rule.
-fn integrate(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+pub(crate) fn integrate(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
     let (x, w) = gauss_legendre();
     let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
     let mut sum = 0.0;

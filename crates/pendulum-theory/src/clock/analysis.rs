@@ -148,6 +148,25 @@ pub enum BeatError {
     Time(f64),
 }
 
+/// The drag laws `drag` (coefficients in their own units) scaled for a
+/// pendulum of natural angular frequency `omega` (rad/s), each checked
+/// and named once; a refusal names the law (the field `simulate` names).
+fn scaled_drag(
+    drag: &[(&'static dyn crate::forces::DragLaw, f64)],
+    omega: f64,
+) -> Result<Vec<(&'static dyn crate::forces::DragLaw, f64)>, Refusal> {
+    let mut out: Vec<(&'static dyn crate::forces::DragLaw, f64)> = Vec::new();
+    for &(law, k) in drag {
+        let field = law.name();
+        if out.iter().any(|(l, _)| l.name() == field) {
+            return Err(Refusal::field(field, "is given twice"));
+        }
+        let k = crate::forces::check_drag(k).map_err(|reason| Refusal::field(field, reason))?;
+        out.push((law, law.scaled(k, omega)));
+    }
+    Ok(out)
+}
+
 /// Airy's first-order integral is warned of as far from the integrated
 /// escapement error when they differ by more than this share of the larger
 /// and by more than this many s/day (it is exact to first order in the
@@ -171,6 +190,10 @@ pub struct ClockInput {
     pub mass: Option<f64>,
     /// Quality factor of the free pendulum (default [`DEFAULT_Q`]).
     pub q: Option<f64>,
+    /// Drag laws of [`crate::forces::DRAG_LAWS`] beside the viscous
+    /// damping of `q`, each with its coefficient in the law's own units
+    /// (`simulate`'s `--drag`); none by default.
+    pub drag: Vec<(&'static dyn crate::forces::DragLaw, f64)>,
     /// The escapement (default the deadbeat).
     pub escapement: Option<Kind>,
     /// Lift angle, rad (default [`DEFAULT_LIFT_DEG`]).
@@ -204,6 +227,7 @@ impl ClockInput {
             g: None,
             mass: None,
             q: None,
+            drag: Vec::new(),
             escapement: None,
             lift_angle: None,
             drive: None,
@@ -455,6 +479,7 @@ pub fn build(input: &ClockInput) -> Result<Built, Refusal> {
         out_of_beat: 0.0,
     };
     let scale = mass * g * pendulum.length_m();
+    let drag = scaled_drag(&input.drag, pendulum.natural_angular_frequency())?;
     let elastic_share = design
         .as_ref()
         .and_then(CompoundPendulum::spring_effect)
@@ -472,6 +497,7 @@ pub fn build(input: &ClockInput) -> Result<Built, Refusal> {
             escapement,
             torque_scale: scale,
             elastic_share,
+            drag: drag.clone(),
         })
     };
     let in_beat = clock_of(0.0)?;

@@ -1,7 +1,8 @@
 //! One half swing, integrated by the one adaptive driver
 //! ([`crate::integrate::adaptive`], DOP853: Hairer, Nørsett & Wanner I,
 //! II.10) in scaled time `τ = ω_n t`, on
-//! `θ'' = -sin θ - θ'/Q + a(θ)` with the escapement's torque `a` in each
+//! `θ'' = -sin θ - θ'/Q + d(θ') + a(θ)` with the drag laws' losses `d`
+//! ([`crate::forces::DRAG_LAWS`]) and the escapement's torque `a` in each
 //! zone. The torque changes at the zones' edges, so the integration stops
 //! at each edge (a terminal event of the driver, located on the dense
 //! output) and restarts there with the next zone's
@@ -10,7 +11,7 @@
 
 use super::escapement::{zone_of, Escapement, InZone};
 pub use crate::averaging::HalfSwing;
-use crate::forces::{Gravity, Term, Viscous};
+use crate::forces::{DragLaw, Gravity, Term, Viscous};
 use crate::integrate::adaptive::{Dop853, Driver};
 use crate::integrate::control::Tolerance;
 use crate::integrate::State2;
@@ -20,19 +21,30 @@ const MAX_STEPS: u64 = 1_000_000;
 /// Steps shorter than this (scaled time) give up.
 const MIN_STEP: f64 = 1e-14;
 
+/// The losses of a half swing beside the escapement: the viscous rate
+/// `1/q` and the drag laws with their coefficients, both scaled.
+#[derive(Clone, Copy, Debug)]
+pub struct Losses<'a> {
+    /// The quality factor of the viscous damping.
+    pub q: f64,
+    /// The drag laws of [`crate::forces::DRAG_LAWS`] and their scaled
+    /// coefficients.
+    pub drag: &'a [(&'static dyn DragLaw, f64)],
+}
+
 /// Integrates the half swing that starts at rest at `-a1` (travelling
-/// towards `+θ`), on beat `beat`, with viscous rate `1/q` (scaled) and the
-/// drive factor `drive`, at tolerance `tol`. `None` if the pendulum goes
-/// over the top or does not come to rest.
+/// towards `+θ`), on beat `beat`, with the `losses` and the drive factor
+/// `drive`, at tolerance `tol`. `None` if the pendulum goes over the top
+/// or does not come to rest.
 pub fn half_swing(
     escapement: &dyn Escapement,
-    q: f64,
+    losses: Losses<'_>,
     drive: f64,
     beat: u64,
     a1: f64,
     tol: f64,
 ) -> Option<HalfSwing> {
-    half_swing_ticked(escapement, q, drive, beat, a1, tol).map(|(h, _)| h)
+    half_swing_ticked(escapement, losses, drive, beat, a1, tol).map(|(h, _)| h)
 }
 
 /// [`half_swing`], with the time (scaled, from its start) at which it
@@ -40,16 +52,17 @@ pub fn half_swing(
 /// tooth, the tick a microphone hears (`None` if it does not reach it).
 pub fn half_swing_ticked(
     escapement: &dyn Escapement,
-    q: f64,
+    losses: Losses<'_>,
     drive: f64,
     beat: u64,
     a1: f64,
     tol: f64,
 ) -> Option<(HalfSwing, Option<f64>)> {
     let edges = escapement.edges_on(beat);
+    let q = losses.q;
     let c = if q.is_finite() { 1.0 / q } else { 0.0 };
     let tolerance = Tolerance::both(tol);
-    // Gravity, viscous damping and the escapement in `zone`.
+    // Gravity, viscous damping, drag and the escapement in `zone`.
     let rhs = |zone: usize| {
         let torque = InZone {
             escapement,
@@ -62,6 +75,11 @@ pub fn half_swing_ticked(
                 y[1],
                 Gravity.acceleration(y, 1.0)
                     + Viscous(c).acceleration(y, 1.0)
+                    + losses
+                        .drag
+                        .iter()
+                        .map(|&(law, k)| law.acceleration(k, y[1]))
+                        .sum::<f64>()
                     + torque.acceleration(y, 1.0),
             ]
         }

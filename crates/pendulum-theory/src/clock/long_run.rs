@@ -227,11 +227,18 @@ impl Stepper<'_> {
     /// circular error; `None` where the swing cannot be made.
     fn half_swing(&self, a: f64, beat: u64, d: f64, t: f64, shift: bool) -> Option<HalfSwing> {
         let q = self.clock.q * (self.damping)(t);
-        half_swing_map(Some(self.clock.escapement.as_ref()), q, d, beat, a, shift).map(|h| {
-            HalfSwing {
-                time: h.time * self.clock.spring_factor(a),
-                ..h
-            }
+        half_swing_map(
+            Some(self.clock.escapement.as_ref()),
+            q,
+            &self.clock.drag,
+            d,
+            beat,
+            a,
+            shift,
+        )
+        .map(|h| HalfSwing {
+            time: h.time * self.clock.spring_factor(a),
+            ..h
         })
     }
 

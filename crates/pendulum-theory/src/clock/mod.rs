@@ -22,6 +22,7 @@ pub mod escapement;
 pub mod long_run;
 pub mod plan;
 
+use crate::forces::DragLaw;
 use crate::pendulum::Pendulum;
 use escapement::Escapement;
 
@@ -79,6 +80,9 @@ pub struct Clock {
     /// for a rigid pivot): its torque is linear in the angle, so it
     /// shrinks the circular error ([`Clock::spring_factor`]).
     pub elastic_share: f64,
+    /// Drag laws of [`crate::forces::DRAG_LAWS`] beside the viscous
+    /// damping, with their coefficients scaled ([`DragLaw::scaled`]).
+    pub drag: Vec<(&'static dyn DragLaw, f64)>,
 }
 
 /// A clock's steady state.
@@ -138,6 +142,14 @@ impl Clock {
         })
     }
 
+    /// The losses beside the escapement: the Q and the drag laws.
+    pub fn losses(&self) -> direct::Losses<'_> {
+        direct::Losses {
+            q: self.q,
+            drag: &self.drag,
+        }
+    }
+
     /// The half swing from `-a1` on beat `beat`.
     pub fn half_swing(
         &self,
@@ -149,7 +161,7 @@ impl Clock {
         match method {
             HalfSwingMethod::Direct => direct::half_swing(
                 self.escapement.as_ref(),
-                self.q,
+                self.losses(),
                 drive,
                 beat,
                 a1,
@@ -158,6 +170,7 @@ impl Clock {
             HalfSwingMethod::Averaged => averaged::half_swing_map(
                 Some(self.escapement.as_ref()),
                 self.q,
+                &self.drag,
                 drive,
                 beat,
                 a1,
@@ -289,7 +302,7 @@ impl Clock {
         for beat in 0..n {
             let (h, tick) = direct::half_swing_ticked(
                 self.escapement.as_ref(),
-                self.q,
+                self.losses(),
                 drive,
                 beat,
                 amplitude,

@@ -86,7 +86,7 @@ pub enum DecayModel {
 
 /// The names of the laws of each drag law of [`DRAG_LAWS`] (by index):
 /// itself, then with viscous damping, dry friction, both. Made once.
-fn drag_model_names() -> &'static [[&'static str; 4]] {
+pub(crate) fn drag_model_names() -> &'static [[&'static str; 4]] {
     static NAMES: std::sync::OnceLock<Vec<[&'static str; 4]>> = std::sync::OnceLock::new();
     NAMES.get_or_init(|| {
         DRAG_LAWS

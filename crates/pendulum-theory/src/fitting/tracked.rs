@@ -9,7 +9,10 @@ use super::frames::{frame_grid, longest_run, FrameGrid};
 use super::gyroscope::{principal_axis, PrincipalAxis};
 pub use super::noise_of;
 use super::rundown::{check_pairs, check_times};
-use super::trajectory::{fit_observed, swing_of, Observed, TrajectoryFit, TrajectoryModel};
+use super::trajectory::{
+    drag_key, fit_observed_with, searched_drag_laws, swing_of, Observed, TrajectoryFit,
+    TrajectoryModel,
+};
 use super::ErrorParts;
 use crate::analysis::{judge_work, require_finite, require_finite_samples, Refusal};
 use crate::error::format_significant;
@@ -94,6 +97,11 @@ pub struct TrackInput<'a> {
     /// The model: linear or nonlinear; `None` chooses (`auto`, the
     /// default: nonlinear above a 5° swing). [`parse_model`] reads a name.
     pub model: Option<TrajectoryModel>,
+    /// The drag law the nonlinear fit tries beside viscous damping and dry
+    /// friction: a law of [`crate::forces::DRAG_LAWS`]
+    /// ([`crate::simulation::analysis::parse_drag_law`] reads a name);
+    /// `None` tries those the list searches (quadratic drag).
+    pub drag_law: Option<&'static dyn crate::forces::DragLaw>,
     /// The length g is computed with, m, and where it came from.
     pub length: Option<(f64, LengthSource)>,
     /// The length's standard uncertainty, m (measured with a tape, or a
@@ -213,6 +221,12 @@ pub enum TrackWarning {
         /// The share of the rotation's variance about the principal axis.
         share: f64,
     },
+    /// The drag law named ([`TrackInput::drag_law`]) was tried and not
+    /// kept: the record does not show it.
+    DragLawNotKept {
+        /// The law's name.
+        law: &'static str,
+    },
     /// The fitted curve crosses the centre a different number of times
     /// than the data do: its frequency is not the record's.
     CrossingsDiffer {
@@ -241,6 +255,7 @@ impl crate::warning::Warn for TrackWarning {
             TrackWarning::FirstCrestOff { .. } => "first_crest_off",
             TrackWarning::SamplesLeftOut { .. } => "samples_left_out",
             TrackWarning::AnglesLookLikeRadians { .. } => "angles_look_like_radians",
+            TrackWarning::DragLawNotKept { .. } => "drag_law_not_kept",
         }
     }
 
@@ -262,6 +277,7 @@ impl crate::warning::Warn for TrackWarning {
             TrackWarning::FirstCrestOff { .. } => Some("amplitude_rad"),
             TrackWarning::SamplesLeftOut { .. } => Some("points"),
             TrackWarning::SeveralAxes { .. } => Some("gyroscope_axis_share"),
+            TrackWarning::DragLawNotKept { .. } => Some("damping_law"),
         }
     }
 }
@@ -270,6 +286,13 @@ impl fmt::Display for TrackWarning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             TrackWarning::NonlinearRejected(note) => f.write_str(note),
+            TrackWarning::DragLawNotKept { law } => write!(
+                f,
+                "the drag law {law} was tried and not kept: with it the fit was no better by \
+                 the information criterion, its coefficient not determined, or its viscous \
+                 part below 0 (the law standing in for a steeper one): the record does not \
+                 show that law"
+            ),
             TrackWarning::NoGravityFromLinear { swing } => write!(
                 f,
                 "g is not reported from the linear model at a {}° swing: its finite-amplitude \
@@ -737,6 +760,15 @@ pub fn parse_model(name: &str) -> Result<Option<TrajectoryModel>, Refusal> {
     }
 }
 
+/// The drag law named `name` (one of [`crate::forces::DRAG_LAWS`]) for
+/// [`TrackInput::drag_law`]; refused, naming the field `drag_law` and the
+/// laws, for any other name.
+pub fn parse_drag_law(name: &str) -> Result<Option<&'static dyn crate::forces::DragLaw>, Refusal> {
+    crate::simulation::analysis::parse_drag_law(name)
+        .map(Some)
+        .map_err(|r| Refusal::field("drag_law", r.reason))
+}
+
 /// Checks the length g is computed with, m (positive, and a measured
 /// one within [`LENGTH_RANGE_M`]), and its standard uncertainty, m
 /// (given with the length, positive and smaller than it).
@@ -873,6 +905,11 @@ fn track_warnings(
             kept: [time[0], time[time.len() - 1]],
             left: record.left_out.clone(),
         });
+    }
+    if let Some(law) = input.drag_law {
+        if fit.model == TrajectoryModel::Nonlinear && fit.law.drag.is_none() {
+            warnings.push(TrackWarning::DragLawNotKept { law: law.name() });
+        }
     }
     warnings.extend(radians_hint(input, record));
     warnings.extend(gravity(input, record, fit, figures));
@@ -1094,9 +1131,10 @@ fn undetermined_warnings(
     // that Q over the record measures, and its "not determined" stands
     // beside its value (a warning there fired on right answers: a 79°
     // release with Q 386 ± 2).
-    let other_losses = ["quadratic_drag_per_rad", "friction_angle_rad"]
-        .iter()
-        .any(|k| parameters.contains_key(*k));
+    let other_losses = (0..crate::forces::DRAG_LAWS.len())
+        .map(drag_key)
+        .chain(["friction_angle_rad"])
+        .any(|k| parameters.contains_key(k));
     if undetermined.contains(&"zeta") && !other_losses {
         warnings.push(TrackWarning::ZetaUndetermined);
     }
@@ -1245,7 +1283,11 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
     let model = input
         .model
         .unwrap_or_else(|| TrajectoryModel::auto_at(record.swing_angle));
-    let mut fit = fit_observed(model, time, theta, record.observed)
+    let drag_laws = match input.drag_law {
+        Some(law) => crate::forces::drag_law(law.name()).into_iter().collect(),
+        None => searched_drag_laws(),
+    };
+    let mut fit = fit_observed_with(model, time, theta, record.observed, &drag_laws)
         .map_err(|e| Refusal::data(e.to_string()))?;
     // Errors correlated from sample to sample carry less information than
     // the fit assumed: every standard error is widened for it.

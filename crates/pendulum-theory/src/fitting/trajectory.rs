@@ -14,9 +14,11 @@
 //!   of the true (finite-amplitude) period by which the release precedes
 //!   the first sample (`φ` in `(-π/2, 2π)`, negative for a release after
 //!   it). A bob held at the start is left out ([`held_start`]). It is started from the
-//!   linear fit. Beside the viscous damping, quadratic air drag
-//!   `b θ'|θ'|` and dry friction (a friction angle `r`: the torque of a
-//!   pivot's friction as an angle of the bob, [`crate::forces`]) are each
+//!   linear fit. Beside the viscous damping, a drag law of the list of
+//!   [`crate::forces`] (quadratic air drag `b θ'|θ'|` unless another is
+//!   named, [`fit_observed_with`]: the list's 3/2 power, or a law added
+//!   to it) and dry friction (a friction angle `r`: the torque of a
+//!   pivot's friction as an angle of the bob) are each
 //!   tried, from the viscous fit, and kept when they lower the Bayesian
 //!   information criterion with the coefficient determined (beyond two
 //!   standard errors): a pendulum in air at a large swing, or on a knife
@@ -48,9 +50,10 @@ use super::quality::{loss_per_radian, RecordQ};
 use super::{fit_curve, fit_curve_patient, propagate, Curve, Fit, FitError};
 use crate::damped::State;
 use crate::damping::Damping;
+use crate::forces::DRAG_LAWS;
 use crate::pendulum::{Amplitude, Pendulum};
 use crate::period::period_ratio;
-use crate::simulation::{simulate, Method, Model, Observer, Options};
+use crate::simulation::{simulate, Method, Model, Observer, Options, QUADRATIC_DRAG};
 use std::cell::RefCell;
 
 /// Which trajectory model.
@@ -88,8 +91,9 @@ pub enum Observed {
 /// The damping laws of the nonlinear model beside the viscous one.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Law {
-    /// Quadratic air drag, `b θ'|θ'|`.
-    pub quadratic: bool,
+    /// A drag law of [`DRAG_LAWS`] (its index): quadratic air drag
+    /// `b θ'|θ'|`, the 3/2 power, or any law added to the list.
+    pub drag: Option<usize>,
     /// Dry friction at the pivot.
     pub friction: bool,
 }
@@ -97,25 +101,29 @@ pub struct Law {
 impl Law {
     /// Viscous damping alone.
     pub const VISCOUS: Law = Law {
-        quadratic: false,
+        drag: None,
         friction: false,
     };
 
-    /// The name, as the decay fit names laws.
+    /// The name, as the decay fit names laws (`viscous+quadratic`,
+    /// `viscous+coulomb+three_halves`).
     pub fn name(self) -> &'static str {
-        match (self.friction, self.quadratic) {
-            (false, false) => "viscous",
-            (false, true) => "viscous+quadratic",
-            (true, false) => "viscous+coulomb",
-            (true, true) => "viscous+coulomb+quadratic",
+        match (self.drag, self.friction) {
+            (None, false) => "viscous",
+            (None, true) => "viscous+coulomb",
+            (Some(law), friction) => {
+                crate::fitting::decay::drag_model_names()[law][1 + 2 * usize::from(friction)]
+            }
         }
     }
 
-    /// The JSON names of the parameters it adds.
+    /// The JSON names of the parameters it adds: the drag law's
+    /// coefficient (`quadratic_drag_per_rad`, or the law's name, the key
+    /// the simulation takes it by) and the friction angle.
     fn extra_names(self) -> Vec<&'static str> {
         let mut out = Vec::new();
-        if self.quadratic {
-            out.push("quadratic_drag_per_rad");
+        if let Some(law) = self.drag {
+            out.push(drag_key(law));
         }
         if self.friction {
             out.push("friction_angle_rad");
@@ -123,21 +131,81 @@ impl Law {
         out
     }
 
-    /// The full parameter set `[A, ω_n, ζ, φ, θ_off, b, r]` of fitted
-    /// parameters `p` (the laws absent are 0).
-    fn full(self, p: &[f64]) -> [f64; 7] {
+    /// The motion of fitted parameters `p`: `[A, ω_n, ζ, φ, θ_off, k, r]`
+    /// (the laws absent are 0) and the drag law `k` is of.
+    fn full(self, p: &[f64]) -> Motion {
         let mut out = [0.0; 7];
         out[..5].copy_from_slice(&p[..5]);
         let mut next = 5;
-        if self.quadratic {
+        if self.drag.is_some() {
             out[5] = p[next].abs();
             next += 1;
         }
         if self.friction {
             out[6] = p[next].abs();
         }
-        out
+        Motion {
+            p: out,
+            drag: self.drag.unwrap_or(QUADRATIC_DRAG),
+        }
     }
+}
+
+/// The key of drag law `law`'s coefficient among a fit's parameters.
+pub fn drag_key(law: usize) -> &'static str {
+    if law == QUADRATIC_DRAG {
+        "quadratic_drag_per_rad"
+    } else {
+        DRAG_LAWS[law].name()
+    }
+}
+
+/// The drag laws the fit tries when none is named
+/// ([`crate::forces::DragLaw::searched`]).
+pub fn searched_drag_laws() -> Vec<usize> {
+    (0..DRAG_LAWS.len())
+        .filter(|&i| DRAG_LAWS[i].searched())
+        .collect()
+}
+
+/// A motion of the nonlinear model: the parameters `[A, ω_n, ζ, φ, θ_off,
+/// k, r]` (read by index, as an array) and the drag law of `k`.
+struct Motion {
+    p: [f64; 7],
+    drag: usize,
+}
+
+impl std::ops::Deref for Motion {
+    type Target = [f64; 7];
+    fn deref(&self) -> &[f64; 7] {
+        &self.p
+    }
+}
+
+/// The drag coefficient `k` of `law` whose loss at the swing `a` (rad)
+/// of a pendulum of natural angular frequency `wn` (rad/s) stands for
+/// the viscous rate `zeta`: `(2ζ/a) (s₂/s) (ω a)^{2−p}`, `s` the law's
+/// cycle average and `s₂` the quadratic one's (for quadratic drag `2ζ/a`,
+/// a start the fit refines).
+fn drag_for(law: usize, zeta: f64, a: f64, wn: f64) -> f64 {
+    2.0 * zeta / a * law_factor(law, a, wn)
+}
+
+/// `(s₂/s) (ω a)^{2−p}` of [`drag_for`]: exactly 1 for quadratic drag
+/// (whose starts are then the search's own to the last bit: its windowed
+/// fits of a short record can settle on another minimum from a start one
+/// ulp away, the gyroscope record `rotation-semicolon.csv` of the CLI's
+/// tests).
+fn law_factor(law: usize, a: f64, wn: f64) -> f64 {
+    let (drag, quadratic) = (DRAG_LAWS[law], DRAG_LAWS[QUADRATIC_DRAG]);
+    quadratic.sine_mean() / drag.sine_mean() * (wn * a).powf(2.0 - drag.power())
+}
+
+/// The viscous rate that stands for drag `k` of `law` at the swing `a`:
+/// the inverse of [`drag_for`] but for its factor 4 (for quadratic drag
+/// `k a/2`, the handing over the search was made with).
+fn zeta_for(law: usize, k: f64, a: f64, wn: f64) -> f64 {
+    0.5 * k * a / law_factor(law, a, wn)
 }
 
 /// The fitted trajectory.
@@ -489,13 +557,32 @@ pub fn fit_observed(
     values: &[f64],
     observed: Observed,
 ) -> Result<TrajectoryFit, FitError> {
+    fit_observed_with(model, time, values, observed, &searched_drag_laws())
+}
+
+/// [`fit_observed`] trying the drag laws `drag_laws` (indices of
+/// [`DRAG_LAWS`]) beside the viscous damping and dry friction, where it
+/// tries the [`searched_drag_laws`].
+pub fn fit_observed_with(
+    model: TrajectoryModel,
+    time: &[f64],
+    values: &[f64],
+    observed: Observed,
+    drag_laws: &[usize],
+) -> Result<TrajectoryFit, FitError> {
     let theta = values;
     let points = time.len().min(theta.len());
     let held = match observed {
         Observed::Angle => held_start(&time[..points], &theta[..points]),
         Observed::AngularVelocity => held_still(&time[..points], &theta[..points]),
     };
-    let mut fit = fit_released(model, &time[held..points], &theta[held..points], observed)?;
+    let mut fit = fit_released(
+        model,
+        &time[held..points],
+        &theta[held..points],
+        observed,
+        drag_laws,
+    )?;
     if held > 0 {
         // Held at the angle the fitted motion starts from (at rest: the
         // gyroscope reads its zero).
@@ -690,6 +777,7 @@ fn fit_released(
     time: &[f64],
     theta: &[f64],
     observed: Observed,
+    drag_laws: &[usize],
 ) -> Result<TrajectoryFit, FitError> {
     // Five parameters and a residual to judge them by.
     let points = time.len().min(theta.len());
@@ -730,12 +818,28 @@ fn fit_released(
     }
     let curve = NonlinearCurve::new(&t, Law::VISCOUS, observed);
     let linear_rms = lin.residual_rms;
+    // ζ held at its bound 0 has no slope there: a record with no damping
+    // to measure, whose best ζ the noise puts below 0, ends there with no
+    // covariance (or does not converge). Such a fit is made again with ζ
+    // free of sign (a swing that grows a little), from where it ended.
+    // (Only then: free of sign from the start, the growing windows of a
+    // heavily damped wide swing can step into a growing motion and a false
+    // minimum, seed 1052 of the coverage records.)
+    let signed = NonlinearCurve::new(&t, Law::VISCOUS, observed).signed();
+    let (fit, curve) = match fit_curve(&curve, &t, theta, None, &initial) {
+        Ok(fit) if fit.parameters[2] > 0.0 => (Ok(fit), &curve),
+        Ok(fit) => match fit_curve(&signed, &t, theta, None, &fit.parameters) {
+            Ok(free) => (Ok(free), &signed),
+            Err(_) => (Ok(fit), &curve),
+        },
+        Err(_) => (fit_curve(&signed, &t, theta, None, &initial), &signed),
+    };
     // A nonlinear fit that fails outright (its parameters not determined
     // from this start) leaves the linear one, which says so.
-    let Ok(fit) = fit_curve(&curve, &t, theta, None, &initial) else {
+    let Ok(fit) = fit else {
         return Ok(linear_fit(lin, Some(f64::NAN)));
     };
-    let fit = last_release(&curve, &t, theta, fit)?;
+    let fit = last_release(curve, &t, theta, fit)?;
     // A nonlinear fit that ran off (its release amplitude driven to the
     // top, or not determined by the data: a release rewound through heavy
     // damping, a record that does not follow a free decay) and fits worse
@@ -750,8 +854,15 @@ fn fit_released(
     // Drag and friction, each and both, from the viscous fit: kept when
     // the information criterion prefers them and their coefficients are
     // determined.
-    let (fit, law) = with_damping_laws(&t, theta, fit, observed);
-    let mut fit = fit;
+    // Each drag law's search; the best of them by the criterion.
+    let mut best: Option<(Fit, Law)> = None;
+    for &drag in drag_laws {
+        let found = with_damping_laws(&t, theta, fit.clone(), observed, drag);
+        if best.as_ref().is_none_or(|b| found.0.bic < b.0.bic) {
+            best = Some(found);
+        }
+    }
+    let (mut fit, law) = best.unwrap_or((fit, Law::VISCOUS));
     report_released(&mut fit);
     let (w, e) = (fit.parameters[1].abs(), fit.standard_errors[1]);
     Ok(TrajectoryFit {
@@ -902,7 +1013,13 @@ fn nonlinear_start(lin_first: &Fit) -> Vec<f64> {
         phase
     };
     let a_release = a1 * (zeta1 * wd1 / damping1 * phase / wd1).exp();
-    vec![a_release, wn, zeta1, phase, lin_first.parameters[4]]
+    vec![
+        a_release,
+        wn,
+        zeta1.max(0.0),
+        phase,
+        lin_first.parameters[4],
+    ]
 }
 
 /// The nonlinear fit as reported: its phase as a fraction of the true
@@ -962,20 +1079,26 @@ pub const LAW_PATIENCE: usize = 20;
 /// three rates trade one for another, and both laws can settle on drag in
 /// place of the viscous part. Each fit of a long record costs as much as
 /// the viscous one.)
-fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> (Fit, Law) {
-    const BOTH: Law = Law {
-        quadratic: true,
+fn with_damping_laws(
+    t: &[f64],
+    theta: &[f64],
+    fit: Fit,
+    observed: Observed,
+    drag: usize,
+) -> (Fit, Law) {
+    let both = Law {
+        drag: Some(drag),
         friction: true,
     };
     let p = fit.parameters.clone();
-    let (a, zeta) = (p[0].abs().max(1e-6), p[2].max(1e-6));
-    // The viscous rate ζ shared equally among the laws: quadratic drag
-    // matches it at the swing A when b = 2ζ/A, friction when r = πζA/2
-    // (the same loss per half swing).
+    let (a, zeta, wn) = (p[0].abs().max(1e-6), p[2].max(1e-6), p[1].abs());
+    // The viscous rate ζ shared equally among the laws: the drag matches
+    // it at the swing A at `drag_for` (b = 2ζ/A, quadratic), friction
+    // when r = πζA/2 (the same loss per half swing).
     let share = zeta / 3.0;
     let mut start = p.clone();
     start[2] = share;
-    start.push(2.0 * share / a);
+    start.push(drag_for(drag, share, a, wn));
     start.push(0.5 * std::f64::consts::PI * share * a);
     let determined = |f: &Fit| -> Vec<bool> {
         f.parameters[5..]
@@ -999,22 +1122,22 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> 
     // from the last (from a viscous fit that missed a swing's stop by
     // friction, the whole record at once is too far).
     let mut windowed = start.clone();
-    let both = {
+    let fitted_both = {
         let windows = stages(t, theta);
         let mut start = start;
         for &n in &windows[..windows.len() - 1] {
-            let curve = NonlinearCurve::new(&t[..n], BOTH, observed);
+            let curve = NonlinearCurve::new(&t[..n], both, observed);
             if let Ok(f) = fit_curve_patient(&curve, &t[..n], &theta[..n], &start, LAW_PATIENCE) {
                 start = f.parameters;
             }
         }
         windowed.clone_from(&start);
-        fit_law(BOTH, &start)
+        fit_law(both, &start)
     };
     let mut candidates: Vec<(Fit, Law)> = Vec::new();
-    match both {
-        Some(both) => {
-            let kept = determined(&both);
+    match fitted_both {
+        Some(both_fit) => {
+            let kept = determined(&both_fit);
             // The law without the coefficient at its bound; with neither
             // determined (the two laws and the viscous rate trade off over
             // a short record), each alone; with both determined, each
@@ -1028,19 +1151,19 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> 
                 (false, true) => &[(false, 6)],
                 _ => &[(true, 5), (false, 6)],
             };
-            for &(quadratic, index) in laws {
+            for &(keeps_drag, index) in laws {
                 let law = Law {
-                    quadratic,
-                    friction: !quadratic,
+                    drag: keeps_drag.then_some(drag),
+                    friction: !keeps_drag,
                 };
                 // The dropped law's decay handed to the viscous rate (the
                 // loss per half swing at the amplitude, as above).
-                let q = &both.parameters;
+                let q = &both_fit.parameters;
                 let amplitude = q[0].abs().max(1e-6);
-                let handed = if quadratic {
+                let handed = if keeps_drag {
                     2.0 * q[6].abs() / (std::f64::consts::PI * amplitude)
                 } else {
-                    0.5 * q[5].abs() * amplitude
+                    zeta_for(drag, q[5].abs(), amplitude, q[1].abs())
                 };
                 let mut reduced = q[..5].to_vec();
                 reduced[2] = (reduced[2] + handed).max(0.5 * zeta * 1e-3);
@@ -1050,17 +1173,17 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> 
                 }
             }
             if kept.iter().all(|&k| k) {
-                candidates.push((both, BOTH));
+                candidates.push((both_fit, both));
             }
         }
         None => {
             for law in [
                 Law {
-                    quadratic: true,
+                    drag: Some(drag),
                     friction: false,
                 },
                 Law {
-                    quadratic: false,
+                    drag: None,
                     friction: true,
                 },
             ] {
@@ -1068,14 +1191,14 @@ fn with_damping_laws(t: &[f64], theta: &[f64], fit: Fit, observed: Observed) -> 
                 // record may not settle with both when one is at its
                 // bound: its rate has no gradient there), else from the
                 // viscous fit with the decay shared.
-                let index = if law.quadratic { 5 } else { 6 };
+                let index = if law.drag.is_some() { 5 } else { 6 };
                 let mut from_windows = windowed[..5].to_vec();
                 from_windows[2] = from_windows[2].max(0.5 * zeta * 1e-3);
                 from_windows.push(windowed[index].abs().max(1e-9));
                 let mut one = p.clone();
                 one[2] = 0.5 * zeta;
-                one.push(if law.quadratic {
-                    zeta / a
+                one.push(if law.drag.is_some() {
+                    drag_for(drag, 0.5 * zeta, a, wn)
                 } else {
                     0.25 * std::f64::consts::PI * zeta * a
                 });
@@ -1137,7 +1260,7 @@ pub const FIRST_WINDOW_PERIODS: f64 = 4.0;
 /// angle, rad) of the motion of nonlinear parameters `[A, ω_n, ζ, φ, θ_off,
 /// b, r]` released from rest at `A`, up to `until` s after the release
 /// (DOP853 at 1e-12); the release is index 0.
-fn crests_until(p: &[f64; 7], until: f64) -> Option<Vec<(u64, f64, f64)>> {
+fn crests_until(p: &Motion, until: f64) -> Option<Vec<(u64, f64, f64)>> {
     let model = model_of(p)?;
     let amplitude = Amplitude::from_radians(p[0].abs().min(3.1)).ok()?;
     struct All(Vec<(u64, f64, f64)>);
@@ -1167,7 +1290,7 @@ fn crests_until(p: &[f64; 7], until: f64) -> Option<Vec<(u64, f64, f64)>> {
 /// The amplitudes (rad, unsigned) of the motion of nonlinear parameters
 /// `[A, ω_n, ζ, ...]` at its turning points `first` and `last` (indices
 /// from the release, 0 the release itself).
-fn crest_angles(p: &[f64; 7], first: u64, last: u64) -> Option<(f64, f64)> {
+fn crest_angles(p: &Motion, first: u64, last: u64) -> Option<(f64, f64)> {
     let model = model_of(p)?;
     let amplitude = Amplitude::from_radians(p[0].abs().min(3.1)).ok()?;
     struct Two {
@@ -1222,14 +1345,14 @@ fn release_period_ratio(a: f64) -> f64 {
 
 /// The time after release (s) and angle (rad) of the crest one period after
 /// the release, for nonlinear parameters `[A, ω_n, ζ, φ, θ_off, b, r]`.
-fn crest_after_one_period(p: &[f64; 7]) -> Option<(f64, f64)> {
+fn crest_after_one_period(p: &Motion) -> Option<(f64, f64)> {
     turning_point_where(p, 0.0, |index, _| index == 2)
 }
 
 /// The first turning point (time after the release, s, and signed angle,
 /// rad) at or after `after` seconds of the motion of nonlinear parameters
 /// `[A, ω_n, ζ, ...]` released from rest at `A`.
-fn turning_point_after(p: &[f64; 7], after: f64) -> Option<(f64, f64)> {
+fn turning_point_after(p: &Motion, after: f64) -> Option<(f64, f64)> {
     turning_point_where(p, after, |index, time| index >= 1 && time >= after)
 }
 
@@ -1238,7 +1361,7 @@ fn turning_point_after(p: &[f64; 7], after: f64) -> Option<(f64, f64)> {
 /// released from rest at `A`, within `span` s and a period and a half
 /// (DOP853 at 1e-12).
 fn turning_point_where(
-    p: &[f64; 7],
+    p: &Motion,
     span: f64,
     pick: impl Fn(u64, f64) -> bool,
 ) -> Option<(f64, f64)> {
@@ -1317,20 +1440,24 @@ fn initial_guess(t: &[f64], theta: &[f64]) -> Vec<f64> {
 const MOST_NEGATIVE_ZETA: f64 = -0.01;
 
 /// The equation of motion of nonlinear parameters `[A, ω_n, ζ, φ, θ_off,
-/// b, r]`, if they make one. `ζ` keeps its sign (down to
-/// [`MOST_NEGATIVE_ZETA`]): an undamped record's best `ζ` lies on either
-/// side of 0 by its noise, and a model held at 0 there has no slope in
-/// `ζ`, so that the fit had no covariance and was refused (8 of 18 exact
-/// undamped swings with 1e-4 rad of noise fell back to the linear fit).
-fn model_of(p: &[f64; 7]) -> Option<Model> {
+/// k, r]`, if they make one. `ζ` keeps its sign (down to
+/// [`MOST_NEGATIVE_ZETA`]; the fit's curve holds it at 0 but where it
+/// refits a record with no damping to measure, [`NonlinearCurve::signed`]:
+/// such a record's best `ζ` lies on either side of 0 by its noise, and a
+/// model held at 0 there has no slope in `ζ`, so that the fit had no
+/// covariance and was refused: 8 of 18 exact undamped swings with 1e-4 rad
+/// of noise fell back to the linear fit).
+fn model_of(p: &Motion) -> Option<Model> {
     let wn = p[1].abs();
     let pendulum = Pendulum::with_standard_gravity(9.806_65 / (wn * wn)).ok()?;
     Model::new(
         pendulum,
         Damping::of_either_sign(p[2].max(MOST_NEGATIVE_ZETA))?,
-        p[5].abs(),
+        0.0,
         p[6].abs(),
     )
+    .ok()?
+    .with_drag(p.drag, p[5].abs())
     .ok()
 }
 
@@ -1341,6 +1468,9 @@ struct NonlinearCurve<'a> {
     times: &'a [f64],
     law: Law,
     observed: Observed,
+    /// Whether ζ keeps its sign (down to [`MOST_NEGATIVE_ZETA`]); else it
+    /// is held at 0 below it.
+    signed_zeta: bool,
     cache: RefCell<Simulated>,
 }
 
@@ -1398,12 +1528,24 @@ impl<'a> NonlinearCurve<'a> {
             times,
             law,
             observed,
+            signed_zeta: false,
             cache: RefCell::new(Simulated::default()),
         }
     }
 
+    /// The same curve with ζ free of sign.
+    fn signed(self) -> Self {
+        Self {
+            signed_zeta: true,
+            ..self
+        }
+    }
+
     fn simulate(&self, p: &[f64]) -> (Vec<State>, f64) {
-        let full = self.law.full(p);
+        let mut full = self.law.full(p);
+        if !self.signed_zeta {
+            full.p[2] = full.p[2].max(0.0);
+        }
         let (a, wn, phase) = (full[0], full[1].abs(), full[3]);
         let span = self.times.last().copied().unwrap_or(0.0);
         let lead = (phase / wn.max(f64::MIN_POSITIVE)).max(0.0);

@@ -30,6 +30,7 @@ fn fit(rec: &Record) -> Result<Track, Refusal> {
         time: &rec.time,
         angle: &rec.angle,
         model: None,
+        drag_law: None,
         length: Some((rec.truth.length_m, LengthSource::Given)),
         length_standard_error: None,
         force: true,

@@ -436,6 +436,62 @@ mod trajectory {
         }
     }
 
+    /// The 3/2-power drag law in the trajectory fit, from the same list
+    /// as the simulation: a 40° swing of a 0.5 m pendulum simulated with
+    /// that law's force (k = 0.02 rad^-1/2 s^-1/2) and a little viscous
+    /// damping, 40 s at 50 frames a second with 2e-3 rad of noise, fitted
+    /// with the law named: the fit keeps it beside the viscous part, `k`
+    /// and ζ within three standard errors.
+    #[test]
+    fn the_three_halves_law_is_fitted_to_a_trajectory() {
+        use pendulum_theory::fitting::trajectory::{fit_observed_with, Observed};
+        use pendulum_theory::simulation::forces::drag_law;
+        let (k, zeta) = (0.02, 2e-4);
+        let law = drag_law("three_halves_drag").unwrap();
+        let pendulum = Pendulum::with_standard_gravity(0.5).unwrap();
+        let model = Model::new(pendulum, Damping::from_zeta(zeta).unwrap(), 0.0, 0.0)
+            .unwrap()
+            .with_drag(law, k)
+            .unwrap();
+        let options = Options {
+            duration: 40.0,
+            tolerance: 1e-12,
+            method: Method::Dop853,
+            sample_interval: Some(0.02),
+        };
+        let mut collect = Collect(Vec::new());
+        let release = Amplitude::from_degrees(40.0).unwrap();
+        simulate(&model, release, &options, &mut collect).unwrap();
+        let mut noise = Noise(15);
+        let t: Vec<f64> = (0..collect.0.len()).map(|i| i as f64 * 0.02).collect();
+        let theta: Vec<f64> = collect
+            .0
+            .iter()
+            .map(|a| a + NOISE * noise.gaussian())
+            .collect();
+        let named = fit_observed_with(
+            TrajectoryModel::Nonlinear,
+            &t,
+            &theta,
+            Observed::Angle,
+            &[law],
+        )
+        .unwrap();
+        assert_eq!(named.law.name(), "viscous+three_halves");
+        assert_eq!(named.names()[5], "three_halves_drag");
+        let (k_fit, k_se) = (named.fit.parameters[5], named.fit.standard_errors[5]);
+        assert!(
+            (k_fit - k).abs() <= 3.0 * k_se && k_se < 0.2 * k,
+            "k {k_fit} ± {k_se}"
+        );
+        let (z_fit, z_se) = (named.fit.parameters[2], named.fit.standard_errors[2]);
+        assert!((z_fit - zeta).abs() <= 3.0 * z_se, "ζ {z_fit} ± {z_se}");
+        // (Unnamed, the search's viscous+quadratic fits such a record
+        // about as well: BIC within 0.1 of the 3/2 law's on 20 s of it.
+        // The look-alike is why the 3/2 law is fitted when named, not
+        // searched.)
+    }
+
     #[test]
     fn nonlinear_fit_of_a_wide_swing_finds_g() {
         // 40° swing: the linear model's frequency is off by A²/16 = 3%.
@@ -650,6 +706,7 @@ mod self_checks {
             time,
             angle,
             model: None,
+            drag_law: None,
             length,
             length_standard_error: None,
             force: false,
@@ -677,6 +734,7 @@ mod self_checks {
             time: &t,
             angle: &a,
             model: None,
+            drag_law: None,
             length: Some((0.6, LengthSource::Given)),
             length_standard_error: None,
             force: false,
@@ -701,6 +759,7 @@ mod self_checks {
             time: &t,
             angle: &a,
             model: None,
+            drag_law: None,
             length: Some((300.0, LengthSource::TrackRadius)),
             length_standard_error: None,
             force: false,
@@ -741,6 +800,7 @@ mod self_checks {
             time: &t,
             angle: &a,
             model: Some(TrajectoryModel::Linear),
+            drag_law: None,
             length: None,
             length_standard_error: None,
             force: false,
@@ -987,6 +1047,7 @@ mod long_large_swings {
                 time: &t,
                 angle: &a,
                 model: Some(pendulum_theory::fitting::trajectory::TrajectoryModel::Nonlinear),
+                drag_law: None,
                 length: Some((0.7, LengthSource::Given)),
                 length_standard_error: None,
                 force: true,

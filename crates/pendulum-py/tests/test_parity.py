@@ -690,6 +690,8 @@ CLOCK = {
                       "drag": {"quadratic_drag": 1e-3, "three_halves_drag": 1e-4}},
     "drag_negative": {"drive_energy": 2e-5, "drag": {"three_halves_drag": -1.0}},
     "drag_unknown": {"drive_energy": 2e-5, "drag": {"bogus": 1.0}},
+    "drag_stops_the_clock": {"drive_energy": 2e-5, "drag": {"three_halves_drag": 0.03}},
+    "drag_huge": {"drive_energy": 2e-5, "drag": {"three_halves_drag": 1e300}},
 }
 
 

@@ -338,7 +338,7 @@ def simulate(
     damping = (given[0][0], float(given[0][1])) if given else None
     t, a, r, summary = _native.simulate(
         float(length), float(amplitude), float(duration), damping, _number(quadratic_drag),
-        _number(friction_angle), [(str(k), float(v)) for k, v in (drag or {}).items()],
+        _number(friction_angle), _drag_laws(drag),
         _number(g), _text(method), _number(tolerance), bool(force))
     return t, a, r, _json.loads(summary)
 
@@ -369,6 +369,23 @@ class FitResult(dict):
 
 def _array(x):
     return _np.ascontiguousarray(x, dtype=_np.float64)
+
+
+def _drag_laws(drag):
+    """The ``drag`` keyword, a dict of drag laws by name and their
+    coefficients, as the native calls take it; anything else is refused as
+    the other keywords are (ValueError naming it)."""
+    if drag is None:
+        return []
+    if not isinstance(drag, dict):
+        raise ValueError("drag: give a dict of drag laws by name and their coefficients, "
+                         f"e.g. {{'three_halves_drag': 0.002}}, got {type(drag).__name__}")
+    laws = []
+    for name, value in drag.items():
+        if isinstance(value, (bool, _np.bool_)) or not isinstance(value, (int, float, _np.number)):
+            raise ValueError(f"drag {name}: give a number, got {value!r}")
+        laws.append((str(name), float(value)))
+    return laws
 
 
 def _number(x):
@@ -761,7 +778,7 @@ def _clock(length, *, parts=None, drive_energy=None, drive_torque=None, q=None, 
         _number(lift_angle), _number(drive_torque), _number(drive_energy), _number(friction),
         _number(recoil), _number(impulse_angle), _count(every_beats), _number(beat_error),
         _number(out_of_beat), factors, span, _count(steps), run,
-        [(str(k), float(v)) for k, v in (drag or {}).items()])
+        _drag_laws(drag))
     return _json.loads(text), columns
 
 

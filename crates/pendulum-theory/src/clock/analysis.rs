@@ -1379,6 +1379,7 @@ fn long(
     let plan = plan_run(
         clock,
         steady.period,
+        steady.amplitude,
         input.duration,
         input.every,
         input.force,

@@ -303,11 +303,14 @@ impl Stepper<'_> {
     /// The beats the next step may take at `time` (s), a whole number of
     /// cycles: up to the next row or the end (`target`, s), a twentieth of
     /// the amplitude's relaxation (`Q/π` periods), and 4096.
-    fn step_beats(&self, time: f64, target: f64) -> u64 {
+    fn step_beats(&self, time: f64, target: f64, amplitude: f64) -> u64 {
         let beat_estimate = std::f64::consts::PI / self.omega;
         let room = ((target - time) / beat_estimate).floor();
+        // The relaxation with every loss counted (a drag law's at this
+        // swing), as the viscous Q alone would overstate it.
         let relaxation_beats =
-            (self.clock.q * (self.damping)(time) / std::f64::consts::PI * 2.0).max(1.0);
+            (self.clock.effective_q(amplitude) * (self.damping)(time) / std::f64::consts::PI * 2.0)
+                .max(1.0);
         (room.min(relaxation_beats / 20.0).min(4096.0) as u64) / self.cycle * self.cycle
     }
 }
@@ -399,7 +402,7 @@ pub fn run_with_damping(
             Some(_) => next_row.min(options.duration),
             None => options.duration,
         };
-        let step_beats = stepper.step_beats(row.time, target);
+        let step_beats = stepper.step_beats(row.time, target, row.amplitude);
         if options.every.is_some() && cycle <= MULTI_STEP_CYCLE && step_beats >= 16 {
             // Many beats at once: RK4 on the modified equation of the map
             // of one whole cycle of the escapement.

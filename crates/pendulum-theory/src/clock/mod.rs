@@ -42,7 +42,7 @@ pub enum ClockError {
     },
     /// No drive keeps it going: the escapement takes more than it gives as
     /// soon as the swing passes the lift, whatever the drive.
-    #[error("no drive keeps this escapement going: it takes more energy than it gives as soon as the swing passes the lift (a recoil or its friction too large; a constant-force impulse too small for its locking friction)")]
+    #[error("no drive keeps this escapement going: it takes more energy than it gives as soon as the swing passes the lift (a recoil or its friction too large; a constant-force impulse too small for its locking friction; a drag too large)")]
     NeverRuns,
     /// The swing would go over the top.
     #[error("the drive swings the pendulum past 170°: give less drive or more damping")]
@@ -199,7 +199,34 @@ impl Clock {
         let given: f64 = (0..n)
             .map(|beat| self.escapement.energy(a, a, beat, drive))
             .sum();
-        given - n as f64 * averaged::half_swing_action(a) / self.q
+        given - n as f64 * self.half_swing_loss(a)
+    }
+
+    /// The energy (scaled) a free half swing of amplitude `a` loses: the
+    /// viscous part `D(a)/Q` and each drag law's `k ∫ v^p dθ`.
+    pub fn half_swing_loss(&self, a: f64) -> f64 {
+        averaged::half_swing_action(a) / self.q
+            + self
+                .drag
+                .iter()
+                .map(|&(law, k)| k * averaged::drag_action_tabled(law.power(), a))
+                .sum::<f64>()
+    }
+
+    /// The Q the swing has at amplitude `a` with every loss counted: the
+    /// viscous `Q` with the drag laws' losses added at that swing (`Q`
+    /// itself without them).
+    pub fn effective_q(&self, a: f64) -> f64 {
+        if self.drag.is_empty() {
+            return self.q;
+        }
+        let action = averaged::half_swing_action(a);
+        let q = action / self.half_swing_loss(a);
+        if q.is_finite() && q > 0.0 {
+            q
+        } else {
+            self.q
+        }
     }
 
     /// The smallest drive factor that carries the swing past the

@@ -100,7 +100,8 @@ pub struct TrackInput<'a> {
     /// The drag law the nonlinear fit tries beside viscous damping and dry
     /// friction: a law of [`crate::forces::DRAG_LAWS`]
     /// ([`crate::simulation::analysis::parse_drag_law`] reads a name);
-    /// `None` tries those the list searches (quadratic drag).
+    /// `None` tries those the list searches (quadratic drag). A law named
+    /// chooses the nonlinear model (and is refused beside the linear one).
     pub drag_law: Option<&'static dyn crate::forces::DragLaw>,
     /// The length g is computed with, m, and where it came from.
     pub length: Option<(f64, LengthSource)>,
@@ -1280,9 +1281,24 @@ pub fn analyse(input: &TrackInput<'_>) -> Result<Track, Refusal> {
         time.len() as f64 * SECONDS_PER_ROW,
         input.force,
     )?;
-    let model = input
-        .model
-        .unwrap_or_else(|| TrajectoryModel::auto_at(record.swing_angle));
+    // A drag law named is the nonlinear model's (the linear one has
+    // viscous damping alone): it chooses that model, and is refused
+    // beside the linear one.
+    let model = match (input.model, input.drag_law) {
+        (Some(TrajectoryModel::Linear), Some(law)) => {
+            return Err(Refusal::field(
+                "drag_law",
+                format!(
+                    "{} is a damping law of the nonlinear model, and the linear model has \
+                     viscous damping alone: leave out one of them",
+                    law.name()
+                ),
+            ))
+        }
+        (None, Some(_)) => TrajectoryModel::Nonlinear,
+        (model, None) => model.unwrap_or_else(|| TrajectoryModel::auto_at(record.swing_angle)),
+        (Some(model), Some(_)) => model,
+    };
     let drag_laws = match input.drag_law {
         Some(law) => crate::forces::drag_law(law.name()).into_iter().collect(),
         None => searched_drag_laws(),

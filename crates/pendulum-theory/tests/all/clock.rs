@@ -167,6 +167,28 @@ fn a_drag_law_runs_in_a_clock() {
         .steady(HalfSwingMethod::Direct, 1.0)
         .unwrap();
     assert!(free.amplitude > 1.5 * direct.amplitude, "{free:?}");
+    // The drag counts where a clock stops too: a deadbeat clock that
+    // runs without it stops with a hundred times the drag (which takes
+    // more than the pallets give at their unlocking), and the drive it
+    // needs rises with the drag.
+    let deadbeat = || {
+        Box::new(Deadbeat {
+            lift: 2f64.to_radians(),
+            torque: 2e-5,
+            friction: 0.15,
+            offset: 0.0,
+        })
+    };
+    let plain = clock(q, deadbeat());
+    assert!(plain.steady(HalfSwingMethod::Direct, 1.0).is_ok());
+    let mut heavy = clock(q, deadbeat());
+    heavy.drag = vec![(law, 100.0 * k)];
+    let stopped = heavy.steady(HalfSwingMethod::Direct, 1.0);
+    assert!(
+        matches!(stopped, Err(ClockError::Stops { .. })),
+        "{stopped:?}"
+    );
+    assert!(heavy.minimum_drive() > 1.0 && plain.minimum_drive() < 1.0);
 }
 
 struct Turns(Vec<(f64, f64)>);

@@ -718,6 +718,32 @@ mod self_checks {
         .warning_codes
     }
 
+    /// A drag law named chooses the nonlinear model (a 3° record, which
+    /// `auto` fits linearly), and is refused beside the linear model,
+    /// naming its field.
+    #[test]
+    fn a_drag_law_named_is_the_nonlinear_model_s() {
+        use pendulum_theory::analysis::Place;
+        use pendulum_theory::fitting::tracked::parse_drag_law;
+        let (t, a) = record(1.0, 1);
+        let small: Vec<f64> = a.iter().map(|v| v * 3.0 / 30.0).collect();
+        let input = |model| TrackInput {
+            time: &t,
+            angle: &small,
+            model,
+            drag_law: parse_drag_law("three_halves_drag").unwrap(),
+            length: None,
+            length_standard_error: None,
+            force: false,
+            angle_from_positions: false,
+            declared_degrees: false,
+            angular_velocity: &[],
+        };
+        assert_eq!(analyse(&input(None)).unwrap().model, "nonlinear");
+        let refused = analyse(&input(Some(TrajectoryModel::Linear))).unwrap_err();
+        assert_eq!(refused.place, Place::Field("drag_law"), "{refused:?}");
+    }
+
     #[test]
     fn a_fair_record_raises_no_warning() {
         let (t, a) = record(1.0, 1);

@@ -148,23 +148,19 @@ pub enum BeatError {
     Time(f64),
 }
 
-/// The drag laws `drag` (coefficients in their own units) scaled for a
-/// pendulum of natural angular frequency `omega` (rad/s), each checked
-/// and named once; a refusal names the law (the field `simulate` names).
+/// The drag laws `drag` (coefficients in their own units), checked as
+/// the simulation checks them, scaled for a pendulum of natural angular
+/// frequency `omega` (rad/s).
 fn scaled_drag(
     drag: &[(&'static dyn crate::forces::DragLaw, f64)],
     omega: f64,
 ) -> Result<Vec<(&'static dyn crate::forces::DragLaw, f64)>, Refusal> {
-    let mut out: Vec<(&'static dyn crate::forces::DragLaw, f64)> = Vec::new();
-    for &(law, k) in drag {
-        let field = law.name();
-        if out.iter().any(|(l, _)| l.name() == field) {
-            return Err(Refusal::field(field, "is given twice"));
-        }
-        let k = crate::forces::check_drag(k).map_err(|reason| Refusal::field(field, reason))?;
-        out.push((law, law.scaled(k, omega)));
-    }
-    Ok(out)
+    use crate::forces::DRAG_LAWS;
+    let checked = crate::simulation::analysis::checked_drag_laws(drag, [false; DRAG_LAWS.len()])?;
+    Ok(checked
+        .into_iter()
+        .map(|(i, k)| (DRAG_LAWS[i], DRAG_LAWS[i].scaled(k, omega)))
+        .collect())
 }
 
 /// Airy's first-order integral is warned of as far from the integrated

@@ -70,15 +70,9 @@ pub fn half_swing_map(
     // of that, where the fixed-point iteration would integrate afresh
     // each time).
     let h = 1e-4;
-    let (loss, slope) = drag.iter().fold((0.0, 0.0), |(l, s), &(law, k)| {
-        let p = law.power();
-        let up = drag_action_tabled(p, a1 * (1.0 + h));
-        let down = drag_action_tabled(p, a1 * (1.0 - h));
-        (
-            l + k * drag_action_tabled(p, a1),
-            s + k * (up - down) / (2.0 * h * a1),
-        )
-    });
+    let loss = drag_loss(drag, a1);
+    let slope =
+        (drag_loss(drag, a1 * (1.0 + h)) - drag_loss(drag, a1 * (1.0 - h))) / (2.0 * h * a1);
     let energy = |a2: f64| {
         let given = escapement.map_or(0.0, |e| e.energy(a1, a2, beat, drive));
         if drag.is_empty() {
@@ -94,6 +88,15 @@ pub fn half_swing_map(
         time_shift: with_time_shift.then_some(&shift as &dyn Fn(f64) -> f64),
     };
     crate::averaging::half_swing_map(q, a1, Some(&work))
+}
+
+/// The energy (scaled) the drag laws `drag` (scaled coefficients) take
+/// from a free half swing of amplitude `a`: `Σ k ∫ v^p dθ`
+/// ([`drag_action_tabled`]).
+pub fn drag_loss(drag: &[(&'static dyn DragLaw, f64)], a: f64) -> f64 {
+    drag.iter()
+        .map(|&(law, k)| k * drag_action_tabled(law.power(), a))
+        .sum()
 }
 
 /// The step of [`drag_action_tabled`]'s table in the amplitude, rad.

@@ -205,12 +205,7 @@ impl Clock {
     /// The energy (scaled) a free half swing of amplitude `a` loses: the
     /// viscous part `D(a)/Q` and each drag law's `k ∫ v^p dθ`.
     pub fn half_swing_loss(&self, a: f64) -> f64 {
-        averaged::half_swing_action(a) / self.q
-            + self
-                .drag
-                .iter()
-                .map(|&(law, k)| k * averaged::drag_action_tabled(law.power(), a))
-                .sum::<f64>()
+        averaged::half_swing_action(a) / self.q + averaged::drag_loss(&self.drag, a)
     }
 
     /// The Q the swing has at amplitude `a` with every loss counted: the

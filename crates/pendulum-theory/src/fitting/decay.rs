@@ -298,7 +298,13 @@ impl DecayModel {
 
     /// The amplitude at `t` for parameters `p` (in the order of [`Self::rate_names`]).
     pub fn amplitude(self, t: f64, p: &[f64]) -> f64 {
-        self.amplitudes(&[t], p)[0]
+        match self {
+            DecayModel::Drag { .. } => self.amplitudes(&[t], p)[0],
+            _ => {
+                let [a0, lambda, mu, kappa] = self.full_rates(p);
+                decay_law(t, a0, lambda, mu, kappa)
+            }
+        }
     }
 
     /// The amplitudes at each of `times` for parameters `p` (in the order

@@ -429,22 +429,39 @@ pub fn prepare(input: &SimulationInput) -> Result<Prepared, Refusal> {
 fn with_drag_laws(mut model: Model, input: &SimulationInput) -> Result<Model, Refusal> {
     let mut given = [false; DRAG_LAWS.len()];
     given[super::QUADRATIC_DRAG] = input.quadratic_drag.is_some();
-    for (law, k) in &input.drag {
-        let i = drag_law(law.name()).ok_or_else(|| {
-            Refusal::field(
-                "drag",
-                format!("'{}' is not in the list of drag laws", law.name()),
-            )
-        })?;
-        let field = DRAG_LAWS[i].name();
-        if std::mem::replace(&mut given[i], true) {
-            return Err(Refusal::field(field, "is given twice"));
-        }
+    for (i, k) in checked_drag_laws(&input.drag, given)? {
         model = model
-            .with_drag(i, *k)
-            .map_err(|reason| Refusal::field(field, reason))?;
+            .with_drag(i, k)
+            .map_err(|reason| Refusal::field(DRAG_LAWS[i].name(), reason))?;
     }
     Ok(model)
+}
+
+/// The drag laws `drag` (coefficients in their own units) as indices of
+/// [`DRAG_LAWS`] with their coefficients, each named once (`given`: the
+/// laws another input gave already) and its coefficient checked; a
+/// refusal names the law, the field every front end says it by
+/// (`--drag NAME`). What the simulation and the clock take drag laws by.
+pub(crate) fn checked_drag_laws(
+    drag: &[(&'static dyn DragLaw, f64)],
+    mut given: [bool; DRAG_LAWS.len()],
+) -> Result<Vec<(usize, f64)>, Refusal> {
+    drag.iter()
+        .map(|&(law, k)| {
+            let i = drag_law(law.name()).ok_or_else(|| {
+                Refusal::field(
+                    "drag",
+                    format!("'{}' is not in the list of drag laws", law.name()),
+                )
+            })?;
+            let field = DRAG_LAWS[i].name();
+            if std::mem::replace(&mut given[i], true) {
+                return Err(Refusal::field(field, "is given twice"));
+            }
+            let k = crate::forces::check_drag(k).map_err(|reason| Refusal::field(field, reason))?;
+            Ok((i, k))
+        })
+        .collect()
 }
 
 /// The drag law named `name` in [`DRAG_LAWS`]; refused, naming the field
